@@ -1,0 +1,237 @@
+#include "bubbles/bubble_packing.hpp"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepLProp_SLProps.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <GCPnts_QuasiUniformAbscissa.hxx>
+#include <GeomLProp_CLProps.hxx>
+#include <BRepLProp_CLProps.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.hpp"
+#include "core/point_grid.hpp"
+#include "geometry/face_sampling.hpp"
+
+namespace hexlayer {
+
+double bubbleForce(double w) {
+  if (w < 0 || w > 1.5) return 0;
+  return 1.25 * w * w * w - 2.375 * w * w + 1.125;
+}
+
+namespace {
+
+Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+
+// Largest principal curvature of the face over a few samples.
+double maxFaceCurvature(const TopoDS_Shape& face, const std::vector<FaceSample>& samples) {
+  BRepAdaptor_Surface surface(TopoDS::Face(face));
+  if (surface.GetType() == GeomAbs_Plane) return 0;
+  BRepLProp_SLProps props(surface, 2, 1e-9);
+  double k = 0;
+  const size_t stride = std::max<size_t>(1, samples.size() / 50);
+  for (size_t i = 0; i < samples.size(); i += stride) {
+    props.SetParameters(samples[i].u, samples[i].v);
+    if (props.IsCurvatureDefined()) k = std::max({k, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
+  }
+  return k;
+}
+
+double maxEdgeCurvature(const BRepAdaptor_Curve& curve) {
+  if (curve.GetType() == GeomAbs_Line) return 0;
+  BRepLProp_CLProps props(curve, 2, 1e-9);
+  double k = 0;
+  for (int i = 0; i <= 20; ++i) {
+    props.SetParameter(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / 20.0);
+    if (props.IsTangentDefined()) k = std::max(k, props.Curvature());
+  }
+  return k;
+}
+
+// Largest bubble diameter that still follows a curve or surface of this curvature.
+double curvatureLimit(double curvature, const BubbleOptions& o) {
+  return curvature > 0 ? o.maxTurnAngle / curvature : std::numeric_limits<double>::infinity();
+}
+
+struct Packing {
+  std::vector<SurfaceNode> nodes;
+  std::vector<double> diameter;
+  PointGrid grid;
+  explicit Packing(double cell) : grid(cell) {}
+  void add(const SurfaceNode& n, double d) {
+    grid.insert(static_cast<int>(nodes.size()), n.point);
+    nodes.push_back(n);
+    diameter.push_back(d);
+  }
+};
+
+// Side of a vertex or edge: the side of the top/bottom faces around it (Lateral if none).
+Side sideAround(const TopTools_ListOfShape& faces, const CadSolid& cad, const WallSides& sides) {
+  for (const TopoDS_Shape& f : faces) {
+    const Side s = sides.faces[cad.faces.FindIndex(f) - 1].side;
+    if (s != Side::Lateral) return s;
+  }
+  return Side::Lateral;
+}
+
+double diameterAround(const TopTools_ListOfShape& faces, const CadSolid& cad, const std::vector<double>& faceDiameter) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const TopoDS_Shape& f : faces) d = std::min(d, faceDiameter[cad.faces.FindIndex(f) - 1]);
+  return d;
+}
+
+void packVertices(const CadSolid& cad, const WallSides& sides, const std::vector<double>& faceDiameter, Packing& pack) {
+  TopTools_IndexedDataMapOfShapeListOfShape vertexFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_VERTEX, TopAbs_FACE, vertexFaces);
+  for (int v = 1; v <= cad.vertices.Extent(); ++v) {
+    const TopTools_ListOfShape& faces = vertexFaces.FindFromKey(cad.vertices(v));
+    SurfaceNode n;
+    n.side = sideAround(faces, cad, sides);
+    if (n.side == Side::Lateral) continue;
+    n.point = toVec(BRep_Tool::Pnt(TopoDS::Vertex(cad.vertices(v))));
+    n.vertex = v - 1;
+    pack.add(n, diameterAround(faces, cad, faceDiameter));
+  }
+}
+
+// 1D packing: with one diameter along the edge, the bubble system's equilibrium is equal
+// arc-length spacing between the two vertex bubbles, which is placed directly.
+void packEdges(const CadSolid& cad, const WallSides& sides, const std::vector<double>& faceDiameter,
+               const BubbleOptions& o, Packing& pack) {
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  for (int e = 1; e <= cad.edges.Extent(); ++e) {
+    const TopoDS_Edge edge = TopoDS::Edge(cad.edges(e));
+    const TopTools_ListOfShape& faces = edgeFaces.FindFromKey(edge);
+    const Side side = sideAround(faces, cad, sides);
+    if (side == Side::Lateral || BRep_Tool::Degenerated(edge)) continue;
+    const BRepAdaptor_Curve curve(edge);
+    const double length = GCPnts_AbscissaPoint::Length(curve);
+    const double diameter = std::min(curvatureLimit(maxEdgeCurvature(curve), o), diameterAround(faces, cad, faceDiameter));
+    const int intervals = std::max(1, static_cast<int>(std::lround(length / diameter)));
+    if (intervals < 2) continue;
+    const GCPnts_QuasiUniformAbscissa split(curve, intervals + 1);
+    for (int i = 2; i <= split.NbPoints() - 1; ++i) {
+      SurfaceNode n;
+      n.point = toVec(curve.Value(split.Parameter(i)));
+      n.side = side;
+      n.edge = e - 1;
+      pack.add(n, diameter);
+    }
+  }
+}
+
+struct FaceBubble {
+  double u, v;
+  Vec3 point;
+};
+
+// Greedy first fill: candidates (a fine even sampling of the face) become bubbles where no
+// bubble is closer than `spacing` x stable distance.
+std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, double d, const Packing& pack) {
+  std::vector<FaceBubble> seeds;
+  PointGrid own(d);
+  for (const FaceSample& c : candidates) {
+    bool free = true;
+    pack.grid.forEachNear(c.point, 2 * d, [&](int j, const Vec3& q) {
+      if ((q - c.point).norm() < 0.85 * 0.5 * (d + pack.diameter[j])) free = false;
+    });
+    own.forEachNear(c.point, 0.85 * d, [&](int, const Vec3&) { free = false; });
+    if (!free) continue;
+    own.insert(static_cast<int>(seeds.size()), c.point);
+    seeds.push_back({c.u, c.v, c.point});
+  }
+  return seeds;
+}
+
+// One relaxation step: every face bubble moves along the net bubble force, then back onto the
+// face through the surface's first derivatives; bubbles pushed out of the face are dropped.
+void relaxFace(const TopoDS_Face& face, double d, const Packing& pack, std::vector<FaceBubble>& bubbles,
+               BRepTopAdaptor_FClass2d& inside) {
+  const BRepAdaptor_Surface surface(face);
+  PointGrid own(d);
+  for (size_t i = 0; i < bubbles.size(); ++i) own.insert(static_cast<int>(i), bubbles[i].point);
+  std::vector<FaceBubble> moved;
+  for (size_t i = 0; i < bubbles.size(); ++i) {
+    const Vec3 x = bubbles[i].point;
+    Vec3 force = Vec3::Zero();
+    auto push = [&](const Vec3& q, double stable) {
+      const Vec3 r = x - q;
+      const double len = r.norm();
+      if (len > 1e-12) force += bubbleForce(len / stable) * r / len;
+    };
+    pack.grid.forEachNear(x, 1.5 * d * 2, [&](int j, const Vec3& q) { push(q, 0.5 * (d + pack.diameter[j])); });
+    own.forEachNear(x, 1.5 * d, [&](int j, const Vec3& q) { if (j != static_cast<int>(i)) push(q, d); });
+    Vec3 step = 0.15 * d * force;
+    if (step.norm() > 0.25 * d) step *= 0.25 * d / step.norm();
+    gp_Pnt p;
+    gp_Vec du, dv;
+    surface.D1(bubbles[i].u, bubbles[i].v, p, du, dv);
+    Eigen::Matrix<double, 3, 2> J;
+    J << du.X(), dv.X(), du.Y(), dv.Y(), du.Z(), dv.Z();
+    const Eigen::Vector2d duv = (J.transpose() * J).ldlt().solve(J.transpose() * step);
+    FaceBubble b{bubbles[i].u + duv.x(), bubbles[i].v + duv.y(), Vec3::Zero()};
+    if (!duv.allFinite() || inside.Perform(gp_Pnt2d(b.u, b.v)) != TopAbs_IN) continue;
+    b.point = toVec(surface.Value(b.u, b.v));
+    moved.push_back(b);
+  }
+  bubbles.swap(moved);
+}
+
+void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<double>& faceDiameter,
+               const BubbleOptions& o, Packing& pack) {
+  for (int f = 0; f < cad.faces.Extent(); ++f) {
+    if (sides.faces[f].side == Side::Lateral) continue;
+    const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
+    const double d = faceDiameter[f];
+    std::vector<FaceBubble> bubbles = seedFace(sampleFace(face, 0.2 * d), d, pack);
+    BRepTopAdaptor_FClass2d inside(face, 1e-9);
+    for (int step = 0; step < o.relaxationSteps; ++step) relaxFace(face, d, pack, bubbles, inside);
+    // Population control: a bubble that ended too close to another is removed.
+    PointGrid own(d);
+    for (size_t i = 0; i < bubbles.size(); ++i) {
+      bool crowded = false;
+      pack.grid.forEachNear(bubbles[i].point, d, [&](int j, const Vec3& q) {
+        if ((q - bubbles[i].point).norm() < 0.5 * 0.5 * (d + pack.diameter[j])) crowded = true;
+      });
+      own.forEachNear(bubbles[i].point, 0.5 * d, [&](int, const Vec3&) { crowded = true; });
+      if (crowded) continue;
+      own.insert(static_cast<int>(i), bubbles[i].point);
+      SurfaceNode n;
+      n.point = bubbles[i].point;
+      n.side = sides.faces[f].side;
+      n.face = f;
+      pack.add(n, d);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<SurfaceNode> packBubbles(const CadSolid& cad, const WallSides& sides, const BubbleOptions& o) {
+  if (!(o.diameterOverThickness > 0)) throw usageError("bubble diameter must be positive");
+  std::vector<double> faceDiameter(cad.faces.Extent(), std::numeric_limits<double>::infinity());
+  for (int f = 0; f < cad.faces.Extent(); ++f) {
+    if (sides.faces[f].side == Side::Lateral) continue;
+    const TopoDS_Shape& face = cad.faces(f + 1);
+    const double curvature = maxFaceCurvature(face, sampleFace(face, 0.1 * cad.diagonal));
+    // Bubble diameter above the wall thickness (§4), small enough to follow the face's curvature.
+    faceDiameter[f] = std::min(o.diameterOverThickness * sides.faces[f].thickness, curvatureLimit(curvature, o));
+  }
+  Packing pack(o.diameterOverThickness * sides.thickness);
+  packVertices(cad, sides, faceDiameter, pack);
+  packEdges(cad, sides, faceDiameter, o, pack);
+  packFaces(cad, sides, faceDiameter, o, pack);
+  return pack.nodes;
+}
+
+}  // namespace hexlayer

@@ -1,0 +1,39 @@
+// Point location on the chordal surface: the nearest facet and the point's weights there
+// (barycentric on triangles, inverse bilinear on quads), used by the quad smoothing and the sweep.
+#pragma once
+#include <array>
+
+#include "chordal/chordal_surface.hpp"
+#include "core/point_grid.hpp"
+#include "core/types.hpp"
+
+namespace hexlayer {
+
+// Barycentric weights w_i = A_i / A of the point of triangle (a, b, c) nearest to p (Eq. 6-7);
+// a point on an edge or a vertex gets zero weights for the others, which is Eq. 4-5.
+Eigen::Vector3d triangleWeights(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p);
+
+// Inverse bilinear map: (u, v) in [0,1]^2 of the point of the bilinear quad
+// P(u,v) = (1-u)(1-v) p0 + u(1-v) p1 + u v p2 + (1-u) v p3 nearest to p (Gauss-Newton).
+Eigen::Vector2d inverseBilinear(const std::array<Vec3, 4>& p, const Vec3& x);
+
+struct ChordalPoint {
+  int facet = -1;
+  std::array<double, 4> weights{};  // of the facet's corners (the 4th is 0 on a triangle)
+  Vec3 point = Vec3::Zero();        // the nearest point on the chordal surface
+};
+
+class ChordalLocator {
+ public:
+  explicit ChordalLocator(const ChordalSurface& chordal);
+  ChordalPoint locate(const Vec3& p) const;  // nearest point of the chordal surface
+  const ChordalSurface& surface() const { return chordal_; }
+
+ private:
+  ChordalPoint project(int facet, const Vec3& p) const;
+  const ChordalSurface& chordal_;
+  PointGrid centroids_;
+  double reach_ = 0;  // largest distance from a facet's centroid to its corners
+};
+
+}  // namespace hexlayer

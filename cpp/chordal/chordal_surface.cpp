@@ -1,0 +1,181 @@
+#include "chordal/chordal_surface.hpp"
+
+#include <algorithm>
+#include <sstream>
+#include <unordered_map>
+
+#include "core/error.hpp"
+#include "core/point_grid.hpp"
+
+namespace hexlayer {
+namespace {
+
+std::uint64_t pairKey(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
+
+// The chordal vertex of tet edge (top, bottom), created on first use.
+int chordalVertex(ChordalSurface& s, std::unordered_map<std::uint64_t, int>& index, const TetMesh& m, int top, int bottom) {
+  const auto [it, added] = index.emplace(pairKey(top, bottom), static_cast<int>(s.vertices.size()));
+  if (added) {
+    s.vertices.push_back(0.5 * (m.nodes[top] + m.nodes[bottom]));  // v = (v_t + v_b) / 2 (§5.4)
+    s.tetEdge.push_back({top, bottom});
+  }
+  return it->second;
+}
+
+// Orients the facet so that it turns counter-clockwise seen from the top side.
+void orientTowardsTop(std::array<int, 4>& facet, const ChordalSurface& s, const Vec3& upward) {
+  if (facetNormal(s, facet).dot(upward) >= 0) return;
+  if (facet[3] < 0)
+    std::swap(facet[0], facet[2]);
+  else
+    std::swap(facet[1], facet[3]);
+}
+
+// Cospherical nodes (a rectangle of two top and two bottom nodes) can make TetGen use both
+// diagonals of a planar quad; their midpoints coincide. They are one point of the chordal surface:
+// merge them, and turn the facets that lose a corner into triangles or drop them.
+void mergeCoincidentVertices(ChordalSurface& s, double tolerance) {
+  std::vector<int> target(s.vertices.size());
+  PointGrid grid(std::max(tolerance, 1e-300) * 4);
+  for (size_t i = 0; i < s.vertices.size(); ++i) {
+    target[i] = static_cast<int>(i);
+    grid.forEachNear(s.vertices[i], tolerance, [&](int j, const Vec3&) { target[i] = std::min(target[i], j); });
+    if (target[i] == static_cast<int>(i)) grid.insert(static_cast<int>(i), s.vertices[i]);
+  }
+  std::vector<int> newIndex(s.vertices.size(), -1);
+  ChordalSurface merged;
+  for (size_t i = 0; i < s.vertices.size(); ++i)
+    if (target[i] == static_cast<int>(i)) {
+      newIndex[i] = static_cast<int>(merged.vertices.size());
+      merged.vertices.push_back(s.vertices[i]);
+      merged.tetEdge.push_back(s.tetEdge[i]);
+    }
+  for (const auto& f : s.facets) {
+    std::vector<int> ring;  // corners with repeats removed, cyclically
+    for (int k = 0; k < 4 && f[k] >= 0; ++k)
+      if (const int v = newIndex[target[f[k]]]; ring.empty() || ring.back() != v) ring.push_back(v);
+    if (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+    const int n = static_cast<int>(ring.size());
+    if (n < 3 || (n == 4 && (ring[0] == ring[2] || ring[1] == ring[3]))) continue;
+    std::array<int, 4> g{-1, -1, -1, -1};
+    std::copy(ring.begin(), ring.end(), g.begin());
+    (n == 3 ? merged.triangles : merged.quads)++;
+    merged.facets.push_back(g);
+  }
+  s = std::move(merged);
+}
+
+void requireManifold(const ChordalSurface& s) {
+  std::unordered_map<std::uint64_t, int> edgeUse;
+  for (const auto& f : s.facets) {
+    const int n = f[3] < 0 ? 3 : 4;
+    for (int k = 0; k < n; ++k) ++edgeUse[pairKey(f[k], f[(k + 1) % n])];
+  }
+  std::vector<Vec3> junctions;
+  for (const auto& [key, uses] : edgeUse)
+    if (uses > 2) junctions.push_back(0.5 * (s.vertices[key >> 32] + s.vertices[key & 0xFFFFFFFFu]));
+  if (junctions.empty()) return;
+  std::sort(junctions.begin(), junctions.end(), [](const Vec3& a, const Vec3& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  });
+  std::ostringstream msg;
+  msg << "non-manifold chordal surface: " << junctions.size() << " edges shared by more than two facets, e.g. at ("
+      << junctions[0].x() << ", " << junctions[0].y() << ", " << junctions[0].z() << ") (a rib or T-junction?)";
+  throw geometryError(msg.str());
+}
+
+double boxDiagonal(const std::vector<Vec3>& points) {
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return points.empty() ? 0.0 : (hi - lo).norm();
+}
+
+}  // namespace
+
+Vec3 facetNormal(const ChordalSurface& s, const std::array<int, 4>& f) {
+  const auto& v = s.vertices;
+  const bool triangle = f[3] < 0;
+  const Vec3 e1 = triangle ? Vec3(v[f[0]] - v[f[1]]) : Vec3(v[f[3]] - v[f[1]]);  // Eq. 1
+  const Vec3 e2 = triangle ? Vec3(v[f[2]] - v[f[1]]) : Vec3(v[f[2]] - v[f[0]]);
+  const Vec3 n = e2.cross(e1);
+  const double len = n.norm();
+  return len > 0 ? Vec3(n / len) : Vec3(Vec3::Zero());
+}
+
+ChordalSurface buildChordalSurface(const TetMesh& m) {
+  ChordalSurface s;
+  std::unordered_map<std::uint64_t, int> index;
+  for (const auto& t : m.tets) {
+    std::vector<int> top, bottom;
+    for (int v : t) (m.side[v] == Side::Top ? top : bottom).push_back(v);
+    if (top.empty() || bottom.empty()) continue;  // flat tet: not cut
+    std::array<int, 4> facet{-1, -1, -1, -1};
+    if (top.size() == 2) {  // 2-2: the four top-bottom edges form a quad (T0B0, T0B1, T1B1, T1B0)
+      facet = {chordalVertex(s, index, m, top[0], bottom[0]), chordalVertex(s, index, m, top[0], bottom[1]),
+               chordalVertex(s, index, m, top[1], bottom[1]), chordalVertex(s, index, m, top[1], bottom[0])};
+      ++s.quads;
+    } else {  // 3-1 or 1-3: the three edges at the lone node form a triangle
+      const std::vector<int>& many = top.size() == 3 ? top : bottom;
+      const int lone = top.size() == 3 ? bottom[0] : top[0];
+      for (int k = 0; k < 3; ++k)
+        facet[k] = top.size() == 3 ? chordalVertex(s, index, m, many[k], lone) : chordalVertex(s, index, m, lone, many[k]);
+      ++s.triangles;
+    }
+    Vec3 upward = Vec3::Zero();
+    for (int v : top) upward += m.nodes[v] / top.size();
+    for (int v : bottom) upward -= m.nodes[v] / bottom.size();
+    orientTowardsTop(facet, s, upward);
+    s.facets.push_back(facet);
+  }
+  if (s.facets.empty()) throw geometryError("empty chordal surface: no tet spans the top and bottom walls");
+  mergeCoincidentVertices(s, 1e-9 * boxDiagonal(m.nodes));
+  requireManifold(s);
+  return s;
+}
+
+void computeNormalsAndRadius(ChordalSurface& s, const TetMesh& m) {
+  std::vector<Vec3> sum(s.vertices.size(), Vec3::Zero());
+  std::vector<int> count(s.vertices.size(), 0);
+  for (const auto& f : s.facets) {
+    const Vec3 n = facetNormal(s, f);
+    for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) sum[f[k]] += n, ++count[f[k]];
+  }
+  s.normals.resize(s.vertices.size());
+  s.radius.resize(s.vertices.size());
+  for (size_t v = 0; v < s.vertices.size(); ++v) {
+    const Vec3 N = sum[v] / std::max(count[v], 1);  // Eq. 2: N̄ = Σ n_i / k, n̄ = N̄ / |N̄|
+    s.normals[v] = N.norm() > 0 ? Vec3(N.normalized()) : Vec3(Vec3::UnitZ());
+    const Vec3 l = m.nodes[s.tetEdge[v][0]] - s.vertices[v];  // l = v_t - v
+    s.radius[v] = std::abs(s.normals[v].dot(l));            // Eq. 3: r = n̄ · l
+  }
+}
+
+std::map<std::string, std::size_t> classifyTets(const TetMesh& m) {
+  static const int faceOf[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  static const int edgeOf[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  auto triKey = [](std::array<int, 3> t) {
+    std::sort(t.begin(), t.end());
+    return (static_cast<std::uint64_t>(t[0]) << 42) ^ (static_cast<std::uint64_t>(t[1]) << 21) ^ static_cast<std::uint64_t>(t[2]);
+  };
+  std::unordered_map<std::uint64_t, int> triUse;
+  for (const auto& t : m.tets)
+    for (const auto& f : faceOf) ++triUse[triKey({t[f[0]], t[f[1]], t[f[2]]})];
+  std::unordered_map<std::uint64_t, bool> exteriorEdge;  // an edge of an exterior triangle
+  for (const auto& t : m.tets)
+    for (const auto& f : faceOf)
+      if (triUse[triKey({t[f[0]], t[f[1]], t[f[2]]})] == 1)
+        for (int k = 0; k < 3; ++k) exteriorEdge[pairKey(t[f[k]], t[f[(k + 1) % 3]])] = true;
+  std::map<std::string, std::size_t> classes;
+  for (const auto& t : m.tets) {
+    int tris = 0, edges = 0;
+    for (const auto& f : faceOf) tris += triUse[triKey({t[f[0]], t[f[1]], t[f[2]]})] == 1;
+    for (const auto& e : edgeOf) edges += exteriorEdge.count(pairKey(t[e[0]], t[e[1]]));
+    ++classes[std::to_string(tris) + "/" + std::to_string(edges)];
+  }
+  return classes;
+}
+
+}  // namespace hexlayer

@@ -1,0 +1,40 @@
+// Chordal surface (paper §5): the tets cut at the midpoints of their top-bottom edges, with the
+// unit normal and the radius (half-thickness) function at its vertices (§5.5, Eq. 1-3).
+#pragma once
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "tets/tet_mesh.hpp"
+
+namespace hexlayer {
+
+struct ChordalSurface {
+  std::vector<Vec3> vertices;                // v = (v_t + v_b) / 2 of a top-bottom tet edge
+  std::vector<std::array<int, 2>> tetEdge;   // that edge's (top node, bottom node) in the tet mesh
+  std::vector<std::array<int, 4>> facets;    // triangles end with -1; each turns counter-clockwise seen from the top
+  std::vector<Vec3> normals;                 // unit average normal n̄ per vertex (Eq. 2)
+  std::vector<double> radius;                // r = n̄ · (v_t - v) per vertex (Eq. 3)
+  std::size_t triangles = 0, quads = 0;
+};
+
+// Cuts every tet that spans top and bottom: a 3-1 or 1-3 tet gives a triangle, a 2-2 tet a quad
+// (§5, Figure 3). A chordal vertex belongs to its tet edge, so neighbouring tets share it and the
+// facets form one connected surface. The side labels of the nodes (from the CAD faces) decide the
+// cut, so every tet is "simple" here: no incremental processing of complex tets (§5.4) is needed.
+// Throws geometryError if the surface is non-manifold (an edge in more than two facets).
+ChordalSurface buildChordalSurface(const TetMesh& tets);
+
+// Normal (Eq. 1-2) and radius (Eq. 3) at every chordal vertex.
+void computeNormalsAndRadius(ChordalSurface& chordal, const TetMesh& tets);
+
+// Unit normal of one facet (Eq. 1): e2 x e1 with e1 = v1 - v2, e2 = v3 - v2 for a triangle and the
+// diagonals e1 = v4 - v2, e2 = v3 - v1 for a quad.
+Vec3 facetNormal(const ChordalSurface& chordal, const std::array<int, 4>& facet);
+
+// Table 1 (§5.3): how many tets have (exterior triangles, exterior edges), keyed "tri/edge".
+std::map<std::string, std::size_t> classifyTets(const TetMesh& tets);
+
+}  // namespace hexlayer

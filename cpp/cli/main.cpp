@@ -1,0 +1,86 @@
+// hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H] [--report R] [--quiet]`
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "pipeline/pipeline.hpp"
+#include "quality/quality.hpp"
+#include "writers/writers.hpp"
+
+namespace {
+
+using hexlayer::ExitCode;
+
+struct MeshCommand {
+  std::string input, output, report;
+  bool quiet = false;
+  hexlayer::MeshOptions options;
+};
+
+std::string summary(const nlohmann::json& r, const std::string& output) {
+  std::ostringstream s;
+  const auto& sj = r["scaled_jacobian"];
+  const auto& vol = r["volume"];
+  s << std::setprecision(4) << "Wrote " << output << ": " << r["hexes"].get<size_t>() << " hexes, "
+    << r["nodes"].get<size_t>() << " nodes, " << r["layers"].get<int>() << " layers. Scaled Jacobian min "
+    << sj["min"].get<double>() << ", avg " << sj["avg"].get<double>() << ". Volume " << vol["mesh"].get<double>()
+    << " vs CAD " << vol["cad"].get<double>() << " (" << std::showpos << 100 * vol["relative_error"].get<double>()
+    << std::noshowpos << " %).";
+  if (r.contains("size")) s << " Quad size " << r["size"].get<double>() << " (" << r["size_source"].get<std::string>() << ").";
+  if (r.contains("solids")) s << " " << r["solids"].size() << " solids, each meshed on its own.";
+  if (r.contains("timings_s")) {
+    s << " Time:";
+    for (const auto& [stage, t] : r["timings_s"].items()) s << " " << stage << " " << std::fixed << std::setprecision(2) << t.get<double>() << " s" << std::defaultfloat;
+    s << ".";
+  }
+  return s.str();
+}
+
+int runMesh(MeshCommand& c) {
+  if (!c.quiet) c.options.progress = [](const std::string& line) { std::cerr << "hexlayer: " << line << std::endl; };
+  hexlayer::MeshResult result = hexlayer::meshFile(c.input, c.options);
+  std::vector<hexlayer::CellField> fields;
+  if (!result.mesh.hexes.empty()) fields.push_back({"scaled_jacobian", hexlayer::measureQuality(result.mesh).scaledJacobian});
+  hexlayer::writeMesh(c.output, result.mesh, result.nodeSets, fields);
+  if (!c.report.empty()) {
+    std::ofstream out(c.report);
+    if (!out) throw hexlayer::inputError("cannot write the report '" + c.report + "'");
+    out << std::setw(2) << result.report << "\n";
+  }
+  if (!c.quiet) std::cout << summary(result.report, c.output) << std::endl;
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"HexLayer: layered all-hex meshes of thin-section CAD solids (Hex-Layer method)"};
+  app.require_subcommand(1);
+  MeshCommand c;
+  CLI::App* mesh = app.add_subcommand("mesh", "Mesh a thin solid into layered hexahedra");
+  mesh->add_option("input", c.input, "CAD file: .step/.stp, .iges/.igs or .brep")->required();
+  mesh->add_option("-o,--output", c.output, "Output mesh: .inp (CalculiX), .vtu (VTK) or .msh (Gmsh 4.1)")->required();
+  mesh->add_option("--layers", c.options.layers, "Hex layers through the thickness (default 2)");
+  mesh->add_option("--size", c.options.size, "Quad edge length on the chordal surface (default: 2 x wall thickness)");
+  mesh->add_option("--report", c.report, "Write a JSON report of every stage");
+  mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : static_cast<int>(ExitCode::BadUsage);
+  }
+  try {
+    return runMesh(c);
+  } catch (const hexlayer::Error& e) {
+    std::cerr << "hexlayer: error: " << e.what() << std::endl;
+    return static_cast<int>(e.code());
+  } catch (const std::exception& e) {
+    std::cerr << "hexlayer: internal error: " << e.what() << std::endl;
+    return static_cast<int>(ExitCode::Internal);
+  }
+}

@@ -1,0 +1,32 @@
+// Geometry input (OpenCASCADE): read a CAD file, take its solids, check each is a valid closed solid.
+#pragma once
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Solid.hxx>
+#include <Bnd_Box.hxx>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace hexlayer {
+
+// One solid with its topology numbered as FreeCAD numbers it (Face1 = faces.FindKey(1), ...).
+struct CadSolid {
+  TopoDS_Solid solid;
+  TopTools_IndexedMapOfShape faces, edges, vertices;
+  double volume = 0;   // CAD volume (mm^3 in STEP units)
+  double diagonal = 0; // length of the bounding box diagonal
+};
+
+// Reads STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep/.brp) and returns every solid in it.
+// Throws inputError for a missing/unreadable file or one without a solid.
+std::vector<TopoDS_Solid> readSolids(const std::string& path);
+
+// Checks the solid (BRepCheck, closed shell, positive volume), numbers its topology and
+// triangulates its faces for the later stages. Throws inputError naming what is wrong.
+CadSolid prepareSolid(const TopoDS_Solid& solid);
+
+// Unit outward normal of face `f` at parameter (u, v), respecting the face orientation.
+Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v);
+
+}  // namespace hexlayer

@@ -1,0 +1,178 @@
+#include "pipeline/pipeline.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "bubbles/bubble_packing.hpp"
+#include "chordal/chordal_surface.hpp"
+#include "core/error.hpp"
+#include "geometry/wall_sides.hpp"
+#include "quadmesh/quad_mesh.hpp"
+#include "quadmesh/quad_smoothing.hpp"
+#include "quality/quality.hpp"
+#include "sweep/sweep.hpp"
+#include "tets/tet_mesh.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr int kMaxLayers = 64;
+constexpr int kSmoothingIterations = 10;
+constexpr double kDefaultSizeOverThickness = 2.0;
+constexpr double kMaxAutoQuads = 250000;
+
+// Runs one stage, records its wall time in report["timings_s"][name] and reports progress.
+class StageClock {
+ public:
+  StageClock(nlohmann::json& report, const MeshOptions& options) : report_(report), options_(options) {}
+  template <class F>
+  auto run(const std::string& name, F&& stage) {
+    const auto start = std::chrono::steady_clock::now();
+    auto result = stage();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report_["timings_s"][name] = s;
+    if (options_.progress) {
+      std::ostringstream line;
+      line << name << ": " << std::fixed << std::setprecision(2) << s << " s";
+      options_.progress(line.str());
+    }
+    return result;
+  }
+
+ private:
+  nlohmann::json& report_;
+  const MeshOptions& options_;
+};
+
+// Default quad size: twice the wall thickness, coarser if the part would need too many quads.
+double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalArea, nlohmann::json& report) {
+  if (o.size > 0) {
+    report["size_source"] = "given";
+    return o.size;
+  }
+  double size = kDefaultSizeOverThickness * sides.thickness;
+  size = std::max(size, std::sqrt(chordalArea / kMaxAutoQuads));
+  report["size_source"] = "auto: 2 x wall thickness (at most " + std::to_string(int(kMaxAutoQuads)) + " quads)";
+  return size;
+}
+
+double chordalArea(const ChordalSurface& c) {
+  double a = 0;
+  for (const auto& f : c.facets) {
+    const auto& v = c.vertices;
+    a += 0.5 * (v[f[1]] - v[f[0]]).cross(v[f[2]] - v[f[0]]).norm();
+    if (f[3] >= 0) a += 0.5 * (v[f[2]] - v[f[0]]).cross(v[f[3]] - v[f[0]]).norm();
+  }
+  return a;
+}
+
+nlohmann::json faceSideCounts(const WallSides& sides) {
+  int top = 0, bottom = 0, lateral = 0;
+  for (const FaceSide& f : sides.faces) (f.side == Side::Top ? top : f.side == Side::Bottom ? bottom : lateral)++;
+  return {{"top", top}, {"bottom", bottom}, {"lateral", lateral}};
+}
+
+void reportQuality(const HexMesh& mesh, double cadVolume, nlohmann::json& r) {
+  const QualityReport q = measureQuality(mesh);
+  r["hexes"] = mesh.hexes.size();
+  r["nodes"] = mesh.nodes.size();
+  r["layers"] = mesh.layers;
+  r["scaled_jacobian"] = {{"min", q.sjMin}, {"avg", q.sjAvg},
+                          {"histogram", {{"lo", q.sjHistogram.lo}, {"hi", q.sjHistogram.hi}, {"counts", q.sjHistogram.counts}}}};
+  r["aspect_ratio"] = {{"min", q.arMin}, {"avg", q.arAvg}, {"max", q.arMax}};
+  r["volume"] = {{"cad", cadVolume}, {"mesh", q.volume}, {"relative_error", (q.volume - cadVolume) / cadVolume}};
+  const BoundaryCheck b = checkBoundary(mesh);
+  r["boundary"] = {{"faces", b.faces}, {"open_edges", b.openEdges}, {"non_manifold_edges", b.nonManifoldEdges},
+                   {"watertight", b.watertight()}};
+}
+
+std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
+  std::vector<NodeSet> sets{{"TOP", {}}, {"BOTTOM", {}}, {"RIM", {}}};
+  for (size_t i = 0; i < mesh.nodes.size(); ++i) {
+    if (mesh.nodeLayer[i] == mesh.layers) sets[0].nodes.push_back(static_cast<int>(i));
+    if (mesh.nodeLayer[i] == 0) sets[1].nodes.push_back(static_cast<int>(i));
+    if (mesh.nodeOnRim[i]) sets[2].nodes.push_back(static_cast<int>(i));
+  }
+  return sets;
+}
+
+void append(HexMesh& all, const HexMesh& part) {
+  const int offset = static_cast<int>(all.nodes.size());
+  all.layers = part.layers;
+  all.nodes.insert(all.nodes.end(), part.nodes.begin(), part.nodes.end());
+  all.nodeLayer.insert(all.nodeLayer.end(), part.nodeLayer.begin(), part.nodeLayer.end());
+  all.nodeOnRim.insert(all.nodeOnRim.end(), part.nodeOnRim.begin(), part.nodeOnRim.end());
+  for (auto h : part.hexes) {
+    for (int& v : h) v += offset;
+    all.hexes.push_back(h);
+  }
+}
+
+}  // namespace
+
+void validateOptions(const MeshOptions& o) {
+  if (o.layers < 1 || o.layers > kMaxLayers)
+    throw usageError("--layers must be between 1 and " + std::to_string(kMaxLayers) + ", got " + std::to_string(o.layers));
+  if (!(o.size >= 0) || !std::isfinite(o.size)) throw usageError("--size must be a positive length");
+}
+
+MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
+  validateOptions(o);
+  MeshResult result;
+  nlohmann::json& r = result.report;
+  StageClock clock(r, o);
+  const CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid); });
+  const WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
+  r["thickness"] = sides.thickness;
+  r["faces"] = faceSideCounts(sides);
+  const auto nodes = clock.run("bubbles", [&] { return packBubbles(cad, sides, BubbleOptions{}); });
+  r["bubbles"] = nodes.size();
+  TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
+  const TetFilterCounts dropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
+  r["tets"] = {{"delaunay", dropped.delaunay}, {"outside", dropped.outside}, {"flat", dropped.flat}, {"zero_volume", dropped.zeroVolume}, {"kept", tets.tets.size()}};
+  ChordalSurface chordal = clock.run("chordal_surface", [&] {
+    ChordalSurface c = buildChordalSurface(tets);
+    computeNormalsAndRadius(c, tets);
+    return c;
+  });
+  r["tet_classes"] = classifyTets(tets);
+  r["chordal_surface"] = {{"triangles", chordal.triangles}, {"quads", chordal.quads}, {"vertices", chordal.vertices.size()}};
+  const double size = chooseSize(o, sides, chordalArea(chordal), r);
+  r["size"] = size;
+  const ChordalLocator locator(chordal);
+  const QuadMesh quads = clock.run("quad_mesh", [&] {
+    QuadMesh q = meshChordalSurface(chordal, QuadMeshOptions{size});
+    smoothQuadMesh(q, locator, kSmoothingIterations);
+    return q;
+  });
+  r["quad_mesh"] = {{"quads", quads.quads.size()}, {"nodes", quads.nodes.size()}};
+  result.mesh = clock.run("sweep", [&] { return sweepQuads(quads, locator, o.layers); });
+  clock.run("quality", [&] {
+    reportQuality(result.mesh, cad.volume, r);
+    return 0;
+  });
+  result.nodeSets = surfaceNodeSets(result.mesh);
+  return result;
+}
+
+MeshResult meshFile(const std::string& path, const MeshOptions& o) {
+  validateOptions(o);
+  const std::vector<TopoDS_Solid> solids = readSolids(path);
+  if (solids.size() == 1) return meshSolid(solids[0], o);
+  MeshResult all;  // several solids: mesh each, one report per solid plus the totals
+  double cad = 0;
+  for (size_t i = 0; i < solids.size(); ++i) {
+    if (o.progress) o.progress("solid " + std::to_string(i + 1) + " of " + std::to_string(solids.size()));
+    MeshResult one = meshSolid(solids[i], o);
+    cad += one.report["volume"]["cad"].get<double>();
+    all.report["solids"].push_back(one.report);
+    append(all.mesh, one.mesh);
+  }
+  reportQuality(all.mesh, cad, all.report);
+  all.nodeSets = surfaceNodeSets(all.mesh);
+  return all;
+}
+
+}  // namespace hexlayer

@@ -1,0 +1,35 @@
+// The Hex-Layer method end to end (paper §4, Figure 2): CAD solid -> bubbles -> tets -> chordal
+// surface -> quad mesh -> sweep -> quality. Each stage is a call into its own folder.
+#pragma once
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "geometry/cad_solid.hpp"
+
+namespace hexlayer {
+
+struct MeshOptions {
+  int layers = 2;   // hex layers through the thickness (§7.2)
+  double size = 0;  // quad edge length on the chordal surface; 0 = chosen from the part
+  std::function<void(const std::string&)> progress;  // one line per finished stage (may be empty)
+};
+
+struct MeshResult {
+  HexMesh mesh;                  // all solids of the input, one conformal mesh per solid
+  std::vector<NodeSet> nodeSets; // TOP, BOTTOM, RIM
+  nlohmann::json report;         // numbers of every stage, see README "Report"
+};
+
+// Checks the options; throws usageError naming the bad one.
+void validateOptions(const MeshOptions& options);
+
+// Meshes every solid of a CAD file (STEP, IGES, BREP).
+MeshResult meshFile(const std::string& path, const MeshOptions& options);
+
+// Meshes one solid.
+MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options);
+
+}  // namespace hexlayer

@@ -1,0 +1,17 @@
+// Smoothing of the quad mesh on the chordal surface: the quads' shape becomes the hexes' shape,
+// so interior nodes are moved to the area-weighted centroid of their quads and projected back
+// onto the chordal surface, where that does not worsen the quads around them.
+#pragma once
+#include "chordal/chordal_locator.hpp"
+#include "quadmesh/quad_mesh.hpp"
+
+namespace hexlayer {
+
+// Scaled Jacobian of a quad in 3D: min over corners of n · (e1 x e2) / (|e1||e2|), n the unit
+// normal through the diagonals.
+double quadScaledJacobian(const std::array<Vec3, 4>& corners);
+
+// Smooths the interior nodes (the rim nodes stay where Gmsh put them). Deterministic.
+void smoothQuadMesh(QuadMesh& quads, const ChordalLocator& chordal, int iterations);
+
+}  // namespace hexlayer

@@ -1,0 +1,70 @@
+#include "tets/tet_mesh.hpp"
+
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <tetgen.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace hexlayer {
+
+TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
+  if (nodes.size() < 4) throw geometryError("too few surface nodes (" + std::to_string(nodes.size()) + ") to build tets");
+  TetMesh mesh;
+  tetgenio in, out;
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(nodes.size());
+  in.pointlist = new REAL[3 * nodes.size()];  // freed by tetgenio's destructor
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = nodes[i].point[k];
+    mesh.nodes.push_back(nodes[i].point);
+    mesh.side.push_back(nodes[i].side);
+  }
+  char switches[] = "zQ";  // z: zero-based indices, Q: quiet; no 'p': Delaunay of the point set
+  try {
+    tetrahedralize(switches, &in, &out);
+  } catch (int code) {
+    throw geometryError("TetGen failed to tetrahedralize the surface nodes (TetGen error " + std::to_string(code) + ")");
+  }
+  mesh.tets.resize(out.numberoftetrahedra);
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+    for (int k = 0; k < 4; ++k) mesh.tets[t][k] = out.tetrahedronlist[4 * t + k];
+  return mesh;
+}
+
+TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
+  TetFilterCounts counts;
+  counts.delaunay = mesh.tets.size();
+  BRepClass3d_SolidClassifier classifier(cad.solid);
+  const double tolerance = 1e-7 * cad.diagonal;
+  std::vector<std::array<int, 4>> kept;
+  for (const auto& t : mesh.tets) {
+    int top = 0;
+    for (int v : t) top += mesh.side[v] == Side::Top;
+    if (top == 0 || top == 4) {
+      ++counts.flat;
+      continue;
+    }
+    const Vec3 e1 = mesh.nodes[t[1]] - mesh.nodes[t[0]], e2 = mesh.nodes[t[2]] - mesh.nodes[t[0]],
+               e3 = mesh.nodes[t[3]] - mesh.nodes[t[0]];
+    const double scale = std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()});
+    if (std::abs(e1.dot(e2.cross(e3))) < 1e-9 * std::pow(scale, 1.5)) {  // four coplanar nodes
+      ++counts.zeroVolume;
+      continue;
+    }
+    const Vec3 c = 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
+    classifier.Perform(gp_Pnt(c.x(), c.y(), c.z()), tolerance);
+    if (classifier.State() != TopAbs_IN) {
+      ++counts.outside;
+      continue;
+    }
+    kept.push_back(t);
+  }
+  mesh.tets.swap(kept);
+  return counts;
+}
+
+}  // namespace hexlayer

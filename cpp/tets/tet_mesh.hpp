@@ -1,0 +1,32 @@
+// Tets (paper §4, §5.4): Delaunay tetrahedralization of the bubble nodes with TetGen, then the
+// tets outside the solid and the flat tets (all four nodes on one side, Case 4-0 / 0-4) are dropped.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "bubbles/bubble_packing.hpp"
+#include "core/types.hpp"
+#include "geometry/cad_solid.hpp"
+
+namespace hexlayer {
+
+struct TetMesh {
+  std::vector<Vec3> nodes;
+  std::vector<Side> side;  // Top or Bottom per node
+  std::vector<std::array<int, 4>> tets;
+};
+
+struct TetFilterCounts {
+  std::size_t delaunay = 0;  // tets of the Delaunay tetrahedralization (the convex hull)
+  std::size_t outside = 0;   // dropped: centroid outside the solid
+  std::size_t flat = 0;      // dropped: all four nodes on the same side (§5.4)
+  std::size_t zeroVolume = 0; // dropped: four coplanar nodes (cospherical Delaunay configurations)
+};
+
+// Delaunay tetrahedralization of the nodes (TetGen 1.5, library call). Throws on TetGen failure.
+TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes);
+
+// Keeps the tets inside the solid that span top and bottom; returns what was dropped.
+TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad);
+
+}  // namespace hexlayer

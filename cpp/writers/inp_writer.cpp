@@ -1,0 +1,73 @@
+// CalculiX/Abaqus input deck. CalculiX's C3D8I node order equals HexMesh's, so hexes are written as is.
+#include <cctype>
+#include <charconv>
+
+#include "writers/writers.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr int kIdsPerLine = 16;       // Abaqus limit for data lines of *NSET
+constexpr std::size_t kMaxField = 20;   // CalculiX reads a *NODE coordinate from its first 20 characters
+constexpr std::size_t kMaxName = 80;    // CalculiX set names
+
+// Shortest round-trip text if it fits in 20 characters, else scientific with as many digits as fit
+// (at least 13 significant digits).
+std::string inpNumber(double v) {
+  std::string s = formatDouble(v);
+  for (int digits = 16; s.size() > kMaxField && digits > 0; --digits) {
+    char buf[32];
+    s.assign(buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific, digits).ptr);
+  }
+  return s;
+}
+
+// Upper case, at most 80 characters, characters other than letters, digits and '_' replaced by '_'.
+std::string inpName(const std::string& name) {
+  std::string s = name.empty() ? "SET" : name.substr(0, kMaxName);
+  for (char& c : s) c = std::isalnum(static_cast<unsigned char>(c)) ? std::toupper(static_cast<unsigned char>(c)) : '_';
+  return s;
+}
+
+void writeNodes(std::ostream& out, const HexMesh& mesh) {
+  out << "*NODE, NSET=NALL\n";
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    const Vec3& p = mesh.nodes[i];
+    out << i + 1 << ", " << inpNumber(p.x()) << ", " << inpNumber(p.y()) << ", " << inpNumber(p.z()) << "\n";
+  }
+}
+
+void writeElements(std::ostream& out, const HexMesh& mesh) {
+  out << "*ELEMENT, TYPE=C3D8I, ELSET=EALL\n";
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+    out << h + 1;
+    for (int n : mesh.hexes[h]) out << ", " << n + 1;
+    out << "\n";
+  }
+}
+
+void writeNodeSet(std::ostream& out, const NodeSet& set) {
+  if (set.nodes.empty()) {  // CalculiX rejects an *NSET without members
+    out << "** node set " << inpName(set.name) << " is empty\n";
+    return;
+  }
+  out << "*NSET, NSET=" << inpName(set.name) << "\n";
+  for (std::size_t i = 0; i < set.nodes.size(); ++i) {
+    out << set.nodes[i] + 1;
+    const bool lineEnd = (i + 1) % kIdsPerLine == 0 || i + 1 == set.nodes.size();
+    out << (lineEnd ? "\n" : ", ");
+  }
+}
+
+}  // namespace
+
+void writeInp(std::ostream& out, const HexMesh& mesh, const std::vector<NodeSet>& nodeSets) {
+  out << "*HEADING\n";
+  out << "HexLayer layered all-hex mesh: " << mesh.nodes.size() << " nodes, " << mesh.hexes.size() << " hexes, "
+      << mesh.layers << " layers\n";
+  writeNodes(out, mesh);
+  writeElements(out, mesh);
+  for (const NodeSet& s : nodeSets) writeNodeSet(out, s);
+}
+
+}  // namespace hexlayer

@@ -1,0 +1,265 @@
+// Writers: each format is read back by another program (Gmsh API, meshio) or parsed as CalculiX would.
+#include <gmsh.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "quality/quality.hpp"
+#include "writers/writers.hpp"
+
+using namespace hexlayer;
+namespace fs = std::filesystem;
+
+namespace {
+
+// 2 x 1 x 1 unit hexes, one layer: 12 nodes, node (i,j,k) has id i + 3*(j + 2*k) and layer k.
+HexMesh twoHexBlock() {
+  HexMesh m;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) {
+        m.nodes.emplace_back(i, j, k);
+        m.nodeLayer.push_back(k);
+        m.nodeOnRim.push_back(0);
+      }
+  for (int i = 0; i < 2; ++i) m.hexes.push_back({i, i + 1, i + 4, i + 3, i + 6, i + 7, i + 10, i + 9});
+  m.layers = 1;
+  return m;
+}
+
+std::vector<NodeSet> layerSets(const HexMesh& m) {
+  std::vector<NodeSet> sets{{"TOP", {}}, {"bottom", {}}};
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) sets[m.nodeLayer[i] == 1 ? 0 : 1].nodes.push_back(static_cast<int>(i));
+  return sets;
+}
+
+std::string readText(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+// Data lines of the keyword block starting with `keyword` (up to the next line starting with '*').
+std::vector<std::string> inpBlock(const std::vector<std::string>& all, const std::string& keyword) {
+  std::vector<std::string> out;
+  bool in = false;
+  for (const std::string& l : all) {
+    if (!l.empty() && l[0] == '*') in = l.rfind(keyword, 0) == 0;
+    else if (in) out.push_back(l);
+  }
+  return out;
+}
+
+std::vector<std::string> splitCommas(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  for (std::string f; std::getline(in, f, ',');) out.push_back(f.substr(f.find_first_not_of(' ')));
+  return out;
+}
+
+ExitCode codeOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.code();
+  }
+  return ExitCode::Ok;
+}
+
+class WriterTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("hexlayer_writer_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+    mesh_ = twoHexBlock();
+    sets_ = layerSets(mesh_);
+    fields_ = {{"scaled_jacobian", measureQuality(mesh_).scaledJacobian}, {"hex_id", {1.5, 2.5}}};
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name) {
+    const fs::path p = dir_ / name;
+    writeMesh(p.string(), mesh_, sets_, fields_);
+    return p;
+  }
+
+  fs::path dir_;
+  HexMesh mesh_;
+  std::vector<NodeSet> sets_;
+  std::vector<CellField> fields_;
+};
+
+}  // namespace
+
+TEST_F(WriterTest, MshReadsBackThroughGmsh) {
+  const fs::path p = write("block.msh");
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open(p.string());
+
+  std::vector<std::size_t> nodeTags;
+  std::vector<double> coords, params;
+  gmsh::model::mesh::getNodes(nodeTags, coords, params);
+  EXPECT_EQ(nodeTags.size(), 12u);
+  for (std::size_t i = 0; i < nodeTags.size(); ++i)
+    for (int d = 0; d < 3; ++d) EXPECT_EQ(coords[3 * i + d], mesh_.nodes[nodeTags[i] - 1][d]);
+
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> elementTags, elementNodes;
+  gmsh::model::mesh::getElements(types, elementTags, elementNodes, 3);
+  ASSERT_EQ(types, std::vector<int>{5});
+  ASSERT_EQ(elementTags[0].size(), 2u);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(elementNodes[0][i], static_cast<std::size_t>(mesh_.hexes[0][i] + 1));
+  gmsh::model::mesh::getElements(types, elementTags, elementNodes, 2);
+  std::size_t quads = 0;
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    EXPECT_EQ(types[t], 3);
+    quads += elementTags[t].size();
+  }
+  EXPECT_EQ(quads, 10u);
+
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups);
+  std::map<std::string, std::size_t> elementsPerGroup;
+  for (const auto& [dim, tag] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    for (int e : entities) {
+      gmsh::model::mesh::getElements(types, elementTags, elementNodes, dim, e);
+      for (const auto& t : elementTags) elementsPerGroup[name] += t.size();
+    }
+  }
+  const std::map<std::string, std::size_t> expected{{"top", 2}, {"bottom", 2}, {"rim", 6}, {"solid", 2}};
+  EXPECT_EQ(elementsPerGroup, expected);
+
+  std::vector<int> views;
+  gmsh::view::getTags(views);
+  EXPECT_EQ(views.size(), 2u);  // one $ElementData per cell field
+  gmsh::finalize();
+}
+
+TEST_F(WriterTest, MshOmitsEmptySurfacesAndPutsAllQuadsInRimWithoutLayers) {
+  mesh_.nodeLayer.clear();
+  const std::string text = readText(write("nolayers.msh"));
+  EXPECT_NE(text.find("2 3 \"rim\""), std::string::npos);
+  EXPECT_EQ(text.find("\"top\""), std::string::npos);
+  EXPECT_EQ(text.find("\"bottom\""), std::string::npos);
+  EXPECT_NE(text.find("\n2 3 3 10\n"), std::string::npos);  // one block of 10 quads in surface 3
+}
+
+TEST_F(WriterTest, InpHasNodesC3D8IElementsAndNodeSets) {
+  const std::vector<std::string> all = lines(readText(write("block.inp")));
+  ASSERT_FALSE(all.empty());
+  EXPECT_EQ(all[0], "*HEADING");
+  const std::vector<std::string> nodes = inpBlock(all, "*NODE");
+  ASSERT_EQ(nodes.size(), 12u);
+  EXPECT_EQ(splitCommas(nodes[11]), (std::vector<std::string>{"12", "2", "1", "1"}));
+  const std::vector<std::string> elements = inpBlock(all, "*ELEMENT, TYPE=C3D8I");
+  ASSERT_EQ(elements.size(), 2u);
+  EXPECT_EQ(elements[1], "2, 2, 3, 6, 5, 8, 9, 12, 11");
+  EXPECT_NE(std::find(all.begin(), all.end(), "*NODE, NSET=NALL"), all.end());
+  EXPECT_NE(std::find(all.begin(), all.end(), "*ELEMENT, TYPE=C3D8I, ELSET=EALL"), all.end());
+  EXPECT_EQ(inpBlock(all, "*NSET, NSET=TOP"), (std::vector<std::string>{"7, 8, 9, 10, 11, 12"}));
+  EXPECT_EQ(inpBlock(all, "*NSET, NSET=BOTTOM"), (std::vector<std::string>{"1, 2, 3, 4, 5, 6"}));
+}
+
+TEST_F(WriterTest, InpWrapsLongNodeSetsAt16Ids) {
+  sets_ = {{"all nodes", {}}};
+  for (int r = 0; r < 3; ++r)
+    for (int i = 0; i < 12; ++i) sets_[0].nodes.push_back(i);  // 36 ids
+  const std::vector<std::string> set = inpBlock(lines(readText(write("long.inp"))), "*NSET, NSET=ALL_NODES");
+  ASSERT_EQ(set.size(), 3u);
+  EXPECT_EQ(splitCommas(set[0]).size(), 16u);
+  EXPECT_EQ(splitCommas(set[2]).size(), 4u);
+}
+
+TEST_F(WriterTest, InpCoordinatesFitCalculiXTwentyCharacterFields) {
+  for (Vec3& p : mesh_.nodes) p = -p * 1.2345678901234567e-5 - Vec3(1.0 / 3.0, 2e-300, 7e123);
+  const std::vector<std::string> nodes = inpBlock(lines(readText(write("tiny.inp"))), "*NODE");
+  ASSERT_EQ(nodes.size(), 12u);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const std::vector<std::string> f = splitCommas(nodes[i]);
+    ASSERT_EQ(f.size(), 4u);
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_LE(f[d + 1].size(), 20u) << f[d + 1];
+      EXPECT_NEAR(std::stod(f[d + 1]), mesh_.nodes[i][d], 1e-12 * std::abs(mesh_.nodes[i][d]));
+    }
+  }
+}
+
+TEST_F(WriterTest, VtuLoadsInMeshio) {
+  const fs::path p = write("Block.VTU");  // extension in any case
+  const fs::path script = dir_ / "check.py";
+  std::ofstream(script) << "import sys, meshio\n"
+                           "m = meshio.read(sys.argv[1])\n"
+                           "assert len(m.points) == 12, len(m.points)\n"
+                           "hexes = m.cells_dict['hexahedron']\n"
+                           "assert hexes.shape == (2, 8), hexes.shape\n"
+                           "assert list(hexes[1]) == [1, 2, 5, 4, 7, 8, 11, 10], hexes[1]\n"
+                           "assert list(m.point_data['layer']) == [0] * 6 + [1] * 6\n"
+                           "assert list(m.point_data['TOP']) == [0] * 6 + [1] * 6\n"
+                           "assert list(m.point_data['bottom']) == [1] * 6 + [0] * 6\n"
+                           "assert list(m.cell_data['hex_id'][0]) == [1.5, 2.5]\n"
+                           "assert list(m.cell_data['scaled_jacobian'][0]) == [1.0, 1.0]\n";
+  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + p.string() + "'";
+  const int status = std::system(command.c_str());
+  ASSERT_NE(status, -1);
+  EXPECT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << command;
+}
+
+TEST_F(WriterTest, OutputIsDeterministic) {
+  for (const std::string ext : {".inp", ".vtu", ".msh"}) {
+    const std::string a = readText(write("a" + ext)), b = readText(write("b" + ext));
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, b) << ext;
+  }
+}
+
+TEST_F(WriterTest, UnknownExtensionIsUsageError) {
+  EXPECT_EQ(codeOf([&] { write("block.stl"); }), ExitCode::BadUsage);
+  EXPECT_EQ(codeOf([&] { write("block"); }), ExitCode::BadUsage);
+  EXPECT_FALSE(fs::exists(dir_ / "block.stl"));
+  try {
+    write("block.stl");
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("use .inp, .vtu or .msh"), std::string::npos);
+  }
+}
+
+TEST_F(WriterTest, UnwritablePathIsInputError) {
+  const std::string path = (dir_ / "missing_dir" / "block.inp").string();
+  try {
+    writeMesh(path, mesh_, sets_);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::BadInput);
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos);
+  }
+}
+
+TEST_F(WriterTest, CellFieldOfWrongSizeIsRejected) {
+  fields_.push_back({"short", {1.0}});
+  EXPECT_EQ(codeOf([&] { write("bad.vtu"); }), ExitCode::Internal);
+}
