@@ -1,13 +1,12 @@
 #include "geometry/face_sampling.hpp"
 
-#include <BRepAdaptor_Surface.hxx>
+#include <BRepGProp_Face.hxx>
 #include <BRep_Tool.hxx>
 #include <Poly_Triangulation.hxx>
 #include <TopoDS.hxx>
 
 #include <cmath>
 
-#include "geometry/cad_solid.hpp"
 
 namespace hexlayer {
 namespace {
@@ -51,7 +50,7 @@ double triangulatedArea(const TopoDS_Shape& face) {
 
 std::vector<FaceSample> sampleFace(const TopoDS_Shape& shape, double spacing) {
   const TopoDS_Face face = TopoDS::Face(shape);
-  const BRepAdaptor_Surface surface(face);
+  BRepGProp_Face surface(face);  // evaluates points and normals with the face's orientation
   std::vector<FaceSample> samples;
   for (const Triangle2d& t : faceTriangles(face)) {
     const double area = area3d(t);
@@ -65,9 +64,11 @@ std::vector<FaceSample> sampleFace(const TopoDS_Shape& shape, double spacing) {
         FaceSample s;
         s.u = a * t.uv[0].X() + b * t.uv[1].X() + c * t.uv[2].X();
         s.v = a * t.uv[0].Y() + b * t.uv[1].Y() + c * t.uv[2].Y();
-        const gp_Pnt p = surface.Value(s.u, s.v);
+        gp_Pnt p;
+        gp_Vec n;
+        surface.Normal(s.u, s.v, p, n);
         s.point = Vec3(p.X(), p.Y(), p.Z());
-        s.normal = outwardNormal(face, s.u, s.v);
+        s.normal = n.Magnitude() > 0 ? Vec3(Vec3(n.X(), n.Y(), n.Z()).normalized()) : Vec3(Vec3::Zero());
         s.area = weight;
         if (s.normal.squaredNorm() > 0) samples.push_back(s);
       }

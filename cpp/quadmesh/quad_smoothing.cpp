@@ -21,7 +21,8 @@ double quadScaledJacobian(const std::array<Vec3, 4>& p) {
 
 namespace {
 
-constexpr double kGoodQuad = 0.97;  // quads below this scaled Jacobian get their nodes optimized
+constexpr double kGoodQuad = 0.97;                 // quads below this get their nodes optimized
+constexpr double kRimCornerAngle = 30 * M_PI / 180;  // a rim node turning more than this stays
 
 struct NodeQuads {
   std::vector<int> start, quads;  // quads around node i: quads[start[i] .. start[i+1])
@@ -40,16 +41,32 @@ NodeQuads quadsAroundNodes(const QuadMesh& q) {
   return nq;
 }
 
-std::vector<char> rimNodes(const QuadMesh& q) {
+// The two rim neighbours of every node on the rim (the boundary of the quad mesh); {-1, -1} for an
+// interior node, {-2, -2} for a rim node that must stay (a corner or a pinch).
+std::vector<std::array<int, 2>> rimNeighbours(const QuadMesh& q) {
   std::unordered_map<std::uint64_t, int> use;
   auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };
   for (const auto& quad : q.quads)
     for (int k = 0; k < 4; ++k) ++use[key(quad[k], quad[(k + 1) % 4])];
-  std::vector<char> rim(q.nodes.size(), 0);
+  std::vector<std::vector<int>> around(q.nodes.size());
   for (const auto& quad : q.quads)
     for (int k = 0; k < 4; ++k)
-      if (use[key(quad[k], quad[(k + 1) % 4])] == 1) rim[quad[k]] = rim[quad[(k + 1) % 4]] = 1;
+      if (int a = quad[k], b = quad[(k + 1) % 4]; use[key(a, b)] == 1) around[a].push_back(b), around[b].push_back(a);
+  std::vector<std::array<int, 2>> rim(q.nodes.size(), {-1, -1});
+  for (size_t i = 0; i < q.nodes.size(); ++i) {
+    if (around[i].empty()) continue;
+    rim[i] = {-2, -2};
+    if (around[i].size() != 2) continue;
+    const Vec3 a = (q.nodes[i] - q.nodes[around[i][0]]).normalized(), b = (q.nodes[around[i][1]] - q.nodes[i]).normalized();
+    if (a.dot(b) > std::cos(kRimCornerAngle)) rim[i] = {around[i][0], around[i][1]};
+  }
   return rim;
+}
+
+Vec3 closestOnSegment(const Vec3& a, const Vec3& b, const Vec3& p) {
+  const Vec3 ab = b - a;
+  const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+  return a + t * ab;
 }
 
 std::array<Vec3, 4> corners(const QuadMesh& q, int e, int moved, const Vec3& at) {
@@ -79,54 +96,75 @@ Vec3 centroidTarget(const QuadMesh& q, const NodeQuads& nq, int node) {
   return area > 0 ? Vec3(sum / area) : q.nodes[node];
 }
 
-// Pattern search in the tangent plane: tries steps in eight directions, keeps the one that raises
-// the worst quad around the node most, halves the step when none does; the result is projected
-// back onto the chordal surface and kept if the worst quad is still better than before.
-void improveWorst(QuadMesh& q, const NodeQuads& nq, const ChordalLocator& chordal, int node) {
+// Pattern search: tries steps along the given directions, keeps the one that raises the worst quad
+// around the node most, halves the step when none does; the end point is put back on the surface
+// (or the rim) by `project` and kept if the worst quad around the node is then better than before.
+template <class Project>
+void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<Vec3>& directions, Project project) {
   const double before = worstAround(q, nq, node, q.nodes[node]);
   double best = before, step = 0;
-  Vec3 n = Vec3::Zero();
-  for (int k = nq.start[node]; k < nq.start[node + 1]; ++k) {
-    const auto p = corners(q, nq.quads[k], -1, Vec3::Zero());
-    n += (p[2] - p[0]).cross(p[3] - p[1]);
-    for (const Vec3& c : p) step = std::max(step, (c - q.nodes[node]).norm());
-  }
-  if (n.norm() == 0) return;
-  const Vec3 t1 = n.unitOrthogonal(), t2 = n.normalized().cross(t1);
+  for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
+    for (int c : q.quads[nq.quads[k]]) step = std::max(step, (q.nodes[c] - q.nodes[node]).norm());
+  const double smallest = 1e-3 * step;
   Vec3 at = q.nodes[node];
-  for (step *= 0.2; step > 1e-3 * (q.nodes[node] - at).norm() + 1e-12 && step > 0;) {
+  for (step *= 0.2; step > smallest;) {
     Vec3 bestAt = at;
-    for (int d = 0; d < 8; ++d) {
-      const double a = d * M_PI / 4;
-      const Vec3 trial = at + step * (std::cos(a) * t1 + std::sin(a) * t2);
+    for (const Vec3& d : directions) {
+      const Vec3 trial = at + step * d;
       const double w = worstAround(q, nq, node, trial);
       if (w > best + 1e-9) best = w, bestAt = trial;
     }
     if (bestAt == at) step *= 0.5;
-    if (step < 1e-3 * std::sqrt(n.norm())) break;
     at = bestAt;
   }
-  const Vec3 onSurface = chordal.locate(at).point;
-  if (worstAround(q, nq, node, onSurface) > before) q.nodes[node] = onSurface;
+  const Vec3 placed = project(at);
+  if (worstAround(q, nq, node, placed) > before) q.nodes[node] = placed;
+}
+
+// Eight directions in the tangent plane of the quads around an interior node.
+std::vector<Vec3> tangentDirections(const QuadMesh& q, const NodeQuads& nq, int node) {
+  Vec3 n = Vec3::Zero();
+  for (int k = nq.start[node]; k < nq.start[node + 1]; ++k) {
+    const auto p = corners(q, nq.quads[k], -1, Vec3::Zero());
+    n += (p[2] - p[0]).cross(p[3] - p[1]);
+  }
+  if (n.norm() == 0) return {};
+  const Vec3 t1 = n.unitOrthogonal(), t2 = n.normalized().cross(t1);
+  std::vector<Vec3> dirs;
+  for (int d = 0; d < 8; ++d) dirs.push_back(std::cos(d * M_PI / 4) * t1 + std::sin(d * M_PI / 4) * t2);
+  return dirs;
 }
 
 }  // namespace
 
 void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations) {
   const NodeQuads nq = quadsAroundNodes(q);
-  const std::vector<char> rim = rimNodes(q);
+  const std::vector<std::array<int, 2>> rim = rimNeighbours(q);
+  const std::vector<Vec3> rimStart = q.nodes;  // rim nodes slide along the rim as Gmsh placed it
   for (int it = 0; it < iterations; ++it)
     for (size_t i = 0; i < q.nodes.size(); ++i) {
-      if (rim[i]) continue;
+      if (rim[i][0] != -1) continue;
       const int node = static_cast<int>(i);
       const double before = worstAround(q, nq, node, q.nodes[i]);
       const Vec3 target = chordal.locate(centroidTarget(q, nq, node)).point;
       if (worstAround(q, nq, node, target) >= std::min(before, 0.999)) q.nodes[i] = target;
     }
-  // Then the nodes of the worst quads are optimized for the worst quad around them.
+  // Then the nodes of poor quads are moved to make the worst quad around them as good as can be.
   for (int it = 0; it < iterations; ++it)
-    for (size_t i = 0; i < q.nodes.size(); ++i)
-      if (!rim[i] && worstAround(q, nq, static_cast<int>(i), q.nodes[i]) < kGoodQuad) improveWorst(q, nq, chordal, static_cast<int>(i));
+    for (size_t i = 0; i < q.nodes.size(); ++i) {
+      const int node = static_cast<int>(i);
+      if (rim[i][0] == -2 || worstAround(q, nq, node, q.nodes[i]) >= kGoodQuad) continue;
+      if (rim[i][0] == -1) {
+        improveWorst(q, nq, node, tangentDirections(q, nq, node), [&](const Vec3& p) { return chordal.locate(p).point; });
+        continue;
+      }
+      const Vec3 a = rimStart[rim[i][0]], b = rimStart[i], c = rimStart[rim[i][1]];
+      const Vec3 t = (c - a).normalized();
+      improveWorst(q, nq, node, {t, -t}, [&](const Vec3& p) {
+        const Vec3 x = closestOnSegment(a, b, p), y = closestOnSegment(b, c, p);
+        return (x - p).squaredNorm() < (y - p).squaredNorm() ? x : y;
+      });
+    }
 }
 
 }  // namespace hexlayer
