@@ -1,0 +1,95 @@
+"""End-to-end: mesh the bundled sample sheets with the CLI and check the mesh a user gets.
+
+Run by CTest as: /usr/bin/python3 test_mesh_samples.py --hexlayer PATH --source DIR
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+ARGS = None
+FLAT_AND_BENT = ["plate", "plate_holes", "cantilever", "lbracket"]
+
+
+def run_hexlayer(*args):
+    return subprocess.run([ARGS.hexlayer, *args], capture_output=True, text=True, timeout=600)
+
+
+class MeshSamples(unittest.TestCase):
+    def mesh(self, part, out, *extra):
+        step = os.path.join(ARGS.source, "Resources", "samples", part + ".step")
+        report = out + ".json"
+        done = run_hexlayer("mesh", step, "-o", out, "--report", report, "--quiet", *extra)
+        self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+        with open(report) as f:
+            return json.load(f)
+
+    def test_quality_volume_and_watertight_boundary(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            for part in FLAT_AND_BENT:
+                for layers in (2, 3, 4):
+                    with self.subTest(part=part, layers=layers):
+                        r = self.mesh(part, os.path.join(tmp, f"{part}{layers}.vtu"), "--layers", str(layers))
+                        self.assertEqual(r["layers"], layers)
+                        self.assertEqual(r["hexes"] % layers, 0)
+                        self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.9)
+                        self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
+                        self.assertLess(abs(r["volume"]["relative_error"]), 0.03)
+                        self.assertTrue(r["boundary"]["watertight"])
+                        self.assertEqual(r["boundary"]["open_edges"], 0)
+                        self.assertGreater(r["chordal_surface"]["triangles"] + r["chordal_surface"]["quads"], 0)
+
+    def test_vtu_reads_back_through_meshio(self):
+        import meshio
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "plate_holes.vtu")
+            r = self.mesh("plate_holes", out)
+            m = meshio.read(out)
+            self.assertEqual(len(m.points), r["nodes"])
+            self.assertEqual([c.type for c in m.cells], ["hexahedron"])
+            self.assertEqual(len(m.cells[0].data), r["hexes"])
+
+    def test_msh_reads_back_through_gmsh(self):
+        import gmsh
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "lbracket.msh")
+            r = self.mesh("lbracket", out)
+            gmsh.initialize()
+            try:
+                gmsh.option.setNumber("General.Terminal", 0)
+                gmsh.open(out)
+                tags, _, _ = gmsh.model.mesh.getNodes()
+                self.assertEqual(len(tags), r["nodes"])
+                hexes, _ = gmsh.model.mesh.getElementsByType(5)
+                self.assertEqual(len(hexes), r["hexes"])
+                names = {gmsh.model.getPhysicalName(d, t) for d, t in gmsh.model.getPhysicalGroups()}
+                self.assertTrue({"top", "bottom", "rim", "solid"} <= names, names)
+            finally:
+                gmsh.finalize()
+
+    def test_not_thin_part_is_refused_with_exit_4(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            step = os.path.join(ARGS.source, "Resources", "samples", "thick_block.step")
+            done = run_hexlayer("mesh", step, "-o", os.path.join(tmp, "x.inp"))
+            self.assertEqual(done.returncode, 4)
+            self.assertIn("not a thin section", done.stderr)
+
+    def test_bad_usage_and_missing_file(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            step = os.path.join(ARGS.source, "Resources", "samples", "plate.step")
+            self.assertEqual(run_hexlayer("mesh", step, "-o", os.path.join(tmp, "x.inp"), "--layers", "0").returncode, 2)
+            self.assertEqual(run_hexlayer("mesh", step, "-o", os.path.join(tmp, "x.stl")).returncode, 2)
+            missing = run_hexlayer("mesh", os.path.join(tmp, "none.step"), "-o", os.path.join(tmp, "x.inp"))
+            self.assertEqual(missing.returncode, 3)
+            self.assertIn("does not exist", missing.stderr)
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--hexlayer", required=True)
+    parser.add_argument("--source", required=True)
+    ARGS, rest = parser.parse_known_args()
+    unittest.main(argv=[sys.argv[0], *rest], verbosity=2)
