@@ -31,17 +31,22 @@ Eigen::Vector2d inverseBilinear(const std::array<Vec3, 4>& p, const Vec3& x) {
   return uv;
 }
 
-ChordalLocator::ChordalLocator(const ChordalSurface& chordal) : chordal_(chordal), centroids_(1.0) {
-  std::vector<Vec3> centre(chordal.facets.size());
+ChordalLocator::ChordalLocator(const ChordalSurface& chordal) : chordal_(chordal), facets_(1.0) {
+  std::vector<Vec3> lo(chordal.facets.size()), hi(chordal.facets.size());
+  std::vector<double> extent(chordal.facets.size());
   for (size_t f = 0; f < chordal.facets.size(); ++f) {
     const auto& fc = chordal.facets[f];
-    const int n = fc[3] < 0 ? 3 : 4;
-    centre[f].setZero();
-    for (int k = 0; k < n; ++k) centre[f] += chordal.vertices[fc[k]] / n;
-    for (int k = 0; k < n; ++k) reach_ = std::max(reach_, (chordal.vertices[fc[k]] - centre[f]).norm());
+    lo[f] = hi[f] = chordal.vertices[fc[0]];
+    for (int k = 1; k < (fc[3] < 0 ? 3 : 4); ++k)
+      lo[f] = lo[f].cwiseMin(chordal.vertices[fc[k]]), hi[f] = hi[f].cwiseMax(chordal.vertices[fc[k]]);
+    extent[f] = (hi[f] - lo[f]).maxCoeff();
   }
-  centroids_ = PointGrid(std::max(reach_, 1e-12));
-  for (size_t f = 0; f < centre.size(); ++f) centroids_.insert(static_cast<int>(f), centre[f]);
+  // Cells as large as a typical facet: a few facets per cell, a long sliver in a few more cells.
+  std::vector<double> sorted = extent;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+
+  facets_ = BoxGrid(sorted.empty() ? 1.0 : std::max(sorted[sorted.size() / 2], 1e-12));
+  for (size_t f = 0; f < chordal.facets.size(); ++f) facets_.insert(static_cast<int>(f), lo[f], hi[f]);
 }
 
 ChordalPoint ChordalLocator::project(int facet, const Vec3& p) const {
@@ -62,15 +67,8 @@ ChordalPoint ChordalLocator::project(int facet, const Vec3& p) const {
 }
 
 ChordalPoint ChordalLocator::locate(const Vec3& p) const {
-  ChordalPoint best;
-  double bestDistance = std::numeric_limits<double>::infinity();
-  for (double radius = 1.01 * reach_; best.facet < 0; radius *= 2)
-    centroids_.forEachNear(p, radius, [&](int f, const Vec3&) {
-      const ChordalPoint hit = project(f, p);
-      const double d = (hit.point - p).squaredNorm();
-      if (d < bestDistance) best = hit, bestDistance = d;
-    });
-  return best;
+  const int f = facets_.nearest(p, [&](int id) { return (project(id, p).point - p).squaredNorm(); });
+  return f < 0 ? ChordalPoint{} : project(f, p);
 }
 
 }  // namespace hexlayer

@@ -4,7 +4,7 @@
 #include <array>
 
 #include "chordal/chordal_surface.hpp"
-#include "core/point_grid.hpp"
+#include "core/box_grid.hpp"
 #include "core/types.hpp"
 
 namespace hexlayer {
@@ -32,8 +32,7 @@ class ChordalLocator {
  private:
   ChordalPoint project(int facet, const Vec3& p) const;
   const ChordalSurface& chordal_;
-  PointGrid centroids_;
-  double reach_ = 0;  // largest distance from a facet's centroid to its corners
+  BoxGrid facets_;  // facets by bounding box
 };
 
 }  // namespace hexlayer

@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   mesh->add_option("input", c.input, "CAD file: .step/.stp, .iges/.igs or .brep")->required();
   mesh->add_option("-o,--output", c.output, "Output mesh: .inp (CalculiX), .vtu (VTK) or .msh (Gmsh 4.1)")->required();
   mesh->add_option("--layers", c.options.layers, "Hex layers through the thickness (default 2)");
-  mesh->add_option("--size", c.options.size, "Quad edge length on the chordal surface (default: 2 x wall thickness)");
+  mesh->add_option("--size", c.options.size, "Quad edge length on the chordal surface (default: the wall thickness)");
   mesh->add_option("--report", c.report, "Write a JSON report of every stage");
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
   try {

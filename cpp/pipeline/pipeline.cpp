@@ -20,7 +20,7 @@ namespace {
 
 constexpr int kMaxLayers = 64;
 constexpr int kSmoothingIterations = 10;
-constexpr double kDefaultSizeOverThickness = 2.0;
+constexpr double kDefaultSizeOverThickness = 1.0;
 constexpr double kMaxAutoQuads = 250000;
 
 // Runs one stage, records its wall time in report["timings_s"][name] and reports progress.
@@ -46,7 +46,7 @@ class StageClock {
   const MeshOptions& options_;
 };
 
-// Default quad size: twice the wall thickness, coarser if the part would need too many quads.
+// Default quad size: the wall thickness (bending-accurate C3D8I with 2 layers), coarser if the part would need too many quads.
 double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalArea, nlohmann::json& report) {
   if (o.size > 0) {
     report["size_source"] = "given";
@@ -54,7 +54,7 @@ double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalAr
   }
   double size = kDefaultSizeOverThickness * sides.thickness;
   size = std::max(size, std::sqrt(chordalArea / kMaxAutoQuads));
-  report["size_source"] = "auto: 2 x wall thickness (at most " + std::to_string(int(kMaxAutoQuads)) + " quads)";
+  report["size_source"] = "auto: wall thickness (at most " + std::to_string(int(kMaxAutoQuads)) + " quads)";
   return size;
 }
 
@@ -143,7 +143,9 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   r["size"] = size;
   const ChordalLocator locator(chordal);
   const QuadMesh quads = clock.run("quad_mesh", [&] {
-    QuadMesh q = meshChordalSurface(chordal, QuadMeshOptions{size});
+    QuadMeshOptions qo;
+    qo.size = size;
+    QuadMesh q = meshChordalSurface(locator, qo);
     smoothQuadMesh(q, locator, kSmoothingIterations);
     return q;
   });

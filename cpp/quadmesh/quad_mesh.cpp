@@ -4,12 +4,19 @@
 
 #include <cmath>
 #include <map>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "quadmesh/quad_smoothing.hpp"
 
 namespace hexlayer {
 namespace {
+
+// Gmsh's nodes stray from the chordal triangles by up to half a quad in strongly bent patches (its
+// smoothing and recombination move them in 3D); farther than this x size means a failed reparametrization.
+constexpr double kOffSurface = 1.0;
 
 // Gmsh is one process-wide session: open it for this stage only, and always close it.
 struct GmshSession {
@@ -42,17 +49,18 @@ void addChordalTriangles(const ChordalSurface& chordal) {
 }
 
 void setQuadOptions(const QuadMeshOptions& o) {
-  // The templates halve every edge (§6.2: "the initial quad dominant mesh is made coarser").
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 2 * o.size);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 2 * o.size);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", o.size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", o.size);
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-  // Frontal-Delaunay. (Frontal-Delaunay for quads, algorithm 8, crashes in Debian's Gmsh 4.8.4.)
+  // Frontal-Delaunay triangles (Frontal-Delaunay for quads, algorithm 8, crashes in Debian's Gmsh 4.8.4),
+  // then Blossom full-quad recombination: all quads without the §6.2 templates, which in Gmsh 4.8 leave
+  // far more distorted quads on a reparametrized discrete surface.
   gmsh::option::setNumber("Mesh.Algorithm", 6);
   gmsh::option::setNumber("Mesh.RecombineAll", 1);
-  gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);  // blossom: quad-dominant
-  gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);    // all quads by templates (§6.2)
+  gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 2);
+  gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
   gmsh::option::setNumber("Mesh.Smoothing", 5);
   gmsh::option::setNumber("Mesh.RandomFactor", 1e-9);
 }
@@ -62,44 +70,83 @@ QuadMesh collectQuads() {
   gmsh::model::mesh::getElementsByType(3, tags, nodeTags);
   QuadMesh q;
   std::map<std::size_t, int> index;  // Gmsh node tag -> our node id, in order of first use
-  std::vector<std::size_t> order;
   for (std::size_t t : nodeTags)
-    if (index.emplace(t, static_cast<int>(order.size())).second) order.push_back(t);
-  std::vector<std::size_t> allTags;
-  std::vector<double> coord, param;
-  gmsh::model::mesh::getNodes(allTags, coord, param, -1, -1, true, false);
-  q.nodes.resize(order.size());
-  for (size_t i = 0; i < allTags.size(); ++i)
-    if (const auto it = index.find(allTags[i]); it != index.end())
-      q.nodes[it->second] = Vec3(coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]);
+    if (index.emplace(t, static_cast<int>(q.nodes.size())).second) {
+      std::vector<double> coord, param;
+      gmsh::model::mesh::getNode(t, coord, param);
+      q.nodes.emplace_back(coord[0], coord[1], coord[2]);
+    }
   q.quads.resize(tags.size());
   for (size_t e = 0; e < tags.size(); ++e)
     for (int k = 0; k < 4; ++k) q.quads[e][k] = index.at(nodeTags[4 * e + k]);
   return q;
 }
 
-}  // namespace
-
-QuadMesh meshChordalSurface(const ChordalSurface& chordal, const QuadMeshOptions& o) {
-  if (!(o.size > 0)) throw usageError("quad size must be positive");
+// One Gmsh run: split the chordal surface into patches at `featureAngle`, reparametrize, mesh.
+QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, double featureAngle) {
   GmshSession session;
   gmsh::model::add("chordal_surface");
   addChordalTriangles(chordal);
-  QuadMesh q;
   try {
-    const double angle = o.featureAngle * M_PI / 180.0;
-    gmsh::model::mesh::classifySurfaces(angle, true, true, angle);  // split into patches Gmsh can parametrize
+    const double angle = featureAngle * M_PI / 180.0;
+    gmsh::model::mesh::classifySurfaces(angle, true, true, angle);  // patches Gmsh can parametrize
     gmsh::model::mesh::createGeometry();
     setQuadOptions(o);
     gmsh::model::mesh::generate(2);
-    q = collectQuads();
+    return collectQuads();
   } catch (const std::exception& e) {
     throw geometryError(std::string("Gmsh could not quad-mesh the chordal surface: ") + e.what());
   } catch (...) {
     throw geometryError("Gmsh could not quad-mesh the chordal surface");
   }
-  if (q.quads.empty()) throw geometryError("Gmsh produced no quads on the chordal surface");
-  return q;
+}
+
+// How far the quad mesh is from the chordal surface it should lie on (a failed reparametrization
+// puts nodes far away), and its worst quad.
+struct QuadCheck {
+  double worstQuad = -1;
+  double farthest = 0;
+  Vec3 farthestNode = Vec3::Zero();
+};
+
+QuadCheck checkQuads(const QuadMesh& q, const ChordalLocator& chordal) {
+  QuadCheck c;
+  if (q.quads.empty()) return c;
+  c.worstQuad = 1;
+  for (const auto& quad : q.quads)
+    c.worstQuad = std::min(c.worstQuad, quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]}));
+  for (const Vec3& p : q.nodes) {
+    const double d = p.allFinite() ? (chordal.locate(p).point - p).norm() : std::numeric_limits<double>::infinity();
+    if (d > c.farthest) c.farthest = d, c.farthestNode = p;
+  }
+  return c;
+}
+
+}  // namespace
+
+QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+  if (!(o.size > 0)) throw usageError("quad size must be positive");
+  QuadMesh best;
+  QuadCheck bestCheck;
+  Vec3 failedAt = Vec3::Zero();
+  for (const double angle : o.featureAngles) {
+    QuadMesh q = gmshQuads(chordal.surface(), o, angle);
+    const QuadCheck c = checkQuads(q, chordal);
+    if (q.quads.empty() || !(c.farthest < kOffSurface * o.size)) {
+      failedAt = c.farthestNode;
+      continue;
+    }
+    if (c.worstQuad > bestCheck.worstQuad) best = std::move(q), bestCheck = c;
+    if (bestCheck.worstQuad >= o.acceptableQuad) break;
+  }
+  if (best.quads.empty()) {
+    std::ostringstream msg;
+    msg << "Gmsh could not quad-mesh the chordal surface: its reparametrization failed near (" << failedAt.x() << ", "
+        << failedAt.y() << ", " << failedAt.z() << ")";
+    throw geometryError(msg.str());
+  }
+  for (Vec3& p : best.nodes) p = chordal.locate(p).point;  // back onto the chordal surface
+  return best;
 }
 
 }  // namespace hexlayer

@@ -4,7 +4,7 @@
 #include <array>
 #include <vector>
 
-#include "chordal/chordal_surface.hpp"
+#include "chordal/chordal_locator.hpp"
 #include "core/types.hpp"
 
 namespace hexlayer {
@@ -15,12 +15,17 @@ struct QuadMesh {
 };
 
 struct QuadMeshOptions {
-  double size = 0;             // target edge length (uniform sizing)
-  double featureAngle = 40.0;  // degrees: chordal edges sharper than this become curves
+  double size = 0;  // target edge length (uniform sizing)
+  // Degrees: chordal edges sharper than this split the surface into patches. Gmsh's reparametrization
+  // of a patch can fail; the next angle is tried then, or when the worst quad is below acceptableQuad.
+  std::vector<double> featureAngles{40.0, 60.0, 25.0};
+  double acceptableQuad = 0.2;  // quad scaled Jacobian
 };
 
 // Meshes the chordal surface with quads only. Holes and the outer rim are the boundary curves of
-// the discrete surface, so they are kept. Throws geometryError if Gmsh cannot mesh the surface.
-QuadMesh meshChordalSurface(const ChordalSurface& chordal, const QuadMeshOptions& options);
+// the discrete surface, so they are kept. Of the tries (one per feature angle) the one whose nodes
+// all lie on the chordal surface and whose worst quad is best is kept. Throws geometryError if
+// Gmsh cannot mesh the surface.
+QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& options);
 
 }  // namespace hexlayer
