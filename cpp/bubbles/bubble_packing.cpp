@@ -187,16 +187,26 @@ void relaxFace(const TopoDS_Face& face, double d, const Packing& pack, std::vect
   bubbles.swap(moved);
 }
 
+void addFaceNode(const Vec3& point, int face, Side side, double d, Packing& pack) {
+  SurfaceNode n;
+  n.point = point;
+  n.side = side;
+  n.face = face;
+  pack.add(n, d);
+}
+
 void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<double>& faceDiameter,
                const BubbleOptions& o, Packing& pack) {
   for (int f = 0; f < cad.faces.Extent(); ++f) {
-    if (sides.faces[f].side == Side::Lateral) continue;
+    const Side side = sides.faces[f].side;
+    if (side == Side::Lateral) continue;
     const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
     const double d = faceDiameter[f];
-    std::vector<FaceBubble> bubbles = seedFace(sampleFace(face, 0.2 * d), d, pack);
+    const std::vector<FaceSample> candidates = sampleFace(face, 0.2 * d);
+    std::vector<FaceBubble> bubbles = seedFace(candidates, d, pack);
     BRepTopAdaptor_FClass2d inside(face, 1e-9);
     for (int step = 0; step < o.relaxationSteps; ++step) relaxFace(face, d, pack, bubbles, inside);
-    // Population control: a bubble that ended too close to another is removed.
+    // Population control: a bubble that ended too close to another is removed ...
     PointGrid own(d);
     for (size_t i = 0; i < bubbles.size(); ++i) {
       bool crowded = false;
@@ -206,12 +216,11 @@ void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<do
       own.forEachNear(bubbles[i].point, 0.5 * d, [&](int, const Vec3&) { crowded = true; });
       if (crowded) continue;
       own.insert(static_cast<int>(i), bubbles[i].point);
-      SurfaceNode n;
-      n.point = bubbles[i].point;
-      n.side = sides.faces[f].side;
-      n.face = f;
-      pack.add(n, d);
+      addFaceNode(bubbles[i].point, f, side, d, pack);
     }
+    // ... and a gap the relaxation opened (bubbles pushed off the face) gets new bubbles: a hole in
+    // the nodes would let the Delaunay tets bridge it through the air instead of spanning the wall.
+    for (const FaceBubble& b : seedFace(candidates, d, pack)) addFaceNode(b.point, f, side, d, pack);
   }
 }
 

@@ -6,14 +6,26 @@
 namespace hexlayer {
 
 Eigen::Vector3d triangleWeights(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
-  // Solve p ≈ a + s (b - a) + t (c - a) in the least-squares sense, then clamp into the triangle.
+  // The projection of p onto the triangle's plane, p ≈ a + s (b - a) + t (c - a), if it is inside.
   Eigen::Matrix<double, 3, 2> E;
   E << b - a, c - a;
-  Eigen::Vector2d st = (E.transpose() * E).ldlt().solve(E.transpose() * (p - a));
-  if (!st.allFinite()) st.setZero();
-  st = st.cwiseMax(0.0);
-  if (st.sum() > 1) st /= st.sum();
-  return {1 - st.sum(), st.x(), st.y()};  // (w_a, w_b, w_c) = (A_a, A_b, A_c) / A
+  const Eigen::Vector2d st = (E.transpose() * E).ldlt().solve(E.transpose() * (p - a));
+  if (st.allFinite() && st.minCoeff() >= 0 && st.sum() <= 1) return {1 - st.sum(), st.x(), st.y()};
+  // Otherwise the nearest point lies on an edge: the nearest of the three edges' nearest points.
+  const std::array<Vec3, 3> corner{a, b, c};
+  Eigen::Vector3d best(1, 0, 0);
+  double bestD2 = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 &x = corner[k], &y = corner[(k + 1) % 3];
+    const double len2 = (y - x).squaredNorm();
+    const double u = len2 > 0 ? std::clamp((p - x).dot(y - x) / len2, 0.0, 1.0) : 0.0;
+    if (const double d2 = (x + u * (y - x) - p).squaredNorm(); d2 < bestD2) {
+      bestD2 = d2;
+      best.setZero();
+      best[k] = 1 - u, best[(k + 1) % 3] = u;  // Eq. 4-5 on that edge
+    }
+  }
+  return best;  // (w_a, w_b, w_c) = (A_a, A_b, A_c) / A of the nearest point
 }
 
 Eigen::Vector2d inverseBilinear(const std::array<Vec3, 4>& p, const Vec3& x) {

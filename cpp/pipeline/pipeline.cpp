@@ -146,10 +146,12 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
     QuadMeshOptions qo;
     qo.size = size;
     QuadMesh q = meshChordalSurface(locator, qo);
+    r["quad_mesh"]["doublets_removed"] = removeDoublets(q);
     smoothQuadMesh(q, locator, kSmoothingIterations);
     return q;
   });
-  r["quad_mesh"] = {{"quads", quads.quads.size()}, {"nodes", quads.nodes.size()}};
+  r["quad_mesh"]["quads"] = quads.quads.size();
+  r["quad_mesh"]["nodes"] = quads.nodes.size();
   result.mesh = clock.run("sweep", [&] { return sweepQuads(quads, locator, o.layers); });
   clock.run("quality", [&] {
     reportQuality(result.mesh, cad.volume, r);

@@ -22,6 +22,7 @@ double quadScaledJacobian(const std::array<Vec3, 4>& p) {
 namespace {
 
 constexpr double kGoodQuad = 0.97;                 // quads below this get their nodes optimized
+constexpr double kMeanWeight = 0.5;                // weight of the mean quad against the worst one
 constexpr double kRimCornerAngle = 30 * M_PI / 180;  // a rim node turning more than this stays
 
 struct NodeQuads {
@@ -83,6 +84,16 @@ double worstAround(const QuadMesh& q, const NodeQuads& nq, int node, const Vec3&
   return worst;
 }
 
+// What the node optimization maximizes: the worst quad around the node, then their mean.
+double scoreAround(const QuadMesh& q, const NodeQuads& nq, int node, const Vec3& at) {
+  double worst = 1, sum = 0;
+  for (int k = nq.start[node]; k < nq.start[node + 1]; ++k) {
+    const double sj = quadScaledJacobian(corners(q, nq.quads[k], node, at));
+    worst = std::min(worst, sj), sum += sj;
+  }
+  return worst + kMeanWeight * sum / std::max(1, nq.start[node + 1] - nq.start[node]);
+}
+
 // Area-weighted mean of the centroids of the quads around the node.
 Vec3 centroidTarget(const QuadMesh& q, const NodeQuads& nq, int node) {
   Vec3 sum = Vec3::Zero();
@@ -101,7 +112,7 @@ Vec3 centroidTarget(const QuadMesh& q, const NodeQuads& nq, int node) {
 // (or the rim) by `project` and kept if the worst quad around the node is then better than before.
 template <class Project>
 void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<Vec3>& directions, Project project) {
-  const double before = worstAround(q, nq, node, q.nodes[node]);
+  const double before = scoreAround(q, nq, node, q.nodes[node]);
   double best = before, step = 0;
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
     for (int c : q.quads[nq.quads[k]]) step = std::max(step, (q.nodes[c] - q.nodes[node]).norm());
@@ -111,14 +122,14 @@ void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<
     Vec3 bestAt = at;
     for (const Vec3& d : directions) {
       const Vec3 trial = at + step * d;
-      const double w = worstAround(q, nq, node, trial);
+      const double w = scoreAround(q, nq, node, trial);
       if (w > best + 1e-9) best = w, bestAt = trial;
     }
     if (bestAt == at) step *= 0.5;
     at = bestAt;
   }
   const Vec3 placed = project(at);
-  if (worstAround(q, nq, node, placed) > before) q.nodes[node] = placed;
+  if (scoreAround(q, nq, node, placed) > before) q.nodes[node] = placed;
 }
 
 // Eight directions in the tangent plane of the quads around an interior node.
@@ -135,7 +146,56 @@ std::vector<Vec3> tangentDirections(const QuadMesh& q, const NodeQuads& nq, int 
   return dirs;
 }
 
+// Drops the nodes no quad uses and renumbers the rest in order.
+void dropUnusedNodes(QuadMesh& q) {
+  std::vector<int> newIndex(q.nodes.size(), -1);
+  std::vector<Vec3> kept;
+  for (const auto& quad : q.quads)
+    for (int v : quad) newIndex[v] = -2;  // used
+  for (size_t i = 0; i < q.nodes.size(); ++i)
+    if (newIndex[i] == -2) newIndex[i] = static_cast<int>(kept.size()), kept.push_back(q.nodes[i]);
+  for (auto& quad : q.quads)
+    for (int& v : quad) v = newIndex[v];
+  q.nodes.swap(kept);
+}
+
+// Index of v in the quad, -1 if absent.
+int cornerOf(const std::array<int, 4>& quad, int v) {
+  for (int k = 0; k < 4; ++k)
+    if (quad[k] == v) return k;
+  return -1;
+}
+
 }  // namespace
+
+int removeDoublets(QuadMesh& q) {
+  int removed = 0;
+  for (bool again = true; again;) {
+    again = false;
+    const NodeQuads nq = quadsAroundNodes(q);
+    const std::vector<std::array<int, 2>> rim = rimNeighbours(q);
+    std::vector<char> dead(q.quads.size(), 0);
+    for (size_t n = 0; n < q.nodes.size(); ++n) {
+      if (rim[n][0] != -1 || nq.start[n + 1] - nq.start[n] != 2) continue;
+      const int A = nq.quads[nq.start[n]], B = nq.quads[nq.start[n] + 1];
+      if (dead[A] || dead[B]) continue;
+      // A = (n, a, x, b) and B = (n, b, y, a) share the edges n-a and n-b: they become (a, x, b, y).
+      const int ka = cornerOf(q.quads[A], static_cast<int>(n)), kb = cornerOf(q.quads[B], static_cast<int>(n));
+      const int a = q.quads[A][(ka + 1) % 4], x = q.quads[A][(ka + 2) % 4], b = q.quads[A][(ka + 3) % 4];
+      const int y = q.quads[B][(kb + 2) % 4];
+      if (q.quads[B][(kb + 1) % 4] != b || q.quads[B][(kb + 3) % 4] != a) continue;
+      q.quads[A] = {a, x, b, y};
+      dead[B] = 1;
+      ++removed, again = true;
+    }
+    std::vector<std::array<int, 4>> alive;
+    for (size_t e = 0; e < q.quads.size(); ++e)
+      if (!dead[e]) alive.push_back(q.quads[e]);
+    q.quads.swap(alive);
+  }
+  dropUnusedNodes(q);
+  return removed;
+}
 
 void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations) {
   const NodeQuads nq = quadsAroundNodes(q);

@@ -11,6 +11,11 @@ namespace hexlayer {
 // normal through the diagonals.
 double quadScaledJacobian(const std::array<Vec3, 4>& corners);
 
+// Removes the doublets: an interior node in just two quads, which share two of its edges, gives
+// two quads with a corner near 180 degrees whatever the smoothing does; they are merged into one
+// and the node dropped. Returns how many were removed.
+int removeDoublets(QuadMesh& quads);
+
 // Smooths the interior nodes (the rim nodes stay where Gmsh put them). Deterministic.
 void smoothQuadMesh(QuadMesh& quads, const ChordalLocator& chordal, int iterations);
 

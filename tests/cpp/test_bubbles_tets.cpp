@@ -1,0 +1,275 @@
+// Bubbles and tets (paper §3-4, §5.4): the bubble force, TetGen's Delaunay tets and their filter,
+// the wall sides of a thin box, and bubble nodes that land on the top and bottom faces only.
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <GProp_GProps.hxx>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "bubbles/bubble_packing.hpp"
+#include "chordal/chordal_surface.hpp"
+#include "core/error.hpp"
+#include "geometry/cad_solid.hpp"
+#include "geometry/wall_sides.hpp"
+#include "tets/tet_mesh.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+double tetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return (b - a).dot((c - a).cross(d - a)) / 6.0;
+}
+
+// Volume of the convex hull of points in general position (no 4 coplanar on the hull), by brute
+// force: a triangle is a hull face when all other points are on one side of its plane.
+double convexHullVolume(const std::vector<Vec3>& p) {
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& x : p) centre += x / p.size();
+  double volume = 0;
+  const size_t n = p.size();
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j)
+      for (size_t k = j + 1; k < n; ++k) {
+        const Vec3 normal = (p[j] - p[i]).cross(p[k] - p[i]);
+        int above = 0, below = 0;
+        for (size_t l = 0; l < n; ++l) {
+          if (l == i || l == j || l == k) continue;
+          const double s = normal.dot(p[l] - p[i]);
+          above += s > 0, below += s < 0;
+        }
+        if (above == 0 || below == 0) volume += std::abs(tetVolume(centre, p[i], p[j], p[k]));
+      }
+  return volume;
+}
+
+CadSolid box(double dx, double dy, double dz) {
+  return prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), dx, dy, dz).Solid());
+}
+
+Vec3 faceCentre(const CadSolid& cad, int f) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(cad.faces(f + 1), props);
+  const gp_Pnt c = props.CentreOfMass();
+  return {c.X(), c.Y(), c.Z()};
+}
+
+SurfaceNode node(const Vec3& p, Side side) {
+  SurfaceNode n;
+  n.point = p;
+  n.side = side;
+  return n;
+}
+
+}  // namespace
+
+// Shimada's force f(w) = 1.25 w^3 - 2.375 w^2 + 1.125 on [0, 1.5], 0 beyond.
+TEST(Bubbles, BubbleForceRepelsBelowStableDistanceAndAttractsUpTo1Point5) {
+  EXPECT_DOUBLE_EQ(bubbleForce(0.0), 1.125);
+  EXPECT_NEAR(bubbleForce(1.0), 0.0, 1e-15);
+  EXPECT_NEAR(bubbleForce(1.5), 0.0, 1e-14) << "continuous where it is cut off";
+  EXPECT_NEAR(bubbleForce(0.5), 1.25 * 0.125 - 2.375 * 0.25 + 1.125, 1e-15);
+  for (double w : {0.1, 0.4, 0.7, 0.95, 0.999}) EXPECT_GT(bubbleForce(w), 0) << "w = " << w;
+  for (double w : {1.001, 1.1, 1.25, 1.4, 1.499}) EXPECT_LT(bubbleForce(w), 0) << "w = " << w;
+  EXPECT_NEAR(bubbleForce(1.25), 1.25 * 1.953125 - 2.375 * 1.5625 + 1.125, 1e-15);
+  for (double w : {1.5001, 1.6, 2.0, 10.0}) EXPECT_EQ(bubbleForce(w), 0.0) << "w = " << w;
+  // Repulsion weakens monotonically up to the stable distance.
+  for (double w = 0.05; w <= 1.0; w += 0.05) EXPECT_LT(bubbleForce(w), bubbleForce(w - 0.05)) << "w = " << w;
+}
+
+// TetGen tetrahedralizes the convex hull of the nodes: 8 corners of a perturbed box.
+TEST(Tets, DelaunayTetsFillTheConvexHull) {
+  const std::vector<Vec3> corners = {Vec3(0, 0, 0),      Vec3(3.1, 0, 0.05), Vec3(3, 2.2, 0),  Vec3(0.1, 2, -0.03),
+                                     Vec3(0, 0.1, 1),    Vec3(2.9, 0, 1.1),  Vec3(3, 2, 0.97), Vec3(-0.1, 2.05, 0.95)};
+  std::vector<SurfaceNode> nodes;
+  for (const Vec3& c : corners) nodes.push_back(node(c, c.z() > 0.5 ? Side::Top : Side::Bottom));
+  const TetMesh mesh = delaunayTets(nodes);
+  ASSERT_EQ(mesh.nodes.size(), 8u);
+  ASSERT_EQ(mesh.side.size(), 8u);
+  for (size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(mesh.nodes[i], corners[i]);
+    EXPECT_EQ(mesh.side[i], nodes[i].side);
+  }
+  ASSERT_GE(mesh.tets.size(), 5u) << "a hexahedron needs at least 5 tets";
+  double volume = 0;
+  std::vector<int> used(8, 0);
+  for (const auto& t : mesh.tets) {
+    for (int v : t) {
+      ASSERT_GE(v, 0);
+      ASSERT_LT(v, 8);
+      used[v] = 1;
+    }
+    const double v = std::abs(tetVolume(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]));
+    EXPECT_GT(v, 1e-6);
+    volume += v;
+  }
+  EXPECT_EQ(std::count(used.begin(), used.end(), 1), 8) << "every corner is a tet node";
+  const double hull = convexHullVolume(corners);
+  EXPECT_GT(hull, 5.0);
+  EXPECT_NEAR(volume, hull, 1e-9 * hull) << "the tets tile the hull without gaps or overlaps";
+}
+
+TEST(Tets, DelaunayTetsNeedFourNodes) {
+  const std::vector<SurfaceNode> three = {node(Vec3(0, 0, 0), Side::Bottom), node(Vec3(1, 0, 0), Side::Bottom),
+                                          node(Vec3(0, 1, 1), Side::Top)};
+  EXPECT_THROW(delaunayTets(three), Error);
+}
+
+// §5.4: flat tets (all four nodes on one side) are dropped, so are tets outside and coplanar ones.
+TEST(Tets, KeepSpanningTetsInsideDropsAndCountsFlatOutsideAndZeroVolumeTets) {
+  const CadSolid cad = box(10, 10, 2);
+  TetMesh m;
+  auto add = [&](const Vec3& p, Side s) {
+    m.nodes.push_back(p);
+    m.side.push_back(s);
+  };
+  add({1, 1, 2}, Side::Top);         // 0
+  add({4, 1, 2}, Side::Top);         // 1
+  add({1, 4, 2}, Side::Top);         // 2
+  add({2, 2, 0}, Side::Bottom);      // 3
+  add({3, 3, 0}, Side::Bottom);      // 4
+  add({2, 2, 1.5}, Side::Top);       // 5: with 0 1 2 a flat top tet
+  add({5, 2, 0}, Side::Bottom);      // 6
+  add({2, 5, 0.5}, Side::Bottom);    // 7: with 3 4 6 a flat bottom tet
+  add({12, 1, 2}, Side::Top);        // 8..11: a spanning tet beside the box
+  add({15, 1, 2}, Side::Top);        // 9
+  add({12, 4, 2}, Side::Top);        // 10
+  add({13, 2, 0}, Side::Bottom);     // 11
+  add({1, 1, 0}, Side::Bottom);      // 12: with 0 1 13 four nodes in the plane y = 1
+  add({4, 1, 0}, Side::Bottom);      // 13
+  const std::array<int, 4> spanning31{0, 1, 2, 3}, flatTop{0, 1, 2, 5}, outside{8, 9, 10, 11}, coplanar{0, 1, 12, 13},
+      flatBottom{3, 4, 6, 7}, spanning22{0, 1, 3, 4};
+  m.tets = {spanning31, flatTop, outside, coplanar, flatBottom, spanning22};
+
+  const TetFilterCounts counts = keepSpanningTetsInside(m, cad);
+  EXPECT_EQ(counts.delaunay, 6u);
+  EXPECT_EQ(counts.flat, 2u);
+  EXPECT_EQ(counts.outside, 1u);
+  EXPECT_EQ(counts.zeroVolume, 1u);
+  ASSERT_EQ(m.tets.size(), 2u);
+  EXPECT_EQ(m.tets[0], spanning31);
+  EXPECT_EQ(m.tets[1], spanning22);
+  EXPECT_EQ(m.nodes.size(), 14u) << "nodes are kept";
+}
+
+// A 40 x 30 x 2 plate: 2 mm thick, z = 2 is Top, z = 0 Bottom, the four rim faces Lateral.
+TEST(WallSides, ThinBoxHasOneTopOneBottomAndFourLateralFaces) {
+  const CadSolid cad = box(40, 30, 2);
+  EXPECT_NEAR(cad.volume, 2400.0, 1e-9 * 2400);
+  EXPECT_EQ(cad.faces.Extent(), 6);
+  EXPECT_NEAR(cad.diagonal, std::sqrt(40.0 * 40 + 30 * 30 + 2 * 2), 1e-6);
+  const WallSides w = classifyWallSides(cad);
+  ASSERT_EQ(w.faces.size(), 6u);
+  EXPECT_NEAR(w.thickness, 2.0, 2e-6);
+  EXPECT_NEAR(w.sheetAreaShare, 2400.0 / (2400 + 2 * (40 * 2 + 30 * 2)), 1e-6);
+  int top = -1, bottom = -1, lateral = 0;
+  for (int f = 0; f < 6; ++f) {
+    const Vec3 c = faceCentre(cad, f);
+    switch (w.faces[f].side) {
+      case Side::Top:
+        EXPECT_EQ(top, -1) << "two Top faces";
+        top = f;
+        EXPECT_NEAR(c.z(), 2.0, 1e-9);
+        break;
+      case Side::Bottom:
+        EXPECT_EQ(bottom, -1) << "two Bottom faces";
+        bottom = f;
+        EXPECT_NEAR(c.z(), 0.0, 1e-9);
+        break;
+      case Side::Lateral:
+        ++lateral;
+        EXPECT_NEAR(c.z(), 1.0, 1e-9);
+        break;
+    }
+  }
+  ASSERT_GE(top, 0);
+  ASSERT_GE(bottom, 0);
+  EXPECT_EQ(lateral, 4);
+  EXPECT_NEAR(w.faces[top].thickness, 2.0, 2e-6);
+  EXPECT_NEAR(w.faces[bottom].thickness, 2.0, 2e-6);
+  EXPECT_EQ(w.faces[top].opposite, bottom);
+  EXPECT_EQ(w.faces[bottom].opposite, top);
+  EXPECT_NEAR(w.faces[top].area, 1200.0, 1e-6);
+}
+
+TEST(WallSides, CubeIsNotAThinSection) {
+  const CadSolid cad = box(20, 20, 20);
+  EXPECT_NEAR(cad.volume, 8000.0, 1e-9 * 8000);
+  try {
+    classifyWallSides(cad);
+    FAIL() << "a cube was classified as a thin wall";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
+    EXPECT_NE(std::string(e.what()).find("not a thin section"), std::string::npos) << e.what();
+  }
+}
+
+// §4: bubbles larger than the wall thickness, on the top and bottom faces and their edges only.
+TEST(Bubbles, PackBubblesOnThinBoxPutsSpacedNodesOnTopAndBottomOnly) {
+  const CadSolid cad = box(40, 30, 2);
+  const WallSides w = classifyWallSides(cad);
+  const std::vector<SurfaceNode> nodes = packBubbles(cad, w, BubbleOptions{});
+  ASSERT_GT(nodes.size(), 50u);
+  int onTop = 0, onBottom = 0, corners = 0;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const SurfaceNode& n = nodes[i];
+    const Vec3& p = n.point;
+    const bool top = std::abs(p.z() - 2) < 1e-9, bottom = std::abs(p.z()) < 1e-9;
+    ASSERT_TRUE(top || bottom) << "node " << i << " at " << p.transpose() << " is inside a lateral face";
+    EXPECT_EQ(n.side, top ? Side::Top : Side::Bottom) << "node " << i;
+    EXPECT_GE(p.x(), -1e-9);
+    EXPECT_LE(p.x(), 40 + 1e-9);
+    EXPECT_GE(p.y(), -1e-9);
+    EXPECT_LE(p.y(), 30 + 1e-9);
+    EXPECT_EQ((n.face >= 0) + (n.edge >= 0) + (n.vertex >= 0), 1) << "node " << i << " on one CAD entity";
+    if (n.face >= 0) EXPECT_EQ(w.faces[n.face].side, n.side) << "node " << i << " on a face of the other side";
+    onTop += top, onBottom += bottom, corners += n.vertex >= 0;
+  }
+  EXPECT_EQ(corners, 8);
+  EXPECT_GT(onTop, 20);
+  EXPECT_GT(onBottom, 20);
+  double closest = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < nodes.size(); ++i)
+    for (size_t j = i + 1; j < nodes.size(); ++j) closest = std::min(closest, (nodes[i].point - nodes[j].point).norm());
+  EXPECT_GT(closest, 0.5 * w.thickness);
+}
+
+// The thin box end to end up to the chordal surface: Delaunay tets of the bubble nodes, filtered,
+// fill the plate exactly, and their chordal surface is the mid plane z = 1 with radius 1.
+TEST(Tets, ThinBoxTetsFillThePlateAndCutAtMidPlane) {
+  const CadSolid cad = box(40, 30, 2);
+  const WallSides w = classifyWallSides(cad);
+  TetMesh tets = delaunayTets(packBubbles(cad, w, BubbleOptions{}));
+  const TetFilterCounts counts = keepSpanningTetsInside(tets, cad);
+  EXPECT_EQ(counts.outside, 0u) << "the hull of the nodes is the box";
+  EXPECT_EQ(counts.delaunay, tets.tets.size() + counts.flat + counts.outside + counts.zeroVolume);
+  double volume = 0;
+  for (const auto& t : tets.tets) {
+    int top = 0;
+    for (int v : t) top += tets.side[v] == Side::Top;
+    EXPECT_GT(top, 0);
+    EXPECT_LT(top, 4);
+    volume += std::abs(tetVolume(tets.nodes[t[0]], tets.nodes[t[1]], tets.nodes[t[2]], tets.nodes[t[3]]));
+  }
+  EXPECT_NEAR(volume, 2400.0, 1e-6 * 2400);
+
+  ChordalSurface s = buildChordalSurface(tets);
+  computeNormalsAndRadius(s, tets);
+  double area = 0;
+  for (const auto& f : s.facets) {
+    const auto& v = s.vertices;
+    area += f[3] < 0 ? 0.5 * (v[f[1]] - v[f[0]]).cross(v[f[2]] - v[f[0]]).norm()
+                     : 0.5 * (v[f[2]] - v[f[0]]).cross(v[f[3]] - v[f[1]]).norm();
+    EXPECT_GT(facetNormal(s, f).z(), 1 - 1e-9);
+  }
+  EXPECT_NEAR(area, 1200.0, 1e-6 * 1200);
+  for (size_t v = 0; v < s.vertices.size(); ++v) {
+    EXPECT_NEAR(s.vertices[v].z(), 1.0, 1e-9);
+    EXPECT_LT((s.normals[v] - Vec3::UnitZ()).norm(), 1e-9);
+    EXPECT_NEAR(s.radius[v], 1.0, 1e-9);
+  }
+}
