@@ -3,11 +3,13 @@
 #include <gmsh.h>
 
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/child_process.hpp"
 #include "core/error.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
@@ -66,39 +68,78 @@ void setQuadOptions(const QuadMeshOptions& o) {
 }
 
 QuadMesh collectQuads() {
-  std::vector<std::size_t> tags, nodeTags;
-  gmsh::model::mesh::getElementsByType(3, tags, nodeTags);
+  std::vector<std::size_t> tags, nodeTags, quadNodeTags;
+  std::vector<double> coord, param;
+  gmsh::model::mesh::getElementsByType(3, tags, quadNodeTags);
+  gmsh::model::mesh::getNodesByElementType(3, nodeTags, coord, param, -1, false);
+  std::map<std::size_t, Vec3> position;
+  for (size_t i = 0; i < nodeTags.size(); ++i) position[nodeTags[i]] = Vec3(coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]);
   QuadMesh q;
   std::map<std::size_t, int> index;  // Gmsh node tag -> our node id, in order of first use
-  for (std::size_t t : nodeTags)
+  for (std::size_t t : quadNodeTags)
     if (index.emplace(t, static_cast<int>(q.nodes.size())).second) {
-      std::vector<double> coord, param;
-      gmsh::model::mesh::getNode(t, coord, param);
-      q.nodes.emplace_back(coord[0], coord[1], coord[2]);
+      const auto it = position.find(t);
+      if (it == position.end()) throw std::runtime_error("Gmsh gave no coordinates for node " + std::to_string(t));
+      q.nodes.push_back(it->second);
     }
   q.quads.resize(tags.size());
   for (size_t e = 0; e < tags.size(); ++e)
-    for (int k = 0; k < 4; ++k) q.quads[e][k] = index.at(nodeTags[4 * e + k]);
+    for (int k = 0; k < 4; ++k) q.quads[e][k] = index.at(quadNodeTags[4 * e + k]);
+  return q;
+}
+
+// A quad mesh as bytes and back, to cross from the child process that runs Gmsh.
+std::string toBytes(const QuadMesh& q) {
+  const std::size_t counts[2] = {q.nodes.size(), q.quads.size()};
+  std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
+  for (const Vec3& p : q.nodes) bytes.append(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
+  bytes.append(reinterpret_cast<const char*>(q.quads.data()), q.quads.size() * sizeof(q.quads[0]));
+  return bytes;
+}
+
+QuadMesh fromBytes(const std::string& bytes) {
+  std::size_t counts[2];
+  if (bytes.size() < sizeof counts) throw std::runtime_error("truncated quad mesh");
+  std::memcpy(counts, bytes.data(), sizeof counts);
+  QuadMesh q;
+  q.nodes.resize(counts[0]);
+  q.quads.resize(counts[1]);
+  const std::size_t nodeBytes = counts[0] * 3 * sizeof(double), quadBytes = counts[1] * sizeof(q.quads[0]);
+  if (bytes.size() != sizeof counts + nodeBytes + quadBytes) throw std::runtime_error("truncated quad mesh");
+  const char* at = bytes.data() + sizeof counts;
+  for (Vec3& p : q.nodes) std::memcpy(p.data(), at, 3 * sizeof(double)), at += 3 * sizeof(double);
+  std::memcpy(static_cast<void*>(q.quads.data()), at, quadBytes);
   return q;
 }
 
 // One Gmsh run: split the chordal surface into patches at `featureAngle`, reparametrize, mesh.
-QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, double featureAngle) {
-  GmshSession session;
-  gmsh::model::add("chordal_surface");
-  addChordalTriangles(chordal);
-  try {
-    const double angle = featureAngle * M_PI / 180.0;
-    gmsh::model::mesh::classifySurfaces(angle, true, true, angle);  // patches Gmsh can parametrize
-    gmsh::model::mesh::createGeometry();
-    setQuadOptions(o);
-    gmsh::model::mesh::generate(2);
-    return collectQuads();
-  } catch (const std::exception& e) {
-    throw geometryError(std::string("Gmsh could not quad-mesh the chordal surface: ") + e.what());
-  } catch (...) {
-    throw geometryError("Gmsh could not quad-mesh the chordal surface");
+// Gmsh runs in a child process: its crashes and hangs (both seen on real parts with Gmsh 4.8) end
+// that try only. Returns no quads, and why in `error`, if Gmsh fails.
+QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, double featureAngle, std::string& error) {
+  const ChildResult run = runInChildProcess([&] {
+    GmshSession session;
+    try {
+      gmsh::model::add("chordal_surface");
+      addChordalTriangles(chordal);
+      const double angle = featureAngle * M_PI / 180.0;
+      gmsh::model::mesh::classifySurfaces(angle, true, true, angle);  // patches Gmsh can parametrize
+      gmsh::model::mesh::createGeometry();
+      setQuadOptions(o);
+      gmsh::model::mesh::generate(2);
+      return toBytes(collectQuads());
+    } catch (const std::exception&) {
+      throw;
+    } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
+      std::string last;
+      gmsh::logger::getLastError(last);
+      throw std::runtime_error(last.empty() ? "unknown Gmsh error" : last);
+    }
+  }, o.timeoutSeconds);
+  if (!run.ok) {
+    error = "Gmsh " + run.failure;
+    return {};
   }
+  return fromBytes(run.output);
 }
 
 // How far the quad mesh is from the chordal surface it should lie on (a failed reparametrization
@@ -129,11 +170,12 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   QuadMesh best;
   QuadCheck bestCheck;
   Vec3 failedAt = Vec3::Zero();
+  std::string gmshError;
   for (const double angle : o.featureAngles) {
-    QuadMesh q = gmshQuads(chordal.surface(), o, angle);
+    QuadMesh q = gmshQuads(chordal.surface(), o, angle, gmshError);
     const QuadCheck c = checkQuads(q, chordal);
     if (q.quads.empty() || !(c.farthest < kOffSurface * o.size)) {
-      failedAt = c.farthestNode;
+      if (!q.quads.empty()) failedAt = c.farthestNode, gmshError.clear();
       continue;
     }
     if (c.worstQuad > bestCheck.worstQuad) best = std::move(q), bestCheck = c;
@@ -141,8 +183,11 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   }
   if (best.quads.empty()) {
     std::ostringstream msg;
-    msg << "Gmsh could not quad-mesh the chordal surface: its reparametrization failed near (" << failedAt.x() << ", "
-        << failedAt.y() << ", " << failedAt.z() << ")";
+    msg << "could not quad-mesh the chordal surface: ";
+    if (!gmshError.empty())
+      msg << gmshError;
+    else
+      msg << "its reparametrization failed near (" << failedAt.x() << ", " << failedAt.y() << ", " << failedAt.z() << ")";
     throw geometryError(msg.str());
   }
   for (Vec3& p : best.nodes) p = chordal.locate(p).point;  // back onto the chordal surface

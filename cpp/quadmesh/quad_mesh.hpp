@@ -19,7 +19,8 @@ struct QuadMeshOptions {
   // Degrees: chordal edges sharper than this split the surface into patches. Gmsh's reparametrization
   // of a patch can fail; the next angle is tried then, or when the worst quad is below acceptableQuad.
   std::vector<double> featureAngles{40.0, 60.0, 25.0};
-  double acceptableQuad = 0.2;  // quad scaled Jacobian
+  double acceptableQuad = 0.2;   // quad scaled Jacobian
+  double timeoutSeconds = 600;   // for one Gmsh try
 };
 
 // Meshes the chordal surface with quads only. Holes and the outer rim are the boundary curves of

@@ -11,7 +11,7 @@ import tempfile
 import unittest
 
 ARGS = None
-FLAT_AND_BENT = ["plate", "plate_holes", "cantilever", "lbracket"]
+FLAT_AND_BENT = ["plate", "plate_holes", "cantilever", "lbracket", "uchannel", "hat_holes"]
 
 
 def run_hexlayer(*args):

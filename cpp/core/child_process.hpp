@@ -1,0 +1,19 @@
+// Runs a piece of work in a forked child process, so that a crash or a hang of a third-party
+// library (Gmsh's reparametrization can do both) becomes an error the caller can handle.
+#pragma once
+#include <functional>
+#include <string>
+
+namespace hexlayer {
+
+struct ChildResult {
+  bool ok = false;
+  std::string output;   // the bytes the work returned, if ok
+  std::string failure;  // why not: the work's exception message, the signal that ended it, or the time-out
+};
+
+// Calls work() in a child process and returns its bytes. The child ends with _exit, so nothing of
+// it leaks into this process; it is killed after timeoutSeconds.
+ChildResult runInChildProcess(const std::function<std::string()>& work, double timeoutSeconds);
+
+}  // namespace hexlayer
