@@ -10,7 +10,7 @@ packages=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev
   libgtest-dev googletest
   calculix-ccx
-  python3-meshio python3-numpy python3-gmsh
+  python3-meshio python3-numpy python3-gmsh python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do
