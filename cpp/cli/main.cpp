@@ -52,6 +52,13 @@ int runMesh(MeshCommand& c) {
     out << std::setw(2) << result.report << "\n";
   }
   if (!c.quiet) std::cout << summary(result.report, c.output) << std::endl;
+  if (const auto inverted = result.report["inverted_hexes"].get<std::size_t>(); inverted > 0) {
+    const auto& at = result.report["worst_hex_at"];
+    std::cerr << "hexlayer: warning: " << inverted << " inverted hexes (scaled Jacobian <= 0), the worst at ("
+              << at[0].get<double>() << ", " << at[1].get<double>() << ", " << at[2].get<double>()
+              << "): the mesh is not fit for a solver there (sharp crease or junction in the chordal surface?)"
+              << std::endl;
+  }
   return 0;
 }
 

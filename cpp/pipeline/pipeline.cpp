@@ -79,6 +79,8 @@ void reportQuality(const HexMesh& mesh, double cadVolume, nlohmann::json& r) {
   r["hexes"] = mesh.hexes.size();
   r["nodes"] = mesh.nodes.size();
   r["layers"] = mesh.layers;
+  r["inverted_hexes"] = q.inverted;
+  r["worst_hex_at"] = {q.worstAt.x(), q.worstAt.y(), q.worstAt.z()};
   r["scaled_jacobian"] = {{"min", q.sjMin}, {"avg", q.sjAvg},
                           {"histogram", {{"lo", q.sjHistogram.lo}, {"hi", q.sjHistogram.hi}, {"counts", q.sjHistogram.counts}}}};
   r["aspect_ratio"] = {{"min", q.arMin}, {"avg", q.arAvg}, {"max", q.arMax}};

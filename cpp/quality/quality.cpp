@@ -126,7 +126,9 @@ QualityReport measureQuality(const HexMesh& mesh) {
   if (mesh.hexes.empty()) return q;
   PerHex m = measureEachHex(mesh);
   const double n = static_cast<double>(mesh.hexes.size());
-  q.sjMin = *std::min_element(m.sj.begin(), m.sj.end());
+  const auto worst = std::min_element(m.sj.begin(), m.sj.end());
+  q.sjMin = *worst;
+  for (const Vec3& p : hexCorners(mesh, static_cast<std::size_t>(worst - m.sj.begin()))) q.worstAt += p / 8;
   q.arMin = *std::min_element(m.ar.begin(), m.ar.end());
   q.arMax = *std::max_element(m.ar.begin(), m.ar.end());
   double sjSum = 0, arSum = 0;
@@ -135,6 +137,7 @@ QualityReport measureQuality(const HexMesh& mesh) {
     arSum += m.ar[h];
     q.volume += m.volume[h];
     ++q.sjHistogram.counts[histogramBin(m.sj[h])];
+    q.inverted += m.sj[h] <= 0;
   }
   q.sjAvg = sjSum / n;
   q.arAvg = arSum / n;

@@ -33,6 +33,8 @@ struct QualityReport {
   Histogram sjHistogram;  // 10 bins on [0, 1]
   double arMin = 0, arAvg = 0, arMax = 0;
   double volume = 0;                   // sum of the hex volumes
+  std::size_t inverted = 0;            // hexes with scaled Jacobian <= 0 (not usable in a solver)
+  Vec3 worstAt = Vec3::Zero();         // centroid of the hex with the smallest scaled Jacobian
   std::vector<double> scaledJacobian;  // per hex
 };
 

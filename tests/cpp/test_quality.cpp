@@ -160,6 +160,18 @@ TEST(QualityReport, BlockOfPerfectHexes) {
   EXPECT_EQ(q.sjHistogram.hi, 1.0);
 }
 
+TEST(QualityReport, CountsInvertedHexesAndLocatesTheWorst) {
+  HexMesh m = block({0, 1, 2, 3}, {0, 1}, {0, 1});
+  EXPECT_EQ(measureQuality(m).inverted, 0u);
+  // Swap top and bottom of the middle hex: it turns left-handed, the others stay perfect.
+  auto& h = m.hexes[1];
+  for (int i = 0; i < 4; ++i) std::swap(h[i], h[i + 4]);
+  const QualityReport q = measureQuality(m);
+  EXPECT_EQ(q.inverted, 1u);
+  EXPECT_DOUBLE_EQ(q.sjMin, -1.0);
+  EXPECT_LT((q.worstAt - Vec3(1.5, 0.5, 0.5)).norm(), 1e-12);
+}
+
 TEST(QualityReport, HistogramSumsToHexCountAndMatchesPerHexValues) {
   HexMesh m = block({0, 1, 2, 3, 4}, {0, 1, 2, 3}, {0, 1, 2});
   m.nodes[27] += Vec3(0.4, -0.3, 0.2);  // distort the hexes around interior node (2,1,1)

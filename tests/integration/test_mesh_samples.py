@@ -37,6 +37,7 @@ class MeshSamples(unittest.TestCase):
                         self.assertEqual(r["hexes"] % layers, 0)
                         self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.9)
                         self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
+                        self.assertEqual(r["inverted_hexes"], 0)
                         self.assertLess(abs(r["volume"]["relative_error"]), 0.03)
                         self.assertTrue(r["boundary"]["watertight"])
                         self.assertEqual(r["boundary"]["open_edges"], 0)
