@@ -3,14 +3,13 @@ under an end load must match Euler-Bernoulli beam theory, delta = F L^3 / (3 E I
 
 Run by CTest as: /usr/bin/python3 test_calculix_cantilever.py --hexlayer PATH --source DIR
 """
-import argparse
 import os
 import subprocess
-import sys
 import tempfile
 import unittest
 
-ARGS = None
+import harness
+
 L, B, T = 100.0, 10.0, 2.0   # length (x), width (y), thickness (z) of Resources/samples/cantilever.step
 E, NU, F = 210000.0, 0.3, 10.0
 
@@ -47,8 +46,8 @@ class CalculixCantilever(unittest.TestCase):
     def test_tip_deflection_matches_beam_theory(self):
         with tempfile.TemporaryDirectory() as tmp:
             inp = os.path.join(tmp, "mesh.inp")
-            step = os.path.join(ARGS.source, "Resources", "samples", "cantilever.step")
-            done = subprocess.run([ARGS.hexlayer, "mesh", step, "-o", inp, "--layers", "2", "--size", "2", "--quiet"],
+            step = os.path.join(harness.args.source, "Resources", "samples", "cantilever.step")
+            done = subprocess.run([harness.args.hexlayer, "mesh", step, "-o", inp, "--layers", "2", "--size", "2", "--quiet"],
                                   capture_output=True, text=True, timeout=600)
             self.assertEqual(done.returncode, 0, done.stderr[-2000:])
             nodes = read_nodes(inp)
@@ -76,8 +75,4 @@ class CalculixCantilever(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--hexlayer", required=True)
-    parser.add_argument("--source", required=True)
-    ARGS, rest = parser.parse_known_args()
-    unittest.main(argv=[sys.argv[0], *rest], verbosity=2)
+    harness.main()

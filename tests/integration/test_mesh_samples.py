@@ -2,25 +2,24 @@
 
 Run by CTest as: /usr/bin/python3 test_mesh_samples.py --hexlayer PATH --source DIR
 """
-import argparse
 import json
 import os
 import subprocess
-import sys
 import tempfile
 import unittest
 
-ARGS = None
+import harness
+
 FLAT_AND_BENT = ["plate", "plate_holes", "cantilever", "lbracket", "uchannel", "hat_holes"]
 
 
 def run_hexlayer(*args):
-    return subprocess.run([ARGS.hexlayer, *args], capture_output=True, text=True, timeout=600)
+    return subprocess.run([harness.args.hexlayer, *args], capture_output=True, text=True, timeout=600)
 
 
 class MeshSamples(unittest.TestCase):
     def mesh(self, part, out, *extra):
-        step = os.path.join(ARGS.source, "Resources", "samples", part + ".step")
+        step = os.path.join(harness.args.source, "Resources", "samples", part + ".step")
         report = out + ".json"
         done = run_hexlayer("mesh", step, "-o", out, "--report", report, "--quiet", *extra)
         self.assertEqual(done.returncode, 0, done.stderr[-2000:])
@@ -73,14 +72,14 @@ class MeshSamples(unittest.TestCase):
 
     def test_not_thin_part_is_refused_with_exit_4(self):
         with tempfile.TemporaryDirectory() as tmp:
-            step = os.path.join(ARGS.source, "Resources", "samples", "thick_block.step")
+            step = os.path.join(harness.args.source, "Resources", "samples", "thick_block.step")
             done = run_hexlayer("mesh", step, "-o", os.path.join(tmp, "x.inp"))
             self.assertEqual(done.returncode, 4)
             self.assertIn("not a thin section", done.stderr)
 
     def test_bad_usage_and_missing_file(self):
         with tempfile.TemporaryDirectory() as tmp:
-            step = os.path.join(ARGS.source, "Resources", "samples", "plate.step")
+            step = os.path.join(harness.args.source, "Resources", "samples", "plate.step")
             self.assertEqual(run_hexlayer("mesh", step, "-o", os.path.join(tmp, "x.inp"), "--layers", "0").returncode, 2)
             self.assertEqual(run_hexlayer("mesh", step, "-o", os.path.join(tmp, "x.stl")).returncode, 2)
             missing = run_hexlayer("mesh", os.path.join(tmp, "none.step"), "-o", os.path.join(tmp, "x.inp"))
@@ -89,8 +88,4 @@ class MeshSamples(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--hexlayer", required=True)
-    parser.add_argument("--source", required=True)
-    ARGS, rest = parser.parse_known_args()
-    unittest.main(argv=[sys.argv[0], *rest], verbosity=2)
+    harness.main()

@@ -3,25 +3,24 @@ Ender-3 X-motor bracket (a 3 mm plate with holes and slots) meshes into a valid 
 
 Run by CTest as: /usr/bin/python3 test_real_parts.py --hexlayer PATH --source DIR
 """
-import argparse
 import json
 import os
 import subprocess
-import sys
 import tempfile
 import unittest
 
-ARGS = None
+import harness
+
 
 
 class RealParts(unittest.TestCase):
     def mesh(self, name, layers):
-        part = os.path.join(ARGS.source, "..", "shared", "parts", "real", name)
+        part = os.path.join(harness.args.source, "..", "shared", "parts", "real", name)
         if not os.path.exists(part):
             self.fail(f"{part} is missing: the real parts live in shared/parts/real beside the repository")
         with tempfile.TemporaryDirectory() as tmp:
             report = os.path.join(tmp, "r.json")
-            done = subprocess.run([ARGS.hexlayer, "mesh", part, "-o", os.path.join(tmp, "m.inp"), "--layers",
+            done = subprocess.run([harness.args.hexlayer, "mesh", part, "-o", os.path.join(tmp, "m.inp"), "--layers",
                                    str(layers), "--report", report, "--quiet"],
                                   capture_output=True, text=True, timeout=600)
             self.assertEqual(done.returncode, 0, done.stderr[-2000:])
@@ -44,8 +43,4 @@ class RealParts(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--hexlayer", required=True)
-    parser.add_argument("--source", required=True)
-    ARGS, rest = parser.parse_known_args()
-    unittest.main(argv=[sys.argv[0], *rest], verbosity=2)
+    harness.main()
