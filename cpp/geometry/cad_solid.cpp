@@ -1,6 +1,7 @@
 #include "geometry/cad_solid.hpp"
 
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepGProp_Face.hxx>
@@ -15,6 +16,7 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
 #include <XSControl_Reader.hxx>
 #include <gp_Vec.hxx>
 
@@ -61,6 +63,15 @@ TopoDS_Shape readShape(const std::string& path) {
   throw inputError("unknown input format '" + ext + "' of '" + path + "': use .step, .stp, .iges, .igs or .brep");
 }
 
+// The solid a closed shell bounds, its faces turned outward.
+TopoDS_Solid solidOfClosedShell(const TopoDS_Shell& shell) {
+  BRepBuilderAPI_MakeSolid make(shell);
+  ShapeFix_Solid fix(make.Solid());
+  fix.Perform();
+  const TopoDS_Shape fixed = fix.Solid();
+  return fixed.ShapeType() == TopAbs_SOLID ? TopoDS::Solid(fixed) : make.Solid();
+}
+
 }  // namespace
 
 std::vector<TopoDS_Solid> readSolids(const std::string& path) {
@@ -72,6 +83,9 @@ std::vector<TopoDS_Solid> readSolids(const std::string& path) {
   std::vector<TopoDS_Solid> solids;
   if (!shape.IsNull())
     for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) solids.push_back(TopoDS::Solid(it.Current()));
+  if (solids.empty() && !shape.IsNull())  // a closed shell bounds a solid: sheet-metal files often hold only that
+    for (TopExp_Explorer it(shape, TopAbs_SHELL); it.More(); it.Next())
+      if (BRep_Tool::IsClosed(it.Current())) solids.push_back(solidOfClosedShell(TopoDS::Shell(it.Current())));
   if (solids.empty()) throw inputError("'" + path + "' contains no solid (only surfaces, curves or nothing)");
   return solids;
 }

@@ -1,12 +1,16 @@
 // Bubbles and tets (paper §3-4, §5.4): the bubble force, TetGen's Delaunay tets and their filter,
 // the wall sides of a thin box, and bubble nodes that land on the top and bottom faces only.
 #include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <GProp_GProps.hxx>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -157,6 +161,19 @@ TEST(Tets, KeepSpanningTetsInsideDropsAndCountsFlatOutsideAndZeroVolumeTets) {
 }
 
 // A 40 x 30 x 2 plate: 2 mm thick, z = 2 is Top, z = 0 Bottom, the four rim faces Lateral.
+// A file holding only the closed shell of a part (as sheet-metal exports often do) gives its solid.
+TEST(Geometry, ClosedShellFileIsReadAsTheSolidItBounds) {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(40, 30, 2).Solid();
+  TopExp_Explorer shell(box, TopAbs_SHELL);
+  ASSERT_TRUE(shell.More());
+  const std::string path = ::testing::TempDir() + "hexlayer_shell_only.brep";
+  ASSERT_TRUE(BRepTools::Write(shell.Current(), path.c_str()));
+  const std::vector<TopoDS_Solid> solids = readSolids(path);
+  std::remove(path.c_str());
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(prepareSolid(solids[0]).volume, 2400.0, 1e-6);
+}
+
 TEST(WallSides, ThinBoxHasOneTopOneBottomAndFourLateralFaces) {
   const CadSolid cad = box(40, 30, 2);
   EXPECT_NEAR(cad.volume, 2400.0, 1e-9 * 2400);
