@@ -54,10 +54,8 @@ ChordalLocator::ChordalLocator(const ChordalSurface& chordal) : chordal_(chordal
     extent[f] = (hi[f] - lo[f]).maxCoeff();
   }
   // Cells as large as a typical facet: a few facets per cell, a long sliver in a few more cells.
-  std::vector<double> sorted = extent;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-
-  facets_ = BoxGrid(sorted.empty() ? 1.0 : std::max(sorted[sorted.size() / 2], 1e-12));
+  std::nth_element(extent.begin(), extent.begin() + extent.size() / 2, extent.end());
+  facets_ = BoxGrid(extent.empty() ? 1.0 : std::max(extent[extent.size() / 2], 1e-12));
   for (size_t f = 0; f < chordal.facets.size(); ++f) facets_.insert(static_cast<int>(f), lo[f], hi[f]);
 }
 

@@ -8,7 +8,6 @@
 
 #include "core/error.hpp"
 #include "pipeline/pipeline.hpp"
-#include "quality/quality.hpp"
 #include "writers/writers.hpp"
 
 namespace {
@@ -44,7 +43,7 @@ int runMesh(MeshCommand& c) {
   if (!c.quiet) c.options.progress = [](const std::string& line) { std::cerr << "hexlayer: " << line << std::endl; };
   hexlayer::MeshResult result = hexlayer::meshFile(c.input, c.options);
   std::vector<hexlayer::CellField> fields;
-  if (!result.mesh.hexes.empty()) fields.push_back({"scaled_jacobian", hexlayer::measureQuality(result.mesh).scaledJacobian});
+  if (!result.mesh.hexes.empty()) fields.push_back({"scaled_jacobian", result.scaledJacobian});
   hexlayer::writeMesh(c.output, result.mesh, result.nodeSets, fields);
   if (!c.report.empty()) {
     std::ofstream out(c.report);

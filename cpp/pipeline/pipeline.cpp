@@ -74,8 +74,9 @@ nlohmann::json faceSideCounts(const WallSides& sides) {
   return {{"top", top}, {"bottom", bottom}, {"lateral", lateral}};
 }
 
-void reportQuality(const HexMesh& mesh, double cadVolume, nlohmann::json& r) {
-  const QualityReport q = measureQuality(mesh);
+// Writes the quality numbers into the report and returns the scaled Jacobian of every hex.
+std::vector<double> reportQuality(const HexMesh& mesh, double cadVolume, nlohmann::json& r) {
+  QualityReport q = measureQuality(mesh);
   r["hexes"] = mesh.hexes.size();
   r["nodes"] = mesh.nodes.size();
   r["layers"] = mesh.layers;
@@ -88,6 +89,7 @@ void reportQuality(const HexMesh& mesh, double cadVolume, nlohmann::json& r) {
   const BoundaryCheck b = checkBoundary(mesh);
   r["boundary"] = {{"faces", b.faces}, {"open_edges", b.openEdges}, {"non_manifold_edges", b.nonManifoldEdges},
                    {"watertight", b.watertight()}};
+  return std::move(q.scaledJacobian);
 }
 
 std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
@@ -155,10 +157,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   r["quad_mesh"]["quads"] = quads.quads.size();
   r["quad_mesh"]["nodes"] = quads.nodes.size();
   result.mesh = clock.run("sweep", [&] { return sweepQuads(quads, locator, o.layers); });
-  clock.run("quality", [&] {
-    reportQuality(result.mesh, cad.volume, r);
-    return 0;
-  });
+  result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, cad.volume, r); });
   result.nodeSets = surfaceNodeSets(result.mesh);
   return result;
 }
@@ -176,7 +175,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
     all.report["solids"].push_back(one.report);
     append(all.mesh, one.mesh);
   }
-  reportQuality(all.mesh, cad, all.report);
+  all.scaledJacobian = reportQuality(all.mesh, cad, all.report);
   all.nodeSets = surfaceNodeSets(all.mesh);
   return all;
 }

@@ -21,6 +21,7 @@ struct MeshResult {
   HexMesh mesh;                  // all solids of the input, one conformal mesh per solid
   std::vector<NodeSet> nodeSets; // TOP, BOTTOM, RIM
   nlohmann::json report;         // numbers of every stage, see README "Report"
+  std::vector<double> scaledJacobian;  // per hex, as measured for the report
 };
 
 // Checks the options; throws usageError naming the bad one.

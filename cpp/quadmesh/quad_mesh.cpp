@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
@@ -148,6 +149,7 @@ struct QuadCheck {
   double worstQuad = -1;
   double farthest = 0;
   Vec3 farthestNode = Vec3::Zero();
+  std::vector<Vec3> onSurface;  // every node moved to its nearest point of the chordal surface
 };
 
 QuadCheck checkQuads(const QuadMesh& q, const ChordalLocator& chordal) {
@@ -157,13 +159,26 @@ QuadCheck checkQuads(const QuadMesh& q, const ChordalLocator& chordal) {
   for (const auto& quad : q.quads)
     c.worstQuad = std::min(c.worstQuad, quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]}));
   for (const Vec3& p : q.nodes) {
-    const double d = p.allFinite() ? (chordal.locate(p).point - p).norm() : std::numeric_limits<double>::infinity();
+    c.onSurface.push_back(p.allFinite() ? chordal.locate(p).point : p);
+    const double d = p.allFinite() ? (c.onSurface.back() - p).norm() : std::numeric_limits<double>::infinity();
     if (d > c.farthest) c.farthest = d, c.farthestNode = p;
   }
   return c;
 }
 
 }  // namespace
+
+std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
+  std::unordered_map<std::uint64_t, int> use;
+  auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };
+  for (const auto& quad : q.quads)
+    for (int k = 0; k < 4; ++k) ++use[key(quad[k], quad[(k + 1) % 4])];
+  std::vector<std::vector<int>> around(q.nodes.size());
+  for (const auto& quad : q.quads)
+    for (int k = 0; k < 4; ++k)
+      if (int a = quad[k], b = quad[(k + 1) % 4]; use[key(a, b)] == 1) around[a].push_back(b), around[b].push_back(a);
+  return around;
+}
 
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   if (!(o.size > 0)) throw usageError("quad size must be positive");
@@ -190,7 +205,7 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
       msg << "its reparametrization failed near (" << failedAt.x() << ", " << failedAt.y() << ", " << failedAt.z() << ")";
     throw geometryError(msg.str());
   }
-  for (Vec3& p : best.nodes) p = chordal.locate(p).point;  // back onto the chordal surface
+  best.nodes = std::move(bestCheck.onSurface);  // back onto the chordal surface
   return best;
 }
 

@@ -23,6 +23,9 @@ struct QuadMeshOptions {
   double timeoutSeconds = 600;   // for one Gmsh try
 };
 
+// For every node, the nodes it shares a rim edge with (an edge of a single quad); empty inside.
+std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& quads);
+
 // Meshes the chordal surface with quads only. Holes and the outer rim are the boundary curves of
 // the discrete surface, so they are kept. Of the tries (one per feature angle) the one whose nodes
 // all lie on the chordal surface and whose worst quad is best is kept. Throws geometryError if

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace hexlayer {
 
@@ -45,14 +44,7 @@ NodeQuads quadsAroundNodes(const QuadMesh& q) {
 // The two rim neighbours of every node on the rim (the boundary of the quad mesh); {-1, -1} for an
 // interior node, {-2, -2} for a rim node that must stay (a corner or a pinch).
 std::vector<std::array<int, 2>> rimNeighbours(const QuadMesh& q) {
-  std::unordered_map<std::uint64_t, int> use;
-  auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };
-  for (const auto& quad : q.quads)
-    for (int k = 0; k < 4; ++k) ++use[key(quad[k], quad[(k + 1) % 4])];
-  std::vector<std::vector<int>> around(q.nodes.size());
-  for (const auto& quad : q.quads)
-    for (int k = 0; k < 4; ++k)
-      if (int a = quad[k], b = quad[(k + 1) % 4]; use[key(a, b)] == 1) around[a].push_back(b), around[b].push_back(a);
+  const std::vector<std::vector<int>> around = rimEdgeNeighbours(q);
   std::vector<std::array<int, 2>> rim(q.nodes.size(), {-1, -1});
   for (size_t i = 0; i < q.nodes.size(); ++i) {
     if (around[i].empty()) continue;

@@ -1,7 +1,5 @@
 #include "sweep/sweep.hpp"
 
-#include <unordered_map>
-
 #include "core/error.hpp"
 
 namespace hexlayer {
@@ -24,27 +22,11 @@ std::vector<double> layerOffsets(int m) {
   return offsets;
 }
 
-namespace {
-
-// Nodes on an edge used by a single quad: the rim of the chordal surface.
-std::vector<char> boundaryNodes(const QuadMesh& q) {
-  std::unordered_map<std::uint64_t, int> use;
-  auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };
-  for (const auto& quad : q.quads)
-    for (int k = 0; k < 4; ++k) ++use[key(quad[k], quad[(k + 1) % 4])];
-  std::vector<char> onBoundary(q.nodes.size(), 0);
-  for (const auto& quad : q.quads)
-    for (int k = 0; k < 4; ++k)
-      if (use[key(quad[k], quad[(k + 1) % 4])] == 1) onBoundary[quad[k]] = onBoundary[quad[(k + 1) % 4]] = 1;
-  return onBoundary;
-}
-
-}  // namespace
 
 HexMesh sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m) {
   if (m < 1) throw usageError("the number of layers must be at least 1");
   const std::vector<double> offsets = layerOffsets(m);
-  const std::vector<char> rim = boundaryNodes(q);
+  const std::vector<std::vector<int>> rim = rimEdgeNeighbours(q);  // the chordal surface's rim
   std::vector<SweepDirection> dir(q.nodes.size());
   #pragma omp parallel for schedule(static)
   for (long i = 0; i < static_cast<long>(q.nodes.size()); ++i) dir[i] = interpolateSweep(chordal.surface(), chordal.locate(q.nodes[i]));
@@ -59,7 +41,7 @@ HexMesh sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m) {
     for (int k = 0; k <= m; ++k) {
       mesh.nodes[i * stride + k] = q.nodes[i] + dir[i].normal * (dir[i].radius * offsets[k]);  // §7.2
       mesh.nodeLayer[i * stride + k] = k;
-      mesh.nodeOnRim[i * stride + k] = rim[i];
+      mesh.nodeOnRim[i * stride + k] = !rim[i].empty();
     }
   mesh.hexes.reserve(q.quads.size() * m);
   for (std::array<int, 4> quad : q.quads) {
