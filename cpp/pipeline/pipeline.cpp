@@ -6,8 +6,10 @@
 #include <sstream>
 
 #include "bubbles/bubble_packing.hpp"
+#include "chordal/chordal_fairing.hpp"
 #include "chordal/chordal_surface.hpp"
 #include "core/error.hpp"
+#include "geometry/wall_rays.hpp"
 #include "geometry/wall_sides.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_smoothing.hpp"
@@ -20,8 +22,10 @@ namespace {
 
 constexpr int kMaxLayers = 64;
 constexpr int kSmoothingIterations = 10;
+constexpr int kFairingIterations = 10;
 constexpr double kDefaultSizeOverThickness = 1.0;
 constexpr double kMaxAutoQuads = 250000;
+constexpr double kMinReach = 0.25, kMaxReach = 4;  // a wall hit counts between these multiples of r
 
 // Runs one stage, records its wall time in report["timings_s"][name] and reports progress.
 class StageClock {
@@ -66,6 +70,17 @@ double chordalArea(const ChordalSurface& c) {
     if (f[3] >= 0) a += 0.5 * (v[f[2]] - v[f[0]]).cross(v[f[3]] - v[f[0]]).norm();
   }
   return a;
+}
+
+// π_b, π_t (§3): the sweep line cast onto the CAD walls; the radius function's ends (§7.2) where a ray misses.
+SweepLine castSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r) {
+  SweepLine line = radiusSweepLine(q, n, r);
+  auto keep = [&](const std::optional<Vec3>& hit, Vec3& end) {
+    if (hit && (*hit - q).norm() > kMinReach * r) end = *hit;
+  };
+  keep(rays.cast(Side::Top, q, n, kMaxReach * r), line.top);
+  keep(rays.cast(Side::Bottom, q, -n, kMaxReach * r), line.bottom);
+  return line;
 }
 
 nlohmann::json faceSideCounts(const WallSides& sides) {
@@ -138,6 +153,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   r["tets"] = {{"delaunay", dropped.delaunay}, {"outside", dropped.outside}, {"flat", dropped.flat}, {"zero_volume", dropped.zeroVolume}, {"kept", tets.tets.size()}};
   ChordalSurface chordal = clock.run("chordal_surface", [&] {
     ChordalSurface c = buildChordalSurface(tets);
+    fairChordalSurface(c, kFairingIterations);
     computeNormalsAndRadius(c, tets);
     return c;
   });
@@ -156,7 +172,13 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   });
   r["quad_mesh"]["quads"] = quads.quads.size();
   r["quad_mesh"]["nodes"] = quads.nodes.size();
-  result.mesh = clock.run("sweep", [&] { return sweepQuads(quads, locator, o.layers); });
+  WallRays rays(cad, sides);
+  SweepResult swept = clock.run("sweep", [&] {
+    return sweepQuads(quads, locator, o.layers, [&](const Vec3& q, const Vec3& n, double rr) { return castSweepLine(rays, q, n, rr); });
+  });
+  r["sweep"] = {{"untangled_regions", swept.untangled.regions}, {"untangling_rounds_kept", swept.untangled.improved},
+                {"worst_column_before_untangling", swept.untangled.worstBefore}};
+  result.mesh = std::move(swept.mesh);
   result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, cad.volume, r); });
   result.nodeSets = surfaceNodeSets(result.mesh);
   return result;

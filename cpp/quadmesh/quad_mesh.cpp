@@ -113,17 +113,17 @@ QuadMesh fromBytes(const std::string& bytes) {
   return q;
 }
 
-// One Gmsh run: split the chordal surface into patches at `featureAngle`, reparametrize, mesh.
+// One Gmsh run: split the chordal surface into patches, reparametrize, mesh.
 // Gmsh runs in a child process: its crashes and hangs (both seen on real parts with Gmsh 4.8) end
 // that try only. Returns no quads, and why in `error`, if Gmsh fails.
-QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, double featureAngle, std::string& error) {
+QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, const PatchSplit& split, std::string& error) {
   const ChildResult run = runInChildProcess([&] {
     GmshSession session;
     try {
       gmsh::model::add("chordal_surface");
       addChordalTriangles(chordal);
-      const double angle = featureAngle * M_PI / 180.0;
-      gmsh::model::mesh::classifySurfaces(angle, true, true, angle);  // patches Gmsh can parametrize
+      const double toRadians = M_PI / 180.0;
+      gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
       gmsh::model::mesh::createGeometry();
       setQuadOptions(o);
       gmsh::model::mesh::generate(2);
@@ -147,17 +147,22 @@ QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, doub
 // puts nodes far away), and its worst quad.
 struct QuadCheck {
   double worstQuad = -1;
+  std::size_t poorQuads = std::numeric_limits<std::size_t>::max();  // below acceptableQuad
   double farthest = 0;
   Vec3 farthestNode = Vec3::Zero();
   std::vector<Vec3> onSurface;  // every node moved to its nearest point of the chordal surface
 };
 
-QuadCheck checkQuads(const QuadMesh& q, const ChordalLocator& chordal) {
+QuadCheck checkQuads(const QuadMesh& q, const ChordalLocator& chordal, double acceptableQuad) {
   QuadCheck c;
   if (q.quads.empty()) return c;
   c.worstQuad = 1;
-  for (const auto& quad : q.quads)
-    c.worstQuad = std::min(c.worstQuad, quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]}));
+  c.poorQuads = 0;
+  for (const auto& quad : q.quads) {
+    const double sj = quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]});
+    c.worstQuad = std::min(c.worstQuad, sj);
+    c.poorQuads += sj < acceptableQuad;
+  }
   for (const Vec3& p : q.nodes) {
     c.onSurface.push_back(p.allFinite() ? chordal.locate(p).point : p);
     const double d = p.allFinite() ? (c.onSurface.back() - p).norm() : std::numeric_limits<double>::infinity();
@@ -186,15 +191,16 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   QuadCheck bestCheck;
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;
-  for (const double angle : o.featureAngles) {
-    QuadMesh q = gmshQuads(chordal.surface(), o, angle, gmshError);
-    const QuadCheck c = checkQuads(q, chordal);
+  for (const PatchSplit& split : o.patchSplits) {
+    QuadMesh q = gmshQuads(chordal.surface(), o, split, gmshError);
+    const QuadCheck c = checkQuads(q, chordal, o.acceptableQuad);
     if (q.quads.empty() || !(c.farthest < kOffSurface * o.size)) {
       if (!q.quads.empty()) failedAt = c.farthestNode, gmshError.clear();
       continue;
     }
-    if (c.worstQuad > bestCheck.worstQuad) best = std::move(q), bestCheck = c;
-    if (bestCheck.worstQuad >= o.acceptableQuad) break;
+    if (std::make_pair(c.poorQuads, -c.worstQuad) < std::make_pair(bestCheck.poorQuads, -bestCheck.worstQuad))
+      best = std::move(q), bestCheck = c;
+    if (bestCheck.poorQuads == 0) break;
   }
   if (best.quads.empty()) {
     std::ostringstream msg;

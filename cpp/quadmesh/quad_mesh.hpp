@@ -14,11 +14,19 @@ struct QuadMesh {
   std::vector<std::array<int, 4>> quads;   // orientation as Gmsh made it (the sweep orients them)
 };
 
+// How Gmsh cuts the chordal surface into patches it can parametrize, in degrees: chordal edges
+// sharper than featureAngle bound the patches, and their boundary curves are split where they turn
+// more than curveAngle (180: never). Splitting at the rim's corners keeps them sharp; not splitting
+// the feature curves of a noisy bend keeps Gmsh from filling it with tiny quads.
+struct PatchSplit {
+  double featureAngle, curveAngle;
+};
+
 struct QuadMeshOptions {
   double size = 0;  // target edge length (uniform sizing)
-  // Degrees: chordal edges sharper than this split the surface into patches. Gmsh's reparametrization
-  // of a patch can fail; the next angle is tried then, or when the worst quad is below acceptableQuad.
-  std::vector<double> featureAngles{40.0, 60.0, 25.0};
+  // Gmsh's reparametrization of a patch can fail: the next split is tried then, or when some quads
+  // are below acceptableQuad; of the tries, the one with the fewest such quads (then the best worst) is kept.
+  std::vector<PatchSplit> patchSplits{{60, 60}, {60, 180}, {40, 40}, {40, 180}, {80, 80}, {25, 25}};
   double acceptableQuad = 0.2;   // quad scaled Jacobian
   double timeoutSeconds = 600;   // for one Gmsh try
 };

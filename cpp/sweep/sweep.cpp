@@ -1,8 +1,58 @@
 #include "sweep/sweep.hpp"
 
 #include "core/error.hpp"
+#include "quality/quality.hpp"
 
 namespace hexlayer {
+namespace {
+
+constexpr double kUntangleTarget = 0.2;  // columns below this scaled Jacobian get their directions smoothed
+
+// §7.3: one hex per quad and layer, quad j's hex of layer k at index j * m + k; hex node of quad
+// node i in layer k at i * (m + 1) + k. Node positions are left to placeSweepLine.
+HexMesh layeredHexes(const QuadMesh& q, const std::vector<SweepDirection>& dir, int m) {
+  const std::vector<std::vector<int>> rim = rimEdgeNeighbours(q);  // the chordal surface's rim
+  HexMesh mesh;
+  mesh.layers = m;
+  const int stride = m + 1;
+  mesh.nodes.assign(q.nodes.size() * stride, Vec3::Zero());
+  mesh.nodeLayer.resize(mesh.nodes.size());
+  mesh.nodeOnRim.resize(mesh.nodes.size());
+  for (size_t i = 0; i < q.nodes.size(); ++i)
+    for (int k = 0; k <= m; ++k) {
+      mesh.nodeLayer[i * stride + k] = k;
+      mesh.nodeOnRim[i * stride + k] = !rim[i].empty();
+    }
+  mesh.hexes.reserve(q.quads.size() * m);
+  for (std::array<int, 4> quad : q.quads) {
+    const Vec3 n = (q.nodes[quad[2]] - q.nodes[quad[0]]).cross(q.nodes[quad[3]] - q.nodes[quad[1]]);
+    const Vec3 sweepDir = dir[quad[0]].normal + dir[quad[1]].normal + dir[quad[2]].normal + dir[quad[3]].normal;
+    if (n.dot(sweepDir) < 0) std::swap(quad[1], quad[3]);  // counter-clockwise seen from the top
+    for (int k = 0; k < m; ++k) {  // the quad's nodes in layers k and k + 1
+      std::array<int, 8> hex;
+      for (int c = 0; c < 4; ++c) hex[c] = quad[c] * stride + k, hex[c + 4] = quad[c] * stride + k + 1;
+      mesh.hexes.push_back(hex);
+    }
+  }
+  return mesh;
+}
+
+// Places the m + 1 hex nodes of quad node i on its sweep line along `normal` (§7.2).
+void placeSweepLine(HexMesh& mesh, const Vec3& q, int i, const Vec3& normal, double radius,
+                    const std::vector<double>& offsets, const WallMap& walls) {
+  const SweepLine line = walls(q, normal, radius);
+  const int stride = static_cast<int>(offsets.size());
+  for (int k = 0; k < stride; ++k) mesh.nodes[i * stride + k] = layerNode(q, line, offsets[k]);
+}
+
+double columnQuality(const HexMesh& mesh, int quad) {
+  double worst = 1;
+  for (int k = 0; k < mesh.layers; ++k)
+    worst = std::min(worst, hexScaledJacobian(hexCorners(mesh, static_cast<size_t>(quad) * mesh.layers + k)));
+  return worst;
+}
+
+}  // namespace
 
 SweepDirection interpolateSweep(const ChordalSurface& chordal, const ChordalPoint& at) {
   const auto& f = chordal.facets[at.facet];
@@ -22,39 +72,26 @@ std::vector<double> layerOffsets(int m) {
   return offsets;
 }
 
+SweepLine radiusSweepLine(const Vec3& q, const Vec3& n, double r) { return {q - r * n, q + r * n}; }
 
-HexMesh sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m) {
+Vec3 layerNode(const Vec3& q, const SweepLine& line, double t) {
+  return t >= 0 ? Vec3(q + t * (line.top - q)) : Vec3(q - t * (line.bottom - q));
+}
+
+SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, const WallMap& walls) {
   if (m < 1) throw usageError("the number of layers must be at least 1");
   const std::vector<double> offsets = layerOffsets(m);
-  const std::vector<std::vector<int>> rim = rimEdgeNeighbours(q);  // the chordal surface's rim
   std::vector<SweepDirection> dir(q.nodes.size());
   #pragma omp parallel for schedule(static)
   for (long i = 0; i < static_cast<long>(q.nodes.size()); ++i) dir[i] = interpolateSweep(chordal.surface(), chordal.locate(q.nodes[i]));
 
-  HexMesh mesh;
-  mesh.layers = m;
-  const int stride = m + 1;  // hex node of quad node i in layer k: i * (m + 1) + k
-  mesh.nodes.resize(q.nodes.size() * stride);
-  mesh.nodeLayer.resize(mesh.nodes.size());
-  mesh.nodeOnRim.resize(mesh.nodes.size());
-  for (size_t i = 0; i < q.nodes.size(); ++i)
-    for (int k = 0; k <= m; ++k) {
-      mesh.nodes[i * stride + k] = q.nodes[i] + dir[i].normal * (dir[i].radius * offsets[k]);  // §7.2
-      mesh.nodeLayer[i * stride + k] = k;
-      mesh.nodeOnRim[i * stride + k] = !rim[i].empty();
-    }
-  mesh.hexes.reserve(q.quads.size() * m);
-  for (std::array<int, 4> quad : q.quads) {
-    const Vec3 n = (q.nodes[quad[2]] - q.nodes[quad[0]]).cross(q.nodes[quad[3]] - q.nodes[quad[1]]);
-    const Vec3 sweepDir = dir[quad[0]].normal + dir[quad[1]].normal + dir[quad[2]].normal + dir[quad[3]].normal;
-    if (n.dot(sweepDir) < 0) std::swap(quad[1], quad[3]);  // counter-clockwise seen from the top
-    for (int k = 0; k < m; ++k) {  // §7.3: the quad's nodes in layers k and k + 1
-      std::array<int, 8> hex;
-      for (int c = 0; c < 4; ++c) hex[c] = quad[c] * stride + k, hex[c + 4] = quad[c] * stride + k + 1;
-      mesh.hexes.push_back(hex);
-    }
-  }
-  return mesh;
+  SweepResult result{layeredHexes(q, dir, m), {}};
+  std::vector<Vec3> normal(dir.size());
+  for (size_t i = 0; i < dir.size(); ++i) normal[i] = dir[i].normal;
+  auto place = [&](int i) { placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, walls); };
+  for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) place(i);
+  result.untangled = untangleSweep(q, normal, kUntangleTarget, place, [&](int j) { return columnQuality(result.mesh, j); });
+  return result;
 }
 
 }  // namespace hexlayer

@@ -1,10 +1,12 @@
 // Sweep (paper §7): every quad node is swept along the interpolated normal to place the hex nodes
 // of all layers (§7.2), and every quad gives one hex per layer (§7.3).
 #pragma once
+#include <functional>
 #include <vector>
 
-#include "quadmesh/quad_mesh.hpp"
 #include "chordal/chordal_locator.hpp"
+#include "quadmesh/quad_mesh.hpp"
+#include "sweep/untangle.hpp"
 
 namespace hexlayer {
 
@@ -22,8 +24,30 @@ SweepDirection interpolateSweep(const ChordalSurface& chordal, const ChordalPoin
 // both are q + n̄ s (k - m/2), k = 0..m, with step s = 2r/m.
 std::vector<double> layerOffsets(int layers);
 
+// The ends of a quad node's sweep line: its images π_b(q) on the bottom and π_t(q) on the top wall (§3).
+struct SweepLine {
+  Vec3 bottom, top;
+};
+
+// Where the sweep line of chordal point q, swept along the unit vector n with radius r, meets the walls.
+using WallMap = std::function<SweepLine(const Vec3& q, const Vec3& n, double r)>;
+
+// The paper's sweep line (§7.2): q ∓ r n̄, the walls as the radius function sees them.
+SweepLine radiusSweepLine(const Vec3& q, const Vec3& n, double r);
+
+// The hex node at layer offset t (from layerOffsets, -1 at the bottom, +1 at the top) on the sweep
+// line of q: q + t (π_t(q) - q) above the chordal surface, q - t (π_b(q) - q) below it.
+Vec3 layerNode(const Vec3& q, const SweepLine& line, double t);
+
 // Builds the layered hex mesh. Quads are turned so that their normal agrees with n̄, which makes
 // every hex positively oriented; a quad node shared by quads gives shared hex nodes (conformal).
-HexMesh sweepQuads(const QuadMesh& quads, const ChordalLocator& chordal, int layers);
+// Where sweep lines converge (a bend whose inner radius is smaller than the wall's half-thickness)
+// the directions are untangled (untangle.hpp) before the nodes are placed for good.
+struct SweepResult {
+  HexMesh mesh;
+  UntangleResult untangled;
+};
+SweepResult sweepQuads(const QuadMesh& quads, const ChordalLocator& chordal, int layers,
+                       const WallMap& walls = radiusSweepLine);
 
 }  // namespace hexlayer

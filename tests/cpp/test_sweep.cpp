@@ -198,7 +198,7 @@ TEST(Sweep, SweepQuadsOnFlatSurfaceBuildsConformalLayers) {
   ASSERT_EQ(q.nodes.size(), 6u);
   for (int m : {2, 3}) {
     SCOPED_TRACE(testing::Message() << "m = " << m);
-    const HexMesh h = sweepQuads(q, locator, m);
+    const HexMesh h = sweepQuads(q, locator, m).mesh;
     const std::vector<double> offsets = layerOffsets(m);
     EXPECT_EQ(h.layers, m);
     ASSERT_EQ(h.hexes.size(), q.quads.size() * m);
@@ -256,7 +256,7 @@ TEST(Sweep, SweepQuadsOnFlatSurfaceBuildsConformalLayers) {
 TEST(Sweep, SweepQuadsMarksOnlyRimNodesOnRim) {
   const ChordalSurface s = flatGrid(2, 2, unitRadius);  // centre vertex (1, 1) has id 4
   const ChordalLocator locator(s);
-  const HexMesh h = sweepQuads(sameQuads(s), locator, 2);
+  const HexMesh h = sweepQuads(sameQuads(s), locator, 2).mesh;
   ASSERT_EQ(h.nodes.size(), 27u);
   int inner = 0;
   for (size_t i = 0; i < h.nodes.size(); ++i) {
@@ -274,7 +274,7 @@ TEST(Sweep, SweepQuadsTurnsClockwiseQuads) {
   QuadMesh q = sameQuads(s);
   for (auto& quad : q.quads) std::swap(quad[1], quad[3]);  // clockwise seen from +z
   for (int m : {1, 2, 3}) {
-    const HexMesh h = sweepQuads(q, locator, m);
+    const HexMesh h = sweepQuads(q, locator, m).mesh;
     ASSERT_EQ(h.hexes.size(), 2u * m);
     for (size_t e = 0; e < h.hexes.size(); ++e) {
       const auto x = hexCorners(h, e);
@@ -291,7 +291,7 @@ TEST(Sweep, SweepQuadsScalesLayersWithTheRadius) {
   const ChordalLocator locator(s);
   const QuadMesh q = sameQuads(s);
   const int m = 4;
-  const HexMesh h = sweepQuads(q, locator, m);
+  const HexMesh h = sweepQuads(q, locator, m).mesh;
   const std::vector<double> offsets = layerOffsets(m);
   for (size_t i = 0; i < h.nodes.size(); ++i) {
     const double r = 1 + 0.5 * h.nodes[i].x();

@@ -1,0 +1,28 @@
+// The two-way mapping π_t, π_b of the paper (§3): where a line through a point of the chordal
+// surface meets the top (ω_t) or the bottom (ω_b) wall of the CAD solid.
+#pragma once
+#include <IntCurvesFace_ShapeIntersector.hxx>
+
+#include <optional>
+
+#include "core/types.hpp"
+#include "geometry/cad_solid.hpp"
+#include "geometry/wall_sides.hpp"
+
+namespace hexlayer {
+
+class WallRays {
+ public:
+  WallRays(const CadSolid& cad, const WallSides& sides);
+  // Where the ray from `from` along the unit vector `dir` first leaves the solid, if that is on
+  // the `side` wall and closer than maxDistance (a ray that leaves through a lateral face, or a
+  // gap between faces, reaches no wall). Not thread-safe (OpenCASCADE's intersector keeps state).
+  std::optional<Vec3> cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance);
+
+ private:
+  const CadSolid& cad_;
+  const WallSides& sides_;
+  IntCurvesFace_ShapeIntersector rays_;
+};
+
+}  // namespace hexlayer
