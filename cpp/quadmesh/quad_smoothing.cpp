@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hexlayer {
 
@@ -16,6 +17,15 @@ double quadScaledJacobian(const std::array<Vec3, 4>& p) {
     sj = std::min(sj, len > 0 ? n.dot(e1.cross(e2)) / len : -1.0);
   }
   return sj;
+}
+
+double quadSmoothingQuality(const std::array<Vec3, 4>& p) {
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+  for (int k = 0; k < 4; ++k) {
+    const double l = (p[(k + 1) % 4] - p[k]).norm();
+    shortest = std::min(shortest, l), longest = std::max(longest, l);
+  }
+  return std::min(quadScaledJacobian(p), longest > 0 ? 2 * shortest / longest : -1.0);
 }
 
 namespace {
@@ -72,7 +82,7 @@ std::array<Vec3, 4> corners(const QuadMesh& q, int e, int moved, const Vec3& at)
 double worstAround(const QuadMesh& q, const NodeQuads& nq, int node, const Vec3& at) {
   double worst = 1;
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
-    worst = std::min(worst, quadScaledJacobian(corners(q, nq.quads[k], node, at)));
+    worst = std::min(worst, quadSmoothingQuality(corners(q, nq.quads[k], node, at)));
   return worst;
 }
 
@@ -80,8 +90,8 @@ double worstAround(const QuadMesh& q, const NodeQuads& nq, int node, const Vec3&
 double scoreAround(const QuadMesh& q, const NodeQuads& nq, int node, const Vec3& at) {
   double worst = 1, sum = 0;
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k) {
-    const double sj = quadScaledJacobian(corners(q, nq.quads[k], node, at));
-    worst = std::min(worst, sj), sum += sj;
+    const double quality = quadSmoothingQuality(corners(q, nq.quads[k], node, at));
+    worst = std::min(worst, quality), sum += quality;
   }
   return worst + kMeanWeight * sum / std::max(1, nq.start[node + 1] - nq.start[node]);
 }

@@ -1,5 +1,7 @@
 """End-to-end on real public parts from ../shared/parts/real (licences in its SOURCES.md): the flat
-Ender-3 X-motor bracket (a 3 mm plate with holes and slots) meshes into a valid layered hex mesh.
+Ender-3 X-motor bracket (a 3 mm plate with holes and slots) meshes into a valid layered hex mesh;
+the bent ones (the LCD support L-bracket, the support-frame U-channel with sharp inside bends)
+mesh, with a small share of inverted hexes at their inside corners that is not solved yet.
 
 Run by CTest as: /usr/bin/python3 test_real_parts.py --hexlayer PATH --source DIR
 """
@@ -40,6 +42,23 @@ class RealParts(unittest.TestCase):
                 self.assertLess(abs(r["volume"]["relative_error"]), 0.03)
                 self.assertTrue(r["boundary"]["watertight"])
                 self.assertEqual(r["hexes"] % layers, 0)
+
+    def test_bent_parts(self):
+        # Measured 2026-11-23: L-bracket 9252 hexes, 18 inverted, avg 0.895; U-channel 10192 hexes,
+        # 26 inverted, avg 0.878. The bounds below catch a step back, not the goal (no inverted hex).
+        # Each has two pinch points, where the chordal surface's rim touches itself at one vertex:
+        # the hexes there share an edge but no face (conformal, but 4 non-manifold boundary edges).
+        for name, thickness in (("ender3_lcd_support_Lbracket.step", 2.0), ("ender3_support_frame_Uchannel.step", 1.5)):
+            with self.subTest(part=name):
+                r = self.mesh(name, 2)
+                print(f"{name}: {r['hexes']} hexes, {r['inverted_hexes']} inverted, SJ avg "
+                      f"{r['scaled_jacobian']['avg']:.3f}, volume error {r['volume']['relative_error']:+.4f}")
+                self.assertAlmostEqual(r["thickness"], thickness, delta=0.01)
+                self.assertLess(r["inverted_hexes"], 0.01 * r["hexes"])
+                self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.85)
+                self.assertLess(abs(r["volume"]["relative_error"]), 0.03)
+                self.assertEqual(r["boundary"]["open_edges"], 0)
+                self.assertLessEqual(r["boundary"]["non_manifold_edges"], 4)
 
 
 if __name__ == "__main__":
