@@ -12,22 +12,13 @@ import numpy as np
 
 import harness
 import pyhexlayer
+from hex_geometry import hex_volumes
 
 PLATE_VOLUME = 60.0 * 40.0 * 2.0  # Resources/samples/plate.step: 60 x 40 x 2 mm
 
 
 def sample(name):
     return os.path.join(harness.args.source, "Resources", "samples", name)
-
-
-def hex_volumes(nodes, hexes):
-    """Volume of each hex, split into 6 tets around its diagonal 0-6 (negative if inverted)."""
-    x = nodes[hexes]  # (M, 8, 3)
-    tets = [(0, 1, 2, 6), (0, 2, 3, 6), (0, 3, 7, 6), (0, 7, 4, 6), (0, 4, 5, 6), (0, 5, 1, 6)]
-    volume = np.zeros(len(hexes))
-    for a, b, c, d in tets:
-        volume += np.einsum("ij,ij->i", x[:, b] - x[:, a], np.cross(x[:, c] - x[:, a], x[:, d] - x[:, a])) / 6.0
-    return volume
 
 
 def brep_of(step):
