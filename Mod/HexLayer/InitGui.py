@@ -1,13 +1,12 @@
 # Hex-Layer workbench, GUI start-up: one toolbar and one menu with the Hex-Layer commands.
+# FreeCAD runs this file with names of its own top level out of the class's sight: import where used.
 import FreeCADGui
-
-import hexlayer_fem
 
 
 class HexLayerWorkbench(FreeCADGui.Workbench):
     MenuText = "Hex-Layer"
     ToolTip = "Layered all-hex FEM meshes of thin solids (sheet metal, housings, brackets) for FEM analyses"
-    Icon = hexlayer_fem.icon("HexLayerWorkbench")
+    Icon = __import__("hexlayer_fem").icon("HexLayerWorkbench")
 
     def Initialize(self):
         from hexlayer_fem import commands

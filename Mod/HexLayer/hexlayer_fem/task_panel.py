@@ -17,47 +17,53 @@ class TaskPanel:
     def __init__(self, obj):
         self.obj = obj
         self.form = QtGui.QWidget()
+        self.form.setObjectName("HexLayerTaskPanel")  # the widgets' object names are for tests and macros
         self.form.setWindowTitle("Hex-Layer mesh")
         self.form.setWindowIcon(QtGui.QIcon(icon("HexLayer_Mesh")))
         layout = QtGui.QVBoxLayout(self.form)
         layout.addLayout(self.make_fields())
-        self.problem = self.label(ERROR_STYLE)
+        self.problem = self.label("problem", ERROR_STYLE)
         layout.addWidget(self.problem)
-        self.mesh_button = QtGui.QPushButton("Mesh")
+        self.mesh_button = self.named(QtGui.QPushButton("Mesh"), "mesh")
         self.mesh_button.clicked.connect(self.mesh)
         layout.addWidget(self.mesh_button)
         layout.addWidget(QtGui.QLabel("Progress:"))
-        self.progress = QtGui.QPlainTextEdit()
+        self.progress = self.named(QtGui.QPlainTextEdit(), "progress")
         self.progress.setReadOnly(True)
+        self.progress.setMaximumHeight(self.progress.fontMetrics().lineSpacing() * 12)  # the stages and a margin
         layout.addWidget(self.progress)
-        self.summary = self.label("")
+        self.summary = self.label("summary", "")
         layout.addWidget(self.summary)
         self.load()
         self.show_status()
 
     @staticmethod
-    def label(style):
-        label = QtGui.QLabel()
+    def named(widget, name):
+        widget.setObjectName(name)
+        return widget
+
+    def label(self, name, style):
+        label = self.named(QtGui.QLabel(), name)
         label.setWordWrap(True)
         label.setStyleSheet(style)
         return label
 
     def make_fields(self):
         fields = QtGui.QFormLayout()
-        self.part = QtGui.QComboBox()
-        self.layers = QtGui.QSpinBox()
+        self.part = self.named(QtGui.QComboBox(), "part")
+        self.layers = self.named(QtGui.QSpinBox(), "layers")
         self.layers.setRange(0, 999)  # pyhexlayer says which counts it takes
-        self.size = QtGui.QDoubleSpinBox()
+        self.size = self.named(QtGui.QDoubleSpinBox(), "size")
         self.size.setRange(0.0, 1e6)
         self.size.setDecimals(3)
         self.size.setSuffix(" mm")
         self.size.setSpecialValueText("auto (wall thickness)")
-        self.sizing = QtGui.QComboBox()
+        self.sizing = self.named(QtGui.QComboBox(), "sizing")
         self.sizing.addItems(list(meshing.SIZINGS))
-        self.aspect = QtGui.QDoubleSpinBox()
+        self.aspect = self.named(QtGui.QDoubleSpinBox(), "aspect")
         self.aspect.setRange(0.0, 1000.0)
         self.aspect.setSpecialValueText("off")
-        self.order = QtGui.QSpinBox()
+        self.order = self.named(QtGui.QSpinBox(), "order")
         self.order.setRange(1, 2)
         for name, widget in (("Part", self.part), ("Layers", self.layers), ("Size", self.size),
                              ("Sizing", self.sizing), ("Aspect", self.aspect), ("Order", self.order)):
@@ -71,8 +77,10 @@ class TaskPanel:
     # ---- widgets <-> object --------------------------------------------------------------------
 
     def load(self):
+        if self.obj.Part is None:
+            self.part.addItem("(choose a solid)", "")
         for part in meshable_parts(self.obj.Document, self.obj.Part):
-            self.part.addItem("{} ({})".format(part.Label, part.Name), part.Name)
+            self.part.addItem(part.Label if part.Label == part.Name else "{} ({})".format(part.Label, part.Name), part.Name)
         self.layers.setValue(self.obj.Layers)
         self.size.setValue(self.obj.Size.Value)
         self.sizing.setCurrentIndex(self.sizing.findText(self.obj.Sizing))
