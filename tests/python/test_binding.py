@@ -6,6 +6,7 @@ with PYTHONPATH holding the built module and tests/integration (for harness).
 import os
 import subprocess
 import tempfile
+import threading
 import unittest
 
 import numpy as np
@@ -144,6 +145,18 @@ class Callback(unittest.TestCase):
             pyhexlayer.mesh_file(sample("plate.step"), progress=stop)
         self.assertTrue(caught.exception.args[0].startswith("geometry:"))
         self.assertGreater(len(pyhexlayer.mesh_file(sample("plate.step")).hexes), 0, "the module still works")
+
+    def test_python_runs_while_the_core_meshes(self):
+        """The GIL is released during the stages: this thread sees the run between its first and last stage.
+        The callback is list.append, C code that never hands the GIL over by itself."""
+        lines, seen = [], set()
+        worker = threading.Thread(target=pyhexlayer.mesh_file, args=(sample("plate.step"),),
+                                  kwargs={"progress": lines.append})
+        worker.start()
+        while worker.is_alive():
+            seen.add(len(lines))
+        worker.join()
+        self.assertTrue(seen & set(range(1, len(lines))), "stages seen finished: {}".format(sorted(seen)))
 
     def test_callback_that_is_not_callable_is_a_type_error(self):
         with self.assertRaises(TypeError):
