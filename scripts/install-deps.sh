@@ -11,6 +11,8 @@ packages=(
   libgtest-dev googletest
   calculix-ccx
   python3-meshio python3-numpy python3-gmsh python3-matplotlib
+  pybind11-dev python3-dev
+  freecad xvfb xauth
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,31 @@
+"""Hex-Layer for FreeCAD macros: layered all-hex FEM meshes of thin solids.
+
+    import HexLayer
+    mesh = HexLayer.makeMesh(doc, part, Layers=2, Size=2.0)
+    doc.recompute()   # meshes; mesh.Status says how it went, mesh.FemMesh holds the hexa8 volumes
+
+Works in freecadcmd (no GUI) and in the GUI, where the mesh gets its view provider and task panel.
+"""
+import FreeCAD
+
+from hexlayer_fem import mesh_object
+
+__all__ = ["makeMesh"]
+
+
+def makeMesh(doc, part=None, name="HexLayerMesh", **properties):
+    """Adds a Hex-Layer mesh of `part` to `doc` and returns it, not yet meshed (recompute meshes it).
+    `properties` sets any of Layers, Size (mm), Sizing, Aspect, Order."""
+    unknown = sorted(set(properties) - set(mesh_object.MeshHexLayer.OPTIONS))
+    if unknown:
+        raise TypeError("makeMesh: unknown properties {}; use {}".format(
+            unknown, ", ".join(mesh_object.MeshHexLayer.OPTIONS)))
+    obj = doc.addObject("Fem::FemMeshObjectPython", name)
+    mesh_object.MeshHexLayer(obj)
+    obj.Part = part
+    for key, value in properties.items():
+        setattr(obj, key, value)
+    if FreeCAD.GuiUp:
+        from hexlayer_fem import view_provider
+        view_provider.VPMeshHexLayer(obj.ViewObject)
+    return obj

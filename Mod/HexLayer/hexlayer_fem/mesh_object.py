@@ -1,0 +1,56 @@
+"""The Hex-Layer mesh: a Fem::FemMeshObjectPython whose recompute meshes its Part (FEM's MeshGmsh conventions)."""
+import time
+
+import FreeCAD
+import Fem
+
+from . import Stateless, meshing
+
+
+class MeshHexLayer(Stateless):
+    """Proxy of the mesh object: properties Part, Layers, Size, Sizing, Aspect, Order and the read-only Status."""
+
+    Type = "Fem::MeshHexLayer"
+    OPTIONS = ("Layers", "Size", "Sizing", "Aspect", "Order")  # the properties the mesher takes besides Part
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.add_properties(obj)
+
+    def add_properties(self, obj):
+        """Adds the properties the object does not have yet (also for files saved by older versions)."""
+        def add(kind, name, doc, value):
+            if not hasattr(obj, name):
+                obj.addProperty(kind, name, "Hex-Layer", doc)
+                setattr(obj, name, value)
+        add("App::PropertyLink", "Part", "Thin solid to mesh (an object with a Shape holding a solid)", None)
+        add("App::PropertyInteger", "Layers", "Hex layers through the wall thickness (1-64)", 2)
+        add("App::PropertyLength", "Size", "Quad edge length on the mid-surface; 0 = the wall thickness", 0.0)
+        add("App::PropertyEnumeration", "Sizing", "Element sizing: uniform (adaptive is not supported yet)",
+            list(meshing.SIZINGS))
+        add("App::PropertyFloat", "Aspect", "In-plane size / layer thickness; 0 = off (other values not supported yet)", 0.0)
+        add("App::PropertyInteger", "Order", "Element order: 1 = hexa8 (2 = hexa20 is not supported yet)", 1)
+        add("App::PropertyString", "Status", "Summary of the last meshing, or why it failed", "")
+        obj.setEditorMode("Status", 1)  # read-only
+
+    def onDocumentRestored(self, obj):
+        self.add_properties(obj)
+
+    def execute(self, obj):
+        """Meshes the Part; on failure the FemMesh is emptied (no stale mesh reaches a solver) and the error raised."""
+        start = time.perf_counter()
+        try:
+            result = meshing.mesh(obj.Part, meshing.options(obj), progress=self.progress)
+        except Exception as error:
+            obj.FemMesh = Fem.FemMesh()
+            obj.Status = "Failed: " + meshing.for_people(str(error))
+            raise
+        obj.FemMesh = meshing.femmesh(result)
+        obj.Status = meshing.summary(result.report, time.perf_counter() - start)
+
+    listener = None  # a task panel sets a callable here while it meshes, to show the progress lines
+
+    def progress(self, line):
+        FreeCAD.Console.PrintLog("Hex-Layer: {}\n".format(line))
+        if self.listener is not None:
+            self.listener(line)

@@ -1,0 +1,157 @@
+"""Task panel of the Hex-Layer mesh: the part and options, a Mesh button, progress lines, summary or error."""
+import FreeCADGui
+from PySide import QtCore, QtGui  # FreeCAD 0.20's PySide shim: the widgets are in QtGui
+
+from . import icon, meshing
+
+ERROR_STYLE = "color: #c00000;"
+
+
+def meshable_parts(doc, current):
+    """The document's objects with a solid, and the current Part (whatever it is) first."""
+    parts = [o for o in doc.Objects if o is not current and meshing.part_problem(o) is None]
+    return ([current] if current is not None else []) + parts
+
+
+class TaskPanel:
+    def __init__(self, obj):
+        self.obj = obj
+        self.form = QtGui.QWidget()
+        self.form.setObjectName("HexLayerTaskPanel")  # the widgets' object names are for tests and macros
+        self.form.setWindowTitle("Hex-Layer mesh")
+        self.form.setWindowIcon(QtGui.QIcon(icon("HexLayer_Mesh")))
+        layout = QtGui.QVBoxLayout(self.form)
+        layout.addLayout(self.make_fields())
+        self.problem = self.label("problem", ERROR_STYLE)
+        layout.addWidget(self.problem)
+        self.mesh_button = self.named(QtGui.QPushButton("Mesh"), "mesh")
+        self.mesh_button.clicked.connect(self.mesh)
+        layout.addWidget(self.mesh_button)
+        layout.addWidget(QtGui.QLabel("Progress:"))
+        self.progress = self.named(QtGui.QPlainTextEdit(), "progress")
+        self.progress.setReadOnly(True)
+        self.progress.setMaximumHeight(self.progress.fontMetrics().lineSpacing() * 12)  # the stages and a margin
+        layout.addWidget(self.progress)
+        self.summary = self.label("summary", "")
+        layout.addWidget(self.summary)
+        self.load()
+        self.show_status()
+
+    @staticmethod
+    def named(widget, name):
+        widget.setObjectName(name)
+        return widget
+
+    def label(self, name, style):
+        label = self.named(QtGui.QLabel(), name)
+        label.setWordWrap(True)
+        label.setStyleSheet(style)
+        return label
+
+    def make_fields(self):
+        fields = QtGui.QFormLayout()
+        self.part = self.named(QtGui.QComboBox(), "part")
+        self.layers = self.named(QtGui.QSpinBox(), "layers")
+        self.layers.setRange(0, 999)  # pyhexlayer says which counts it takes
+        self.size = self.named(QtGui.QDoubleSpinBox(), "size")
+        self.size.setRange(0.0, 1e6)
+        self.size.setDecimals(3)
+        self.size.setSuffix(" mm")
+        self.size.setSpecialValueText("auto (wall thickness)")
+        self.sizing = self.named(QtGui.QComboBox(), "sizing")
+        self.sizing.addItems(list(meshing.SIZINGS))
+        self.aspect = self.named(QtGui.QDoubleSpinBox(), "aspect")
+        self.aspect.setRange(0.0, 1000.0)
+        self.aspect.setSpecialValueText("off")
+        self.order = self.named(QtGui.QSpinBox(), "order")
+        self.order.setRange(1, 2)
+        for name, widget in (("Part", self.part), ("Layers", self.layers), ("Size", self.size),
+                             ("Sizing", self.sizing), ("Aspect", self.aspect), ("Order", self.order)):
+            fields.addRow(name + ":", widget)
+        self.part.currentIndexChanged.connect(self.check)
+        self.sizing.currentIndexChanged.connect(self.check)
+        for spin in (self.layers, self.size, self.aspect, self.order):
+            spin.valueChanged.connect(self.check)
+        return fields
+
+    # ---- widgets <-> object --------------------------------------------------------------------
+
+    def load(self):
+        if self.obj.Part is None:
+            self.part.addItem("(choose a solid)", "")
+        for part in meshable_parts(self.obj.Document, self.obj.Part):
+            self.part.addItem(part.Label if part.Label == part.Name else "{} ({})".format(part.Label, part.Name), part.Name)
+        self.layers.setValue(self.obj.Layers)
+        self.size.setValue(self.obj.Size.Value)
+        self.sizing.setCurrentIndex(self.sizing.findText(self.obj.Sizing))
+        self.aspect.setValue(self.obj.Aspect)
+        self.order.setValue(self.obj.Order)
+        self.check()
+
+    def selected_part(self):
+        name = self.part.itemData(self.part.currentIndex())
+        return self.obj.Document.getObject(name) if name else None
+
+    def options(self):
+        return dict(layers=self.layers.value(), size=self.size.value(), sizing=self.sizing.currentText(),
+                    aspect=self.aspect.value(), order=self.order.value())
+
+    def apply(self):
+        opts = self.options()
+        self.obj.Part = self.selected_part()
+        self.obj.Layers, self.obj.Size, self.obj.Sizing = opts["layers"], opts["size"], opts["sizing"]
+        self.obj.Aspect, self.obj.Order = opts["aspect"], opts["order"]
+
+    # ---- checks, meshing, results ----------------------------------------------------------------
+
+    def check(self):
+        """Says in the panel why the part or the options cannot be meshed; Mesh only when they can."""
+        problem = meshing.part_problem(self.selected_part()) or meshing.option_problem(self.options())
+        self.problem.setText(problem or "")
+        self.problem.setVisible(bool(problem))
+        self.mesh_button.setEnabled(not problem)
+
+    def show_progress(self, line):
+        self.progress.appendPlainText(line)
+        QtGui.QApplication.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
+
+    def mesh(self):
+        """Applies the options and meshes now, showing each stage as it finishes."""
+        self.apply()
+        self.progress.clear()
+        self.summary.clear()
+        self.obj.Proxy.listener = self.show_progress
+        QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+        try:
+            self.obj.touch()
+            self.obj.Document.recompute()
+        finally:
+            self.obj.Proxy.listener = None
+            QtGui.QApplication.restoreOverrideCursor()
+        self.show_status()
+        if self.obj.isValid():
+            self.obj.ViewObject.show()
+            self.obj.Part.ViewObject.hide()
+
+    def show_status(self):
+        self.summary.setText(self.obj.Status)
+        self.summary.setStyleSheet("" if self.obj.isValid() else ERROR_STYLE)
+
+    # ---- task dialog ---------------------------------------------------------------------------------
+
+    def getStandardButtons(self):
+        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
+
+    def accept(self):
+        """OK: keeps the options; the mesh follows them at the next recompute."""
+        self.apply()
+        self.close()
+        self.obj.Document.recompute()
+        return True
+
+    def reject(self):
+        self.close()
+        return True
+
+    def close(self):
+        FreeCADGui.getDocument(self.obj.Document).resetEdit()

@@ -1,0 +1,282 @@
+// pyhexlayer: the Hex-Layer pipeline as a Python module (pybind11), for FreeCAD's workbench and macros.
+// mesh_file(path, ...) and mesh_brep(text, ...) take the CLI's options as keywords and return a MeshResult
+// of NumPy arrays and the report dict. hexlayer::Error becomes UsageError / InputError / GeometryError
+// (subclasses of HexLayerError, with the CLI's exit code and message); no C++ exception reaches the interpreter.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <Standard_Failure.hxx>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "core/error.hpp"
+#include "pipeline/pipeline.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using hexlayer::ExitCode;
+
+// The options of the CLI, plus those the method will take (issue 3) but the core does not yet: each of
+// those accepts the one value the core implements today, so scripts can be written against the final API.
+struct Options {
+  hexlayer::MeshOptions core;
+  std::string sizing = "uniform";
+  double aspect = 0;  // in-plane size / layer thickness; 0 = off
+  int order = 1;
+};
+
+std::string number(double value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+
+void validate(const Options& o) {
+  hexlayer::validateOptions(o.core);
+  if (o.sizing != "uniform")
+    throw hexlayer::usageError("--sizing must be 'uniform' (geometry-adaptive sizing is not supported yet), got '" + o.sizing + "'");
+  if (o.aspect != 0)
+    throw hexlayer::usageError("--aspect must be 0 = off (aspect-ratio control is not supported yet), got " + number(o.aspect));
+  if (o.order != 1)
+    throw hexlayer::usageError("--order must be 1 (quadratic hexes are not supported yet), got " + std::to_string(o.order));
+}
+
+Options makeOptions(int layers, double size, const std::string& sizing, double aspect, int order) {
+  Options o;
+  o.core.layers = layers;
+  o.core.size = size;
+  o.sizing = sizing;
+  o.aspect = aspect;
+  o.order = order;
+  validate(o);
+  return o;
+}
+
+// ---- results as Python objects -------------------------------------------------------------------
+
+py::object toPython(const nlohmann::json& j) {
+  switch (j.type()) {
+    case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(j.get<long long>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
+    case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
+    case nlohmann::json::value_t::string: return py::str(j.get<std::string>());
+    case nlohmann::json::value_t::array: {
+      py::list list;
+      for (const auto& item : j) list.append(toPython(item));
+      return std::move(list);
+    }
+    case nlohmann::json::value_t::object: {
+      py::dict dict;
+      for (const auto& [key, value] : j.items()) dict[py::str(key)] = toPython(value);
+      return std::move(dict);
+    }
+    default: return py::none();
+  }
+}
+
+struct PyMeshResult {
+  py::array_t<double> nodes;            // (N, 3)
+  py::array_t<long long> hexes;         // (M, 8), 0-based, HexMesh node order
+  py::array_t<double> scaledJacobian;   // (M,)
+  py::dict nodeSets;                    // name -> node ids (0-based)
+  py::dict report;
+};
+
+py::array_t<double> nodeArray(const std::vector<hexlayer::Vec3>& nodes) {
+  py::array_t<double> a({static_cast<py::ssize_t>(nodes.size()), py::ssize_t(3)});
+  auto v = a.mutable_unchecked<2>();
+  for (size_t i = 0; i < nodes.size(); ++i)
+    for (int k = 0; k < 3; ++k) v(i, k) = nodes[i][k];
+  return a;
+}
+
+py::array_t<long long> hexArray(const std::vector<std::array<int, 8>>& hexes) {
+  py::array_t<long long> a({static_cast<py::ssize_t>(hexes.size()), py::ssize_t(8)});
+  auto v = a.mutable_unchecked<2>();
+  for (size_t i = 0; i < hexes.size(); ++i)
+    for (int k = 0; k < 8; ++k) v(i, k) = hexes[i][k];
+  return a;
+}
+
+template <class T>
+py::array_t<T> vectorArray(const std::vector<T>& values) {
+  return py::array_t<T>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+PyMeshResult toPython(const hexlayer::MeshResult& r) {
+  PyMeshResult p;
+  p.nodes = nodeArray(r.mesh.nodes);
+  p.hexes = hexArray(r.mesh.hexes);
+  p.scaledJacobian = vectorArray(r.scaledJacobian);
+  for (const hexlayer::NodeSet& set : r.nodeSets)
+    p.nodeSets[py::str(set.name)] = vectorArray(std::vector<long long>(set.nodes.begin(), set.nodes.end()));
+  p.report = toPython(r.report);
+  return p;
+}
+
+// ---- running the pipeline without the GIL -----------------------------------------------------------
+
+// The pipeline runs with the GIL released; each progress line takes it back to call `progress` (if not None)
+// and to let Ctrl-C stop the run between stages. An exception of the callback ends the run and reaches the caller.
+// The callback is held by pointer: copies of the std::function (made without the GIL) never touch its refcount.
+hexlayer::MeshResult runReleased(const std::function<hexlayer::MeshResult(const hexlayer::MeshOptions&)>& run,
+                                 Options o, const py::object& progress) {
+  const py::object* callback = &progress;
+  o.core.progress = [callback](const std::string& line) {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (!callback->is_none()) (*callback)(line);
+  };
+  py::gil_scoped_release release;
+  return run(o.core);
+}
+
+// A temporary .brep file holding `text`, removed when this goes out of scope.
+class TemporaryBrep {
+ public:
+  explicit TemporaryBrep(const std::string& text) {
+    std::string pattern = (std::filesystem::temp_directory_path() / "pyhexlayer-XXXXXX.brep").string();
+    const int fd = mkstemps(pattern.data(), 5);
+    if (fd < 0) throw hexlayer::inputError("cannot create a temporary file for the BREP string");
+    close(fd);
+    path_ = pattern;
+    std::ofstream(path_, std::ios::binary) << text;
+  }
+  ~TemporaryBrep() { std::remove(path_.c_str()); }
+  TemporaryBrep(const TemporaryBrep&) = delete;
+  TemporaryBrep& operator=(const TemporaryBrep&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// The core names its input file in its messages: say "the BREP string" instead of the temporary file.
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+PyMeshResult meshFile(const std::string& path, const Options& o, const py::object& progress) {
+  return toPython(runReleased([&](const hexlayer::MeshOptions& core) { return hexlayer::meshFile(path, core); }, o, progress));
+}
+
+// The BREP string is meshed through a temporary file, so it takes the file's path in the core: the same
+// reading, solid extraction (solids, or the solids closed shells bound) and validation as a .brep file.
+PyMeshResult meshBrep(const std::string& text, const Options& o, const py::object& progress) {
+  const TemporaryBrep file(text);
+  try {
+    return meshFile(file.path(), o, progress);
+  } catch (const hexlayer::Error& e) {
+    throw hexlayer::Error(e.code(), replaceAll(e.what(), "'" + file.path() + "'", "the BREP string"));
+  }
+}
+
+// ---- exceptions ---------------------------------------------------------------------------------------
+
+struct ExceptionTypes {
+  py::object base, usage, input, geometry;
+  const py::object& of(ExitCode code) const {
+    switch (code) {
+      case ExitCode::BadUsage: return usage;
+      case ExitCode::BadInput: return input;
+      case ExitCode::UnsupportedGeometry: return geometry;
+      default: return base;
+    }
+  }
+};
+
+py::object defineException(py::module_& m, const char* name, PyObject* base, int exitCode, const char* doc) {
+  py::object type = py::reinterpret_steal<py::object>(
+      PyErr_NewExceptionWithDoc((std::string("pyhexlayer.") + name).c_str(), doc, base, nullptr));
+  if (!type) throw py::error_already_set();
+  type.attr("exit_code") = exitCode;
+  m.attr(name) = type;
+  return type;
+}
+
+ExceptionTypes defineExceptions(py::module_& m) {
+  ExceptionTypes t;
+  t.base = defineException(m, "HexLayerError", PyExc_Exception, int(ExitCode::Internal),
+                           "A meshing run failed; exit_code is the CLI's exit code, str() its message.");
+  t.usage = defineException(m, "UsageError", t.base.ptr(), int(ExitCode::BadUsage), "A bad option value (exit code 2).");
+  t.input = defineException(m, "InputError", t.base.ptr(), int(ExitCode::BadInput),
+                            "A missing, unreadable or invalid input file or shape (exit code 3).");
+  t.geometry = defineException(m, "GeometryError", t.base.ptr(), int(ExitCode::UnsupportedGeometry),
+                               "A valid solid the method does not handle, e.g. not thin (exit code 4).");
+  return t;
+}
+
+void raise(const py::object& type, const std::string& message, int exitCode) {
+  py::object error = type(message);
+  error.attr("exit_code") = exitCode;
+  PyErr_SetObject(type.ptr(), error.ptr());
+}
+
+void registerTranslator(const ExceptionTypes& types) {
+  static const ExceptionTypes* translated = new ExceptionTypes(types);  // lives as long as the interpreter
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const hexlayer::Error& e) {
+      raise(translated->of(e.code()), e.what(), int(e.code()));
+    } catch (const Standard_Failure& e) {  // OpenCASCADE's exceptions are not std::exceptions
+      PyErr_SetString(PyExc_RuntimeError, (std::string("OpenCASCADE: ") + e.GetMessageString()).c_str());
+    }
+  });
+}
+
+// The keyword arguments shared by mesh_file, mesh_brep and check_options.
+#define HEXLAYER_OPTION_ARGS                                                                                 \
+  py::kw_only(), py::arg("layers") = 2, py::arg("size") = 0.0, py::arg("sizing") = "uniform",             \
+      py::arg("aspect") = 0.0, py::arg("order") = 1
+
+constexpr const char* kOptionsDoc =
+    "layers: hex layers through the thickness (1-64); size: quad edge length, 0 = the wall thickness; "
+    "sizing: 'uniform' (only value today); aspect: in-plane size / layer thickness, 0 = off (only value today); "
+    "order: 1 = linear hexes (only value today); progress: callable taking one line per finished stage, or None "
+    "(an exception it raises ends the run).";
+
+}  // namespace
+
+PYBIND11_MODULE(pyhexlayer, m) {
+  m.doc() = "Hex-Layer: layered all-hex FEM meshes of thin CAD solids.";
+  registerTranslator(defineExceptions(m));
+
+  py::class_<PyMeshResult>(m, "MeshResult", "Nodes, hexes, per-hex quality, node sets and the report of one run.")
+      .def_readonly("nodes", &PyMeshResult::nodes, "float64 (N, 3) node coordinates")
+      .def_readonly("hexes", &PyMeshResult::hexes,
+                    "int64 (M, 8) 0-based node ids; corners 0-3 the bottom quad, 4-7 the quad above them")
+      .def_readonly("scaled_jacobian", &PyMeshResult::scaledJacobian, "float64 (M,) Verdict scaled Jacobian per hex")
+      .def_readonly("node_sets", &PyMeshResult::nodeSets, "dict: 'TOP', 'BOTTOM', 'RIM' -> int64 node ids (0-based)")
+      .def_readonly("report", &PyMeshResult::report, "dict: the CLI's JSON report")
+      .def("__repr__", [](const PyMeshResult& r) {
+        return "<pyhexlayer.MeshResult " + std::to_string(r.hexes.shape(0)) + " hexes, " +
+               std::to_string(r.nodes.shape(0)) + " nodes>";
+      });
+
+  m.def("mesh_file",
+        [](const std::string& path, int layers, double size, const std::string& sizing, double aspect, int order,
+           const py::object& progress) { return meshFile(path, makeOptions(layers, size, sizing, aspect, order), progress); },
+        py::arg("path"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(),
+        (std::string("Meshes every solid of a STEP, IGES or BREP file. ") + kOptionsDoc).c_str());
+  m.def("mesh_brep",
+        [](const std::string& text, int layers, double size, const std::string& sizing, double aspect, int order,
+           const py::object& progress) { return meshBrep(text, makeOptions(layers, size, sizing, aspect, order), progress); },
+        py::arg("brep"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(),
+        (std::string("Meshes every solid of a shape in OpenCASCADE's BREP text (FreeCAD: Shape.exportBrepToString()). ") +
+         kOptionsDoc).c_str());
+  m.def("check_options",
+        [](int layers, double size, const std::string& sizing, double aspect, int order) {
+          makeOptions(layers, size, sizing, aspect, order);
+        },
+        HEXLAYER_OPTION_ARGS, "Raises UsageError, with the CLI's message, if an option value is not supported.");
+}

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the FreeCAD workbench Hex-Layer: Mod/HexLayer and the Python module pyhexlayer (built for
+# /usr/bin/python3, FreeCAD 0.20's interpreter) copied into FreeCAD's user Mod folder.
+# Usage: scripts/install-workbench.sh            installs the Debian packages (FreeCAD too), builds, installs
+#        scripts/install-workbench.sh BUILD_DIR  installs from a build folder that already holds the module
+# The Mod folder is $FREECAD_MOD_DIR, else ${XDG_DATA_HOME:-~/.local/share}/FreeCAD/Mod (FreeCAD 0.20 on Debian).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-}
+if [ -z "$build" ]; then
+  build=build
+  scripts/install-deps.sh
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build" -j"$(nproc)" --target pyhexlayer
+fi
+modules=("$build"/python/pyhexlayer*.so)
+if [ ! -f "${modules[0]}" ]; then
+  echo "install-workbench: no pyhexlayer module in $build/python (is pybind11-dev installed? build first)" >&2
+  exit 1
+fi
+target="${FREECAD_MOD_DIR:-${XDG_DATA_HOME:-$HOME/.local/share}/FreeCAD/Mod}/HexLayer"
+rm -rf "$target"
+mkdir -p "$target"
+cp -r Mod/HexLayer/. "$target/"
+find "$target" -name __pycache__ -prune -exec rm -rf {} +
+cp "${modules[0]}" "$target/"
+echo "Hex-Layer workbench installed in $target: (re)start FreeCAD and choose the Hex-Layer workbench."

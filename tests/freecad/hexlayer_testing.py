@@ -1,0 +1,76 @@
+"""Shared by the FreeCAD tests: parts, and the hexes as CalculiX reads them.
+
+CTest runs each test module as `freecadcmd -t MODULE -M tests/freecad` with tests/python on PYTHONPATH and
+the workbench installed by scripts/install-workbench.sh into a private FreeCAD user folder."""
+import os
+import tempfile
+
+import numpy as np
+
+import FreeCAD
+from hex_geometry import hex_volumes
+
+PLATE = (100.0, 20.0, 2.0)  # length x, width y, thickness z (mm)
+
+
+def sample(name):
+    """A part of Resources/samples (CTest passes the source folder as HEXLAYER_SOURCE)."""
+    return os.path.join(os.environ["HEXLAYER_SOURCE"], "Resources", "samples", name)
+
+
+def new_document(test):
+    """A new document, closed when `test` ends (unless the test closed it)."""
+    doc = FreeCAD.newDocument(type(test).__name__)
+    test.addCleanup(close_document, doc.Name)
+    return doc
+
+
+def close_document(name):
+    if name in FreeCAD.listDocuments():
+        FreeCAD.closeDocument(name)
+
+
+def add_plate(doc, name="Plate"):
+    """The 100 x 20 x 2 mm plate as a Part box: Face1 at x = 0, Face2 at x = 100, Face6 on top (z = 2)."""
+    box = doc.addObject("Part::Box", name)
+    box.Length, box.Width, box.Height = PLATE
+    doc.recompute()
+    return box
+
+
+def add_sample(doc, file_name):
+    """A sample STEP part as a Part feature."""
+    import Part
+    part = doc.addObject("Part::Feature", os.path.splitext(file_name)[0])
+    part.Shape = Part.read(sample(file_name))
+    doc.recompute()
+    return part
+
+
+def read_inp(path):
+    """Nodes (N, 3) and the first 8 node ids of each element (0-based rows of nodes) of an Abaqus/CalculiX .inp."""
+    nodes, elements, section = {}, [], None
+    with open(path) as f:
+        for line in f:
+            if line.startswith("**") or not line.strip():
+                continue
+            if line.startswith("*"):
+                keyword = line.split(",")[0].strip().upper()
+                section = keyword if keyword in ("*NODE", "*ELEMENT") else None
+                continue
+            values = [v for v in line.split(",") if v.strip()]
+            if section == "*NODE":
+                nodes[int(values[0])] = [float(v) for v in values[1:4]]
+            elif section == "*ELEMENT":
+                elements.append([int(v) for v in values[1:9]])
+    ids = sorted(nodes)
+    row = {node: i for i, node in enumerate(ids)}
+    return np.array([nodes[i] for i in ids]), np.array([[row[n] for n in e] for e in elements])
+
+
+def written_hex_volumes(femmesh):
+    """Hex volumes of a FemMesh as FreeCAD writes it for CalculiX (writeABAQUS, C3D8)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "mesh.inp")
+        femmesh.writeABAQUS(path, 1, False)
+        return hex_volumes(*read_inp(path))

@@ -1,0 +1,123 @@
+"""The Hex-Layer mesh object in FreeCAD without GUI: HexLayer.makeMesh, recompute, FemMesh, failures, save/load.
+
+Run: freecadcmd -t test_hexlayer_app -M tests/freecad (see hexlayer_testing for the environment).
+"""
+import os
+import tempfile
+import unittest
+
+import FreeCAD
+import HexLayer
+import pyhexlayer
+
+import hexlayer_testing as t
+
+
+class PlateMesh(unittest.TestCase):
+    """100 x 20 x 2 mm plate, 2 layers: the FemMesh holds exactly the binding's mesh, as positive hexa8."""
+
+    def setUp(self):
+        self.doc = t.new_document(self)
+        self.plate = t.add_plate(self.doc)
+        self.mesh = HexLayer.makeMesh(self.doc, self.plate, Layers=2)
+        self.doc.recompute()
+        self.assertTrue(self.mesh.isValid(), self.mesh.Status)
+
+    def test_femmesh_equals_the_binding(self):
+        result = pyhexlayer.mesh_brep(self.plate.Shape.exportBrepToString(), layers=2)
+        fem = self.mesh.FemMesh
+        self.assertGreater(fem.VolumeCount, 0)
+        self.assertEqual(fem.VolumeCount, len(result.hexes))
+        self.assertEqual(fem.HexaCount, fem.VolumeCount)
+        self.assertEqual(fem.NodeCount, len(result.nodes))
+        groups = {fem.getGroupName(g): len(fem.getGroupElements(g)) for g in fem.Groups}
+        self.assertEqual(groups, {name: len(nodes) for name, nodes in result.node_sets.items()})
+        self.assertIn("{} hexes".format(fem.VolumeCount), self.mesh.Status)
+
+    def test_hexes_written_for_calculix_fill_the_plate(self):
+        volumes = t.written_hex_volumes(self.mesh.FemMesh)
+        self.assertEqual(len(volumes), self.mesh.FemMesh.VolumeCount)
+        self.assertGreater(volumes.min(), 0, "C3D8 node order as FreeCAD writes it: no inverted hex")
+        plate_volume = t.PLATE[0] * t.PLATE[1] * t.PLATE[2]
+        self.assertLess(abs(volumes.sum() - plate_volume) / plate_volume, 0.03)
+
+    def test_property_change_remeshes_on_recompute(self):
+        hexes_2 = self.mesh.FemMesh.VolumeCount
+        self.mesh.Layers = 3
+        self.doc.recompute()
+        self.assertEqual(self.mesh.FemMesh.VolumeCount * 2, hexes_2 * 3, "same quads, one layer more")
+        self.plate.Length = 50
+        self.doc.recompute()
+        self.assertLess(self.mesh.FemMesh.VolumeCount, hexes_2, "a shorter part re-meshes too")
+
+    def test_saved_document_reopens_with_its_mesh(self):
+        path = os.path.join(tempfile.mkdtemp(), "plate.FCStd")
+        self.doc.saveAs(path)
+        hexes, name, part = self.mesh.FemMesh.VolumeCount, self.mesh.Name, self.plate.Name
+        FreeCAD.closeDocument(self.doc.Name)
+        doc = FreeCAD.openDocument(path)
+        self.addCleanup(t.close_document, doc.Name)
+        mesh = doc.getObject(name)
+        self.assertEqual(type(mesh.Proxy).__name__, "MeshHexLayer")
+        self.assertEqual((mesh.Part.Name, mesh.Layers, mesh.FemMesh.VolumeCount), (part, 2, hexes))
+        mesh.Layers = 1
+        doc.recompute()
+        self.assertEqual(mesh.FemMesh.VolumeCount * 2, hexes)
+
+
+class Failures(unittest.TestCase):
+    """A part or option the mesher cannot take: the object says why, holds no mesh, the document goes on."""
+
+    def setUp(self):
+        self.doc = t.new_document(self)
+
+    def assert_fails(self, mesh, *phrases):
+        self.doc.recompute()
+        self.assertFalse(mesh.isValid())
+        self.assertEqual(mesh.FemMesh.VolumeCount, 0, "no stale mesh for a solver")
+        self.assertTrue(mesh.Status.startswith("Failed: "), mesh.Status)
+        for phrase in phrases:
+            self.assertIn(phrase, mesh.Status)
+
+    def assert_recovers(self, mesh):
+        """The same object meshes again once given a thin solid."""
+        mesh.Part = t.add_plate(self.doc, "GoodPlate")
+        self.doc.recompute()
+        self.assertTrue(mesh.isValid(), mesh.Status)
+        self.assertGreater(mesh.FemMesh.VolumeCount, 0)
+
+    def test_no_part(self):
+        mesh = HexLayer.makeMesh(self.doc, None)
+        self.assert_fails(mesh, "No part to mesh")
+        self.assert_recovers(mesh)
+
+    def test_sketch_is_not_a_solid(self):
+        import Part
+        import Sketcher  # noqa: F401  (registers Sketcher::SketchObject)
+        sketch = self.doc.addObject("Sketcher::SketchObject", "Sketch")
+        sketch.addGeometry(Part.LineSegment(FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(10, 0, 0)))
+        mesh = HexLayer.makeMesh(self.doc, sketch)
+        self.assert_fails(mesh, "'Sketch'", "not a solid")
+        self.assert_recovers(mesh)
+
+    def test_thick_block_is_not_a_thin_part(self):
+        mesh = HexLayer.makeMesh(self.doc, t.add_sample(self.doc, "thick_block.step"))
+        self.assert_fails(mesh, "not a thin section")
+        self.assert_recovers(mesh)
+
+    def test_options_the_core_does_not_have_yet(self):
+        plate = t.add_plate(self.doc)
+        for name, value, phrase in (("Order", 2, "Order must be 1"), ("Sizing", "adaptive", "Sizing must be 'uniform'"),
+                                    ("Aspect", 3.0, "Aspect must be 0"), ("Layers", 0, "Layers must be between 1 and")):
+            with self.subTest(property=name):
+                mesh = HexLayer.makeMesh(self.doc, plate, **{name: value})
+                self.assert_fails(mesh, phrase)
+
+    def test_unknown_keyword_is_refused_before_any_object_is_made(self):
+        with self.assertRaises(TypeError):
+            HexLayer.makeMesh(self.doc, None, Layer=2)
+        self.assertEqual(self.doc.Objects, [])
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,165 @@
+"""FreeCAD's own FEM on a Hex-Layer mesh: a 100 x 20 x 2 mm steel cantilever plate solved with CalculiX.
+
+Analysis, material (steel, E = 210000 MPa, nu = 0.3), Fixed constraint on the end face x = 0 (Face1), Force
+10 N on the end face x = 100 (Face2) in -z, i.e. bending through the 2 mm thickness, CalculiX run by FreeCAD's
+solver tools (femtools.ccxtools.FemToolsCcx); the tip deflection is the mean u_z of the nodes FreeCAD finds on
+Face2.
+
+FreeCAD 0.20 writes every hexa8 as C3D8 (fully integrated): with 2 layers it locks in shear and comes out
+stiff. The same written .inp is therefore also run with C3D8I (incompatible modes), and the converged
+reference is C3D8I on a finer mesh (1 mm quads, 4 layers) with the same FreeCAD constraints. Measured on
+Debian 12 (FreeCAD 0.20.2, CalculiX 2.20): reference 1.1716 mm (beam theory PL^3/3EI 1.1905 mm: the clamp
+holding every DOF of Face1, Poisson contraction too, stiffens it by 1.6 %); C3D8I on the 2-layer mesh 1.1634 mm
+(-0.7 %); C3D8 on the 2-layer mesh 0.909 mm (-22 %). The issue's 1 % target needs quadratic hexes (issue 3).
+
+Run: freecadcmd -t test_hexlayer_ccx -M tests/freecad (see hexlayer_testing for the environment).
+"""
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+import numpy as np
+
+import FreeCAD
+import HexLayer
+import ObjectsFem
+from femtools import ccxtools
+from feminout import importCcxFrdResults
+
+import hexlayer_testing as t
+
+E, NU, FORCE = 210000.0, 0.3, 10.0
+
+
+def add_analysis(doc, plate):
+    """Analysis with CalculiX solver, steel, Fixed on Face1 and Force 10 N in -z on Face2."""
+    analysis = ObjectsFem.makeAnalysis(doc, "Analysis")
+    solver = ObjectsFem.makeSolverCalculixCcxTools(doc, "CalculiX")
+    material = ObjectsFem.makeMaterialSolid(doc, "Steel")
+    material.Material = dict(material.Material, Name="Steel", YoungsModulus="{} MPa".format(E), PoissonRatio=str(NU))
+    fixed = ObjectsFem.makeConstraintFixed(doc, "Fixed")
+    fixed.References = [(plate, "Face1")]
+    force = ObjectsFem.makeConstraintForce(doc, "Force")
+    force.References = [(plate, "Face2")]
+    force.Force = FORCE
+    force.Direction = (plate, ["Face6"])  # the top face's normal, +z, ...
+    force.Reversed = True                 # ... reversed: the load pushes the tip down (-z)
+    for obj in (solver, material, fixed, force):
+        analysis.addObject(obj)
+    return analysis, solver
+
+
+def write_inp(analysis, solver, work):
+    """FreeCAD's solver tools write the analysis's .inp into `work`; returns them."""
+    fea = ccxtools.FemToolsCcx(analysis, solver)
+    fea.update_objects()
+    fea.setup_working_dir(work, create=True)
+    fea.write_inp_file()
+    return fea
+
+
+def write_and_solve(analysis, solver, work):
+    """FreeCAD's solver tools write the .inp and run CalculiX; returns (.inp path, result object)."""
+    fea = write_inp(analysis, solver, work)
+    fea.setup_ccx()
+    problem = fea.check_prerequisites()
+    if problem:
+        raise AssertionError("CalculiX prerequisites: " + problem)
+    fea.ccx_run()
+    fea.load_results()
+    results = [o for o in analysis.Group if o.isDerivedFrom("Fem::FemResultObject")]
+    return fea.inp_file_name, (results[0] if results else None)
+
+
+def solve_as(inp, element):
+    """Runs CalculiX on a copy of FreeCAD's .inp with every C3D8 made `element`; node id -> displacement."""
+    work = os.path.join(os.path.dirname(inp), element)
+    os.makedirs(work)
+    with open(inp) as f:
+        text = f.read()
+    with open(os.path.join(work, "job.inp"), "w") as f:
+        f.write(text.replace("TYPE=C3D8,", "TYPE={},".format(element)))
+    done = subprocess.run(["ccx", "-i", "job"], cwd=work, capture_output=True, text=True, timeout=600,
+                          env=dict(os.environ, OMP_NUM_THREADS="1"))
+    if done.returncode != 0 or "ERROR" in done.stdout:
+        raise AssertionError("ccx failed:\n" + done.stdout[-2000:])
+    return importCcxFrdResults.read_frd_result(os.path.join(work, "job.frd"))["Results"][0]["disp"]
+
+
+def tip_deflection(displacement, tip_nodes):
+    return float(np.mean([displacement[n].z for n in tip_nodes]))
+
+
+def build(name, **mesh_properties):
+    """A document with the plate, its analysis and a Hex-Layer mesh in it, recomputed."""
+    doc = FreeCAD.newDocument(name)
+    plate = t.add_plate(doc)
+    analysis, solver = add_analysis(doc, plate)
+    mesh = HexLayer.makeMesh(doc, plate, **mesh_properties)
+    analysis.addObject(mesh)
+    doc.recompute()
+    return doc, plate, analysis, solver, mesh
+
+
+class CantileverPlate(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp(prefix="hexlayer_ccx_")
+        cls.doc, cls.plate, analysis, solver, cls.mesh = build("CantileverPlate", Layers=2)
+        cls.force = cls.doc.getObject("Force")
+        cls.tip = cls.mesh.FemMesh.getNodesByFace(cls.plate.Shape.Face2)
+        cls.inp, cls.result = write_and_solve(analysis, solver, os.path.join(cls.work, "coarse"))
+        cls.reference = cls.converged_reference()
+        length, width, thickness = t.PLATE
+        cls.beam = -FORCE * length ** 3 / (3 * E * width * thickness ** 3 / 12)
+
+    @classmethod
+    def converged_reference(cls):
+        """C3D8I on 1 mm quads in 4 layers, the same FreeCAD constraints, the .inp FreeCAD writes."""
+        doc, plate, analysis, solver, mesh = build("Reference", Layers=4, Size=1.0)
+        fea = write_inp(analysis, solver, os.path.join(cls.work, "reference"))
+        deflection = tip_deflection(solve_as(fea.inp_file_name, "C3D8I"), mesh.FemMesh.getNodesByFace(plate.Shape.Face2))
+        FreeCAD.closeDocument(doc.Name)
+        return deflection
+
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.doc.Name)
+        shutil.rmtree(cls.work)
+
+    def test_load_is_bending_through_the_thickness(self):
+        self.assertEqual(tuple(self.force.DirectionVector), (0.0, 0.0, -1.0))
+
+    def test_constraints_find_the_end_face_nodes(self):
+        fem = self.mesh.FemMesh
+        for face in ("Face1", "Face2"):
+            x = getattr(self.plate.Shape, face).Vertexes[0].Point.x
+            near = [n for n in range(1, fem.NodeCount + 1) if abs(fem.getNodeById(n).x - x) < 1e-3]
+            found = fem.getNodesByFace(getattr(self.plate.Shape, face))
+            self.assertEqual(sorted(found), sorted(near), face + ": every node near the end plane is found on it")
+            self.assertGreater(len(found), 4)
+
+    def test_reference_is_the_cantilever(self):
+        print("\ntip deflection: reference {:.4f} mm, beam theory {:.4f} mm".format(self.reference, self.beam))
+        self.assertAlmostEqual(self.reference / self.beam, 1.0, delta=0.03)
+
+    def test_freecad_solver_tools_c3d8_is_stiff(self):
+        self.assertIsNotNone(self.result, "FreeCAD loaded no CalculiX result")
+        displacement = dict(zip(self.result.NodeNumbers, self.result.DisplacementVectors))
+        ratio = tip_deflection(displacement, self.tip) / self.reference
+        print("\ntip deflection C3D8 (FreeCAD's writer, 2 layers) / reference: {:.3f}".format(ratio))
+        # A displacement FE model is stiffer than the converged solution: below 1. Fully integrated C3D8 in
+        # 2 layers of 2 mm quads locks in shear: 0.78 measured. Outside 0.70-0.90 more than the element changed.
+        self.assertGreater(ratio, 0.70)
+        self.assertLess(ratio, 0.90)
+
+    def test_same_mesh_with_incompatible_modes_is_within_2_percent(self):
+        ratio = tip_deflection(solve_as(self.inp, "C3D8I"), self.tip) / self.reference
+        print("\ntip deflection C3D8I (same .inp, 2 layers) / reference: {:.4f}".format(ratio))
+        self.assertAlmostEqual(ratio, 1.0, delta=0.02)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,167 @@
+"""The Python module pyhexlayer: arrays, report, node sets, errors as exceptions, progress callback.
+
+Run by CTest as: /usr/bin/python3 test_binding.py --hexlayer PATH --source DIR
+with PYTHONPATH holding the built module and tests/integration (for harness).
+"""
+import os
+import subprocess
+import tempfile
+import threading
+import unittest
+
+import numpy as np
+
+import harness
+import pyhexlayer
+from hex_geometry import hex_volumes
+
+PLATE_VOLUME = 60.0 * 40.0 * 2.0  # Resources/samples/plate.step: 60 x 40 x 2 mm
+
+
+def sample(name):
+    return os.path.join(harness.args.source, "Resources", "samples", name)
+
+
+def brep_of(step):
+    """The part as OpenCASCADE BREP text, written by Gmsh's OpenCASCADE kernel."""
+    import gmsh
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "part.brep")
+        gmsh.initialize()
+        try:
+            gmsh.option.setNumber("General.Terminal", 0)
+            gmsh.open(step)
+            gmsh.write(path)
+        finally:
+            gmsh.finalize()
+        with open(path) as f:
+            return f.read()
+
+
+def cli_error(*arguments):
+    """Exit code and error message of the CLI on the same input."""
+    with tempfile.TemporaryDirectory() as tmp:
+        done = subprocess.run([harness.args.hexlayer, "mesh", *arguments, "-o", os.path.join(tmp, "m.inp"), "--quiet"],
+                              capture_output=True, text=True, timeout=600)
+    return done.returncode, done.stderr.strip().removeprefix("hexlayer: error: ")
+
+
+class PlateMesh(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.lines = []
+        cls.result = pyhexlayer.mesh_file(sample("plate.step"), layers=2, progress=cls.lines.append)
+
+    def test_arrays_match_the_report(self):
+        r = self.result
+        self.assertGreater(len(r.hexes), 0)
+        self.assertEqual(r.hexes.shape, (r.report["hexes"], 8))
+        self.assertEqual(r.nodes.shape, (r.report["nodes"], 3))
+        self.assertEqual(r.nodes.dtype, np.float64)
+        self.assertTrue(np.issubdtype(r.hexes.dtype, np.integer))
+        self.assertGreaterEqual(r.hexes.min(), 0)
+        self.assertLess(r.hexes.max(), len(r.nodes))
+        self.assertEqual(len(np.unique(r.hexes)), len(r.nodes), "every node belongs to a hex")
+
+    def test_quality_and_volume(self):
+        r = self.result
+        self.assertEqual(r.scaled_jacobian.shape, (len(r.hexes),))
+        self.assertGreaterEqual(r.scaled_jacobian.min(), 0.3)
+        self.assertAlmostEqual(r.scaled_jacobian.min(), r.report["scaled_jacobian"]["min"], places=12)
+        volumes = hex_volumes(r.nodes, r.hexes)
+        self.assertGreater(volumes.min(), 0, "node order gives positive volumes")
+        self.assertLess(abs(volumes.sum() - PLATE_VOLUME) / PLATE_VOLUME, 0.03)
+
+    def test_node_sets_lie_on_the_plate_faces(self):
+        sets, z = self.result.node_sets, self.result.nodes[:, 2]
+        self.assertEqual(sorted(sets), ["BOTTOM", "RIM", "TOP"])
+        top, bottom = z[sets["TOP"]], z[sets["BOTTOM"]]
+        self.assertAlmostEqual(np.ptp(top), 0.0, places=6)
+        self.assertAlmostEqual(np.ptp(bottom), 0.0, places=6)
+        self.assertAlmostEqual(abs(top[0] - bottom[0]), 2.0, places=6)
+        self.assertGreater(len(sets["RIM"]), 0)
+        self.assertTrue(np.all(np.isin(self.result.hexes[:, 4:], sets["BOTTOM"], invert=True)),
+                        "corners 4-7 are above the bottom layer")
+
+    def test_progress_once_per_stage(self):
+        stages = [line.split(":")[0] for line in self.lines]
+        self.assertCountEqual(stages, self.result.report["timings_s"])  # the report sorts its keys
+
+
+class BrepString(unittest.TestCase):
+    def test_same_mesh_as_the_file(self):
+        from_file = pyhexlayer.mesh_file(sample("plate.step"))
+        from_text = pyhexlayer.mesh_brep(brep_of(sample("plate.step")))
+        self.assertEqual(from_text.report["hexes"], from_file.report["hexes"])
+        np.testing.assert_allclose(from_text.nodes, from_file.nodes, atol=1e-9)
+
+    def test_invalid_text_is_an_input_error_naming_the_string(self):
+        with self.assertRaises(pyhexlayer.InputError) as caught:
+            pyhexlayer.mesh_brep("not a shape")
+        self.assertEqual(caught.exception.exit_code, 3)
+        self.assertIn("the BREP string", str(caught.exception))
+        self.assertNotIn(tempfile.gettempdir(), str(caught.exception))
+
+
+class Errors(unittest.TestCase):
+    def assert_cli_error(self, error_type, code, call, cli_arguments):
+        with self.assertRaises(error_type) as caught:
+            call()
+        self.assertIsInstance(caught.exception, pyhexlayer.HexLayerError)
+        self.assertEqual(caught.exception.exit_code, code)
+        self.assertEqual(error_type.exit_code, code)
+        self.assertEqual(cli_error(*cli_arguments), (code, str(caught.exception)))
+
+    def test_bad_layer_count_is_a_usage_error(self):
+        plate = sample("plate.step")
+        self.assert_cli_error(pyhexlayer.UsageError, 2, lambda: pyhexlayer.mesh_file(plate, layers=0),
+                              [plate, "--layers", "0"])
+
+    def test_missing_file_is_an_input_error(self):
+        missing = sample("no_such_part.step")
+        self.assert_cli_error(pyhexlayer.InputError, 3, lambda: pyhexlayer.mesh_file(missing), [missing])
+
+    def test_cube_is_a_geometry_error(self):
+        cube = sample("thick_block.step")
+        self.assert_cli_error(pyhexlayer.GeometryError, 4, lambda: pyhexlayer.mesh_file(cube), [cube])
+
+    def test_options_the_core_does_not_have_yet_are_refused(self):
+        for option, value in (("sizing", "adaptive"), ("aspect", 5.0), ("order", 2)):
+            with self.subTest(option=option), self.assertRaises(pyhexlayer.UsageError) as caught:
+                pyhexlayer.check_options(**{option: value})
+            self.assertIn("--" + option, str(caught.exception))
+        pyhexlayer.check_options(layers=3, size=1.5, sizing="uniform", aspect=0.0, order=1)
+
+    def test_options_are_keyword_only(self):
+        with self.assertRaises(TypeError):
+            pyhexlayer.mesh_file(sample("plate.step"), 2)
+
+
+class Callback(unittest.TestCase):
+    def test_exception_in_the_callback_ends_the_run_and_reaches_the_caller(self):
+        def stop(line):
+            raise KeyError(line)
+        with self.assertRaises(KeyError) as caught:
+            pyhexlayer.mesh_file(sample("plate.step"), progress=stop)
+        self.assertTrue(caught.exception.args[0].startswith("geometry:"))
+        self.assertGreater(len(pyhexlayer.mesh_file(sample("plate.step")).hexes), 0, "the module still works")
+
+    def test_python_runs_while_the_core_meshes(self):
+        """The GIL is released during the stages: this thread sees the run between its first and last stage.
+        The callback is list.append, C code that never hands the GIL over by itself."""
+        lines, seen = [], set()
+        worker = threading.Thread(target=pyhexlayer.mesh_file, args=(sample("plate.step"),),
+                                  kwargs={"progress": lines.append})
+        worker.start()
+        while worker.is_alive():
+            seen.add(len(lines))
+        worker.join()
+        self.assertTrue(seen & set(range(1, len(lines))), "stages seen finished: {}".format(sorted(seen)))
+
+    def test_callback_that_is_not_callable_is_a_type_error(self):
+        with self.assertRaises(TypeError):
+            pyhexlayer.mesh_file(sample("plate.step"), progress=42)
+
+
+if __name__ == "__main__":
+    harness.main()
