@@ -72,6 +72,14 @@ struct Packing {
     nodes.push_back(n);
     diameter.push_back(d);
   }
+  // The nodes of one side near p: bubbles on the top and on the bottom wall are packed apart
+  // (§4); across the wall (closer than a bubble diameter) they must not push each other away.
+  template <class F>
+  void forEachNearOnSide(const Vec3& p, double radius, Side side, F&& f) const {
+    grid.forEachNear(p, radius, [&](int j, const Vec3& q) {
+      if (nodes[j].side == side) f(j, q);
+    });
+  }
 };
 
 // Side of a vertex or edge: the side of the top/bottom faces around it (Lateral if none).
@@ -137,12 +145,12 @@ struct FaceBubble {
 
 // Greedy first fill: candidates (a fine even sampling of the face) become bubbles where no
 // bubble is closer than `spacing` x stable distance.
-std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, double d, const Packing& pack) {
+std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, double d, Side side, const Packing& pack) {
   std::vector<FaceBubble> seeds;
   PointGrid own(d);
   for (const FaceSample& c : candidates) {
     bool free = true;
-    pack.grid.forEachNear(c.point, 2 * d, [&](int j, const Vec3& q) {
+    pack.forEachNearOnSide(c.point, 2 * d, side, [&](int j, const Vec3& q) {
       if ((q - c.point).norm() < 0.85 * 0.5 * (d + pack.diameter[j])) free = false;
     });
     own.forEachNear(c.point, 0.85 * d, [&](int, const Vec3&) { free = false; });
@@ -155,7 +163,7 @@ std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, doub
 
 // One relaxation step: every face bubble moves along the net bubble force, then back onto the
 // face through the surface's first derivatives; bubbles pushed out of the face are dropped.
-void relaxFace(const TopoDS_Face& face, double d, const Packing& pack, std::vector<FaceBubble>& bubbles,
+void relaxFace(const TopoDS_Face& face, double d, Side side, const Packing& pack, std::vector<FaceBubble>& bubbles,
                BRepTopAdaptor_FClass2d& inside) {
   const BRepAdaptor_Surface surface(face);
   PointGrid own(d);
@@ -203,9 +211,9 @@ void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<do
     const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
     const double d = faceDiameter[f];
     const std::vector<FaceSample> candidates = sampleFace(face, 0.2 * d);
-    std::vector<FaceBubble> bubbles = seedFace(candidates, d, pack);
+    std::vector<FaceBubble> bubbles = seedFace(candidates, d, side, pack);
     BRepTopAdaptor_FClass2d inside(face, 1e-9);
-    for (int step = 0; step < o.relaxationSteps; ++step) relaxFace(face, d, pack, bubbles, inside);
+    for (int step = 0; step < o.relaxationSteps; ++step) relaxFace(face, d, side, pack, bubbles, inside);
     // Population control: a bubble that ended too close to another is removed ...
     PointGrid own(d);
     for (size_t i = 0; i < bubbles.size(); ++i) {
@@ -220,7 +228,7 @@ void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<do
     }
     // ... and a gap the relaxation opened (bubbles pushed off the face) gets new bubbles: a hole in
     // the nodes would let the Delaunay tets bridge it through the air instead of spanning the wall.
-    for (const FaceBubble& b : seedFace(candidates, d, pack)) addFaceNode(b.point, f, side, d, pack);
+    for (const FaceBubble& b : seedFace(candidates, d, side, pack)) addFaceNode(b.point, f, side, d, pack);
   }
 }
 

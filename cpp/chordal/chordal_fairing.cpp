@@ -29,16 +29,32 @@ EdgeGraph edgeGraph(const ChordalSurface& s) {
   return g;
 }
 
-// One Laplacian step v += factor (mean of the neighbours - v) on every vertex off the rim.
-void laplacianStep(std::vector<Vec3>& v, const EdgeGraph& g, double factor) {
-  std::vector<Vec3> next = v;
-  for (size_t i = 0; i < v.size(); ++i) {
+// Unit vertex normals: the sum of the facet normals around each vertex (Eq. 1-2).
+std::vector<Vec3> vertexNormals(const ChordalSurface& s) {
+  std::vector<Vec3> n(s.vertices.size(), Vec3::Zero());
+  for (const auto& f : s.facets) {
+    const Vec3 fn = facetNormal(s, f);
+    for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) n[f[k]] += fn;
+  }
+  for (Vec3& v : n)
+    if (v.norm() > 0) v.normalize();
+  return n;
+}
+
+// One Laplacian step v += factor n (n · (mean of the neighbours - v)) on every vertex off the rim.
+// Only the normal part moves: the zigzag goes, while the vertices do not slide along the surface
+// (which could fold facets over the rim of a hole).
+void laplacianStep(ChordalSurface& s, const EdgeGraph& g, double factor) {
+  const std::vector<Vec3> normal = vertexNormals(s);
+  std::vector<Vec3> next = s.vertices;
+  for (size_t i = 0; i < next.size(); ++i) {
     if (g.onRim[i] || g.neighbours[i].empty()) continue;
     Vec3 mean = Vec3::Zero();
-    for (int j : g.neighbours[i]) mean += v[j];
-    next[i] = v[i] + factor * (mean / static_cast<double>(g.neighbours[i].size()) - v[i]);
+    for (int j : g.neighbours[i]) mean += s.vertices[j];
+    const Vec3 towardMean = mean / static_cast<double>(g.neighbours[i].size()) - s.vertices[i];
+    next[i] += factor * normal[i].dot(towardMean) * normal[i];
   }
-  v.swap(next);
+  s.vertices.swap(next);
 }
 
 }  // namespace
@@ -46,8 +62,8 @@ void laplacianStep(std::vector<Vec3>& v, const EdgeGraph& g, double factor) {
 void fairChordalSurface(ChordalSurface& s, int iterations) {
   const EdgeGraph g = edgeGraph(s);
   for (int it = 0; it < iterations; ++it) {
-    laplacianStep(s.vertices, g, kLambda);
-    laplacianStep(s.vertices, g, kMu);
+    laplacianStep(s, g, kLambda);
+    laplacianStep(s, g, kMu);
   }
 }
 

@@ -153,6 +153,16 @@ void computeNormalsAndRadius(ChordalSurface& s, const TetMesh& m) {
   }
 }
 
+double chordalArea(const ChordalSurface& c) {
+  double a = 0;
+  for (const auto& f : c.facets) {
+    const auto& v = c.vertices;
+    a += 0.5 * (v[f[1]] - v[f[0]]).cross(v[f[2]] - v[f[0]]).norm();
+    if (f[3] >= 0) a += 0.5 * (v[f[2]] - v[f[0]]).cross(v[f[3]] - v[f[0]]).norm();
+  }
+  return a;
+}
+
 std::map<std::string, std::size_t> classifyTets(const TetMesh& m) {
   static const int faceOf[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
   static const int edgeOf[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};

@@ -34,6 +34,9 @@ void computeNormalsAndRadius(ChordalSurface& chordal, const TetMesh& tets);
 // diagonals e1 = v4 - v2, e2 = v3 - v1 for a quad.
 Vec3 facetNormal(const ChordalSurface& chordal, const std::array<int, 4>& facet);
 
+// Area of the chordal surface (a quad facet as the two triangles (0,1,2) and (0,2,3)).
+double chordalArea(const ChordalSurface& chordal);
+
 // Table 1 (§5.3): how many tets have (exterior triangles, exterior edges), keyed "tri/edge".
 std::map<std::string, std::size_t> classifyTets(const TetMesh& tets);
 

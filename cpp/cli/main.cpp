@@ -58,6 +58,10 @@ int runMesh(MeshCommand& c) {
               << "): the mesh is not fit for a solver there (sharp crease or junction in the chordal surface?)"
               << std::endl;
   }
+  if (const auto& b = result.report["boundary"]; !b["same_topology_as_cad"].get<bool>())
+    std::cerr << "hexlayer: warning: the mesh boundary has Euler characteristic " << b["euler_characteristic"]
+              << " but the part " << b["cad_euler_characteristic"]
+              << ": the mesh has a hole the part does not have, or fills one it has" << std::endl;
   return 0;
 }
 

@@ -127,4 +127,12 @@ Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {
   return Vec3(n.X(), n.Y(), n.Z()) / len;
 }
 
+long eulerCharacteristic(const CadSolid& cad) {
+  long wires = 0;
+  for (int f = 1; f <= cad.faces.Extent(); ++f)
+    for (TopExp_Explorer w(cad.faces(f), TopAbs_WIRE); w.More(); w.Next()) ++wires;
+  const long faces = cad.faces.Extent();
+  return cad.vertices.Extent() - cad.edges.Extent() + 2 * faces - wires;
+}
+
 }  // namespace hexlayer

@@ -26,6 +26,10 @@ std::vector<TopoDS_Solid> readSolids(const std::string& path);
 // triangulates its faces for the later stages. Throws inputError naming what is wrong.
 CadSolid prepareSolid(const TopoDS_Solid& solid);
 
+// Euler characteristic of the solid's boundary, V - E + F - (W - F) (Euler-Poincaré with W wires):
+// 2 - 2 x (number of holes) for one shell; a mesh of the solid must have the same.
+long eulerCharacteristic(const CadSolid& cad);
+
 // Unit outward normal of face `f` at parameter (u, v), respecting the face orientation.
 Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v);
 

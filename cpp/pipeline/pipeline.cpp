@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <iterator>
+#include <optional>
 #include <sstream>
 
 #include "bubbles/bubble_packing.hpp"
@@ -22,7 +24,9 @@ namespace {
 
 constexpr int kMaxLayers = 64;
 constexpr int kSmoothingIterations = 10;
-constexpr int kFairingIterations = 10;
+// Fairing of the chordal surface, strongest first: a faired surface gives Gmsh fewer, cleaner
+// patches, but Gmsh's reparametrization can fail on one surface and not on another.
+constexpr int kFairingIterations[] = {10, 3, 0};
 constexpr double kDefaultSizeOverThickness = 1.0;
 constexpr double kMaxAutoQuads = 250000;
 constexpr double kMinReach = 0.25, kMaxReach = 4;  // a wall hit counts between these multiples of r
@@ -62,16 +66,6 @@ double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalAr
   return size;
 }
 
-double chordalArea(const ChordalSurface& c) {
-  double a = 0;
-  for (const auto& f : c.facets) {
-    const auto& v = c.vertices;
-    a += 0.5 * (v[f[1]] - v[f[0]]).cross(v[f[2]] - v[f[0]]).norm();
-    if (f[3] >= 0) a += 0.5 * (v[f[2]] - v[f[0]]).cross(v[f[3]] - v[f[0]]).norm();
-  }
-  return a;
-}
-
 // π_b, π_t (§3): the sweep line cast onto the CAD walls; the radius function's ends (§7.2) where a ray misses.
 SweepLine castSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r) {
   SweepLine line = radiusSweepLine(q, n, r);
@@ -103,8 +97,15 @@ std::vector<double> reportQuality(const HexMesh& mesh, double cadVolume, nlohman
   r["volume"] = {{"cad", cadVolume}, {"mesh", q.volume}, {"relative_error", (q.volume - cadVolume) / cadVolume}};
   const BoundaryCheck b = checkBoundary(mesh);
   r["boundary"] = {{"faces", b.faces}, {"open_edges", b.openEdges}, {"non_manifold_edges", b.nonManifoldEdges},
-                   {"watertight", b.watertight()}};
+                   {"watertight", b.watertight()}, {"euler_characteristic", b.eulerCharacteristic}};
   return std::move(q.scaledJacobian);
+}
+
+// A mesh with a hole the part does not have (or without one it has) differs from the CAD in the
+// Euler characteristic of its boundary.
+void compareTopology(nlohmann::json& r, long cadEuler) {
+  r["boundary"]["cad_euler_characteristic"] = cadEuler;
+  r["boundary"]["same_topology_as_cad"] = r["boundary"]["euler_characteristic"].get<long>() == cadEuler;
 }
 
 std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
@@ -151,35 +152,46 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
   const TetFilterCounts dropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
   r["tets"] = {{"delaunay", dropped.delaunay}, {"outside", dropped.outside}, {"flat", dropped.flat}, {"zero_volume", dropped.zeroVolume}, {"kept", tets.tets.size()}};
-  ChordalSurface chordal = clock.run("chordal_surface", [&] {
-    ChordalSurface c = buildChordalSurface(tets);
-    fairChordalSurface(c, kFairingIterations);
-    computeNormalsAndRadius(c, tets);
-    return c;
-  });
+  const ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets); });
   r["tet_classes"] = classifyTets(tets);
-  r["chordal_surface"] = {{"triangles", chordal.triangles}, {"quads", chordal.quads}, {"vertices", chordal.vertices.size()}};
-  const double size = chooseSize(o, sides, chordalArea(chordal), r);
+  r["chordal_surface"] = {{"triangles", cut.triangles}, {"quads", cut.quads}, {"vertices", cut.vertices.size()}};
+  const double size = chooseSize(o, sides, chordalArea(cut), r);
   r["size"] = size;
-  const ChordalLocator locator(chordal);
+  ChordalSurface chordal;
+  std::optional<ChordalLocator> locator;
   const QuadMesh quads = clock.run("quad_mesh", [&] {
     QuadMeshOptions qo;
     qo.size = size;
-    QuadMesh q = meshChordalSurface(locator, qo);
+    QuadMesh q;
+    for (const int fairing : kFairingIterations) {
+      chordal = cut;
+      fairChordalSurface(chordal, fairing);
+      computeNormalsAndRadius(chordal, tets);
+      locator.emplace(chordal);
+      try {
+        q = meshChordalSurface(*locator, qo);
+        r["chordal_surface"]["fairing_iterations"] = fairing;
+        break;
+      } catch (const Error& e) {
+        if (fairing == kFairingIterations[std::size(kFairingIterations) - 1]) throw;
+        if (o.progress) o.progress("quad_mesh: " + std::string(e.what()) + "; trying a less faired chordal surface");
+      }
+    }
     r["quad_mesh"]["doublets_removed"] = removeDoublets(q);
-    smoothQuadMesh(q, locator, kSmoothingIterations);
+    smoothQuadMesh(q, *locator, kSmoothingIterations);
     return q;
   });
   r["quad_mesh"]["quads"] = quads.quads.size();
   r["quad_mesh"]["nodes"] = quads.nodes.size();
   WallRays rays(cad, sides);
   SweepResult swept = clock.run("sweep", [&] {
-    return sweepQuads(quads, locator, o.layers, [&](const Vec3& q, const Vec3& n, double rr) { return castSweepLine(rays, q, n, rr); });
+    return sweepQuads(quads, *locator, o.layers, [&](const Vec3& q, const Vec3& n, double rr) { return castSweepLine(rays, q, n, rr); });
   });
   r["sweep"] = {{"untangled_regions", swept.untangled.regions}, {"untangling_rounds_kept", swept.untangled.improved},
                 {"worst_column_before_untangling", swept.untangled.worstBefore}};
   result.mesh = std::move(swept.mesh);
   result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, cad.volume, r); });
+  compareTopology(r, eulerCharacteristic(cad));
   result.nodeSets = surfaceNodeSets(result.mesh);
   return result;
 }
@@ -198,6 +210,9 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
     append(all.mesh, one.mesh);
   }
   all.scaledJacobian = reportQuality(all.mesh, cad, all.report);
+  long cadEuler = 0;
+  for (const auto& one : all.report["solids"]) cadEuler += one["boundary"]["cad_euler_characteristic"].get<long>();
+  compareTopology(all.report, cadEuler);
   all.nodeSets = surfaceNodeSets(all.mesh);
   return all;
 }

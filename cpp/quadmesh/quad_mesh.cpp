@@ -113,6 +113,10 @@ QuadMesh fromBytes(const std::string& bytes) {
   return q;
 }
 
+double gmshTimeout(const ChordalSurface& chordal, double size) {
+  return 60 + chordalArea(chordal) / (size * size) / 2000;
+}
+
 // One Gmsh run: split the chordal surface into patches, reparametrize, mesh.
 // Gmsh runs in a child process: its crashes and hangs (both seen on real parts with Gmsh 4.8) end
 // that try only. Returns no quads, and why in `error`, if Gmsh fails.
@@ -135,7 +139,7 @@ QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, cons
       gmsh::logger::getLastError(last);
       throw std::runtime_error(last.empty() ? "unknown Gmsh error" : last);
     }
-  }, o.timeoutSeconds);
+  }, o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTimeout(chordal, o.size));
   if (!run.ok) {
     error = "Gmsh " + run.failure;
     return {};

@@ -28,7 +28,9 @@ struct QuadMeshOptions {
   // are below acceptableQuad; of the tries, the one with the fewest such quads (then the best worst) is kept.
   std::vector<PatchSplit> patchSplits{{60, 60}, {60, 180}, {40, 40}, {40, 180}, {80, 80}, {25, 25}};
   double acceptableQuad = 0.2;   // quad scaled Jacobian
-  double timeoutSeconds = 600;   // for one Gmsh try
+  // For one Gmsh try: a fixed minute plus a second per 2000 quads the surface will get (Gmsh 4.8
+  // meshes tens of thousands of quads a second; a try that takes far longer has hung).
+  double timeoutSeconds = 0;      // 0: from the chordal surface's area and the size
 };
 
 // For every node, the nodes it shares a rim edge with (an edge of a single quad); empty inside.

@@ -188,10 +188,16 @@ BoundaryCheck checkBoundary(const HexMesh& mesh) {
       edges.push_back({std::min(a, b), std::max(a, b), a < b ? 1 : -1});
     }
   std::sort(edges.begin(), edges.end());
-  for (std::size_t i = 0, j = 0; i < edges.size(); i = j) {
+  long distinctEdges = 0;
+  for (std::size_t i = 0, j = 0; i < edges.size(); i = j, ++distinctEdges) {
     for (j = i + 1; j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi;) ++j;
     classifyEdgeGroup(edges.data() + i, edges.data() + j, c);
   }
+  std::vector<int> vertices;
+  for (const BoundaryFace& f : faces) vertices.insert(vertices.end(), f.nodes.begin(), f.nodes.end());
+  std::sort(vertices.begin(), vertices.end());
+  const long distinctVertices = std::unique(vertices.begin(), vertices.end()) - vertices.begin();
+  c.eulerCharacteristic = distinctVertices - distinctEdges + static_cast<long>(faces.size());
   return c;
 }
 

@@ -56,6 +56,7 @@ std::vector<BoundaryFace> boundaryFaces(const HexMesh& mesh);
 
 struct BoundaryCheck {
   std::size_t faces = 0, openEdges = 0, nonManifoldEdges = 0, inconsistentlyOrientedEdges = 0;
+  long eulerCharacteristic = 0;  // V - E + F of the boundary faces: 2 - 2 x (number of holes) for one closed shell
   // Every boundary edge is used by exactly 2 boundary faces, in opposite directions (true if no faces).
   bool watertight() const { return openEdges == 0 && nonManifoldEdges == 0 && inconsistentlyOrientedEdges == 0; }
 };

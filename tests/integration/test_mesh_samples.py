@@ -39,6 +39,7 @@ class MeshSamples(unittest.TestCase):
                         self.assertEqual(r["inverted_hexes"], 0)
                         self.assertLess(abs(r["volume"]["relative_error"]), 0.03)
                         self.assertTrue(r["boundary"]["watertight"])
+                        self.assertTrue(r["boundary"]["same_topology_as_cad"], r["boundary"])
                         self.assertEqual(r["boundary"]["open_edges"], 0)
                         self.assertGreater(r["chordal_surface"]["triangles"] + r["chordal_surface"]["quads"], 0)
 

@@ -41,13 +41,17 @@ class RealParts(unittest.TestCase):
                 self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
                 self.assertLess(abs(r["volume"]["relative_error"]), 0.03)
                 self.assertTrue(r["boundary"]["watertight"])
+                self.assertTrue(r["boundary"]["same_topology_as_cad"], r["boundary"])
                 self.assertEqual(r["hexes"] % layers, 0)
 
     def test_bent_parts(self):
-        # Measured 2026-11-23: L-bracket 9252 hexes, 18 inverted, avg 0.895; U-channel 10192 hexes,
-        # 26 inverted, avg 0.878. The bounds below catch a step back, not the goal (no inverted hex).
-        # Each has two pinch points, where the chordal surface's rim touches itself at one vertex:
-        # the hexes there share an edge but no face (conformal, but 4 non-manifold boundary edges).
+        # Measured 2026-11-23: L-bracket 9444 hexes, 22 inverted, avg 0.898; U-channel 12582 hexes,
+        # 5 inverted, avg 0.870. The bounds below catch a step back, not the goal (no inverted hex).
+        # Not asserted, as not solved: both meshes have cracks where the part has none (boundary
+        # Euler characteristic -30 vs the part's -6, and -45 vs -14): at sharp bends, two top and two
+        # bottom bubbles on the parallel bend edges are coplanar, their flat tet is dropped and its
+        # collinear chordal quad leaves a slit. A few pinch points (the rim touching itself at one
+        # vertex) give up to 4 non-manifold boundary edges.
         for name, thickness in (("ender3_lcd_support_Lbracket.step", 2.0), ("ender3_support_frame_Uchannel.step", 1.5)):
             with self.subTest(part=name):
                 r = self.mesh(name, 2)
