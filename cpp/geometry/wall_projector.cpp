@@ -22,6 +22,7 @@ WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides) {
 
 // Faces nearest first by their boxes; a face whose box is farther than the best point so far is skipped.
 std::optional<Vec3> WallProjector::project(Side side, const Vec3& p) const {
+  if (side == Side::Lateral) return std::nullopt;
   const std::vector<WallFace>& faces = side == Side::Top ? top_ : bottom_;
   const gp_Pnt point(p.x(), p.y(), p.z());
   Bnd_Box at;

@@ -17,7 +17,7 @@ class WallProjector {
  public:
   WallProjector(const CadSolid& cad, const WallSides& sides);
   // The point nearest to p on the faces of the `side` wall (inside a face, on its edges or
-  // vertices: trimmed faces, not their underlying surfaces), nullopt if that side has no face.
+  // vertices: trimmed faces, not their underlying surfaces); nullopt for Side::Lateral or a side without faces.
   std::optional<Vec3> project(Side side, const Vec3& p) const;
 
  private:

@@ -17,10 +17,10 @@ from inp import read_inp
 ON_CAD = 1e-6  # mm
 
 
-def mesh(tmp, part, *extra):
-    """Meshes a sample with --order 2 into tmp/part.inp; returns (.inp path, report)."""
+def mesh(tmp, part, *extra, ext=".inp"):
+    """Meshes a sample with --order 2 into tmp/part.ext; returns (mesh path, report)."""
     step = os.path.join(harness.args.source, "Resources", "samples", part + ".step")
-    out, report = os.path.join(tmp, part + ".inp"), os.path.join(tmp, part + ".json")
+    out, report = os.path.join(tmp, part + ext), os.path.join(tmp, part + ".json")
     done = subprocess.run([harness.args.hexlayer, "mesh", step, "-o", out, "--order", "2", "--report", report,
                            "--quiet", *extra], capture_output=True, text=True, timeout=600)
     if done.returncode != 0:
@@ -96,6 +96,37 @@ class QuadraticHexes(unittest.TestCase):
         print(f"lbracket C3D20R under 1e6 g: largest |u_z| {max(map(abs, uz)):.4e} mm")
         self.assertTrue(all(math.isfinite(u) for u in uz))
         self.assertGreater(max(map(abs, uz)), 0)
+
+    def test_msh_and_vtu_read_back_as_quadratic_hexes(self):
+        import gmsh
+        import meshio
+        with tempfile.TemporaryDirectory() as tmp:
+            msh, r = mesh(tmp, "lbracket", "--layers", "3", ext=".msh")
+            vtu, _ = mesh(tmp, "lbracket", "--layers", "3", ext=".vtu")
+            m = meshio.read(vtu)
+            self.assertEqual(len(m.points), r["nodes"])
+            self.assertEqual([c.type for c in m.cells], ["hexahedron20"])
+            self.assertEqual(len(m.cells[0].data), r["hexes"])
+            gmsh.initialize()
+            try:
+                gmsh.option.setNumber("General.Terminal", 0)
+                gmsh.open(msh)
+                self.assertEqual(len(gmsh.model.mesh.getNodes()[0]), r["nodes"])
+                self.assertEqual(len(gmsh.model.mesh.getElementsByType(17)[0]), r["hexes"])
+                self.assertEqual(len(gmsh.model.mesh.getElementsByType(5)[0]), 0)
+                self.assertEqual(len(gmsh.model.mesh.getElementsByType(3)[0]), 0)
+                self.assertEqual(len(gmsh.model.mesh.getElementsByType(16)[0]), r["boundary"]["faces"])
+            finally:
+                gmsh.finalize()
+
+    def test_order_other_than_1_or_2_is_a_usage_error(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            step = os.path.join(harness.args.source, "Resources", "samples", "plate.step")
+            done = subprocess.run([harness.args.hexlayer, "mesh", step, "-o", os.path.join(tmp, "x.inp"), "--order", "3"],
+                                  capture_output=True, text=True, timeout=600)
+            self.assertEqual(done.returncode, 2)
+            self.assertIn("--order must be 1 or 2", done.stderr)
+            self.assertFalse(os.path.exists(os.path.join(tmp, "x.inp")))
 
 
 if __name__ == "__main__":
