@@ -90,6 +90,33 @@ Vec3 wallMidNode(const Vec3& a, const Vec3& b, Side side, const WallProjection& 
   return *onWall;
 }
 
+struct MidEdgeNodes {
+  std::vector<Vec3> position;
+  std::vector<int> layer;  // the layer of an in-plane edge, -1 for a sweep edge
+};
+
+// Places the node of every edge: sweep and wall edges first, as inner-layer edges interpolate the walls'.
+MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const WallProjection& project, QuadraticStats& stats) {
+  const SweepColumns col = sweepColumns(mesh);
+  MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size())};
+  auto isWall = [&](int layer) { return layer == 0 || layer == mesh.layers; };
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    const auto [a, b] = t.edges[e];
+    const int ka = mesh.nodeLayer[a], kb = mesh.nodeLayer[b];
+    mid.layer[e] = ka == kb ? ka : -1;
+    if (ka != kb) mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
+    else if (isWall(ka)) mid.position[e] = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
+  }
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    const auto [a, b] = t.edges[e];
+    if (mid.layer[e] < 0 || isWall(mid.layer[e])) continue;
+    const Vec3& below = mid.position[t.index.at(edgeKey(col.bottom[a], col.bottom[b]))];
+    const Vec3& above = mid.position[t.index.at(edgeKey(col.top[a], col.top[b]))];
+    mid.position[e] = below + 0.5 * (col.fraction[a] + col.fraction[b]) * (above - below);
+  }
+  return mid;
+}
+
 }  // namespace
 
 QuadraticStats addMidEdgeNodes(HexMesh& mesh, const WallProjection& project) {
@@ -97,33 +124,14 @@ QuadraticStats addMidEdgeNodes(HexMesh& mesh, const WallProjection& project) {
   if (mesh.nodeLayer.size() != mesh.nodes.size() || mesh.nodeOnRim.size() != mesh.nodes.size())
     throw Error(ExitCode::Internal, "mid-edge nodes need the layer and rim flag of every node");
   const EdgeTable t = collectEdges(mesh);
-  const SweepColumns col = sweepColumns(mesh);
-  const std::vector<char> rim = rimEdges(mesh, t);
-  const int corners = static_cast<int>(mesh.nodes.size()), m = mesh.layers;
   QuadraticStats stats;
   stats.midNodes = t.edges.size();
-  std::vector<Vec3> mid(t.edges.size());
-  std::vector<int> layer(t.edges.size());
-  auto isWallLayer = [&](int k) { return k == 0 || k == m; };
-  for (std::size_t e = 0; e < t.edges.size(); ++e) {  // sweep and wall edges first: inner edges need the wall's
-    const auto [a, b] = t.edges[e];
-    const int ka = mesh.nodeLayer[a], kb = mesh.nodeLayer[b];
-    layer[e] = ka == kb ? ka : -1;
-    if (ka != kb) mid[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
-    else if (isWallLayer(ka)) mid[e] = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
-  }
-  for (std::size_t e = 0; e < t.edges.size(); ++e) {
-    const auto [a, b] = t.edges[e];
-    if (layer[e] < 0 || isWallLayer(layer[e])) continue;
-    const Vec3& below = mid[t.index.at(edgeKey(col.bottom[a], col.bottom[b]))];
-    const Vec3& above = mid[t.index.at(edgeKey(col.top[a], col.top[b]))];
-    mid[e] = below + 0.5 * (col.fraction[a] + col.fraction[b]) * (above - below);
-  }
-  for (std::size_t e = 0; e < t.edges.size(); ++e) {
-    mesh.nodes.push_back(mid[e]);
-    mesh.nodeLayer.push_back(layer[e]);
-    mesh.nodeOnRim.push_back(rim[e]);
-  }
+  const MidEdgeNodes mid = placeMidEdgeNodes(mesh, t, project, stats);
+  const std::vector<char> rim = rimEdges(mesh, t);
+  const int corners = static_cast<int>(mesh.nodes.size());
+  mesh.nodes.insert(mesh.nodes.end(), mid.position.begin(), mid.position.end());
+  mesh.nodeLayer.insert(mesh.nodeLayer.end(), mid.layer.begin(), mid.layer.end());
+  mesh.nodeOnRim.insert(mesh.nodeOnRim.end(), rim.begin(), rim.end());
   mesh.midEdges = t.ofHex;
   for (auto& hex : mesh.midEdges)
     for (int& e : hex) e += corners;
