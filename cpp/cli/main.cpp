@@ -1,4 +1,4 @@
-// hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H] [--report R] [--quiet]`
+// hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H] [--order 1|2] [--report R] [--quiet]`
 #include <CLI/CLI.hpp>
 
 #include <fstream>
@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
   mesh->add_option("-o,--output", c.output, "Output mesh: .inp (CalculiX), .vtu (VTK) or .msh (Gmsh 4.1)")->required();
   mesh->add_option("--layers", c.options.layers, "Hex layers through the thickness (default 2)");
   mesh->add_option("--size", c.options.size, "Quad edge length on the chordal surface (default: the wall thickness)");
+  mesh->add_option("--order", c.options.order, "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
   mesh->add_option("--report", c.report, "Write a JSON report of every stage");
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
   try {

@@ -14,6 +14,7 @@ namespace hexlayer {
 struct MeshOptions {
   int layers = 2;   // hex layers through the thickness (§7.2)
   double size = 0;  // quad edge length on the chordal surface; 0 = chosen from the part
+  int order = 1;    // 1: 8-node hexes, 2: 20-node hexes with the wall mid-edge nodes on the CAD
   std::function<void(const std::string&)> progress;  // one line per finished stage (may be empty)
 };
 

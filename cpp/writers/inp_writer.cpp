@@ -1,4 +1,5 @@
-// CalculiX/Abaqus input deck. CalculiX's C3D8I node order equals HexMesh's, so hexes are written as is.
+// CalculiX/Abaqus input deck. CalculiX's C3D8I node order equals HexMesh's and C3D20R's mid-edge
+// order kHexEdges', so hexes are written as elementNodes lists them.
 #include <cctype>
 #include <charconv>
 
@@ -7,7 +8,7 @@
 namespace hexlayer {
 namespace {
 
-constexpr int kIdsPerLine = 16;       // Abaqus limit for data lines of *NSET
+constexpr int kIdsPerLine = 16;       // Abaqus limit for data lines of *NSET and *ELEMENT
 constexpr std::size_t kMaxField = 20;   // CalculiX reads a *NODE coordinate from its first 20 characters
 constexpr std::size_t kMaxName = 80;    // CalculiX set names
 
@@ -37,11 +38,14 @@ void writeNodes(std::ostream& out, const HexMesh& mesh) {
   }
 }
 
+// Incompatible-mode C3D8I for 8-node hexes (bending-accurate), reduced-integration C3D20R for 20-node
+// ones, whose 21 entries continue on a second line after the first 16 (the line ends with a comma).
 void writeElements(std::ostream& out, const HexMesh& mesh) {
-  out << "*ELEMENT, TYPE=C3D8I, ELSET=EALL\n";
+  out << "*ELEMENT, TYPE=" << (mesh.quadratic() ? "C3D20R" : "C3D8I") << ", ELSET=EALL\n";
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
     out << h + 1;
-    for (int n : mesh.hexes[h]) out << ", " << n + 1;
+    const std::vector<int> nodes = elementNodes(mesh, h);
+    for (std::size_t i = 0; i < nodes.size(); ++i) out << ((i + 1) % kIdsPerLine == 0 ? ",\n" : ", ") << nodes[i] + 1;
     out << "\n";
   }
 }

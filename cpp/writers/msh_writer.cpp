@@ -1,5 +1,7 @@
 // Gmsh 4.1 ASCII. Volume entity 1 holds every node and hex; the boundary quads are split into
-// surface entities "top", "bottom", "rim", each its own physical group. Gmsh's hex order is HexMesh's.
+// surface entities "top", "bottom", "rim", each its own physical group. Gmsh's 8-node hex order is
+// HexMesh's; its 20-node hex lists the mid-edge nodes in another edge order (kGmshHexEdges).
+#include <algorithm>
 #include <array>
 
 #include "quality/quality.hpp"
@@ -8,12 +10,31 @@
 namespace hexlayer {
 namespace {
 
-constexpr int kGmshQuad = 3, kGmshHex = 5;
+constexpr int kGmshQuad = 3, kGmshHex = 5, kGmshQuad8 = 16, kGmshHex20 = 17;
+// Gmsh's 20-node hex (type 17) mid-edge nodes 8..19 are on edges 0-1, 0-3, 0-4, 1-2, 1-5, 2-3,
+// 2-6, 3-7, 4-5, 4-7, 5-6, 6-7: here as indices into kHexEdges.
+constexpr std::array<int, 12> kGmshHexEdges = {0, 3, 8, 1, 9, 2, 10, 11, 4, 7, 5, 6};
 constexpr int kSolidPhysical = 4;  // physical tags 1..3 are the surfaces, so every tag is unique
 const std::array<const char*, 3> kSurfaceNames = {"top", "bottom", "rim"};
 
-// Boundary quads of each surface (index = surface tag - 1).
-using SurfaceQuads = std::array<std::vector<std::array<int, 4>>, 3>;
+// Boundary quads of each surface (index = surface tag - 1): 4 corners, then for 20-node hexes the
+// mid-edge nodes of the quad's edges 0-1, 1-2, 2-3, 3-0 (Gmsh's 8-node quad, type 16).
+using SurfaceQuads = std::array<std::vector<std::vector<int>>, 3>;
+
+// Index into kHexEdges of the edge between local corners a and b.
+int hexEdge(int a, int b) {
+  for (int e = 0; e < 12; ++e)
+    if (std::minmax(a, b) == std::minmax(kHexEdges[e][0], kHexEdges[e][1])) return e;
+  return -1;
+}
+
+std::vector<int> quadNodes(const HexMesh& mesh, const BoundaryFace& f) {
+  std::vector<int> nodes(f.nodes.begin(), f.nodes.end());
+  if (!mesh.quadratic()) return nodes;
+  const std::array<int, 4>& local = kHexFaces[f.localFace];
+  for (int i = 0; i < 4; ++i) nodes.push_back(mesh.midEdges[f.hex][hexEdge(local[i], local[(i + 1) % 4])]);
+  return nodes;
+}
 
 int surfaceOf(const HexMesh& mesh, const std::array<int, 4>& quad) {
   if (mesh.nodeLayer.size() != mesh.nodes.size()) return 2;
@@ -27,7 +48,7 @@ int surfaceOf(const HexMesh& mesh, const std::array<int, 4>& quad) {
 
 SurfaceQuads splitBoundary(const HexMesh& mesh) {
   SurfaceQuads s;
-  for (const BoundaryFace& f : boundaryFaces(mesh)) s[surfaceOf(mesh, f.nodes)].push_back(f.nodes);
+  for (const BoundaryFace& f : boundaryFaces(mesh)) s[surfaceOf(mesh, f.nodes)].push_back(quadNodes(mesh, f));
   return s;
 }
 
@@ -96,21 +117,31 @@ void writeNodes(std::ostream& out, const HexMesh& mesh) {
   out << "$EndNodes\n";
 }
 
+// Node ids of hex h in Gmsh's order: the corners, then the mid-edge nodes in kGmshHexEdges order.
+std::vector<int> gmshHexNodes(const HexMesh& mesh, std::size_t h) {
+  std::vector<int> nodes(mesh.hexes[h].begin(), mesh.hexes[h].end());
+  if (mesh.quadratic())
+    for (int e : kGmshHexEdges) nodes.push_back(mesh.midEdges[h][e]);
+  return nodes;
+}
+
+void writeElement(std::ostream& out, std::size_t tag, const std::vector<int>& nodes) {
+  out << tag;
+  for (int n : nodes) out << " " << n + 1;
+  out << "\n";
+}
+
 // Hexes get tags 1..H (as in the .inp), then the quads of each surface in turn.
 void writeElements(std::ostream& out, const HexMesh& mesh, const SurfaceQuads& quads, const std::vector<int>& surfaces) {
   std::size_t total = mesh.hexes.size();
   for (int t : surfaces) total += quads[t - 1].size();
   out << "$Elements\n" << surfaces.size() + 1 << " " << total << " " << (total ? 1 : 0) << " " << total << "\n";
-  out << "3 1 " << kGmshHex << " " << mesh.hexes.size() << "\n";
+  out << "3 1 " << (mesh.quadratic() ? kGmshHex20 : kGmshHex) << " " << mesh.hexes.size() << "\n";
   std::size_t tag = 0;
-  for (const auto& h : mesh.hexes) {
-    out << ++tag;
-    for (int n : h) out << " " << n + 1;
-    out << "\n";
-  }
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) writeElement(out, ++tag, gmshHexNodes(mesh, h));
   for (int t : surfaces) {
-    out << "2 " << t << " " << kGmshQuad << " " << quads[t - 1].size() << "\n";
-    for (const auto& q : quads[t - 1]) out << ++tag << " " << q[0] + 1 << " " << q[1] + 1 << " " << q[2] + 1 << " " << q[3] + 1 << "\n";
+    out << "2 " << t << " " << (mesh.quadratic() ? kGmshQuad8 : kGmshQuad) << " " << quads[t - 1].size() << "\n";
+    for (const auto& q : quads[t - 1]) writeElement(out, ++tag, q);
   }
   out << "$EndElements\n";
 }

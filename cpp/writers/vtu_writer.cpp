@@ -1,4 +1,4 @@
-// VTK XML UnstructuredGrid, ASCII. HexMesh's node order is VTK_HEXAHEDRON's.
+// VTK XML UnstructuredGrid, ASCII. elementNodes' order is VTK_HEXAHEDRON's and VTK_QUADRATIC_HEXAHEDRON's.
 #include <algorithm>
 
 #include "writers/writers.hpp"
@@ -6,7 +6,7 @@
 namespace hexlayer {
 namespace {
 
-constexpr int kVtkHexahedron = 12;
+constexpr int kVtkHexahedron = 12, kVtkQuadraticHexahedron = 25;
 constexpr int kValuesPerLine = 8;
 
 std::string xmlEscape(const std::string& s) {
@@ -72,14 +72,17 @@ void writePoints(std::ostream& out, const HexMesh& mesh) {
 void writeCells(std::ostream& out, const HexMesh& mesh) {
   out << "<Cells>\n";
   openArray(out, "Int64", "connectivity");
-  for (const auto& h : mesh.hexes) {
-    for (int i = 0; i < 8; ++i) out << h[i] << (i == 7 ? "\n" : " ");
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+    const std::vector<int> nodes = elementNodes(mesh, h);
+    for (std::size_t i = 0; i < nodes.size(); ++i) out << nodes[i] << (i + 1 == nodes.size() ? "\n" : " ");
   }
   out << "</DataArray>\n";
+  const std::size_t perCell = mesh.quadratic() ? 20 : 8;
   openArray(out, "Int64", "offsets");
-  writeValues(out, mesh.hexes.size(), [](std::size_t h) { return 8 * (h + 1); });
+  writeValues(out, mesh.hexes.size(), [&](std::size_t h) { return perCell * (h + 1); });
   openArray(out, "UInt8", "types");
-  writeValues(out, mesh.hexes.size(), [](std::size_t) { return kVtkHexahedron; });
+  const int type = mesh.quadratic() ? kVtkQuadraticHexahedron : kVtkHexahedron;
+  writeValues(out, mesh.hexes.size(), [&](std::size_t) { return type; });
   out << "</Cells>\n";
 }
 

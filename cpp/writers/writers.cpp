@@ -20,6 +20,9 @@ std::string lowerExtension(const std::string& path) {
 }
 
 void checkFits(const HexMesh& mesh, const std::vector<NodeSet>& nodeSets, const std::vector<CellField>& cellFields) {
+  if (mesh.quadratic() && mesh.midEdges.size() != mesh.hexes.size())
+    throw Error(ExitCode::Internal, "mid-edge nodes of " + std::to_string(mesh.midEdges.size()) + " hexes for " +
+                                        std::to_string(mesh.hexes.size()) + " hexes");
   for (const CellField& f : cellFields)
     if (f.values.size() != mesh.hexes.size())
       throw Error(ExitCode::Internal, "cell field '" + f.name + "' has " + std::to_string(f.values.size()) +
@@ -31,6 +34,12 @@ void checkFits(const HexMesh& mesh, const std::vector<NodeSet>& nodeSets, const 
 }
 
 }  // namespace
+
+std::vector<int> elementNodes(const HexMesh& mesh, std::size_t h) {
+  std::vector<int> ids(mesh.hexes[h].begin(), mesh.hexes[h].end());
+  if (mesh.quadratic()) ids.insert(ids.end(), mesh.midEdges[h].begin(), mesh.midEdges[h].end());
+  return ids;
+}
 
 std::string formatDouble(double v) {
   char buf[32];

@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "quality/quality.hpp"
+#include "sweep/quadratic.hpp"
 #include "writers/writers.hpp"
 
 using namespace hexlayer;
@@ -72,6 +73,21 @@ std::vector<std::string> splitCommas(const std::string& line) {
   std::istringstream in(line);
   for (std::string f; std::getline(in, f, ',');) out.push_back(f.substr(f.find_first_not_of(' ')));
   return out;
+}
+
+// The block with 20-node hexes: its 20 edges get a node each at their midpoints (ids 12..31).
+HexMesh quadratic(HexMesh m) {
+  addMidEdgeNodes(m, [](Side, const Vec3&) { return std::nullopt; });
+  return m;
+}
+
+// Runs `/usr/bin/python3 script file` and expects exit status 0.
+void expectPythonPasses(const fs::path& script, const fs::path& file) {
+  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + file.string() + "'";
+  const int status = std::system(command.c_str());
+  ASSERT_NE(status, -1);
+  EXPECT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << command;
 }
 
 ExitCode codeOf(const std::function<void()>& f) {
@@ -222,11 +238,79 @@ TEST_F(WriterTest, VtuLoadsInMeshio) {
                            "assert list(m.point_data['bottom']) == [1] * 6 + [0] * 6\n"
                            "assert list(m.cell_data['hex_id'][0]) == [1.5, 2.5]\n"
                            "assert list(m.cell_data['scaled_jacobian'][0]) == [1.0, 1.0]\n";
-  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + p.string() + "'";
-  const int status = std::system(command.c_str());
-  ASSERT_NE(status, -1);
-  EXPECT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0) << command;
+  expectPythonPasses(script, p);
+}
+
+TEST_F(WriterTest, InpWritesC3D20RWithAContinuationLine) {
+  mesh_ = quadratic(mesh_);
+  const std::vector<std::string> all = lines(readText(write("quadratic.inp")));
+  ASSERT_EQ(inpBlock(all, "*NODE").size(), 32u);
+  EXPECT_NE(std::find(all.begin(), all.end(), "*ELEMENT, TYPE=C3D20R, ELSET=EALL"), all.end());
+  const std::vector<std::string> data = inpBlock(all, "*ELEMENT, TYPE=C3D20R");
+  ASSERT_EQ(data.size(), 4u);  // 16 entries, then the other 5
+  for (std::size_t h = 0; h < 2; ++h) {
+    EXPECT_EQ(data[2 * h].back(), ',');
+    EXPECT_EQ(splitCommas(data[2 * h]).size(), 16u);
+    std::vector<std::string> ids = splitCommas(data[2 * h].substr(0, data[2 * h].size() - 1) + ", " + data[2 * h + 1]);
+    ASSERT_EQ(ids.size(), 21u);
+    EXPECT_EQ(ids[0], std::to_string(h + 1));
+    for (int e = 0; e < 12; ++e) {
+      const Vec3 mid = 0.5 * (mesh_.nodes[std::stoi(ids[1 + kHexEdges[e][0]]) - 1] + mesh_.nodes[std::stoi(ids[1 + kHexEdges[e][1]]) - 1]);
+      EXPECT_EQ(mesh_.nodes[std::stoi(ids[9 + e]) - 1], mid) << "hex " << h << " C3D20 node " << 9 + e;
+    }
+  }
+}
+
+TEST_F(WriterTest, VtuWritesQuadraticHexahedraThatMeshioReads) {
+  mesh_ = quadratic(mesh_);
+  const fs::path p = write("quadratic.vtu");
+  EXPECT_NE(readText(p).find("25 25\n"), std::string::npos);  // VTK_QUADRATIC_HEXAHEDRON
+  const fs::path script = dir_ / "check.py";
+  std::ofstream(script) << R"(import sys, meshio, numpy
+m = meshio.read(sys.argv[1])
+assert len(m.points) == 32, len(m.points)
+cells = m.cells_dict['hexahedron20']
+assert cells.shape == (2, 20), cells.shape
+edges = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
+for c in cells:
+    for e, (a, b) in enumerate(edges):
+        assert numpy.allclose(m.points[c[8 + e]], (m.points[c[a]] + m.points[c[b]]) / 2), (c, e)
+)";
+  expectPythonPasses(script, p);
+}
+
+TEST_F(WriterTest, MshWrites20NodeHexesAnd8NodeQuadsInGmshOrder) {
+  mesh_ = quadratic(mesh_);
+  const fs::path p = write("quadratic.msh");
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open(p.string());
+  std::string name;
+  int dim, order, nodes, primary;
+  std::vector<double> local;
+  gmsh::model::mesh::getElementProperties(17, name, dim, order, nodes, local, primary);
+  ASSERT_EQ(nodes, 20);
+  std::vector<std::size_t> tags, hexNodes, quadTags, quadNodes, linearTags, linearNodes;  // fresh vectors per call
+  gmsh::model::mesh::getElementsByType(17, tags, hexNodes);
+  ASSERT_EQ(tags.size(), 2u);
+  // Each node sits where Gmsh's reference node maps to on our box-shaped hexes (trilinear from the corners).
+  auto at = [&](std::size_t tag) { return mesh_.nodes[tag - 1]; };
+  for (std::size_t h = 0; h < 2; ++h)
+    for (int i = 0; i < 20; ++i) {
+      const double u = (local[3 * i] + 1) / 2, v = (local[3 * i + 1] + 1) / 2, w = (local[3 * i + 2] + 1) / 2;
+      const std::size_t* c = &hexNodes[20 * h];
+      const Vec3 bottom = (1 - v) * ((1 - u) * at(c[0]) + u * at(c[1])) + v * ((1 - u) * at(c[3]) + u * at(c[2]));
+      const Vec3 top = (1 - v) * ((1 - u) * at(c[4]) + u * at(c[5])) + v * ((1 - u) * at(c[7]) + u * at(c[6]));
+      EXPECT_EQ(at(c[i]), (1 - w) * bottom + w * top) << "hex " << h << " Gmsh node " << i;
+    }
+  gmsh::model::mesh::getElementsByType(16, quadTags, quadNodes);
+  ASSERT_EQ(quadTags.size(), 10u);
+  for (std::size_t q = 0; q < quadTags.size(); ++q)
+    for (int i = 0; i < 4; ++i)
+      EXPECT_EQ(at(quadNodes[8 * q + 4 + i]), 0.5 * (at(quadNodes[8 * q + i]) + at(quadNodes[8 * q + (i + 1) % 4])));
+  gmsh::model::mesh::getElementsByType(5, linearTags, linearNodes);
+  EXPECT_TRUE(linearTags.empty());
+  gmsh::finalize();
 }
 
 TEST_F(WriterTest, OutputIsDeterministic) {

@@ -1,0 +1,31 @@
+// π_t, π_b of the paper (§3) for single points: the nearest point of the top (ω_t) or the bottom
+// (ω_b) wall of the CAD solid. Puts the mid-edge nodes of quadratic hexes on the walls.
+#pragma once
+#include <Bnd_Box.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <optional>
+#include <vector>
+
+#include "core/types.hpp"
+#include "geometry/cad_solid.hpp"
+#include "geometry/wall_sides.hpp"
+
+namespace hexlayer {
+
+class WallProjector {
+ public:
+  WallProjector(const CadSolid& cad, const WallSides& sides);
+  // The point nearest to p on the faces of the `side` wall (inside a face, on its edges or
+  // vertices: trimmed faces, not their underlying surfaces); nullopt for Side::Lateral or a side without faces.
+  std::optional<Vec3> project(Side side, const Vec3& p) const;
+
+ private:
+  struct WallFace {
+    TopoDS_Face face;
+    Bnd_Box box;  // contains the face: its distance to p bounds the face's from below
+  };
+  std::vector<WallFace> top_, bottom_;
+};
+
+}  // namespace hexlayer

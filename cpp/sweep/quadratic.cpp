@@ -1,0 +1,141 @@
+#include "sweep/quadratic.hpp"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+#include "core/error.hpp"
+#include "quality/quality.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr double kMaxWallMove = 0.25;  // largest projection move, in edge lengths, that keeps the element unfolded
+
+using Edge = std::pair<int, int>;  // corner ids, smaller first
+
+Edge edgeKey(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+
+// The mesh's edges, each once in order of first appearance (hexes in order, kHexEdges order), and
+// per hex the index of each of its 12 edges: the mid-edge node of edge e gets id corners + e.
+struct EdgeTable {
+  std::vector<Edge> edges;
+  std::map<Edge, int> index;
+  std::vector<std::array<int, 12>> ofHex;
+};
+
+EdgeTable collectEdges(const HexMesh& mesh) {
+  EdgeTable t;
+  t.ofHex.reserve(mesh.hexes.size());
+  for (const auto& hex : mesh.hexes) {
+    std::array<int, 12> local;
+    for (int e = 0; e < 12; ++e) {
+      const Edge key = edgeKey(hex[kHexEdges[e][0]], hex[kHexEdges[e][1]]);
+      const auto [it, added] = t.index.emplace(key, static_cast<int>(t.edges.size()));
+      if (added) t.edges.push_back(key);
+      local[e] = it->second;
+    }
+    t.ofHex.push_back(local);
+  }
+  return t;
+}
+
+// The two ends of every node's sweep line (hex edges i -> i+4 chained from the bottom to the top
+// wall), and the node's fraction along it: 0 at the bottom, 1 at the top.
+struct SweepColumns {
+  std::vector<int> bottom, top;
+  std::vector<double> fraction;
+};
+
+SweepColumns sweepColumns(const HexMesh& mesh) {
+  const std::size_t n = mesh.nodes.size();
+  std::vector<int> up(n, -1), down(n, -1);
+  for (const auto& hex : mesh.hexes)
+    for (int c = 0; c < 4; ++c) up[hex[c]] = hex[c + 4], down[hex[c + 4]] = hex[c];
+  SweepColumns s{std::vector<int>(n, -1), std::vector<int>(n, -1), std::vector<double>(n, 0)};
+  for (std::size_t b = 0; b < n; ++b) {
+    if (down[b] >= 0) continue;  // not a column's bottom node
+    std::vector<int> column{static_cast<int>(b)};
+    while (up[column.back()] >= 0) column.push_back(up[column.back()]);
+    const Vec3 base = mesh.nodes[b], axis = mesh.nodes[column.back()] - base;
+    for (std::size_t k = 0; k < column.size(); ++k) {
+      const int i = column[k];
+      s.bottom[i] = column.front(), s.top[i] = column.back();
+      const double byLayer = column.size() > 1 ? double(k) / double(column.size() - 1) : 0;  // a collapsed sweep line
+      s.fraction[i] = axis.squaredNorm() > 0 ? (mesh.nodes[i] - base).dot(axis) / axis.squaredNorm() : byLayer;
+    }
+  }
+  return s;
+}
+
+// Edges of the lateral boundary faces (hex sides 2..5 used by one hex): their mid-edge nodes lie on the rim.
+std::vector<char> rimEdges(const HexMesh& mesh, const EdgeTable& t) {
+  std::vector<char> rim(t.edges.size(), 0);
+  for (const BoundaryFace& f : boundaryFaces(mesh))
+    if (f.localFace >= 2)
+      for (int i = 0; i < 4; ++i) rim[t.index.at(edgeKey(f.nodes[i], f.nodes[(i + 1) % 4]))] = 1;
+  return rim;
+}
+
+// Mid-edge node of a top or bottom wall edge: the midpoint, projected onto that wall if the move is small enough.
+Vec3 wallMidNode(const Vec3& a, const Vec3& b, Side side, const WallProjection& project, QuadraticStats& stats) {
+  const Vec3 mid = 0.5 * (a + b);
+  ++stats.wallNodes;
+  const std::optional<Vec3> onWall = project(side, mid);
+  if (!onWall) return mid;
+  const double move = (*onWall - mid).norm();
+  if (move > kMaxWallMove * (b - a).norm()) return mid;
+  ++stats.projected;
+  stats.maxProjectionMove = std::max(stats.maxProjectionMove, move);
+  return *onWall;
+}
+
+struct MidEdgeNodes {
+  std::vector<Vec3> position;
+  std::vector<int> layer;  // the layer of an in-plane edge, -1 for a sweep edge
+};
+
+// Places the node of every edge: sweep and wall edges first, as inner-layer edges interpolate the walls'.
+MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const WallProjection& project, QuadraticStats& stats) {
+  const SweepColumns col = sweepColumns(mesh);
+  MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size())};
+  auto isWall = [&](int layer) { return layer == 0 || layer == mesh.layers; };
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    const auto [a, b] = t.edges[e];
+    const int ka = mesh.nodeLayer[a], kb = mesh.nodeLayer[b];
+    mid.layer[e] = ka == kb ? ka : -1;
+    if (ka != kb) mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
+    else if (isWall(ka)) mid.position[e] = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
+  }
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    const auto [a, b] = t.edges[e];
+    if (mid.layer[e] < 0 || isWall(mid.layer[e])) continue;
+    const Vec3& below = mid.position[t.index.at(edgeKey(col.bottom[a], col.bottom[b]))];
+    const Vec3& above = mid.position[t.index.at(edgeKey(col.top[a], col.top[b]))];
+    mid.position[e] = below + 0.5 * (col.fraction[a] + col.fraction[b]) * (above - below);
+  }
+  return mid;
+}
+
+}  // namespace
+
+QuadraticStats addMidEdgeNodes(HexMesh& mesh, const WallProjection& project) {
+  if (mesh.quadratic()) throw Error(ExitCode::Internal, "the mesh already has mid-edge nodes");
+  if (mesh.nodeLayer.size() != mesh.nodes.size() || mesh.nodeOnRim.size() != mesh.nodes.size())
+    throw Error(ExitCode::Internal, "mid-edge nodes need the layer and rim flag of every node");
+  const EdgeTable t = collectEdges(mesh);
+  QuadraticStats stats;
+  stats.midNodes = t.edges.size();
+  const MidEdgeNodes mid = placeMidEdgeNodes(mesh, t, project, stats);
+  const std::vector<char> rim = rimEdges(mesh, t);
+  const int corners = static_cast<int>(mesh.nodes.size());
+  mesh.nodes.insert(mesh.nodes.end(), mid.position.begin(), mid.position.end());
+  mesh.nodeLayer.insert(mesh.nodeLayer.end(), mid.layer.begin(), mid.layer.end());
+  mesh.nodeOnRim.insert(mesh.nodeOnRim.end(), rim.begin(), rim.end());
+  mesh.midEdges = t.ofHex;
+  for (auto& hex : mesh.midEdges)
+    for (int& e : hex) e += corners;
+  return stats;
+}
+
+}  // namespace hexlayer

@@ -1,0 +1,48 @@
+// WallProjector (π_t, π_b for points, §3): nearest point of the top or the bottom CAD wall, on the
+// trimmed faces (their edges when the point lies beyond them), exact on curved walls.
+#include <gtest/gtest.h>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include <cmath>
+
+#include "geometry/wall_projector.hpp"
+
+using namespace hexlayer;
+
+TEST(WallProjector, PlateWallsAndTheirEdges) {
+  const CadSolid cad = prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40, 30, 2).Solid());
+  const WallProjector walls(cad, classifyWallSides(cad));
+  EXPECT_NEAR((*walls.project(Side::Top, Vec3(10, 10, 1.4)) - Vec3(10, 10, 2)).norm(), 0, 1e-9);
+  EXPECT_NEAR((*walls.project(Side::Bottom, Vec3(10, 10, 1.4)) - Vec3(10, 10, 0)).norm(), 0, 1e-9);
+  EXPECT_NEAR((*walls.project(Side::Top, Vec3(10, 10, -3)) - Vec3(10, 10, 2)).norm(), 0, 1e-9) << "from the far side";
+  EXPECT_NEAR((*walls.project(Side::Top, Vec3(41, 10, 2.5)) - Vec3(40, 10, 2)).norm(), 0, 1e-9) << "beyond the rim: its edge";
+  EXPECT_FALSE(walls.project(Side::Lateral, Vec3(10, 10, 1))) << "lateral faces are not projected onto";
+}
+
+TEST(WallProjector, CylinderShellWallsAreHitExactly) {
+  // Quarter of a tube: radii 10 and 12, height 40. Its inner and outer faces are the two walls.
+  const TopoDS_Shape outer = BRepPrimAPI_MakeCylinder(12, 40, M_PI / 2).Shape();
+  const TopoDS_Shape inner = BRepPrimAPI_MakeCylinder(10, 40, M_PI / 2).Shape();
+  const TopoDS_Shape tube = BRepAlgoAPI_Cut(outer, inner).Shape();
+  TopExp_Explorer solid(tube, TopAbs_SOLID);
+  ASSERT_TRUE(solid.More());
+  const CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
+  const WallProjector walls(cad, classifyWallSides(cad));
+  const double angle = 0.3;
+  const Vec3 chordMidpoint(11.2 * std::cos(angle), 11.2 * std::sin(angle), 17);
+  double radii[2];
+  for (int s = 0; s < 2; ++s) {
+    const std::optional<Vec3> p = walls.project(s ? Side::Top : Side::Bottom, chordMidpoint);
+    ASSERT_TRUE(p);
+    radii[s] = std::hypot(p->x(), p->y());
+    EXPECT_NEAR(std::atan2(p->y(), p->x()), angle, 1e-9);
+    EXPECT_NEAR(p->z(), 17, 1e-9);
+  }
+  EXPECT_NEAR(std::min(radii[0], radii[1]), 10, 1e-9);
+  EXPECT_NEAR(std::max(radii[0], radii[1]), 12, 1e-9);
+}

@@ -1,0 +1,34 @@
+"""Reads back what the end-to-end tests need of a CalculiX/Abaqus .inp written by hexlayer: the
+nodes, the elements (a data line ending with a comma continues on the next line) and the node sets."""
+
+
+def read_inp(path):
+    """Returns (nodes {id: (x, y, z)}, elements [(id, [node ids])], node sets {NAME: [ids]})."""
+    nodes, elements, sets = {}, [], {}
+    block, pending = None, []
+    with open(path) as f:
+        lines = f.readlines()
+    for line in lines:
+        if line.startswith("**"):
+            continue
+        if line.startswith("*"):
+            keyword = line.upper()
+            block = ("node" if keyword.startswith("*NODE") else "element" if keyword.startswith("*ELEMENT")
+                     else "set" if keyword.startswith("*NSET") else None)
+            if block == "set":
+                name = keyword.split("NSET=")[1].split(",")[0].strip()
+                sets[name] = []
+            continue
+        fields = [x for x in line.replace(",", " ").split()]
+        if not fields:
+            continue
+        if block == "node":
+            nodes[int(fields[0])] = tuple(float(x) for x in fields[1:4])
+        elif block == "element":
+            pending += [int(x) for x in fields]
+            if not line.rstrip().endswith(","):
+                elements.append((pending[0], pending[1:]))
+                pending = []
+        elif block == "set":
+            sets[name] += [int(x) for x in fields]
+    return nodes, elements, sets
