@@ -11,6 +11,27 @@
 
 namespace hexlayer {
 
+namespace {
+
+constexpr double kJitter = 1e-6;  // of the nodes' bounding box diagonal
+
+// A fixed pseudo-random number in [-1, 1] for (node, coordinate): the same input gives the same tets.
+double jitter(std::size_t node, int coordinate) {
+  std::uint64_t h = node * 3 + coordinate + 0x9E3779B97F4A7C15ull;  // splitmix64
+  h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+  h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+  h ^= h >> 31;
+  return 2.0 * static_cast<double>(h >> 11) / static_cast<double>(1ull << 53) - 1.0;
+}
+
+double diagonal(const std::vector<SurfaceNode>& nodes) {
+  Vec3 lo = nodes[0].point, hi = lo;
+  for (const SurfaceNode& n : nodes) lo = lo.cwiseMin(n.point), hi = hi.cwiseMax(n.point);
+  return (hi - lo).norm();
+}
+
+}  // namespace
+
 TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
   if (nodes.size() < 4) throw geometryError("too few surface nodes (" + std::to_string(nodes.size()) + ") to build tets");
   TetMesh mesh;
@@ -18,8 +39,13 @@ TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
   in.firstnumber = 0;
   in.numberofpoints = static_cast<int>(nodes.size());
   in.pointlist = new REAL[3 * nodes.size()];  // freed by tetgenio's destructor
+  // Bubbles packed alike on a flat top and bottom face sit in mirrored pairs: two top and two
+  // bottom nodes in one plane, which Delaunay may join by a flat tet whose chordal quad has no
+  // area and, dropped, leaves a crack in the chordal surface. TetGen gets the nodes moved by a
+  // tiny fixed jitter, so it picks one diagonal on both sides; the tets keep the exact nodes.
+  const double shift = kJitter * diagonal(nodes);
   for (size_t i = 0; i < nodes.size(); ++i) {
-    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = nodes[i].point[k];
+    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = nodes[i].point[k] + shift * jitter(i, k);
     mesh.nodes.push_back(nodes[i].point);
     mesh.side.push_back(nodes[i].side);
   }
