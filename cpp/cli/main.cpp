@@ -1,4 +1,5 @@
-// hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H] [--order 1|2] [--report R] [--quiet]`
+// hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H | --aspect A] [--sizing uniform|adaptive]
+// [--min-size H] [--max-size H] [--order 1|2] [--report R] [--quiet]`
 #include <CLI/CLI.hpp>
 
 #include <fstream>
@@ -76,6 +77,10 @@ int main(int argc, char** argv) {
   mesh->add_option("-o,--output", c.output, "Output mesh: .inp (CalculiX), .vtu (VTK) or .msh (Gmsh 4.1)")->required();
   mesh->add_option("--layers", c.options.layers, "Hex layers through the thickness (default 2)");
   mesh->add_option("--size", c.options.size, "Quad edge length on the chordal surface (default: the wall thickness)");
+  mesh->add_option("--sizing", c.options.sizing, "Quad sizing: uniform or adaptive (radius function and curvature, §6.1) (default uniform)");
+  mesh->add_option("--aspect", c.options.aspect, "In-plane quad size / layer thickness, instead of --size (default off)");
+  mesh->add_option("--min-size", c.options.minSize, "Smallest adaptive quad size (default: a quarter of the size)");
+  mesh->add_option("--max-size", c.options.maxSize, "Largest adaptive quad size (default: 4 x the size)");
   mesh->add_option("--order", c.options.order, "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
   mesh->add_option("--report", c.report, "Write a JSON report of every stage");
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");

@@ -16,6 +16,7 @@
 #include "geometry/wall_sides.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_smoothing.hpp"
+#include "quadmesh/sizing.hpp"
 #include "quality/quality.hpp"
 #include "sweep/quadratic.hpp"
 #include "sweep/sweep.hpp"
@@ -56,11 +57,16 @@ class StageClock {
   const MeshOptions& options_;
 };
 
-// Default quad size: the wall thickness (bending-accurate C3D8I with 2 layers), coarser if the part would need too many quads.
+// Default quad size: the wall thickness (bending-accurate C3D8I with 2 layers), coarser if the part
+// would need too many quads; with --aspect A, A layer thicknesses (thickness / layers).
 double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalArea, nlohmann::json& report) {
   if (o.size > 0) {
     report["size_source"] = "given";
     return o.size;
+  }
+  if (o.aspect > 0) {
+    report["size_source"] = "aspect x wall thickness / layers";
+    return o.aspect * sides.thickness / o.layers;
   }
   double size = kDefaultSizeOverThickness * sides.thickness;
   size = std::max(size, std::sqrt(chordalArea / kMaxAutoQuads));
@@ -112,6 +118,14 @@ std::vector<double> reportQuality(const HexMesh& mesh, double cadVolume, nlohman
   return std::move(q.scaledJacobian);
 }
 
+// Share of the hexes whose aspect ratio is within 10 % of the requested one (Figure 11).
+double aspectHit(const HexMesh& mesh, double aspect) {
+  std::size_t hit = 0;
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+    hit += std::abs(hexAspectRatio(hexCorners(mesh, h)) - aspect) <= 0.1 * aspect;
+  return mesh.hexes.empty() ? 0 : static_cast<double>(hit) / mesh.hexes.size();
+}
+
 // A mesh with a hole the part does not have (or without one it has) differs from the CAD in the
 // Euler characteristic of its boundary.
 void compareTopology(nlohmann::json& r, long cadEuler) {
@@ -152,6 +166,12 @@ void validateOptions(const MeshOptions& o) {
     throw usageError("--layers must be between 1 and " + std::to_string(kMaxLayers) + ", got " + std::to_string(o.layers));
   if (!(o.size >= 0) || !std::isfinite(o.size)) throw usageError("--size must be a positive length");
   if (o.order != 1 && o.order != 2) throw usageError("--order must be 1 or 2, got " + std::to_string(o.order));
+  if (o.sizing != "uniform" && o.sizing != "adaptive") throw usageError("--sizing must be 'uniform' or 'adaptive', got '" + o.sizing + "'");
+  if (!(o.aspect >= 0) || !std::isfinite(o.aspect)) throw usageError("--aspect must be a positive ratio (0 = off)");
+  if (o.size > 0 && o.aspect > 0) throw usageError("give --size or --aspect, not both");
+  if (!(o.minSize >= 0) || !(o.maxSize >= 0) || !std::isfinite(o.minSize) || !std::isfinite(o.maxSize) ||
+      (o.maxSize > 0 && o.minSize > o.maxSize))
+    throw usageError("--min-size and --max-size must be lengths with --min-size <= --max-size");
 }
 
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
@@ -173,6 +193,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   r["chordal_surface"] = {{"triangles", cut.triangles}, {"quads", cut.quads}, {"vertices", cut.vertices.size()}};
   const double size = chooseSize(o, sides, chordalArea(cut), r);
   r["size"] = size;
+  r["sizing"] = o.sizing;
   ChordalSurface chordal;
   std::optional<ChordalLocator> locator;
   const QuadMesh quads = clock.run("quad_mesh", [&] {
@@ -184,6 +205,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
       fairChordalSurface(chordal, fairing);
       computeNormalsAndRadius(chordal, tets);
       locator.emplace(chordal);
+      if (o.sizing == "adaptive") qo.vertexSize = adaptiveSizes(chordal, {size, o.minSize, o.maxSize});
       try {
         q = meshChordalSurface(*locator, qo);
         r["chordal_surface"]["fairing_iterations"] = fairing;
@@ -209,6 +231,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, cad, sides); });
   result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, cad.volume, r); });
   compareTopology(r, eulerCharacteristic(cad));
+  if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);
   result.nodeSets = surfaceNodeSets(result.mesh);
   return result;
 }

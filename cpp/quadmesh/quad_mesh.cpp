@@ -2,6 +2,7 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -51,9 +52,25 @@ void addChordalTriangles(const ChordalSurface& chordal) {
   gmsh::model::mesh::addElementsByType(surface, 2, {}, triangles);
 }
 
-void setQuadOptions(const QuadMeshOptions& o) {
-  gmsh::option::setNumber("Mesh.MeshSizeMin", o.size);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", o.size);
+double smallestSize(const QuadMeshOptions& o) {
+  return o.vertexSize.empty() ? o.size : *std::min_element(o.vertexSize.begin(), o.vertexSize.end());
+}
+
+// The target size at a point of the chordal surface, interpolated from its facet's corners.
+double sizeAt(const ChordalLocator& chordal, const std::vector<double>& vertexSize, const Vec3& p) {
+  const ChordalPoint at = chordal.locate(p);
+  const auto& f = chordal.surface().facets[at.facet];
+  double h = 0;
+  for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) h += at.weights[k] * vertexSize[f[k]];
+  return h;
+}
+
+void setQuadOptions(const QuadMeshOptions& o, const ChordalLocator& chordal) {
+  const bool adaptive = !o.vertexSize.empty();
+  gmsh::option::setNumber("Mesh.MeshSizeMin", smallestSize(o));
+  gmsh::option::setNumber("Mesh.MeshSizeMax", adaptive ? *std::max_element(o.vertexSize.begin(), o.vertexSize.end()) : o.size);
+  if (adaptive)  // §6.1: geometry-adaptive quads
+    gmsh::model::mesh::setSizeCallback([&](int, int, double x, double y, double z) { return sizeAt(chordal, o.vertexSize, Vec3(x, y, z)); });
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -113,6 +130,7 @@ QuadMesh fromBytes(const std::string& bytes) {
   return q;
 }
 
+
 double gmshTimeout(const ChordalSurface& chordal, double size) {
   return 60 + chordalArea(chordal) / (size * size) / 2000;
 }
@@ -120,7 +138,8 @@ double gmshTimeout(const ChordalSurface& chordal, double size) {
 // One Gmsh run: split the chordal surface into patches, reparametrize, mesh.
 // Gmsh runs in a child process: its crashes and hangs (both seen on real parts with Gmsh 4.8) end
 // that try only. Returns no quads, and why in `error`, if Gmsh fails.
-QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, const PatchSplit& split, std::string& error) {
+QuadMesh gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const PatchSplit& split, std::string& error) {
+  const ChordalSurface& chordal = locator.surface();
   const ChildResult run = runInChildProcess([&] {
     GmshSession session;
     try {
@@ -129,7 +148,7 @@ QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, cons
       const double toRadians = M_PI / 180.0;
       gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
       gmsh::model::mesh::createGeometry();
-      setQuadOptions(o);
+      setQuadOptions(o, locator);
       gmsh::model::mesh::generate(2);
       return toBytes(collectQuads());
     } catch (const std::exception&) {
@@ -139,7 +158,7 @@ QuadMesh gmshQuads(const ChordalSurface& chordal, const QuadMeshOptions& o, cons
       gmsh::logger::getLastError(last);
       throw std::runtime_error(last.empty() ? "unknown Gmsh error" : last);
     }
-  }, o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTimeout(chordal, o.size));
+  }, o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTimeout(chordal, smallestSize(o)));
   if (!run.ok) {
     error = "Gmsh " + run.failure;
     return {};
@@ -196,7 +215,7 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;
   for (const PatchSplit& split : o.patchSplits) {
-    QuadMesh q = gmshQuads(chordal.surface(), o, split, gmshError);
+    QuadMesh q = gmshQuads(chordal, o, split, gmshError);
     const QuadCheck c = checkQuads(q, chordal, o.acceptableQuad);
     if (q.quads.empty() || !(c.farthest < kOffSurface * o.size)) {
       if (!q.quads.empty()) failedAt = c.farthestNode, gmshError.clear();

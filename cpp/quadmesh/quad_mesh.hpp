@@ -24,6 +24,7 @@ struct PatchSplit {
 
 struct QuadMeshOptions {
   double size = 0;  // target edge length (uniform sizing)
+  std::vector<double> vertexSize;  // adaptive sizing: target edge length per chordal vertex (sizing.hpp)
   // Gmsh's reparametrization of a patch can fail: the next split is tried then, or when some quads
   // are below acceptableQuad; of the tries, the one with the fewest such quads (then the best worst) is kept.
   std::vector<PatchSplit> patchSplits{{60, 60}, {60, 180}, {40, 40}, {40, 180}, {80, 80}, {25, 25}};

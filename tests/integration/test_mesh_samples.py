@@ -78,11 +78,38 @@ class MeshSamples(unittest.TestCase):
             self.assertEqual(done.returncode, 4)
             self.assertIn("not a thin section", done.stderr)
 
+    def test_adaptive_sizing_on_the_hat_section(self):
+        # Measured 2026-11-23: 19120 hexes (uniform: 8812), SJ min 0.58, avg 0.913, volume -0.27 %.
+        with tempfile.TemporaryDirectory() as tmp:
+            uniform = self.mesh("hat_holes", os.path.join(tmp, "u.vtu"))
+            r = self.mesh("hat_holes", os.path.join(tmp, "a.vtu"), "--sizing", "adaptive")
+            self.assertEqual(r["sizing"], "adaptive")
+            self.assertGreater(r["hexes"], uniform["hexes"], "the bends and the hole rims are refined")
+            self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.9)
+            self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
+            self.assertLess(abs(r["volume"]["relative_error"]), 0.01)
+            self.assertTrue(r["boundary"]["same_topology_as_cad"], r["boundary"])
+
+    def test_aspect_sets_the_size_from_the_layer_thickness(self):
+        # Measured 2026-11-23 on the plate (2 mm, 2 layers): --aspect 1 hits within 10 % on 63 % of
+        # the hexes, --aspect 5 on 28 % (median 4.2: Gmsh's quads come out smaller than asked).
+        with tempfile.TemporaryDirectory() as tmp:
+            for aspect, hit in ((1, 0.5), (5, 0.2)):
+                with self.subTest(aspect=aspect):
+                    r = self.mesh("plate", os.path.join(tmp, f"a{aspect}.vtu"), "--aspect", str(aspect))
+                    self.assertAlmostEqual(r["size"], aspect * r["thickness"] / 2, places=9)
+                    self.assertGreaterEqual(r["aspect_ratio_hit"], hit)
+                    self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
+
     def test_bad_usage_and_missing_file(self):
         with tempfile.TemporaryDirectory() as tmp:
             step = os.path.join(harness.args.source, "Resources", "samples", "plate.step")
             self.assertEqual(run_hexlayer("mesh", step, "-o", os.path.join(tmp, "x.inp"), "--layers", "0").returncode, 2)
             self.assertEqual(run_hexlayer("mesh", step, "-o", os.path.join(tmp, "x.stl")).returncode, 2)
+            for bad in (("--sizing", "graded"), ("--size", "2", "--aspect", "3"), ("--aspect", "-1"),
+                        ("--min-size", "3", "--max-size", "1")):
+                with self.subTest(options=bad):
+                    self.assertEqual(run_hexlayer("mesh", step, "-o", os.path.join(tmp, "x.inp"), *bad).returncode, 2)
             missing = run_hexlayer("mesh", os.path.join(tmp, "none.step"), "-o", os.path.join(tmp, "x.inp"))
             self.assertEqual(missing.returncode, 3)
             self.assertIn("does not exist", missing.stderr)

@@ -1,0 +1,70 @@
+#include "quadmesh/sizing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace hexlayer {
+namespace {
+
+std::vector<std::pair<int, int>> facetEdges(const ChordalSurface& s) {
+  std::map<std::pair<int, int>, int> edges;
+  for (const auto& f : s.facets) {
+    const int n = f[3] < 0 ? 3 : 4;
+    for (int k = 0; k < n; ++k) edges.emplace(std::minmax(f[k], f[(k + 1) % n]), 0);
+  }
+  std::vector<std::pair<int, int>> out;
+  for (const auto& e : edges) out.push_back(e.first);
+  return out;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+// h_i = min(h_i, h_j + g |x_i - x_j|) over the edges until nothing changes (a discrete Lipschitz bound).
+void limitGradation(const ChordalSurface& s, const std::vector<std::pair<int, int>>& edges, double g, std::vector<double>& h) {
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& [a, b] : edges) {
+      const double d = g * (s.vertices[a] - s.vertices[b]).norm();
+      if (h[a] > h[b] + d + 1e-12) h[a] = h[b] + d, changed = true;
+      if (h[b] > h[a] + d + 1e-12) h[b] = h[a] + d, changed = true;
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<double> chordalCurvature(const ChordalSurface& s) {
+  std::vector<double> sum(s.vertices.size(), 0);
+  std::vector<int> count(s.vertices.size(), 0);
+  for (const auto& [a, b] : facetEdges(s)) {
+    const double length = (s.vertices[a] - s.vertices[b]).norm();
+    if (length <= 0) continue;
+    const double angle = std::acos(std::clamp(s.normals[a].dot(s.normals[b]), -1.0, 1.0));
+    sum[a] += angle / length, sum[b] += angle / length;
+    ++count[a], ++count[b];
+  }
+  for (size_t i = 0; i < sum.size(); ++i) sum[i] /= std::max(count[i], 1);
+  return sum;
+}
+
+std::vector<double> adaptiveSizes(const ChordalSurface& s, const SizingOptions& o) {
+  const double lo = o.minSize > 0 ? o.minSize : 0.25 * o.size, hi = o.maxSize > 0 ? o.maxSize : 4 * o.size;
+  const double medianRadius = median(s.radius);
+  const std::vector<double> curvature = chordalCurvature(s);
+  std::vector<double> h(s.vertices.size());
+  for (size_t i = 0; i < h.size(); ++i) {
+    h[i] = medianRadius > 0 ? o.size * s.radius[i] / medianRadius : o.size;          // §6.1: radius function
+    if (curvature[i] > 0) h[i] = std::min(h[i], o.turnPerQuad / curvature[i]);        // §6.1: curvature
+    h[i] = std::clamp(h[i], lo, hi);
+  }
+  limitGradation(s, facetEdges(s), o.gradation, h);
+  return h;
+}
+
+}  // namespace hexlayer

@@ -1,0 +1,64 @@
+// Sizing function of the quad mesh (§6.1): proportional to the radius function, limited by the
+// curvature of the chordal surface, bounded, and graded.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "quadmesh/sizing.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+// A flat strip of unit quads along x (n quads, 1 wide) with radius r(x) and normal +z.
+ChordalSurface strip(int n, double (*radius)(double)) {
+  ChordalSurface s;
+  for (int j = 0; j <= 1; ++j)
+    for (int i = 0; i <= n; ++i) {
+      s.vertices.emplace_back(i, j, 0);
+      s.normals.push_back(Vec3::UnitZ());
+      s.radius.push_back(radius(i));
+    }
+  for (int i = 0; i < n; ++i) s.facets.push_back({i, i + 1, n + 1 + i + 1, n + 1 + i});
+  return s;
+}
+
+double wedge(double x) { return 0.5 + 0.05 * x; }    // wall 1 mm thick at x = 0, 3 mm at x = 20
+double step(double x) { return x < 10 ? 0.5 : 4.0; } // a sudden jump of the wall
+
+}  // namespace
+
+TEST(Sizing, FollowsTheRadiusFunction) {
+  const ChordalSurface s = strip(20, wedge);
+  const std::vector<double> h = adaptiveSizes(s, {2.0, 0.1, 100, 10, 0.5});  // no bound, no gradation limit
+  const double medianRadius = wedge(10);
+  for (size_t i = 0; i < h.size(); ++i) EXPECT_NEAR(h[i], 2.0 * s.radius[i] / medianRadius, 1e-12) << i;
+}
+
+TEST(Sizing, IsBoundedAndGraded) {
+  const ChordalSurface s = strip(20, step);
+  const std::vector<double> h = adaptiveSizes(s, {1.0, 0.5, 3.0, 0.3, 0.5});
+  for (size_t i = 0; i < h.size(); ++i) {
+    EXPECT_GE(h[i], 0.5 - 1e-12);
+    EXPECT_LE(h[i], 3.0 + 1e-12);
+  }
+  for (int i = 0; i < 20; ++i) EXPECT_LE(std::abs(h[i + 1] - h[i]), 0.3 + 1e-12) << "gradation at x = " << i;
+  // The median radius is 4 (11 of 21 columns): size 1 x 4/4 on the thick side, 1 x 0.5/4 raised to
+  // the bound 0.5 on the thin side; the first thick column is held to 0.5 + 0.3.
+  EXPECT_NEAR(h[0], 0.5, 1e-12);
+  EXPECT_NEAR(h[20], 1.0, 1e-12);
+  EXPECT_NEAR(h[10], 0.8, 1e-12);
+}
+
+TEST(Sizing, CurvatureRefines) {
+  // A cylinder of radius 5 seen as a strip: normals turn by 0.1 rad per unit of arc length.
+  ChordalSurface s = strip(20, wedge);
+  for (size_t i = 0; i < s.vertices.size(); ++i) {
+    const double a = 0.2 * s.vertices[i].x();  // arc length x on radius 5
+    s.normals[i] = Vec3(std::sin(a), 0, std::cos(a));
+  }
+  const std::vector<double> k = chordalCurvature(s);
+  for (double c : k) EXPECT_NEAR(c, 0.2 * 20 / 21, 0.12);  // 0.2 rad per unit along x, 0 along y
+  const std::vector<double> h = adaptiveSizes(s, {10.0, 0.1, 100, 10, 0.5});
+  for (size_t i = 0; i < h.size(); ++i) EXPECT_NEAR(h[i], 0.5 / k[i], 1e-9) << "turn of 0.5 rad per quad";
+}
