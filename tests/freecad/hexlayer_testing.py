@@ -47,9 +47,16 @@ def add_sample(doc, file_name):
     return part
 
 
+def element_node_count(keyword_line):
+    """Nodes per element of an *ELEMENT line's TYPE (C3D8 -> 8, C3D20 -> 20)."""
+    element_type = keyword_line.upper().split("TYPE=")[1].split(",")[0].strip()
+    return int("".join(c for c in element_type[3:] if c.isdigit()))
+
+
 def read_inp(path):
-    """Nodes (N, 3) and the first 8 node ids of each element (0-based rows of nodes) of an Abaqus/CalculiX .inp."""
-    nodes, elements, section = {}, [], None
+    """Nodes (N, 3) and the node ids of each element (0-based rows of nodes) of an Abaqus/CalculiX .inp;
+    an element's ids may go on over several lines."""
+    nodes, elements, section, pending = {}, [], None, []
     with open(path) as f:
         for line in f:
             if line.startswith("**") or not line.strip():
@@ -57,20 +64,30 @@ def read_inp(path):
             if line.startswith("*"):
                 keyword = line.split(",")[0].strip().upper()
                 section = keyword if keyword in ("*NODE", "*ELEMENT") else None
+                count = element_node_count(line) if section == "*ELEMENT" else 0
                 continue
             values = [v for v in line.split(",") if v.strip()]
             if section == "*NODE":
                 nodes[int(values[0])] = [float(v) for v in values[1:4]]
             elif section == "*ELEMENT":
-                elements.append([int(v) for v in values[1:9]])
+                pending += [int(v) for v in values]
+                if len(pending) == count + 1:
+                    elements.append(pending[1:])
+                    pending = []
     ids = sorted(nodes)
     row = {node: i for i, node in enumerate(ids)}
     return np.array([nodes[i] for i in ids]), np.array([[row[n] for n in e] for e in elements])
 
 
-def written_hex_volumes(femmesh):
-    """Hex volumes of a FemMesh as FreeCAD writes it for CalculiX (writeABAQUS, C3D8)."""
+def written_elements(femmesh):
+    """Nodes and elements of a FemMesh as FreeCAD writes it for CalculiX (writeABAQUS: C3D8 or C3D20)."""
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "mesh.inp")
         femmesh.writeABAQUS(path, 1, False)
-        return hex_volumes(*read_inp(path))
+        return read_inp(path)
+
+
+def written_hex_volumes(femmesh):
+    """Hex volumes (of the corners) of a FemMesh as FreeCAD writes it for CalculiX."""
+    nodes, elements = written_elements(femmesh)
+    return hex_volumes(nodes, elements[:, :8])
