@@ -14,6 +14,7 @@ holding every DOF of Face1, Poisson contraction too, stiffens it by 1.6 %); C3D8
 
 Run: freecadcmd -t test_hexlayer_ccx -M tests/freecad (see hexlayer_testing for the environment).
 """
+import functools
 import os
 import shutil
 import subprocess
@@ -33,19 +34,29 @@ import hexlayer_testing as t
 E, NU, FORCE = 210000.0, 0.3, 10.0
 
 
-def add_analysis(doc, plate):
-    """Analysis with CalculiX solver, steel, Fixed on Face1 and Force 10 N in -z on Face2."""
+class Faces:
+    """The faces a cantilever test names: clamped end, loaded end, and the face whose normal, reversed or
+    not, is the load's direction."""
+    def __init__(self, fixed, loaded, direction, reversed_):
+        self.fixed, self.loaded, self.direction, self.reversed = fixed, loaded, direction, reversed_
+
+
+PLATE_FACES = Faces("Face1", "Face2", "Face6", True)  # Face6 the top: +z reversed, the tip is pushed down (-z)
+
+
+def add_analysis(doc, part, faces):
+    """Analysis with CalculiX solver, steel, Fixed on faces.fixed and Force 10 N on faces.loaded."""
     analysis = ObjectsFem.makeAnalysis(doc, "Analysis")
     solver = ObjectsFem.makeSolverCalculixCcxTools(doc, "CalculiX")
     material = ObjectsFem.makeMaterialSolid(doc, "Steel")
     material.Material = dict(material.Material, Name="Steel", YoungsModulus="{} MPa".format(E), PoissonRatio=str(NU))
     fixed = ObjectsFem.makeConstraintFixed(doc, "Fixed")
-    fixed.References = [(plate, "Face1")]
+    fixed.References = [(part, faces.fixed)]
     force = ObjectsFem.makeConstraintForce(doc, "Force")
-    force.References = [(plate, "Face2")]
+    force.References = [(part, faces.loaded)]
     force.Force = FORCE
-    force.Direction = (plate, ["Face6"])  # the top face's normal, +z, ...
-    force.Reversed = True                 # ... reversed: the load pushes the tip down (-z)
+    force.Direction = (part, [faces.direction])
+    force.Reversed = faces.reversed
     for obj in (solver, material, fixed, force):
         analysis.addObject(obj)
     return analysis, solver
@@ -68,6 +79,8 @@ def write_and_solve(analysis, solver, work):
     if problem:
         raise AssertionError("CalculiX prerequisites: " + problem)
     fea.ccx_run()
+    if "*ERROR" in fea.ccx_stdout or "jacobian" in fea.ccx_stdout.lower():
+        raise AssertionError("CalculiX: " + fea.ccx_stdout[-2000:])
     fea.load_results()
     results = [o for o in analysis.Group if o.isDerivedFrom("Fem::FemResultObject")]
     return fea.inp_file_name, (results[0] if results else None)
@@ -92,15 +105,42 @@ def tip_deflection(displacement, tip_nodes):
     return float(np.mean([displacement[n].z for n in tip_nodes]))
 
 
-def build(name, **mesh_properties):
-    """A document with the plate, its analysis and a Hex-Layer mesh in it, recomputed."""
+def build(name, add_part=t.add_plate, faces=PLATE_FACES, **mesh_properties):
+    """A document with the part, its analysis and a Hex-Layer mesh in it, recomputed."""
     doc = FreeCAD.newDocument(name)
-    plate = t.add_plate(doc)
-    analysis, solver = add_analysis(doc, plate)
-    mesh = HexLayer.makeMesh(doc, plate, **mesh_properties)
+    part = add_part(doc)
+    analysis, solver = add_analysis(doc, part, faces)
+    mesh = HexLayer.makeMesh(doc, part, **mesh_properties)
     analysis.addObject(mesh)
     doc.recompute()
-    return doc, plate, analysis, solver, mesh
+    return doc, part, analysis, solver, mesh
+
+
+def solved_tip_deflection(name, work, add_part=t.add_plate, faces=PLATE_FACES, **mesh_properties):
+    """Builds, meshes and solves through FreeCAD's solver tools (hexa20 written as C3D20); the mean
+    displacement along the load of the nodes FreeCAD finds on the loaded face, and the document."""
+    doc, part, analysis, solver, mesh = build(name, add_part, faces, **mesh_properties)
+    result = write_and_solve(analysis, solver, os.path.join(work, name))[1]
+    if result is None:
+        raise AssertionError("FreeCAD loaded no CalculiX result for " + name)
+    displacement = dict(zip(result.NodeNumbers, result.DisplacementVectors))
+    loaded = mesh.FemMesh.getNodesByFace(part.getSubObject(faces.loaded))
+    return tip_deflection(displacement, loaded), doc
+
+
+@functools.lru_cache(maxsize=None)
+def plate_reference():
+    """The converged tip deflection of the plate: C3D8I on 1 mm quads in 4 layers, the same FreeCAD
+    constraints, the .inp FreeCAD writes."""
+    work = tempfile.mkdtemp(prefix="hexlayer_ccx_reference_")
+    try:
+        doc, plate, analysis, solver, mesh = build("Reference", Layers=4, Size=1.0)
+        fea = write_inp(analysis, solver, work)
+        deflection = tip_deflection(solve_as(fea.inp_file_name, "C3D8I"), mesh.FemMesh.getNodesByFace(plate.Shape.Face2))
+        FreeCAD.closeDocument(doc.Name)
+        return deflection
+    finally:
+        shutil.rmtree(work)
 
 
 class CantileverPlate(unittest.TestCase):
@@ -111,18 +151,9 @@ class CantileverPlate(unittest.TestCase):
         cls.force = cls.doc.getObject("Force")
         cls.tip = cls.mesh.FemMesh.getNodesByFace(cls.plate.Shape.Face2)
         cls.inp, cls.result = write_and_solve(analysis, solver, os.path.join(cls.work, "coarse"))
-        cls.reference = cls.converged_reference()
+        cls.reference = plate_reference()
         length, width, thickness = t.PLATE
         cls.beam = -FORCE * length ** 3 / (3 * E * width * thickness ** 3 / 12)
-
-    @classmethod
-    def converged_reference(cls):
-        """C3D8I on 1 mm quads in 4 layers, the same FreeCAD constraints, the .inp FreeCAD writes."""
-        doc, plate, analysis, solver, mesh = build("Reference", Layers=4, Size=1.0)
-        fea = write_inp(analysis, solver, os.path.join(cls.work, "reference"))
-        deflection = tip_deflection(solve_as(fea.inp_file_name, "C3D8I"), mesh.FemMesh.getNodesByFace(plate.Shape.Face2))
-        FreeCAD.closeDocument(doc.Name)
-        return deflection
 
     @classmethod
     def tearDownClass(cls):
@@ -159,6 +190,20 @@ class CantileverPlate(unittest.TestCase):
         ratio = tip_deflection(solve_as(self.inp, "C3D8I"), self.tip) / self.reference
         print("\ntip deflection C3D8I (same .inp, 2 layers) / reference: {:.4f}".format(ratio))
         self.assertAlmostEqual(ratio, 1.0, delta=0.02)
+
+
+class QuadraticCantileverPlate(unittest.TestCase):
+    """Order 2, 2 layers, default size (2 mm quads): FreeCAD writes C3D20, CalculiX solves it."""
+
+    def test_tip_deflection_within_1_percent_of_the_converged_reference(self):
+        work = tempfile.mkdtemp(prefix="hexlayer_ccx_order2_")
+        self.addCleanup(shutil.rmtree, work)
+        deflection, doc = solved_tip_deflection("QuadraticPlate", work, Layers=2, Order=2)
+        FreeCAD.closeDocument(doc.Name)
+        reference = plate_reference()
+        print("\ntip deflection C3D20 (order 2, 2 layers) {:.4f} mm, reference {:.4f} mm: ratio {:.4f}".format(
+            deflection, reference, deflection / reference))
+        self.assertAlmostEqual(deflection / reference, 1.0, delta=0.01)
 
 
 if __name__ == "__main__":
