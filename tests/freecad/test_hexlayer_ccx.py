@@ -206,5 +206,50 @@ class QuadraticCantileverPlate(unittest.TestCase):
         self.assertAlmostEqual(deflection / reference, 1.0, delta=0.01)
 
 
+def lbracket_faces():
+    """Fixed: the end face of the upright leg (z = 30); Force: the end face of the flat leg (x = 40), along
+    the outer wall's normal (z = 0 face, -z): the load bends both legs and the bend."""
+    shape = t.lbracket_shape(**t.LBRACKET)
+    x_end, z_end = t.LBRACKET["legs"]
+    return Faces(t.face_name(shape, lambda c: abs(c.z - z_end) < 1e-9), t.face_name(shape, lambda c: abs(c.x - x_end) < 1e-9),
+                 t.face_name(shape, lambda c: abs(c.z) < 1e-9), False)
+
+
+class QuadraticLBracket(unittest.TestCase):
+    """Order 2 on a bent part: 2 layers at the default size (2 mm) against the same FreeCAD model meshed
+    finer (1 mm, 4 layers, order 2), both solved by FreeCAD's CalculiX tools as C3D20."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp(prefix="hexlayer_ccx_lbracket_")
+        cls.faces = lbracket_faces()
+        cls.deflection, cls.doc = solved_tip_deflection("LBracket", cls.work, t.add_lbracket, cls.faces, Layers=2, Order=2)
+        cls.reference, reference_doc = solved_tip_deflection("LBracketReference", cls.work, t.add_lbracket, cls.faces,
+                                                             Layers=4, Size=1.0, Order=2)
+        FreeCAD.closeDocument(reference_doc.Name)
+
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.doc.Name)
+        shutil.rmtree(cls.work)
+
+    def test_load_pushes_the_flat_leg_down(self):
+        self.assertEqual(tuple(self.doc.getObject("Force").DirectionVector), (0.0, 0.0, -1.0))
+
+    def test_constraints_find_the_end_face_nodes(self):
+        part, fem = self.doc.getObject("LBracket"), self.doc.getObject("HexLayerMesh").FemMesh
+        for name, axis, value in ((self.faces.fixed, 2, t.LBRACKET["legs"][1]), (self.faces.loaded, 0, t.LBRACKET["legs"][0])):
+            near = [n for n in range(1, fem.NodeCount + 1) if abs(fem.getNodeById(n)[axis] - value) < 1e-3]
+            found = fem.getNodesByFace(part.getSubObject(name))
+            self.assertEqual(sorted(found), sorted(near), name + ": every node near the end plane is found on it")
+            self.assertGreater(len(found), 8)
+
+    def test_tip_deflection_within_1_percent_of_the_finer_mesh(self):
+        print("\nL-bracket tip deflection C3D20: 2 layers {:.5f} mm, reference (1 mm, 4 layers) {:.5f} mm: "
+              "ratio {:.4f}".format(self.deflection, self.reference, self.deflection / self.reference))
+        self.assertLess(self.reference, 0)
+        self.assertAlmostEqual(self.deflection / self.reference, 1.0, delta=0.01)
+
+
 if __name__ == "__main__":
     unittest.main()
