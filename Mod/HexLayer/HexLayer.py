@@ -2,7 +2,7 @@
 
     import HexLayer
     mesh = HexLayer.makeMesh(doc, part, Layers=2, Size=2.0)
-    doc.recompute()   # meshes; mesh.Status says how it went, mesh.FemMesh holds the hexa8 volumes
+    doc.recompute()   # meshes; mesh.Status says how it went, mesh.FemMesh holds the hexa8 (Order 1) or hexa20 (Order 2) volumes
 
 Works in freecadcmd (no GUI) and in the GUI, where the mesh gets its view provider and task panel.
 """

@@ -22,13 +22,13 @@ namespace {
 
 using hexlayer::ExitCode;
 
-// The options of the CLI, plus those the method will take (issue 3) but the core does not yet: each of
-// those accepts the one value the core implements today, so scripts can be written against the final API.
+// The options of the CLI (layers, size, order: in the core's MeshOptions), plus those the method will take
+// (issue 3) but the core does not yet: each of those accepts the one value the core implements today, so
+// scripts can be written against the final API.
 struct Options {
   hexlayer::MeshOptions core;
   std::string sizing = "uniform";
   double aspect = 0;  // in-plane size / layer thickness; 0 = off
-  int order = 1;
 };
 
 std::string number(double value) {
@@ -43,8 +43,6 @@ void validate(const Options& o) {
     throw hexlayer::usageError("--sizing must be 'uniform' (geometry-adaptive sizing is not supported yet), got '" + o.sizing + "'");
   if (o.aspect != 0)
     throw hexlayer::usageError("--aspect must be 0 = off (aspect-ratio control is not supported yet), got " + number(o.aspect));
-  if (o.order != 1)
-    throw hexlayer::usageError("--order must be 1 (quadratic hexes are not supported yet), got " + std::to_string(o.order));
 }
 
 Options makeOptions(int layers, double size, const std::string& sizing, double aspect, int order) {
@@ -53,7 +51,7 @@ Options makeOptions(int layers, double size, const std::string& sizing, double a
   o.core.size = size;
   o.sizing = sizing;
   o.aspect = aspect;
-  o.order = order;
+  o.core.order = order;
   validate(o);
   return o;
 }
@@ -83,7 +81,7 @@ py::object toPython(const nlohmann::json& j) {
 
 struct PyMeshResult {
   py::array_t<double> nodes;            // (N, 3)
-  py::array_t<long long> hexes;         // (M, 8), 0-based, HexMesh node order
+  py::array_t<long long> hexes;         // (M, 8) or (M, 20), 0-based: 8 corners, then 12 mid-edge nodes (C3D20)
   py::array_t<double> scaledJacobian;   // (M,)
   py::dict nodeSets;                    // name -> node ids (0-based)
   py::dict report;
@@ -97,11 +95,16 @@ py::array_t<double> nodeArray(const std::vector<hexlayer::Vec3>& nodes) {
   return a;
 }
 
-py::array_t<long long> hexArray(const std::vector<std::array<int, 8>>& hexes) {
-  py::array_t<long long> a({static_cast<py::ssize_t>(hexes.size()), py::ssize_t(8)});
+// One row per hex: its 8 corners, then (quadratic mesh) its 12 mid-edge nodes in kHexEdges order, which
+// is CalculiX's C3D20 order.
+py::array_t<long long> hexArray(const hexlayer::HexMesh& mesh) {
+  const int width = mesh.quadratic() ? 20 : 8;
+  py::array_t<long long> a({static_cast<py::ssize_t>(mesh.hexes.size()), py::ssize_t(width)});
   auto v = a.mutable_unchecked<2>();
-  for (size_t i = 0; i < hexes.size(); ++i)
-    for (int k = 0; k < 8; ++k) v(i, k) = hexes[i][k];
+  for (size_t i = 0; i < mesh.hexes.size(); ++i) {
+    for (int k = 0; k < 8; ++k) v(i, k) = mesh.hexes[i][k];
+    for (int k = 8; k < width; ++k) v(i, k) = mesh.midEdges[i][k - 8];
+  }
   return a;
 }
 
@@ -113,7 +116,7 @@ py::array_t<T> vectorArray(const std::vector<T>& values) {
 PyMeshResult toPython(const hexlayer::MeshResult& r) {
   PyMeshResult p;
   p.nodes = nodeArray(r.mesh.nodes);
-  p.hexes = hexArray(r.mesh.hexes);
+  p.hexes = hexArray(r.mesh);
   p.scaledJacobian = vectorArray(r.scaledJacobian);
   for (const hexlayer::NodeSet& set : r.nodeSets)
     p.nodeSets[py::str(set.name)] = vectorArray(std::vector<long long>(set.nodes.begin(), set.nodes.end()));
@@ -242,19 +245,26 @@ void registerTranslator(const ExceptionTypes& types) {
 constexpr const char* kOptionsDoc =
     "layers: hex layers through the thickness (1-64); size: quad edge length, 0 = the wall thickness; "
     "sizing: 'uniform' (only value today); aspect: in-plane size / layer thickness, 0 = off (only value today); "
-    "order: 1 = linear hexes (only value today); progress: callable taking one line per finished stage, or None "
+    "order: 1 = linear hexes (M, 8), 2 = quadratic hexes (M, 20), wall mid-edge nodes on the CAD walls; "
+    "progress: callable taking one line per finished stage, or None "
     "(an exception it raises ends the run).";
 
 }  // namespace
 
 PYBIND11_MODULE(pyhexlayer, m) {
-  m.doc() = "Hex-Layer: layered all-hex FEM meshes of thin CAD solids.";
+  m.doc() =
+      "Hex-Layer: layered all-hex FEM meshes of thin CAD solids.\n\n"
+      "MeshResult.hexes holds 0-based node ids, one row per hex. Order 1: (M, 8), the corners; 0-3 the bottom "
+      "quad (counter-clockwise seen from the top side), 4-7 the quad above them. Order 2: (M, 20), the same 8 "
+      "corners, then the 12 mid-edge nodes in CalculiX's C3D20 order: edges 0-1, 1-2, 2-3, 3-0, 4-5, 5-6, 6-7, "
+      "7-4, 0-4, 1-5, 2-6, 3-7. A mid-edge node is shared by all hexes around its edge.";
   registerTranslator(defineExceptions(m));
 
   py::class_<PyMeshResult>(m, "MeshResult", "Nodes, hexes, per-hex quality, node sets and the report of one run.")
       .def_readonly("nodes", &PyMeshResult::nodes, "float64 (N, 3) node coordinates")
       .def_readonly("hexes", &PyMeshResult::hexes,
-                    "int64 (M, 8) 0-based node ids; corners 0-3 the bottom quad, 4-7 the quad above them")
+                    "int64 (M, 8) or, order 2, (M, 20) 0-based node ids: corners 0-3 the bottom quad, 4-7 the quad above "
+                    "them, then the 12 mid-edge nodes in C3D20 order (see the module doc)")
       .def_readonly("scaled_jacobian", &PyMeshResult::scaledJacobian, "float64 (M,) Verdict scaled Jacobian per hex")
       .def_readonly("node_sets", &PyMeshResult::nodeSets, "dict: 'TOP', 'BOTTOM', 'RIM' -> int64 node ids (0-based)")
       .def_readonly("report", &PyMeshResult::report, "dict: the CLI's JSON report")

@@ -127,11 +127,13 @@ class BadSelections(GuiTest):
         self.assertIn("not a solid", self.problem())
         self.assertFalse(widget("mesh").isEnabled())
 
-    def test_unsupported_order_is_refused_in_the_panel(self):
+    def test_both_orders_are_offered_in_the_panel(self):
         self.run_command(t.add_plate(self.doc))
-        widget("order", QtGui.QSpinBox).setValue(2)
-        self.assertIn("Order must be 1 (quadratic hexes are not supported yet)", self.problem())
-        self.assertFalse(widget("mesh").isEnabled())
+        order = widget("order", QtGui.QSpinBox)
+        self.assertEqual((order.minimum(), order.maximum()), (1, 2))
+        order.setValue(2)
+        self.assertEqual(self.problem(), "")
+        self.assertTrue(widget("mesh").isEnabled())
 
     def test_thick_block_fails_in_the_panel_and_the_document_goes_on(self):
         block = t.add_sample(self.doc, "thick_block.step")

@@ -6,9 +6,12 @@ import os
 import tempfile
 import unittest
 
+import numpy as np
+
 import FreeCAD
 import HexLayer
 import pyhexlayer
+from hex_geometry import hex_volumes
 
 import hexlayer_testing as t
 
@@ -65,6 +68,44 @@ class PlateMesh(unittest.TestCase):
         self.assertEqual(mesh.FemMesh.VolumeCount * 2, hexes)
 
 
+class QuadraticPlateMesh(unittest.TestCase):
+    """Order 2: hexa20 volumes whose C3D20, as FreeCAD's writeABAQUS writes them for CalculiX, have positive
+    corners and each mid node at the midpoint of its own C3D20 edge (all edges of the plate are straight)."""
+    C3D20_EDGES = ((0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7))
+
+    @classmethod
+    def setUpClass(cls):
+        cls.doc = FreeCAD.newDocument("QuadraticPlate")
+        cls.plate = t.add_plate(cls.doc)
+        cls.mesh = HexLayer.makeMesh(cls.doc, cls.plate, Layers=2, Order=2)
+        cls.doc.recompute()
+        cls.nodes, cls.elements = t.written_elements(cls.mesh.FemMesh)
+
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.doc.Name)
+
+    def test_femmesh_holds_the_binding_quadratic_mesh(self):
+        result = pyhexlayer.mesh_brep(self.plate.Shape.exportBrepToString(), layers=2, order=2)
+        fem = self.mesh.FemMesh
+        self.assertEqual((fem.VolumeCount, fem.HexaCount, fem.NodeCount), (len(result.hexes),) * 2 + (len(result.nodes),))
+        self.assertEqual(len(fem.getElementNodes(1)), 20)
+        self.assertEqual(self.elements.shape, (len(result.hexes), 20), "written as C3D20")
+
+    def test_written_mid_nodes_are_the_midpoints_of_their_edges(self):
+        x = self.nodes[self.elements]  # (M, 20, 3)
+        for k, (a, b) in enumerate(self.C3D20_EDGES):
+            with self.subTest(edge=(a, b)):
+                distance = np.linalg.norm(x[:, 8 + k] - (x[:, a] + x[:, b]) / 2, axis=1)
+                self.assertLess(distance.max(), 1e-6)
+
+    def test_written_corners_have_positive_volumes(self):
+        volumes = hex_volumes(self.nodes, self.elements[:, :8])
+        self.assertGreater(volumes.min(), 0)
+        plate_volume = t.PLATE[0] * t.PLATE[1] * t.PLATE[2]
+        self.assertLess(abs(volumes.sum() - plate_volume) / plate_volume, 0.03)
+
+
 class Failures(unittest.TestCase):
     """A part or option the mesher cannot take: the object says why, holds no mesh, the document goes on."""
 
@@ -107,7 +148,7 @@ class Failures(unittest.TestCase):
 
     def test_options_the_core_does_not_have_yet(self):
         plate = t.add_plate(self.doc)
-        for name, value, phrase in (("Order", 2, "Order must be 1"), ("Sizing", "adaptive", "Sizing must be 'uniform'"),
+        for name, value, phrase in (("Order", 3, "Order must be 1 or 2, got 3"), ("Sizing", "adaptive", "Sizing must be 'uniform'"),
                                     ("Aspect", 3.0, "Aspect must be 0"), ("Layers", 0, "Layers must be between 1 and")):
             with self.subTest(property=name):
                 mesh = HexLayer.makeMesh(self.doc, plate, **{name: value})

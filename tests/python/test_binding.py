@@ -88,6 +88,41 @@ class PlateMesh(unittest.TestCase):
         self.assertCountEqual(stages, self.result.report["timings_s"])  # the report sorts its keys
 
 
+class QuadraticPlateMesh(unittest.TestCase):
+    """order=2: 20-node hexes, the 8 corners then the 12 mid-edge nodes in C3D20 order (types.hpp kHexEdges)."""
+    EDGES = np.array([(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)])
+
+    @classmethod
+    def setUpClass(cls):
+        cls.result = pyhexlayer.mesh_file(sample("plate.step"), layers=2, order=2)
+        cls.corner_pairs = np.sort(cls.result.hexes[:, cls.EDGES], axis=2)  # (M, 12, 2) the corners of each edge
+        cls.mids = cls.result.hexes[:, 8:]
+
+    def test_twenty_nodes_a_hex(self):
+        r = self.result
+        self.assertEqual(r.hexes.shape, (r.report["hexes"], 20))
+        self.assertEqual(len(np.unique(r.hexes)), len(r.nodes), "every node belongs to a hex")
+        self.assertTrue(np.isin(self.mids, r.hexes[:, :8], invert=True).all(), "mid-edge nodes are not corners")
+        self.assertGreater(hex_volumes(r.nodes, r.hexes[:, :8]).min(), 0)
+
+    def test_one_mid_node_an_edge_shared_by_the_hexes_around_it(self):
+        edges = np.unique(self.corner_pairs.reshape(-1, 2), axis=0)
+        mid_of_edge = np.unique(np.column_stack([self.corner_pairs.reshape(-1, 2), self.mids.reshape(-1)]), axis=0)
+        self.assertEqual(len(np.unique(self.mids)), len(edges), "as many mid nodes as distinct edges")
+        self.assertEqual(len(mid_of_edge), len(edges), "each edge has one mid node, whichever hex names it")
+        self.assertLess(len(np.unique(self.mids)), 12 * len(self.mids) // 2, "shared: an inner edge has 2-4 hexes")
+
+    def test_sweep_edge_nodes_are_midpoints(self):
+        x = self.result.nodes
+        ends = x[self.corner_pairs[:, 8:]]  # (M, 4, 2, 3): edges 0-4, 1-5, 2-6, 3-7
+        np.testing.assert_allclose(x[self.mids[:, 8:]], ends.mean(axis=2), atol=1e-9)
+
+    def test_wall_edge_nodes_are_near_midpoints_on_the_flat_walls(self):
+        x = self.result.nodes
+        ends = x[self.corner_pairs[:, :8]]
+        np.testing.assert_allclose(x[self.mids[:, :8]], ends.mean(axis=2), atol=1e-6)
+
+
 class BrepString(unittest.TestCase):
     def test_same_mesh_as_the_file(self):
         from_file = pyhexlayer.mesh_file(sample("plate.step"))
@@ -125,12 +160,19 @@ class Errors(unittest.TestCase):
         cube = sample("thick_block.step")
         self.assert_cli_error(pyhexlayer.GeometryError, 4, lambda: pyhexlayer.mesh_file(cube), [cube])
 
+    def test_bad_order_is_the_clis_usage_error(self):
+        plate = sample("plate.step")
+        self.assert_cli_error(pyhexlayer.UsageError, 2, lambda: pyhexlayer.mesh_file(plate, order=3),
+                              [plate, "--order", "3"])
+        self.assertEqual(cli_error(plate, "--order", "3")[1], "--order must be 1 or 2, got 3")
+
     def test_options_the_core_does_not_have_yet_are_refused(self):
-        for option, value in (("sizing", "adaptive"), ("aspect", 5.0), ("order", 2)):
+        for option, value in (("sizing", "adaptive"), ("aspect", 5.0)):
             with self.subTest(option=option), self.assertRaises(pyhexlayer.UsageError) as caught:
                 pyhexlayer.check_options(**{option: value})
             self.assertIn("--" + option, str(caught.exception))
-        pyhexlayer.check_options(layers=3, size=1.5, sizing="uniform", aspect=0.0, order=1)
+        for order in (1, 2):
+            pyhexlayer.check_options(layers=3, size=1.5, sizing="uniform", aspect=0.0, order=order)
 
     def test_options_are_keyword_only(self):
         with self.assertRaises(TypeError):

@@ -29,7 +29,7 @@ class MeshHexLayer(Stateless):
         add("App::PropertyEnumeration", "Sizing", "Element sizing: uniform (adaptive is not supported yet)",
             list(meshing.SIZINGS))
         add("App::PropertyFloat", "Aspect", "In-plane size / layer thickness; 0 = off (other values not supported yet)", 0.0)
-        add("App::PropertyInteger", "Order", "Element order: 1 = hexa8 (2 = hexa20 is not supported yet)", 1)
+        add("App::PropertyInteger", "Order", "Element order: 1 = hexa8, 2 = hexa20 (wall mid-edge nodes on the CAD walls)", 1)
         add("App::PropertyString", "Status", "Summary of the last meshing, or why it failed", "")
         obj.setEditorMode("Status", 1)  # read-only
 

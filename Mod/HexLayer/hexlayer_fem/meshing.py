@@ -7,6 +7,12 @@ import pyhexlayer
 # SMESH orders a hexa8's bottom quad the other way round from CalculiX and HexLayer; FreeCAD's
 # writeABAQUS maps it back, so this order gives the C3D8 elements it writes positive volumes.
 SMESH_HEXA8 = (0, 3, 2, 1, 4, 7, 6, 5)
+# SMESH's hexa20 (SMDS_QuadraticVolumeOfNodes): those 8 corners s0-s7, then the mid nodes of its edges
+# s0-s1, s1-s2, s2-s3, s3-s0, s4-s5, s5-s6, s6-s7, s7-s4, s0-s4, s1-s5, s2-s6, s3-s7. As columns of
+# pyhexlayer's (M, 20) rows (C3D20: mid node 8 + e on edge e of 0-1, 1-2, 2-3, 3-0, 4-5, 5-6, 6-7, 7-4,
+# 0-4, 1-5, 2-6, 3-7): s0-s1 is 0-3 (column 11), s1-s2 is 3-2 (10), ... Checked by the tests through
+# writeABAQUS: each mid node of the C3D20 it writes lies at the midpoint of its C3D20 edge.
+SMESH_HEXA20 = SMESH_HEXA8 + (11, 10, 9, 8, 15, 14, 13, 12, 16, 19, 18, 17)
 
 # The values the mesh object's Sizing property offers; pyhexlayer.check_options says which are supported today.
 SIZINGS = ("uniform", "adaptive")
@@ -53,11 +59,13 @@ def mesh(part, opts, progress=None):
 
 
 def femmesh(result):
-    """A FemMesh of hexa8 volumes and the node groups TOP, BOTTOM and RIM (ids 1-based, as FreeCAD's)."""
+    """A FemMesh of hexa8 (order 1) or hexa20 (order 2) volumes and the node groups TOP, BOTTOM and RIM
+    (ids 1-based, as FreeCAD's)."""
     fem = Fem.FemMesh()
     for i, (x, y, z) in enumerate(result.nodes.tolist(), start=1):
         fem.addNode(x, y, z, i)
-    for i, hexa in enumerate((result.hexes[:, SMESH_HEXA8] + 1).tolist(), start=1):
+    smesh_order = SMESH_HEXA20 if result.hexes.shape[1] == 20 else SMESH_HEXA8
+    for i, hexa in enumerate((result.hexes[:, smesh_order] + 1).tolist(), start=1):
         fem.addVolume(hexa, i)
     for name, nodes in result.node_sets.items():
         fem.addGroupElements(fem.addGroup(name, "Node"), (nodes + 1).tolist())
