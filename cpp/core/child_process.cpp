@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -70,6 +71,7 @@ ChildResult runInChildProcess(const std::function<std::string()>& work, double t
     return result;
   }
   if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed parent (Ctrl-C, a test's time-out) takes its Gmsh child along
     close(fds[0]);
     childMain(fds[1], work);
   }

@@ -22,37 +22,17 @@ namespace {
 
 using hexlayer::ExitCode;
 
-// The options of the CLI (layers, size, order: in the core's MeshOptions), plus those the method will take
-// (issue 3) but the core does not yet: each of those accepts the one value the core implements today, so
-// scripts can be written against the final API.
-struct Options {
-  hexlayer::MeshOptions core;
-  std::string sizing = "uniform";
-  double aspect = 0;  // in-plane size / layer thickness; 0 = off
-};
-
-std::string number(double value) {
-  std::ostringstream s;
-  s << value;
-  return s.str();
-}
-
-void validate(const Options& o) {
-  hexlayer::validateOptions(o.core);
-  if (o.sizing != "uniform")
-    throw hexlayer::usageError("--sizing must be 'uniform' (geometry-adaptive sizing is not supported yet), got '" + o.sizing + "'");
-  if (o.aspect != 0)
-    throw hexlayer::usageError("--aspect must be 0 = off (aspect-ratio control is not supported yet), got " + number(o.aspect));
-}
+// The options of the CLI, checked by the core as the CLI checks them.
+using Options = hexlayer::MeshOptions;
 
 Options makeOptions(int layers, double size, const std::string& sizing, double aspect, int order) {
   Options o;
-  o.core.layers = layers;
-  o.core.size = size;
+  o.layers = layers;
+  o.size = size;
   o.sizing = sizing;
   o.aspect = aspect;
-  o.core.order = order;
-  validate(o);
+  o.order = order;
+  hexlayer::validateOptions(o);
   return o;
 }
 
@@ -132,13 +112,13 @@ PyMeshResult toPython(const hexlayer::MeshResult& r) {
 hexlayer::MeshResult runReleased(const std::function<hexlayer::MeshResult(const hexlayer::MeshOptions&)>& run,
                                  Options o, const py::object& progress) {
   const py::object* callback = &progress;
-  o.core.progress = [callback](const std::string& line) {
+  o.progress = [callback](const std::string& line) {
     py::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
     if (!callback->is_none()) (*callback)(line);
   };
   py::gil_scoped_release release;
-  return run(o.core);
+  return run(o);
 }
 
 // A temporary .brep file holding `text`, removed when this goes out of scope.
@@ -244,7 +224,7 @@ void registerTranslator(const ExceptionTypes& types) {
 
 constexpr const char* kOptionsDoc =
     "layers: hex layers through the thickness (1-64); size: quad edge length, 0 = the wall thickness; "
-    "sizing: 'uniform' (only value today); aspect: in-plane size / layer thickness, 0 = off (only value today); "
+    "sizing: 'uniform' or 'adaptive' (radius function and curvature); aspect: in-plane size / layer thickness instead of size, 0 = off; "
     "order: 1 = linear hexes (M, 8), 2 = quadratic hexes (M, 20), wall mid-edge nodes on the CAD walls; "
     "progress: callable taking one line per finished stage, or None "
     "(an exception it raises ends the run).";

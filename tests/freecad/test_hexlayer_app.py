@@ -146,10 +146,10 @@ class Failures(unittest.TestCase):
         self.assert_fails(mesh, "not a thin section")
         self.assert_recovers(mesh)
 
-    def test_options_the_core_does_not_have_yet(self):
+    def test_bad_option_values(self):
         plate = t.add_plate(self.doc)
-        for name, value, phrase in (("Order", 3, "Order must be 1 or 2, got 3"), ("Sizing", "adaptive", "Sizing must be 'uniform'"),
-                                    ("Aspect", 3.0, "Aspect must be 0"), ("Layers", 0, "Layers must be between 1 and")):
+        for name, value, phrase in (("Order", 3, "Order must be 1 or 2, got 3"), ("Aspect", -1.0, "Aspect must be a positive ratio"),
+                                    ("Layers", 0, "Layers must be between 1 and")):
             with self.subTest(property=name):
                 mesh = HexLayer.makeMesh(self.doc, plate, **{name: value})
                 self.assert_fails(mesh, phrase)

@@ -166,13 +166,17 @@ class Errors(unittest.TestCase):
                               [plate, "--order", "3"])
         self.assertEqual(cli_error(plate, "--order", "3")[1], "--order must be 1 or 2, got 3")
 
-    def test_options_the_core_does_not_have_yet_are_refused(self):
-        for option, value in (("sizing", "adaptive"), ("aspect", 5.0)):
-            with self.subTest(option=option), self.assertRaises(pyhexlayer.UsageError) as caught:
-                pyhexlayer.check_options(**{option: value})
-            self.assertIn("--" + option, str(caught.exception))
+    def test_bad_option_values_are_refused_with_the_clis_message(self):
+        for options, phrase in (({"sizing": "graded"}, "--sizing must be 'uniform' or 'adaptive'"),
+                                ({"aspect": -1.0}, "--aspect must be a positive ratio"),
+                                ({"size": 2.0, "aspect": 5.0}, "give --size or --aspect, not both")):
+            with self.subTest(options=options), self.assertRaises(pyhexlayer.UsageError) as caught:
+                pyhexlayer.check_options(**options)
+            self.assertIn(phrase, str(caught.exception))
         for order in (1, 2):
-            pyhexlayer.check_options(layers=3, size=1.5, sizing="uniform", aspect=0.0, order=order)
+            for sizing in ("uniform", "adaptive"):
+                pyhexlayer.check_options(layers=3, size=1.5, sizing=sizing, aspect=0.0, order=order)
+        pyhexlayer.check_options(aspect=5.0)
 
     def test_options_are_keyword_only(self):
         with self.assertRaises(TypeError):

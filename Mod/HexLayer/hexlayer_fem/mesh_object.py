@@ -26,9 +26,9 @@ class MeshHexLayer(Stateless):
         add("App::PropertyLink", "Part", "Thin solid to mesh (an object with a Shape holding a solid)", None)
         add("App::PropertyInteger", "Layers", "Hex layers through the wall thickness (1-64)", 2)
         add("App::PropertyLength", "Size", "Quad edge length on the mid-surface; 0 = the wall thickness", 0.0)
-        add("App::PropertyEnumeration", "Sizing", "Element sizing: uniform (adaptive is not supported yet)",
+        add("App::PropertyEnumeration", "Sizing", "Element sizing: uniform, or adaptive to the wall thickness and curvature",
             list(meshing.SIZINGS))
-        add("App::PropertyFloat", "Aspect", "In-plane size / layer thickness; 0 = off (other values not supported yet)", 0.0)
+        add("App::PropertyFloat", "Aspect", "In-plane size / layer thickness instead of Size (Size must then be 0); 0 = off", 0.0)
         add("App::PropertyInteger", "Order", "Element order: 1 = hexa8, 2 = hexa20 (wall mid-edge nodes on the CAD walls)", 1)
         add("App::PropertyString", "Status", "Summary of the last meshing, or why it failed", "")
         obj.setEditorMode("Status", 1)  # read-only
