@@ -12,18 +12,15 @@ namespace hexlayer {
 
 WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides) {
   for (int f = 0; f < cad.faces.Extent(); ++f) {
-    const Side side = sides.faces[f].side;
-    if (side == Side::Lateral) continue;
     WallFace w{TopoDS::Face(cad.faces(f + 1)), {}};
     BRepBndLib::AddOptimal(w.face, w.box, false, false);  // exact geometry, not the triangulation
-    (side == Side::Top ? top_ : bottom_).push_back(w);
+    faces_[static_cast<int>(sides.faces[f].side) + 1].push_back(w);
   }
 }
 
 // Faces nearest first by their boxes; a face whose box is farther than the best point so far is skipped.
 std::optional<Vec3> WallProjector::project(Side side, const Vec3& p) const {
-  if (side == Side::Lateral) return std::nullopt;
-  const std::vector<WallFace>& faces = side == Side::Top ? top_ : bottom_;
+  const std::vector<WallFace>& faces = faces_[static_cast<int>(side) + 1];
   const gp_Pnt point(p.x(), p.y(), p.z());
   Bnd_Box at;
   at.Add(point);

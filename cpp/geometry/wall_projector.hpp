@@ -1,9 +1,11 @@
-// π_t, π_b of the paper (§3) for single points: the nearest point of the top (ω_t) or the bottom
-// (ω_b) wall of the CAD solid. Puts the mid-edge nodes of quadratic hexes on the walls.
+// π_t, π_b of the paper (§3) for single points: the nearest point of the top (ω_t), the bottom
+// (ω_b) or the lateral (ω_l) faces of the CAD solid. Puts the mid-edge nodes of quadratic hexes on
+// the walls and the rim nodes on the lateral faces.
 #pragma once
 #include <Bnd_Box.hxx>
 #include <TopoDS_Face.hxx>
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -17,7 +19,7 @@ class WallProjector {
  public:
   WallProjector(const CadSolid& cad, const WallSides& sides);
   // The point nearest to p on the faces of the `side` wall (inside a face, on its edges or
-  // vertices: trimmed faces, not their underlying surfaces); nullopt for Side::Lateral or a side without faces.
+  // vertices: trimmed faces, not their underlying surfaces); nullopt for a side without faces.
   std::optional<Vec3> project(Side side, const Vec3& p) const;
 
  private:
@@ -25,7 +27,7 @@ class WallProjector {
     TopoDS_Face face;
     Bnd_Box box;  // contains the face: its distance to p bounds the face's from below
   };
-  std::vector<WallFace> top_, bottom_;
+  std::array<std::vector<WallFace>, 3> faces_;  // by side: bottom, lateral, top (Side + 1)
 };
 
 }  // namespace hexlayer

@@ -91,9 +91,36 @@ nlohmann::json faceSideCounts(const WallSides& sides) {
   return {{"top", top}, {"bottom", bottom}, {"lateral", lateral}};
 }
 
+// The rim nodes onto the lateral faces (ω_l of §3): swept from the chordal surface's rim, they sit
+// a little inside the part. A node stays where it is if it is farther than half the wall thickness
+// from them, or if a hex around it would get worse and end below a scaled Jacobian of 0.2.
+std::size_t projectRim(HexMesh& mesh, const WallProjector& walls, double thickness) {
+  std::vector<std::vector<std::size_t>> hexesOf(mesh.nodes.size());
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+    for (int v : mesh.hexes[h]) hexesOf[v].push_back(h);
+  auto around = [&](std::size_t i) {
+    std::vector<double> sj;
+    for (std::size_t h : hexesOf[i]) sj.push_back(hexScaledJacobian(hexCorners(mesh, h)));
+    return sj;
+  };
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    if (!mesh.nodeOnRim[i]) continue;
+    const std::optional<Vec3> p = walls.project(Side::Lateral, mesh.nodes[i]);
+    if (!p || (*p - mesh.nodes[i]).norm() >= 0.5 * thickness) continue;
+    const Vec3 at = mesh.nodes[i];
+    const std::vector<double> before = around(i);
+    mesh.nodes[i] = *p;
+    const std::vector<double> after = around(i);
+    bool spoils = false;
+    for (std::size_t k = 0; k < after.size(); ++k) spoils |= after[k] < 0.2 && after[k] < before[k];
+    if (spoils) mesh.nodes[i] = at; else ++moved;
+  }
+  return moved;
+}
+
 // Order 2: 20-node hexes whose wall mid-edge nodes lie on the CAD walls (π_t, π_b of §3).
-nlohmann::json makeQuadratic(HexMesh& mesh, const CadSolid& cad, const WallSides& sides) {
-  const WallProjector walls(cad, sides);
+nlohmann::json makeQuadratic(HexMesh& mesh, const WallProjector& walls) {
   const QuadraticStats s = addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) { return walls.project(side, p); });
   return {{"mid_edge_nodes", s.midNodes}, {"wall_mid_edge_nodes", s.wallNodes}, {"projected_onto_cad", s.projected},
           {"max_projection_move", s.maxProjectionMove}};
@@ -228,7 +255,10 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   r["sweep"] = {{"untangled_regions", swept.untangled.regions}, {"untangling_rounds_kept", swept.untangled.improved},
                 {"worst_column_before_untangling", swept.untangled.worstBefore}};
   result.mesh = std::move(swept.mesh);
-  if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, cad, sides); });
+  const WallProjector walls(cad, sides);
+  r["sweep"]["rim_nodes"] = std::count(result.mesh.nodeOnRim.begin(), result.mesh.nodeOnRim.end(), 1);
+  r["sweep"]["rim_nodes_on_lateral_faces"] = clock.run("rim", [&] { return projectRim(result.mesh, walls, sides.thickness); });
+  if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, cad.volume, r); });
   compareTopology(r, eulerCharacteristic(cad));
   if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);

@@ -21,7 +21,7 @@ TEST(WallProjector, PlateWallsAndTheirEdges) {
   EXPECT_NEAR((*walls.project(Side::Bottom, Vec3(10, 10, 1.4)) - Vec3(10, 10, 0)).norm(), 0, 1e-9);
   EXPECT_NEAR((*walls.project(Side::Top, Vec3(10, 10, -3)) - Vec3(10, 10, 2)).norm(), 0, 1e-9) << "from the far side";
   EXPECT_NEAR((*walls.project(Side::Top, Vec3(41, 10, 2.5)) - Vec3(40, 10, 2)).norm(), 0, 1e-9) << "beyond the rim: its edge";
-  EXPECT_FALSE(walls.project(Side::Lateral, Vec3(10, 10, 1))) << "lateral faces are not projected onto";
+  EXPECT_NEAR((*walls.project(Side::Lateral, Vec3(39.8, 10, 1.3)) - Vec3(40, 10, 1.3)).norm(), 0, 1e-9) << "the rim";
 }
 
 TEST(WallProjector, CylinderShellWallsAreHitExactly) {

@@ -42,6 +42,8 @@ class MeshSamples(unittest.TestCase):
                         self.assertTrue(r["boundary"]["same_topology_as_cad"], r["boundary"])
                         self.assertEqual(r["boundary"]["open_edges"], 0)
                         self.assertGreater(r["chordal_surface"]["triangles"] + r["chordal_surface"]["quads"], 0)
+                        # The rim nodes are moved onto the lateral faces (a few stay, to keep a hex valid).
+                        self.assertGreaterEqual(r["sweep"]["rim_nodes_on_lateral_faces"], 0.9 * r["sweep"]["rim_nodes"])
 
     def test_vtu_reads_back_through_meshio(self):
         import meshio
