@@ -1,8 +1,6 @@
 #include "chordal/chordal_fairing.hpp"
 
 #include <algorithm>
-#include <map>
-#include <utility>
 
 namespace hexlayer {
 namespace {
@@ -15,30 +13,13 @@ struct EdgeGraph {
 };
 
 EdgeGraph edgeGraph(const ChordalSurface& s) {
-  std::map<std::pair<int, int>, int> uses;
-  for (const auto& f : s.facets) {
-    const int n = f[3] < 0 ? 3 : 4;
-    for (int k = 0; k < n; ++k) ++uses[std::minmax(f[k], f[(k + 1) % n])];
-  }
   EdgeGraph g{std::vector<std::vector<int>>(s.vertices.size()), std::vector<char>(s.vertices.size(), 0)};
-  for (const auto& [edge, count] : uses) {
+  for (const auto& [edge, count] : facetEdgeUses(s)) {
     g.neighbours[edge.first].push_back(edge.second);
     g.neighbours[edge.second].push_back(edge.first);
     if (count == 1) g.onRim[edge.first] = g.onRim[edge.second] = 1;
   }
   return g;
-}
-
-// Unit vertex normals: the sum of the facet normals around each vertex (Eq. 1-2).
-std::vector<Vec3> vertexNormals(const ChordalSurface& s) {
-  std::vector<Vec3> n(s.vertices.size(), Vec3::Zero());
-  for (const auto& f : s.facets) {
-    const Vec3 fn = facetNormal(s, f);
-    for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) n[f[k]] += fn;
-  }
-  for (Vec3& v : n)
-    if (v.norm() > 0) v.normalize();
-  return n;
 }
 
 // One Laplacian step v += factor n (n · (mean of the neighbours - v)) on every vertex off the rim.

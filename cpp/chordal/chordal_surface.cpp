@@ -69,14 +69,9 @@ void mergeCoincidentVertices(ChordalSurface& s, double tolerance) {
 }
 
 void requireManifold(const ChordalSurface& s) {
-  std::unordered_map<std::uint64_t, int> edgeUse;
-  for (const auto& f : s.facets) {
-    const int n = f[3] < 0 ? 3 : 4;
-    for (int k = 0; k < n; ++k) ++edgeUse[pairKey(f[k], f[(k + 1) % n])];
-  }
   std::vector<Vec3> junctions;
-  for (const auto& [key, uses] : edgeUse)
-    if (uses > 2) junctions.push_back(0.5 * (s.vertices[key >> 32] + s.vertices[key & 0xFFFFFFFFu]));
+  for (const auto& [edge, uses] : facetEdgeUses(s))
+    if (uses > 2) junctions.push_back(0.5 * (s.vertices[edge.first] + s.vertices[edge.second]));
   if (junctions.empty()) return;
   std::sort(junctions.begin(), junctions.end(), [](const Vec3& a, const Vec3& b) {
     return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
@@ -136,18 +131,31 @@ ChordalSurface buildChordalSurface(const TetMesh& m) {
   return s;
 }
 
-void computeNormalsAndRadius(ChordalSurface& s, const TetMesh& m) {
+std::map<std::pair<int, int>, int> facetEdgeUses(const ChordalSurface& s) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& f : s.facets) {
+    const int n = f[3] < 0 ? 3 : 4;
+    for (int k = 0; k < n; ++k) ++uses[std::minmax(f[k], f[(k + 1) % n])];
+  }
+  return uses;
+}
+
+std::vector<Vec3> vertexNormals(const ChordalSurface& s) {
   std::vector<Vec3> sum(s.vertices.size(), Vec3::Zero());
-  std::vector<int> count(s.vertices.size(), 0);
   for (const auto& f : s.facets) {
     const Vec3 n = facetNormal(s, f);
-    for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) sum[f[k]] += n, ++count[f[k]];
+    for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) sum[f[k]] += n;
   }
-  s.normals.resize(s.vertices.size());
+  for (Vec3& n : sum)  // Eq. 2: N̄ = Σ n_i / k, n̄ = N̄ / |N̄| (the 1/k drops out)
+    if (n.norm() > 0) n.normalize();
+  return sum;
+}
+
+void computeNormalsAndRadius(ChordalSurface& s, const TetMesh& m) {
+  s.normals = vertexNormals(s);
   s.radius.resize(s.vertices.size());
   for (size_t v = 0; v < s.vertices.size(); ++v) {
-    const Vec3 N = sum[v] / std::max(count[v], 1);  // Eq. 2: N̄ = Σ n_i / k, n̄ = N̄ / |N̄|
-    s.normals[v] = N.norm() > 0 ? Vec3(N.normalized()) : Vec3(Vec3::UnitZ());
+    if (s.normals[v].norm() == 0) s.normals[v] = Vec3::UnitZ();
     const Vec3 l = m.nodes[s.tetEdge[v][0]] - s.vertices[v];  // l = v_t - v
     s.radius[v] = std::abs(s.normals[v].dot(l));            // Eq. 3: r = n̄ · l
   }

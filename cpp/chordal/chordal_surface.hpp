@@ -4,6 +4,7 @@
 #include <array>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
@@ -26,6 +27,12 @@ struct ChordalSurface {
 // cut, so every tet is "simple" here: no incremental processing of complex tets (§5.4) is needed.
 // Throws geometryError if the surface is non-manifold (an edge in more than two facets).
 ChordalSurface buildChordalSurface(const TetMesh& tets);
+
+// For every facet edge (lower vertex id first), how many facets use it: 1 on the rim, 2 inside.
+std::map<std::pair<int, int>, int> facetEdgeUses(const ChordalSurface& chordal);
+
+// Unit average normal n̄ at every vertex (Eq. 2), zero where the facet normals around it cancel.
+std::vector<Vec3> vertexNormals(const ChordalSurface& chordal);
 
 // Normal (Eq. 1-2) and radius (Eq. 3) at every chordal vertex.
 void computeNormalsAndRadius(ChordalSurface& chordal, const TetMesh& tets);

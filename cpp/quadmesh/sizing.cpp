@@ -2,20 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 
 namespace hexlayer {
 namespace {
 
 std::vector<std::pair<int, int>> facetEdges(const ChordalSurface& s) {
-  std::map<std::pair<int, int>, int> edges;
-  for (const auto& f : s.facets) {
-    const int n = f[3] < 0 ? 3 : 4;
-    for (int k = 0; k < n; ++k) edges.emplace(std::minmax(f[k], f[(k + 1) % n]), 0);
-  }
   std::vector<std::pair<int, int>> out;
-  for (const auto& e : edges) out.push_back(e.first);
+  for (const auto& [edge, uses] : facetEdgeUses(s)) out.push_back(edge);
   return out;
 }
 
