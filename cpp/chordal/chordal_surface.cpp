@@ -10,6 +10,8 @@
 namespace hexlayer {
 namespace {
 
+constexpr int kMaxCollapseRounds = 10;
+
 std::uint64_t pairKey(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
@@ -34,29 +36,86 @@ void orientTowardsTop(std::array<int, 4>& facet, const ChordalSurface& s, const 
     std::swap(facet[1], facet[3]);
 }
 
+// Chordal vertices that are one point of the surface, joined (union-find).
+class VertexMerges {
+ public:
+  explicit VertexMerges(std::size_t n) : parent_(n) {
+    for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<int>(i);
+  }
+  int find(int v) {
+    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
+    return v;
+  }
+  void join(int a, int b) {
+    a = find(a), b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
 // Cospherical nodes (a rectangle of two top and two bottom nodes) can make TetGen use both
-// diagonals of a planar quad; their midpoints coincide. They are one point of the chordal surface:
-// merge them, and turn the facets that lose a corner into triangles or drop them.
-void mergeCoincidentVertices(ChordalSurface& s, double tolerance) {
-  std::vector<int> target(s.vertices.size());
+// diagonals of a planar quad; their midpoints coincide and are one point of the surface.
+void joinCoincidentVertices(const ChordalSurface& s, double tolerance, VertexMerges& merges) {
   PointGrid grid(std::max(tolerance, 1e-300) * 4);
   for (size_t i = 0; i < s.vertices.size(); ++i) {
-    target[i] = static_cast<int>(i);
-    grid.forEachNear(s.vertices[i], tolerance, [&](int j, const Vec3&) { target[i] = std::min(target[i], j); });
-    if (target[i] == static_cast<int>(i)) grid.insert(static_cast<int>(i), s.vertices[i]);
+    grid.forEachNear(s.vertices[i], tolerance, [&](int j, const Vec3&) { merges.join(static_cast<int>(i), j); });
+    grid.insert(static_cast<int>(i), s.vertices[i]);
   }
-  std::vector<int> newIndex(s.vertices.size(), -1);
-  ChordalSurface merged;
-  for (size_t i = 0; i < s.vertices.size(); ++i)
-    if (target[i] == static_cast<int>(i)) {
-      newIndex[i] = static_cast<int>(merged.vertices.size());
-      merged.vertices.push_back(s.vertices[i]);
-      merged.tetEdge.push_back(s.tetEdge[i]);
+}
+
+// A coplanar tet whose top edge is parallel to its bottom edge (two bubbles on each of the parallel
+// edges of a bend) or whose three top nodes lie on a line has a facet with all corners on one line.
+// The facets on the tet's two sides meet it along different chains of that line; joining the
+// facet's inner corners (a quad's inner diagonal, a triangle's middle corner with the nearer end)
+// zips the two chains into one edge chain. Returns whether any facet was degenerate.
+bool joinDegenerateFacets(const ChordalSurface& s, VertexMerges& merges) {
+  bool any = false;
+  for (const auto& f : s.facets) {
+    const int n = f[3] < 0 ? 3 : 4;
+    auto at = [&](int k) { return s.vertices[f[(k + n) % n]]; };
+    int longest = 0;  // the edge (longest, longest + 1)
+    for (int k = 1; k < n; ++k)
+      if ((at(k + 1) - at(k)).squaredNorm() > (at(longest + 1) - at(longest)).squaredNorm()) longest = k;
+    const double length2 = (at(longest + 1) - at(longest)).squaredNorm();
+    const double area2 = n == 3 ? (at(1) - at(0)).cross(at(2) - at(0)).squaredNorm() : (at(2) - at(0)).cross(at(3) - at(1)).squaredNorm();
+    if (length2 == 0 || area2 > 1e-12 * length2 * length2) continue;
+    any = true;
+    if (n == 4) {  // the diagonal with the nearer corners is inside the other one on the line
+      const bool inner13 = (at(3) - at(1)).squaredNorm() <= (at(2) - at(0)).squaredNorm();
+      merges.join(f[inner13 ? 1 : 0], f[inner13 ? 3 : 2]);
+    } else {
+      const int mid = (longest + 2) % 3;
+      const bool toStart = (at(mid) - at(longest)).squaredNorm() <= (at(mid) - at(longest + 1)).squaredNorm();
+      merges.join(f[mid], f[(longest + (toStart ? 0 : 1)) % 3]);
     }
+  }
+  return any;
+}
+
+// Rebuilds the surface with every group of joined vertices as one vertex at the group's centroid;
+// facets that lose corners become triangles or are dropped.
+void applyMerges(ChordalSurface& s, VertexMerges& merges) {
+  std::vector<int> newIndex(s.vertices.size(), -1);
+  std::vector<int> members;
+  ChordalSurface merged;
+  for (size_t i = 0; i < s.vertices.size(); ++i) {
+    const int root = merges.find(static_cast<int>(i));
+    if (newIndex[root] < 0) {
+      newIndex[root] = static_cast<int>(merged.vertices.size());
+      merged.vertices.push_back(Vec3::Zero());
+      merged.tetEdge.push_back(s.tetEdge[root]);
+      members.push_back(0);
+    }
+    merged.vertices[newIndex[root]] += s.vertices[i];
+    ++members[newIndex[root]];
+  }
+  for (size_t v = 0; v < merged.vertices.size(); ++v) merged.vertices[v] /= members[v];
   for (const auto& f : s.facets) {
     std::vector<int> ring;  // corners with repeats removed, cyclically
     for (int k = 0; k < 4 && f[k] >= 0; ++k)
-      if (const int v = newIndex[target[f[k]]]; ring.empty() || ring.back() != v) ring.push_back(v);
+      if (const int v = newIndex[merges.find(f[k])]; ring.empty() || ring.back() != v) ring.push_back(v);
     if (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
     const int n = static_cast<int>(ring.size());
     if (n < 3 || (n == 4 && (ring[0] == ring[2] || ring[1] == ring[3]))) continue;
@@ -66,6 +125,19 @@ void mergeCoincidentVertices(ChordalSurface& s, double tolerance) {
     merged.facets.push_back(g);
   }
   s = std::move(merged);
+}
+
+// Joins coincident vertices, then collapses degenerate facets until none is left (a collapse can
+// leave a neighbour degenerate).
+void collapseDegenerateFacets(ChordalSurface& s, double tolerance) {
+  VertexMerges coincident(s.vertices.size());
+  joinCoincidentVertices(s, tolerance, coincident);
+  applyMerges(s, coincident);
+  for (int round = 0; round < kMaxCollapseRounds; ++round) {
+    VertexMerges merges(s.vertices.size());
+    if (!joinDegenerateFacets(s, merges)) return;
+    applyMerges(s, merges);
+  }
 }
 
 void requireManifold(const ChordalSurface& s) {
@@ -126,7 +198,7 @@ ChordalSurface buildChordalSurface(const TetMesh& m) {
     s.facets.push_back(facet);
   }
   if (s.facets.empty()) throw geometryError("empty chordal surface: no tet spans the top and bottom walls");
-  mergeCoincidentVertices(s, 1e-9 * boxDiagonal(m.nodes));
+  collapseDegenerateFacets(s, 1e-9 * boxDiagonal(m.nodes));
   requireManifold(s);
   return s;
 }

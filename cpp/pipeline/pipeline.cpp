@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "geometry/wall_projector.hpp"
 #include "geometry/wall_rays.hpp"
+#include "geometry/sheet_junctions.hpp"
 #include "geometry/wall_sides.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_smoothing.hpp"
@@ -83,6 +84,40 @@ SweepLine castSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r) 
   keep(rays.cast(Side::Top, q, n, kMaxReach * r), line.top);
   keep(rays.cast(Side::Bottom, q, -n, kMaxReach * r), line.bottom);
   return line;
+}
+
+std::vector<std::string> faceNames(const Sheet& s) {
+  std::vector<std::string> names;
+  for (int f : s.faces) names.push_back("Face" + std::to_string(f + 1));
+  return names;
+}
+
+std::string describeSheet(const Sheet& s) {
+  std::ostringstream out;
+  out << "(" << s.centre.x() << ", " << s.centre.y() << ", " << s.centre.z() << ") [";
+  for (const std::string& name : faceNames(s)) out << (name == faceNames(s).front() ? "" : " ") << name;
+  out << "]";
+  return out.str();
+}
+
+// Ribs, bosses and flanges standing on the sheet (T-junctions, where the chordal surface would be
+// non-manifold): refused, or left out with dropJunctions; they are listed in the report.
+void handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohmann::json& report) {
+  const std::vector<Sheet> sheets = findSheets(cad, sides);
+  report["junctions"] = nlohmann::json::array();
+  for (std::size_t s = 1; s < sheets.size(); ++s)
+    report["junctions"].push_back({{"at", {sheets[s].centre.x(), sheets[s].centre.y(), sheets[s].centre.z()}},
+                                   {"faces", faceNames(sheets[s])}, {"area", sheets[s].area},
+                                   {"volume", sheets[s].volume}});
+  if (sheets.size() < 2) return;
+  if (drop) return keepFirstSheet(sheets, sides);
+  std::ostringstream msg;
+  msg << "T-junction: " << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
+      << "chordal surface would be non-manifold, which this method does not mesh: " << describeSheet(sheets[1]);
+  for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s) msg << ", " << describeSheet(sheets[s]);
+  if (sheets.size() > 4) msg << ", ...";
+  msg << "; --drop-junctions meshes the main sheet without them";
+  throw geometryError(msg.str());
 }
 
 nlohmann::json faceSideCounts(const WallSides& sides) {
@@ -207,14 +242,15 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   nlohmann::json& r = result.report;
   StageClock clock(r, o);
   const CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid); });
-  const WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
+  WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
+  handleJunctions(cad, sides, o.dropJunctions, r);
   r["thickness"] = sides.thickness;
   r["faces"] = faceSideCounts(sides);
   const auto nodes = clock.run("bubbles", [&] { return packBubbles(cad, sides, BubbleOptions{}); });
   r["bubbles"] = nodes.size();
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
   const TetFilterCounts dropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
-  r["tets"] = {{"delaunay", dropped.delaunay}, {"outside", dropped.outside}, {"flat", dropped.flat}, {"zero_volume", dropped.zeroVolume}, {"kept", tets.tets.size()}};
+  r["tets"] = {{"delaunay", dropped.delaunay}, {"outside", dropped.outside}, {"flat", dropped.flat}, {"coplanar_kept", dropped.coplanar}, {"kept", tets.tets.size()}};
   const ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets); });
   r["tet_classes"] = classifyTets(tets);
   r["chordal_surface"] = {{"triangles", cut.triangles}, {"quads", cut.quads}, {"vertices", cut.vertices.size()}};
@@ -242,6 +278,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
         if (o.progress) o.progress("quad_mesh: " + std::string(e.what()) + "; trying a less faired chordal surface");
       }
     }
+    r["quad_mesh"]["triangles_paired"] = q.pairedTriangles;
+    r["quad_mesh"]["unpaired_triangles"] = q.holes;
     r["quad_mesh"]["doublets_removed"] = removeDoublets(q);
     smoothQuadMesh(q, *locator, kSmoothingIterations);
     return q;

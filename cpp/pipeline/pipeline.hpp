@@ -18,6 +18,7 @@ struct MeshOptions {
   std::string sizing = "uniform";  // "uniform" or "adaptive" (§6.1: radius function and curvature)
   double aspect = 0;  // in-plane quad size / layer thickness; 0 = off (size from --size or the wall)
   double minSize = 0, maxSize = 0;  // bounds of the adaptive size; 0 = a quarter and 4 x the size
+  bool dropJunctions = false;  // mesh the largest sheet and leave out ribs/bosses standing on it (else refuse)
   std::function<void(const std::string&)> progress;  // one line per finished stage (may be empty)
 };
 

@@ -13,6 +13,7 @@
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
+#include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
 namespace hexlayer {
@@ -21,6 +22,7 @@ namespace {
 // Gmsh's nodes stray from the chordal triangles by up to half a quad in strongly bent patches (its
 // smoothing and recombination move them in 3D); farther than this x size means a failed reparametrization.
 constexpr double kOffSurface = 1.0;
+constexpr int kMaxStrip = 20;  // quads between two leftover triangles that are paired (quad_completion)
 
 // Gmsh is one process-wide session: open it for this stage only, and always close it.
 struct GmshSession {
@@ -85,30 +87,49 @@ void setQuadOptions(const QuadMeshOptions& o, const ChordalLocator& chordal) {
   gmsh::option::setNumber("Mesh.RandomFactor", 1e-9);
 }
 
+// Gmsh's elements of one type (3: triangles, 4: quads), as node tags.
+template <int N>
+std::vector<std::array<std::size_t, N>> elementsOfType(int type) {
+  std::vector<std::size_t> tags, nodeTags;
+  gmsh::model::mesh::getElementsByType(type, tags, nodeTags);
+  std::vector<std::array<std::size_t, N>> out(tags.size());
+  for (std::size_t e = 0; e < tags.size(); ++e)
+    for (int k = 0; k < N; ++k) out[e][k] = nodeTags[N * e + k];
+  return out;
+}
+
+// Gmsh's quads, and its leftover triangles paired into quads where they can be (quad_completion).
 QuadMesh collectQuads() {
-  std::vector<std::size_t> tags, nodeTags, quadNodeTags;
+  const auto quadTags = elementsOfType<4>(3);
+  const auto triangleTags = elementsOfType<3>(2);
+  std::vector<std::size_t> nodeTags;
   std::vector<double> coord, param;
-  gmsh::model::mesh::getElementsByType(3, tags, quadNodeTags);
-  gmsh::model::mesh::getNodesByElementType(3, nodeTags, coord, param, -1, false);
+  gmsh::model::mesh::getNodes(nodeTags, coord, param, -1, -1, true, false);
   std::map<std::size_t, Vec3> position;
   for (size_t i = 0; i < nodeTags.size(); ++i) position[nodeTags[i]] = Vec3(coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]);
   QuadMesh q;
   std::map<std::size_t, int> index;  // Gmsh node tag -> our node id, in order of first use
-  for (std::size_t t : quadNodeTags)
-    if (index.emplace(t, static_cast<int>(q.nodes.size())).second) {
-      const auto it = position.find(t);
-      if (it == position.end()) throw std::runtime_error("Gmsh gave no coordinates for node " + std::to_string(t));
-      q.nodes.push_back(it->second);
+  auto node = [&](std::size_t tag) {
+    const auto [it, added] = index.emplace(tag, static_cast<int>(q.nodes.size()));
+    if (added) {
+      const auto p = position.find(tag);
+      if (p == position.end()) throw std::runtime_error("Gmsh gave no coordinates for node " + std::to_string(tag));
+      q.nodes.push_back(p->second);
     }
-  q.quads.resize(tags.size());
-  for (size_t e = 0; e < tags.size(); ++e)
-    for (int k = 0; k < 4; ++k) q.quads[e][k] = index.at(quadNodeTags[4 * e + k]);
+    return it->second;
+  };
+  for (const auto& e : quadTags) q.quads.push_back({node(e[0]), node(e[1]), node(e[2]), node(e[3])});
+  std::vector<std::array<int, 3>> triangles;
+  for (const auto& e : triangleTags) triangles.push_back({node(e[0]), node(e[1]), node(e[2])});
+  const QuadCompletion done = pairTriangles(q.quads, triangles, kMaxStrip);
+  q.pairedTriangles = done.paired;
+  q.holes = done.unpaired;
   return q;
 }
 
 // A quad mesh as bytes and back, to cross from the child process that runs Gmsh.
 std::string toBytes(const QuadMesh& q) {
-  const std::size_t counts[2] = {q.nodes.size(), q.quads.size()};
+  const std::size_t counts[4] = {q.nodes.size(), q.quads.size(), q.pairedTriangles, q.holes};
   std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
   for (const Vec3& p : q.nodes) bytes.append(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
   bytes.append(reinterpret_cast<const char*>(q.quads.data()), q.quads.size() * sizeof(q.quads[0]));
@@ -116,12 +137,14 @@ std::string toBytes(const QuadMesh& q) {
 }
 
 QuadMesh fromBytes(const std::string& bytes) {
-  std::size_t counts[2];
+  std::size_t counts[4];
   if (bytes.size() < sizeof counts) throw std::runtime_error("truncated quad mesh");
   std::memcpy(counts, bytes.data(), sizeof counts);
   QuadMesh q;
   q.nodes.resize(counts[0]);
   q.quads.resize(counts[1]);
+  q.pairedTriangles = counts[2];
+  q.holes = counts[3];
   const std::size_t nodeBytes = counts[0] * 3 * sizeof(double), quadBytes = counts[1] * sizeof(q.quads[0]);
   if (bytes.size() != sizeof counts + nodeBytes + quadBytes) throw std::runtime_error("truncated quad mesh");
   const char* at = bytes.data() + sizeof counts;
@@ -211,6 +234,7 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   if (!(o.size > 0)) throw usageError("quad size must be positive");
   QuadMesh best;
+  best.holes = std::numeric_limits<std::size_t>::max();
   QuadCheck bestCheck;
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;
@@ -221,9 +245,9 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
       if (!q.quads.empty()) failedAt = c.farthestNode, gmshError.clear();
       continue;
     }
-    if (std::make_pair(c.poorQuads, -c.worstQuad) < std::make_pair(bestCheck.poorQuads, -bestCheck.worstQuad))
+    if (std::make_tuple(q.holes, c.poorQuads, -c.worstQuad) < std::make_tuple(best.holes, bestCheck.poorQuads, -bestCheck.worstQuad))
       best = std::move(q), bestCheck = c;
-    if (bestCheck.poorQuads == 0) break;
+    if (best.holes == 0 && bestCheck.poorQuads == 0) break;
   }
   if (best.quads.empty()) {
     std::ostringstream msg;

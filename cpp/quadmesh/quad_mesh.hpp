@@ -12,6 +12,8 @@ namespace hexlayer {
 struct QuadMesh {
   std::vector<Vec3> nodes;                 // on the chordal surface
   std::vector<std::array<int, 4>> quads;   // orientation as Gmsh made it (the sweep orients them)
+  std::size_t pairedTriangles = 0;         // Gmsh's leftover triangles turned into quads (quad_completion)
+  std::size_t holes = 0;                   // leftover triangles that could not be: each is a hole
 };
 
 // How Gmsh cuts the chordal surface into patches it can parametrize, in degrees: chordal edges
@@ -38,8 +40,9 @@ struct QuadMeshOptions {
 std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& quads);
 
 // Meshes the chordal surface with quads only. Holes and the outer rim are the boundary curves of
-// the discrete surface, so they are kept. Of the tries (one per feature angle) the one whose nodes
-// all lie on the chordal surface and whose worst quad is best is kept. Throws geometryError if
+// the discrete surface, so they are kept. Of the tries (one per patch split) whose nodes all lie on
+// the chordal surface, the one with the fewest holes (unpaired triangles), then the fewest poor
+// quads, then the best worst quad is kept. Throws geometryError if
 // Gmsh cannot mesh the surface.
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& options);
 

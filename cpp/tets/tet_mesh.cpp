@@ -30,6 +30,16 @@ double diagonal(const std::vector<SurfaceNode>& nodes) {
   return (hi - lo).norm();
 }
 
+// Four nodes in one plane: a tet of zero volume, as two top and two bottom bubbles on the parallel
+// edges of a bend give. It is kept: it joins the tets on either side of that plane, and the chordal
+// surface collapses its degenerate facet.
+bool isCoplanar(const TetMesh& mesh, const std::array<int, 4>& t) {
+  const Vec3 e1 = mesh.nodes[t[1]] - mesh.nodes[t[0]], e2 = mesh.nodes[t[2]] - mesh.nodes[t[0]],
+             e3 = mesh.nodes[t[3]] - mesh.nodes[t[0]];
+  const double scale = std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()});
+  return std::abs(e1.dot(e2.cross(e3))) < 1e-9 * std::pow(scale, 1.5);
+}
+
 }  // namespace
 
 TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
@@ -74,19 +84,13 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
       ++counts.flat;
       continue;
     }
-    const Vec3 e1 = mesh.nodes[t[1]] - mesh.nodes[t[0]], e2 = mesh.nodes[t[2]] - mesh.nodes[t[0]],
-               e3 = mesh.nodes[t[3]] - mesh.nodes[t[0]];
-    const double scale = std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()});
-    if (std::abs(e1.dot(e2.cross(e3))) < 1e-9 * std::pow(scale, 1.5)) {  // four coplanar nodes
-      ++counts.zeroVolume;
-      continue;
-    }
     const Vec3 c = 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
     classifier.Perform(gp_Pnt(c.x(), c.y(), c.z()), tolerance);
     if (classifier.State() != TopAbs_IN) {
       ++counts.outside;
       continue;
     }
+    counts.coplanar += isCoplanar(mesh, t);
     kept.push_back(t);
   }
   mesh.tets.swap(kept);

@@ -20,13 +20,14 @@ struct TetFilterCounts {
   std::size_t delaunay = 0;  // tets of the Delaunay tetrahedralization (the convex hull)
   std::size_t outside = 0;   // dropped: centroid outside the solid
   std::size_t flat = 0;      // dropped: all four nodes on the same side (§5.4)
-  std::size_t zeroVolume = 0; // dropped: four coplanar nodes (cospherical Delaunay configurations)
+  std::size_t coplanar = 0;  // kept although of zero volume: four nodes in one plane (at bends)
 };
 
 // Delaunay tetrahedralization of the nodes (TetGen 1.5, library call). Throws on TetGen failure.
 TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes);
 
-// Keeps the tets inside the solid that span top and bottom; returns what was dropped.
+// Keeps the tets inside the solid that span top and bottom (also those of zero volume); returns
+// what was dropped.
 TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad);
 
 }  // namespace hexlayer

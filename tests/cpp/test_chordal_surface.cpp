@@ -346,3 +346,27 @@ TEST(ChordalSurface, FacetNormalOfTriangleAndNonPlanarQuad) {
   s.vertices = {Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2)};
   EXPECT_EQ(facetNormal(s, {0, 1, 2, -1}), Vec3::Zero());
 }
+
+// Two top and two bottom nodes on parallel lines (the edges of a bend) make a coplanar 2-2 tet
+// whose quad has all four corners on one line. Here every top row has a bottom row in its vertical
+// plane, shifted along it, so the Delaunay tets hold many such tets; their facets are collapsed
+// and the surface is the mid-height cross-section of the nodes' hull, a disk without slits.
+TEST(ChordalSurface, CoplanarTetsOfParallelRowsLeaveNoSlit) {
+  std::vector<SurfaceNode> nodes;
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 3; ++y) {
+      SurfaceNode top, bottom;
+      top.point = Vec3(x, y, 2), top.side = Side::Top;
+      bottom.point = Vec3(x + 0.3, y, 0), bottom.side = Side::Bottom;
+      nodes.push_back(top), nodes.push_back(bottom);
+    }
+  const TetMesh tets = delaunayTets(nodes);
+  const ChordalSurface s = buildChordalSurface(tets);
+  EXPECT_NEAR(chordalArea(s), 3.0 * 2.0, 0.05 * 6) << "[0.15, 3.15] x [0, 2] at z = 1; a collapse moves vertices along the rows";
+  const auto uses = facetEdgeUses(s);
+  const long euler = static_cast<long>(s.vertices.size()) - static_cast<long>(uses.size()) + static_cast<long>(s.facets.size());
+  EXPECT_EQ(euler, 1) << "a disk: no slit along the node rows";
+  for (const auto& [edge, n] : uses) EXPECT_LE(n, 2);
+  for (const auto& f : s.facets) EXPECT_GT(facetNormal(s, f).norm(), 0.5) << "no degenerate facet is left";
+  for (const Vec3& v : s.vertices) EXPECT_NEAR(v.z(), 1.0, 1e-12);
+}

@@ -1,0 +1,86 @@
+#include "geometry/sheet_junctions.hpp"
+
+#include <BRepOffset_Analyse.hxx>
+#include <BRepOffset_Interval.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include "geometry/face_sampling.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr double kTangentAngle = 0.5;  // radians: a bend's tangent edges, not a junction
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  }
+  void unite(int a, int b) { parent[std::max(find(a), find(b))] = std::min(find(a), find(b)); }
+};
+
+// Whether the edge joins two faces of one sheet: smooth (within kTangentAngle) or convex. At a
+// concave sharp edge one sheet stands on another (OpenCASCADE's offset analysis of the solid tells).
+bool joinsOneSheet(const BRepOffset_Analyse& edges, const TopoDS_Edge& edge) {
+  for (const BRepOffset_Interval& piece : edges.Type(edge))
+    if (piece.Type() == ChFiDS_Concave) return false;
+  return true;
+}
+
+Vec3 faceCentre(const TopoDS_Shape& face, double area) {
+  Vec3 c = Vec3::Zero();
+  for (const FaceSample& s : sampleFace(face, std::sqrt(std::max(area, 1e-30) / 16))) c += s.area * s.point;
+  return c;
+}
+
+}  // namespace
+
+std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
+  const int n = static_cast<int>(sides.faces.size());
+  auto isWall = [&](int f) { return f >= 0 && sides.faces[f].side != Side::Lateral; };
+  UnionFind uf(n);
+  const BRepOffset_Analyse edgeTypes(cad.solid, kTangentAngle);
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  for (int e = 1; e <= edgeFaces.Extent(); ++e) {
+    std::vector<int> faces;
+    for (const TopoDS_Shape& f : edgeFaces(e))
+      if (const int i = cad.faces.FindIndex(f) - 1; isWall(i) && std::find(faces.begin(), faces.end(), i) == faces.end()) faces.push_back(i);
+    if (faces.size() == 2 && joinsOneSheet(edgeTypes, TopoDS::Edge(edgeFaces.FindKey(e))))
+      uf.unite(faces[0], faces[1]);
+  }
+  for (int f = 0; f < n; ++f)
+    if (isWall(f) && isWall(sides.faces[f].opposite)) uf.unite(f, sides.faces[f].opposite);
+  std::map<int, Sheet> byRoot;
+  for (int f = 0; f < n; ++f)
+    if (isWall(f)) {
+      Sheet& s = byRoot[uf.find(f)];
+      s.faces.push_back(f);
+      s.area += sides.faces[f].area;
+      s.volume += 0.5 * sides.faces[f].area * sides.faces[f].thickness;
+      s.centre += faceCentre(cad.faces(f + 1), sides.faces[f].area);
+    }
+  std::vector<Sheet> sheets;
+  for (auto& [root, s] : byRoot) {
+    s.centre /= std::max(s.area, 1e-30);
+    sheets.push_back(std::move(s));
+  }
+  std::stable_sort(sheets.begin(), sheets.end(), [](const Sheet& a, const Sheet& b) { return a.area > b.area; });
+  return sheets;
+}
+
+void keepFirstSheet(const std::vector<Sheet>& sheets, WallSides& sides) {
+  for (std::size_t s = 1; s < sheets.size(); ++s)
+    for (int f : sheets[s].faces) sides.faces[f].side = Side::Lateral;
+}
+
+}  // namespace hexlayer

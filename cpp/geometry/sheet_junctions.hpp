@@ -1,0 +1,31 @@
+// Sheets and their junctions. The method meshes one sheet: a wall whose top and bottom faces run
+// on through bends. A rib, a boss or a flange standing on a sheet meets it in a T-junction, where
+// the chordal surface would be non-manifold (the paper's open case, §9). Such a sheet is found
+// here from the CAD faces, before any node is placed, so that the user learns where it is.
+#pragma once
+#include <vector>
+
+#include "core/types.hpp"
+#include "geometry/cad_solid.hpp"
+#include "geometry/wall_sides.hpp"
+
+namespace hexlayer {
+
+struct Sheet {
+  std::vector<int> faces;  // 0-based (FreeCAD's Face<i+1>), top and bottom faces
+  double area = 0;         // of those faces
+  double volume = 0;       // about: half the sum of face area x the wall thickness measured from it
+  Vec3 centre = Vec3::Zero();  // area-weighted centre of the faces' samples
+};
+
+// Wall faces joined by a smooth edge (normals within 30 degrees), a convex edge or across the wall
+// (a face and the face its rays hit) are one sheet. Sheets joined only by concave sharp edges
+// stand on each other. The first sheet is the largest (the one that is meshed), the others follow
+// by decreasing area.
+std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides);
+
+// Leaves the faces of every sheet but the first out of the walls (they become lateral faces: no
+// nodes are placed on them, and the first sheet's chordal surface runs on under them).
+void keepFirstSheet(const std::vector<Sheet>& sheets, WallSides& sides);
+
+}  // namespace hexlayer
