@@ -78,12 +78,12 @@ std::vector<char> rimEdges(const HexMesh& mesh, const EdgeTable& t) {
 }
 
 // Mid-edge node of a top or bottom wall edge: the midpoint, projected onto that wall if the move is small enough.
-Vec3 wallMidNode(const Vec3& a, const Vec3& b, Side side, const WallProjection& project, QuadraticStats& stats) {
-  const Vec3 mid = 0.5 * (a + b);
+FacePoint wallMidNode(const Vec3& a, const Vec3& b, Side side, const WallProjection& project, QuadraticStats& stats) {
+  const FacePoint mid{0.5 * (a + b), -1};
   ++stats.wallNodes;
-  const std::optional<Vec3> onWall = project(side, mid);
+  const std::optional<FacePoint> onWall = project(side, mid.point);
   if (!onWall) return mid;
-  const double move = (*onWall - mid).norm();
+  const double move = (onWall->point - mid.point).norm();
   if (move > kMaxWallMove * (b - a).norm()) return mid;
   ++stats.projected;
   stats.maxProjectionMove = std::max(stats.maxProjectionMove, move);
@@ -93,19 +93,23 @@ Vec3 wallMidNode(const Vec3& a, const Vec3& b, Side side, const WallProjection& 
 struct MidEdgeNodes {
   std::vector<Vec3> position;
   std::vector<int> layer;  // the layer of an in-plane edge, -1 for a sweep edge
+  std::vector<int> face;   // the CAD face a wall node was projected onto, else -1
 };
 
 // Places the node of every edge: sweep and wall edges first, as inner-layer edges interpolate the walls'.
 MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const WallProjection& project, QuadraticStats& stats) {
   const SweepColumns col = sweepColumns(mesh);
-  MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size())};
+  MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size()), std::vector<int>(t.edges.size(), -1)};
   auto isWall = [&](int layer) { return layer == 0 || layer == mesh.layers; };
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [a, b] = t.edges[e];
     const int ka = mesh.nodeLayer[a], kb = mesh.nodeLayer[b];
     mid.layer[e] = ka == kb ? ka : -1;
     if (ka != kb) mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
-    else if (isWall(ka)) mid.position[e] = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
+    else if (isWall(ka)) {
+      const FacePoint p = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
+      mid.position[e] = p.point, mid.face[e] = p.face;
+    }
   }
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [a, b] = t.edges[e];
@@ -132,6 +136,7 @@ QuadraticStats addMidEdgeNodes(HexMesh& mesh, const WallProjection& project) {
   mesh.nodes.insert(mesh.nodes.end(), mid.position.begin(), mid.position.end());
   mesh.nodeLayer.insert(mesh.nodeLayer.end(), mid.layer.begin(), mid.layer.end());
   mesh.nodeOnRim.insert(mesh.nodeOnRim.end(), rim.begin(), rim.end());
+  if (mesh.nodeFace.size() == static_cast<std::size_t>(corners)) mesh.nodeFace.insert(mesh.nodeFace.end(), mid.face.begin(), mid.face.end());
   mesh.midEdges = t.ofHex;
   for (auto& hex : mesh.midEdges)
     for (int& e : hex) e += corners;

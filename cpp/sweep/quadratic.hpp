@@ -10,8 +10,8 @@
 
 namespace hexlayer {
 
-// The point of the `side` wall (Side::Top or Side::Bottom) nearest to p; nullopt if there is none.
-using WallProjection = std::function<std::optional<Vec3>(Side side, const Vec3& p)>;
+// The point of the `side` wall (Side::Top or Side::Bottom) nearest to p and its CAD face; nullopt if there is none.
+using WallProjection = std::function<std::optional<FacePoint>(Side side, const Vec3& p)>;
 
 struct QuadraticStats {
   std::size_t midNodes = 0;        // nodes added, one per edge of the mesh
@@ -21,7 +21,8 @@ struct QuadraticStats {
 };
 
 // Adds the mid-edge nodes to `mesh` (ids after the corners, numbered by first appearance going
-// through the hexes in order and their edges in kHexEdges order) and fills mesh.midEdges.
+// through the hexes in order and their edges in kHexEdges order) and fills mesh.midEdges; a node
+// projected onto the CAD gets its face in mesh.nodeFace (if sized), the others -1.
 //  - sweep edge (layer k to k + 1): midpoint of its ends, on the straight sweep line; layer -1.
 //  - edge of the top (bottom) wall, both ends in the last (first) layer: its midpoint projected
 //    onto that wall; the midpoint is kept when the projection fails or would move it farther

@@ -40,7 +40,7 @@ std::size_t edgeCount(int nx, int ny, int m) {
   return static_cast<std::size_t>((m + 1) * (nx * (ny + 1) + ny * (nx + 1)) + m * (nx + 1) * (ny + 1));
 }
 
-std::optional<Vec3> keep(Side, const Vec3& p) { return p; }
+std::optional<FacePoint> keep(Side, const Vec3& p) { return FacePoint{p, -1}; }
 
 // An affine map of space (shear, stretch, shift): edges stay straight and midpoints stay midpoints.
 Vec3 affine(const Vec3& p) {
@@ -114,11 +114,12 @@ TEST(Quadratic, LayerAndRimOfMidEdgeNodes) {
 
 TEST(Quadratic, ProjectionIsAskedForWallEdgesOnlyAndInnerLayersFollow) {
   HexMesh mesh = block(2, 2, 2, {0, 1, 2});
+  mesh.nodeFace.assign(mesh.nodes.size(), -1);
   std::vector<std::pair<Side, Vec3>> asked;
   const Vec3 lift(0, 0, 0.1), drop(0, 0, -0.2);  // both within a quarter of the unit edges
-  addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) -> std::optional<Vec3> {
+  addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) -> std::optional<FacePoint> {
     asked.emplace_back(side, p);
-    return p + (side == Side::Top ? lift : drop);
+    return FacePoint{p + (side == Side::Top ? lift : drop), side == Side::Top ? 7 : 3};
   });
   ASSERT_EQ(asked.size(), 24u);  // 12 in-plane edges on each wall
   for (const auto& [side, p] : asked) EXPECT_EQ(p.z(), side == Side::Top ? 2.0 : 0.0);
@@ -127,6 +128,7 @@ TEST(Quadratic, ProjectionIsAskedForWallEdgesOnlyAndInnerLayersFollow) {
     const double z = mesh.nodes[i].z();
     if (k == 2) EXPECT_DOUBLE_EQ(z, 2.1);
     if (k == 0) EXPECT_DOUBLE_EQ(z, -0.2);
+    EXPECT_EQ(mesh.nodeFace[i], k == 2 ? 7 : k == 0 ? 3 : -1) << "the face of the projection, wall nodes only";
     if (k == 1) EXPECT_DOUBLE_EQ(z, 0.5 * (2.1 - 0.2));  // half way between the walls' mid-edge nodes
     if (k == -1) EXPECT_TRUE(z == 0.5 || z == 1.5);      // sweep edges: plain midpoints
   }
@@ -144,9 +146,9 @@ TEST(Quadratic, InnerMidEdgeNodeTakesTheMeanFractionOfItsEnds) {
 
 TEST(Quadratic, FarOrFailedProjectionKeepsTheMidpoint) {
   HexMesh mesh = block(1, 1, 1, {0, 1});
-  const QuadraticStats s = addMidEdgeNodes(mesh, [](Side side, const Vec3& p) -> std::optional<Vec3> {
+  const QuadraticStats s = addMidEdgeNodes(mesh, [](Side side, const Vec3& p) -> std::optional<FacePoint> {
     if (side == Side::Bottom) return std::nullopt;
-    return p + Vec3(0, 0, p.x() == 0.5 ? 0.2 : 0.3);  // edges along x move 0.2 (kept), along y 0.3 (> 1/4)
+    return FacePoint{p + Vec3(0, 0, p.x() == 0.5 ? 0.2 : 0.3), 5};  // edges along x move 0.2 (kept), along y 0.3 (> 1/4)
   });
   EXPECT_EQ(s.wallNodes, 8u);
   EXPECT_EQ(s.projected, 2u);

@@ -114,13 +114,14 @@ class WriterTest : public ::testing::Test {
 
   fs::path write(const std::string& name) {
     const fs::path p = dir_ / name;
-    writeMesh(p.string(), mesh_, sets_, fields_);
+    writeMesh(p.string(), mesh_, {sets_, surfaces_, fields_});
     return p;
   }
 
   fs::path dir_;
   HexMesh mesh_;
   std::vector<NodeSet> sets_;
+  std::vector<SurfaceGroup> surfaces_;
   std::vector<CellField> fields_;
 };
 
@@ -335,7 +336,7 @@ TEST_F(WriterTest, UnknownExtensionIsUsageError) {
 TEST_F(WriterTest, UnwritablePathIsInputError) {
   const std::string path = (dir_ / "missing_dir" / "block.inp").string();
   try {
-    writeMesh(path, mesh_, sets_);
+    writeMesh(path, mesh_, {sets_, {}, {}});
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::BadInput);
