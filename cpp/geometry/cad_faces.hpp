@@ -26,6 +26,7 @@ class CadFaces {
   double distance(int face, const Vec3& p) const;
   // True if p is closer to `face` than the face's tolerance (BRep_Tool::Tolerance, ~1e-7), FreeCAD's test.
   bool lies(int face, const Vec3& p) const;
+  double tolerance(int face) const { return tolerance_[face]; }
   FacesAtPoint facesAt(int face, const Vec3& p) const;
 
  private:

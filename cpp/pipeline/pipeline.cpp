@@ -125,6 +125,7 @@ std::size_t projectRim(HexMesh& mesh, const WallProjector& walls, double thickne
 nlohmann::json makeQuadratic(HexMesh& mesh, const WallProjector& walls) {
   const QuadraticStats s = addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) { return walls.project(side, p); });
   return {{"mid_edge_nodes", s.midNodes}, {"wall_mid_edge_nodes", s.wallNodes}, {"projected_onto_cad", s.projected},
+          {"rim_mid_edge_nodes", s.rimNodes}, {"rim_projected_onto_lateral_faces", s.rimProjected},
           {"max_projection_move", s.maxProjectionMove}};
 }
 

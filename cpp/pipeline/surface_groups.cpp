@@ -12,8 +12,6 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kOnCad = 1e-6;  // how far a boundary node may be from its face (issue 3)
-
 std::string faceName(int face) { return "Face" + std::to_string(face + 1); }
 
 Side sideOf(const HexMesh& mesh, int i) {
@@ -73,8 +71,10 @@ NodeKinds nodeKinds(const HexMesh& mesh, const std::vector<BoundaryFace>& quads)
   return k;
 }
 
-nlohmann::json deviationReport(const HexMesh& mesh, const std::vector<int>& boundary, const std::vector<double>& distance,
-                               const NodeKinds& kinds) {
+// Max and mean distance of the boundary nodes to their faces, and per kind of node how many are not on
+// their face to its tolerance (FreeCAD's getNodesByFace would not find them).
+nlohmann::json deviationReport(const HexMesh& mesh, const CadFaces& faces, const std::vector<int>& boundary,
+                               const std::vector<double>& distance, const NodeKinds& kinds) {
   double max = 0, sum = 0, maxRelative = 0, sumRelative = 0;
   int worst = boundary.empty() ? -1 : boundary[0];
   nlohmann::json above = {{"wall_corners", 0}, {"rim_corners", 0}, {"wall_mid_edge", 0}, {"rim_mid_edge", 0}};
@@ -83,14 +83,14 @@ nlohmann::json deviationReport(const HexMesh& mesh, const std::vector<int>& boun
     sum += d, sumRelative += relative;
     if (d > max) max = d, worst = i;
     maxRelative = std::max(maxRelative, relative);
-    if (d > kOnCad) {
+    if (d >= faces.tolerance(mesh.nodeFace[i])) {
       const std::string kind = std::string(mesh.nodeOnRim[i] ? "rim" : "wall") + (kinds.midEdge[i] ? "_mid_edge" : "_corners");
       above[kind] = above[kind].get<int>() + 1;
     }
   }
   const double n = boundary.empty() ? 1 : static_cast<double>(boundary.size());
   nlohmann::json r = {{"nodes", boundary.size()}, {"max", max}, {"mean", sum / n}, {"max_relative", maxRelative},
-                      {"mean_relative", sumRelative / n}, {"tolerance", kOnCad}, {"above_tolerance", above}};
+                      {"mean_relative", sumRelative / n}, {"off_face_tolerance", above}};
   if (worst >= 0) {
     r["worst_at"] = {mesh.nodes[worst].x(), mesh.nodes[worst].y(), mesh.nodes[worst].z()};
     r["worst_face"] = faceName(mesh.nodeFace[worst]);
@@ -144,7 +144,7 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
   out.surfaceReport = {{"cad_faces", faces.count()}, {"meshed_cad_faces", nonEmpty}, {"boundary_nodes", boundary.size()},
                        {"nodes_on_several_faces", several}, {"element_faces", quads.size()},
                        {"element_faces_across_cad_edges", across}};
-  out.deviationReport = deviationReport(mesh, boundary, distance, nodeKinds(mesh, quads));
+  out.deviationReport = deviationReport(mesh, faces, boundary, distance, nodeKinds(mesh, quads));
   return out;
 }
 

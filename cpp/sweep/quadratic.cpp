@@ -77,17 +77,22 @@ std::vector<char> rimEdges(const HexMesh& mesh, const EdgeTable& t) {
   return rim;
 }
 
+// `at` projected onto the `side` faces if that moves it less than kMaxWallMove edge lengths, else `at`.
+FacePoint projectIfClose(const FacePoint& at, double edgeLength, Side side, const WallProjection& project,
+                         std::size_t& projected, double& maxMove) {
+  const std::optional<FacePoint> onCad = project(side, at.point);
+  if (!onCad) return at;
+  const double move = (onCad->point - at.point).norm();
+  if (move > kMaxWallMove * edgeLength) return at;
+  ++projected;
+  maxMove = std::max(maxMove, move);
+  return *onCad;
+}
+
 // Mid-edge node of a top or bottom wall edge: the midpoint, projected onto that wall if the move is small enough.
 FacePoint wallMidNode(const Vec3& a, const Vec3& b, Side side, const WallProjection& project, QuadraticStats& stats) {
-  const FacePoint mid{0.5 * (a + b), -1};
   ++stats.wallNodes;
-  const std::optional<FacePoint> onWall = project(side, mid.point);
-  if (!onWall) return mid;
-  const double move = (onWall->point - mid.point).norm();
-  if (move > kMaxWallMove * (b - a).norm()) return mid;
-  ++stats.projected;
-  stats.maxProjectionMove = std::max(stats.maxProjectionMove, move);
-  return *onWall;
+  return projectIfClose(FacePoint{0.5 * (a + b), -1}, (b - a).norm(), side, project, stats.projected, stats.maxProjectionMove);
 }
 
 struct MidEdgeNodes {
@@ -96,8 +101,11 @@ struct MidEdgeNodes {
   std::vector<int> face;   // the CAD face a wall node was projected onto, else -1
 };
 
-// Places the node of every edge: sweep and wall edges first, as inner-layer edges interpolate the walls'.
-MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const WallProjection& project, QuadraticStats& stats) {
+// Places the node of every edge: sweep and wall edges first, as inner-layer edges interpolate the walls';
+// then the nodes of rim edges onto the lateral faces (a rim wall edge's node, on the wall already, then
+// lies on the CAD edge between the wall and the lateral face).
+MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const std::vector<char>& rim,
+                               const WallProjection& project, QuadraticStats& stats) {
   const SweepColumns col = sweepColumns(mesh);
   MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size()), std::vector<int>(t.edges.size(), -1)};
   auto isWall = [&](int layer) { return layer == 0 || layer == mesh.layers; };
@@ -118,6 +126,14 @@ MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const Wa
     const Vec3& above = mid.position[t.index.at(edgeKey(col.top[a], col.top[b]))];
     mid.position[e] = below + 0.5 * (col.fraction[a] + col.fraction[b]) * (above - below);
   }
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    if (!rim[e]) continue;
+    const auto [a, b] = t.edges[e];
+    ++stats.rimNodes;
+    const FacePoint p = projectIfClose({mid.position[e], mid.face[e]}, (mesh.nodes[b] - mesh.nodes[a]).norm(), Side::Lateral,
+                                       project, stats.rimProjected, stats.maxProjectionMove);
+    mid.position[e] = p.point, mid.face[e] = p.face;
+  }
   return mid;
 }
 
@@ -130,8 +146,8 @@ QuadraticStats addMidEdgeNodes(HexMesh& mesh, const WallProjection& project) {
   const EdgeTable t = collectEdges(mesh);
   QuadraticStats stats;
   stats.midNodes = t.edges.size();
-  const MidEdgeNodes mid = placeMidEdgeNodes(mesh, t, project, stats);
   const std::vector<char> rim = rimEdges(mesh, t);
+  const MidEdgeNodes mid = placeMidEdgeNodes(mesh, t, rim, project, stats);
   const int corners = static_cast<int>(mesh.nodes.size());
   mesh.nodes.insert(mesh.nodes.end(), mid.position.begin(), mid.position.end());
   mesh.nodeLayer.insert(mesh.nodeLayer.end(), mid.layer.begin(), mid.layer.end());

@@ -118,6 +118,7 @@ TEST(Quadratic, ProjectionIsAskedForWallEdgesOnlyAndInnerLayersFollow) {
   std::vector<std::pair<Side, Vec3>> asked;
   const Vec3 lift(0, 0, 0.1), drop(0, 0, -0.2);  // both within a quarter of the unit edges
   addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) -> std::optional<FacePoint> {
+    if (side == Side::Lateral) return std::nullopt;  // rim nodes: see the next test
     asked.emplace_back(side, p);
     return FacePoint{p + (side == Side::Top ? lift : drop), side == Side::Top ? 7 : 3};
   });
@@ -134,6 +135,28 @@ TEST(Quadratic, ProjectionIsAskedForWallEdgesOnlyAndInnerLayersFollow) {
   }
 }
 
+TEST(Quadratic, RimNodesAreProjectedOntoTheLateralFacesLast) {
+  HexMesh mesh = block(2, 2, 2, {0, 1, 2});
+  mesh.nodeFace.assign(mesh.nodes.size(), -1);
+  std::size_t lateral = 0;
+  const QuadraticStats s = addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) -> std::optional<FacePoint> {
+    if (side != Side::Lateral) return FacePoint{p + Vec3(0, 0, side == Side::Top ? 0.1 : -0.1), side == Side::Top ? 7 : 3};
+    ++lateral;
+    if (p.x() == 0) return FacePoint{p + Vec3(-0.3, 0, 0), 2};  // more than a quarter of the unit edges: refused
+    return FacePoint{p + Vec3(0.01, 0, 0), 1};
+  });
+  EXPECT_EQ(lateral, 3u * 8 + 2u * 8) << "8 border edges per node layer, 8 border sweep lines with 2 edges";
+  EXPECT_EQ(s.rimNodes, lateral);
+  EXPECT_EQ(s.rimProjected, lateral - (3 * 2 + 2 * 3)) << "the x = 0 side: 2 edges per layer and 3 sweep lines of 2";
+  for (std::size_t i = 27; i < mesh.nodes.size(); ++i) {
+    if (!mesh.nodeOnRim[i]) continue;
+    const int k = mesh.nodeLayer[i];
+    const bool refused = mesh.nodes[i].x() <= 0;  // at x = 0 (or -0.3 if it had been projected)
+    EXPECT_EQ(mesh.nodeFace[i], refused ? (k == 2 ? 7 : k == 0 ? 3 : -1) : 1) << i;
+    if (k == 2) EXPECT_DOUBLE_EQ(mesh.nodes[i].z(), 2.1) << "on the wall, then moved along it";
+  }
+}
+
 TEST(Quadratic, InnerMidEdgeNodeTakesTheMeanFractionOfItsEnds) {
   HexMesh mesh = block(1, 1, 2, {0, 0.5, 1});
   mesh.nodes[4 + 1].z() = 0.3;  // node (1, 0) of the middle layer: fraction 0.3 on its sweep line
@@ -147,7 +170,7 @@ TEST(Quadratic, InnerMidEdgeNodeTakesTheMeanFractionOfItsEnds) {
 TEST(Quadratic, FarOrFailedProjectionKeepsTheMidpoint) {
   HexMesh mesh = block(1, 1, 1, {0, 1});
   const QuadraticStats s = addMidEdgeNodes(mesh, [](Side side, const Vec3& p) -> std::optional<FacePoint> {
-    if (side == Side::Bottom) return std::nullopt;
+    if (side != Side::Top) return std::nullopt;
     return FacePoint{p + Vec3(0, 0, p.x() == 0.5 ? 0.2 : 0.3), 5};  // edges along x move 0.2 (kept), along y 0.3 (> 1/4)
   });
   EXPECT_EQ(s.wallNodes, 8u);
