@@ -112,6 +112,25 @@ void expectPythonPasses(const fs::path& script, const fs::path& file) {
   EXPECT_EQ(WEXITSTATUS(status), 0) << command;
 }
 
+// Elements of each physical group (by name) of the model Gmsh has open.
+std::map<std::string, std::size_t> elementsPerPhysicalGroup() {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups);
+  std::map<std::string, std::size_t> elements;
+  for (const auto& [dim, tag] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    std::vector<int> entities, types;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    std::vector<std::vector<std::size_t>> elementTags, elementNodes;
+    for (int e : entities) {
+      gmsh::model::mesh::getElements(types, elementTags, elementNodes, dim, e);
+      for (const auto& t : elementTags) elements[name] += t.size();
+    }
+  }
+  return elements;
+}
+
 ExitCode codeOf(const std::function<void()>& f) {
   try {
     f();
@@ -176,21 +195,8 @@ TEST_F(WriterTest, MshReadsBackThroughGmsh) {
   }
   EXPECT_EQ(quads, 10u);
 
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups);
-  std::map<std::string, std::size_t> elementsPerGroup;
-  for (const auto& [dim, tag] : groups) {
-    std::string name;
-    gmsh::model::getPhysicalName(dim, tag, name);
-    std::vector<int> entities;
-    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-    for (int e : entities) {
-      gmsh::model::mesh::getElements(types, elementTags, elementNodes, dim, e);
-      for (const auto& t : elementTags) elementsPerGroup[name] += t.size();
-    }
-  }
   const std::map<std::string, std::size_t> expected{{"top", 2}, {"bottom", 2}, {"rim", 6}, {"solid", 2}};
-  EXPECT_EQ(elementsPerGroup, expected);
+  EXPECT_EQ(elementsPerPhysicalGroup(), expected);
 
   std::vector<int> views;
   gmsh::view::getTags(views);
@@ -213,21 +219,7 @@ TEST_F(WriterTest, MshHasOnePhysicalGroupPerCadFaceReadBackThroughGmsh) {
   gmsh::initialize();
   gmsh::option::setNumber("General.Terminal", 0);
   gmsh::open(p.string());
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups);
-  std::map<std::string, std::size_t> elementsPerGroup;
-  for (const auto& [dim, tag] : groups) {
-    std::string name;
-    gmsh::model::getPhysicalName(dim, tag, name);
-    std::vector<int> entities;
-    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-    std::vector<int> types;
-    std::vector<std::vector<std::size_t>> elementTags, elementNodes;
-    for (int e : entities) {
-      gmsh::model::mesh::getElements(types, elementTags, elementNodes, dim, e);
-      for (const auto& t : elementTags) elementsPerGroup[name] += t.size();
-    }
-  }
+  const std::map<std::string, std::size_t> elementsPerGroup = elementsPerPhysicalGroup();
   gmsh::finalize();
   const std::map<std::string, std::size_t> expected{{"Face1", 1}, {"Face2", 1}, {"Face3", 2}, {"Face4", 2}, {"Face5", 2},
                                                     {"Face6", 2}, {"top", 2}, {"bottom", 2}, {"rim", 6}, {"solid", 2}};
