@@ -45,7 +45,7 @@ int runMesh(MeshCommand& c) {
   hexlayer::MeshResult result = hexlayer::meshFile(c.input, c.options);
   std::vector<hexlayer::CellField> fields;
   if (!result.mesh.hexes.empty()) fields.push_back({"scaled_jacobian", result.scaledJacobian});
-  hexlayer::writeMesh(c.output, result.mesh, result.nodeSets, fields);
+  hexlayer::writeMesh(c.output, result.mesh, {result.nodeSets, result.surfaceGroups, fields});
   if (!c.report.empty()) {
     std::ofstream out(c.report);
     if (!out) throw hexlayer::inputError("cannot write the report '" + c.report + "'");

@@ -30,6 +30,7 @@ struct HexMesh {
   std::vector<std::array<int, 12>> midEdges;  // empty for linear (8-node) hexes, else one per hex
   std::vector<int> nodeLayer;    // 0 = bottom surface ... layers = top surface; -1 = mid-edge node between two layers
   std::vector<char> nodeOnRim;   // swept from a node on the chordal surface's boundary (or mid-edge node of a rim edge)
+  std::vector<int> nodeFace;     // CAD face (0-based, FreeCAD's Face1 = 0) the node was put on; -1 if none, or not sized
   int layers = 0;
   bool quadratic() const { return !midEdges.empty(); }
 };
@@ -38,6 +39,29 @@ struct HexMesh {
 struct NodeSet {
   std::string name;
   std::vector<int> nodes;
+};
+
+// A point put on the CAD: where it is and the face it lies on (0-based index of FreeCAD's FaceN, -1: none).
+struct FacePoint {
+  Vec3 point;
+  int face = -1;
+};
+
+// One face of a hex, `localFace` as in kHexFaces (quality.hpp): 0 bottom, 1 top, 2..5 the sides. CalculiX
+// and Abaqus name the same faces S1..S6 (S = localFace + 1).
+struct HexFace {
+  int hex;
+  int localFace;
+  bool operator==(const HexFace& o) const { return hex == o.hex && localFace == o.localFace; }
+};
+
+// The mesh on one CAD face (FreeCAD's "FaceN", N = 1-based index of TopExp::MapShapes(solid, TopAbs_FACE)):
+// the boundary nodes on it within the face's tolerance (a node on a CAD edge or vertex is in every face
+// there), and the boundary hex faces that lie on it (each boundary hex face on exactly one CAD face).
+struct SurfaceGroup {
+  std::string name;
+  std::vector<int> nodes;           // sorted, corners and mid-edge nodes
+  std::vector<HexFace> hexFaces;    // sorted by hex, then local face
 };
 
 }  // namespace hexlayer

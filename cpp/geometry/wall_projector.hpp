@@ -19,12 +19,14 @@ class WallProjector {
  public:
   WallProjector(const CadSolid& cad, const WallSides& sides);
   // The point nearest to p on the faces of the `side` wall (inside a face, on its edges or
-  // vertices: trimmed faces, not their underlying surfaces); nullopt for a side without faces.
-  std::optional<Vec3> project(Side side, const Vec3& p) const;
+  // vertices: trimmed faces, not their underlying surfaces), with the face it was found on (on a CAD
+  // edge: one of the faces there); nullopt for a side without faces.
+  std::optional<FacePoint> project(Side side, const Vec3& p) const;
 
  private:
   struct WallFace {
     TopoDS_Face face;
+    int index;   // in CadSolid::faces, 0-based
     Bnd_Box box;  // contains the face: its distance to p bounds the face's from below
   };
   std::array<std::vector<WallFace>, 3> faces_;  // by side: bottom, lateral, top (Side + 1)

@@ -16,8 +16,9 @@ class WallRays {
   WallRays(const CadSolid& cad, const WallSides& sides);
   // Where the ray from `from` along the unit vector `dir` first leaves the solid, if that is on
   // the `side` wall and closer than maxDistance (a ray that leaves through a lateral face, or a
-  // gap between faces, reaches no wall). Not thread-safe (OpenCASCADE's intersector keeps state).
-  std::optional<Vec3> cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance);
+  // gap between faces, reaches no wall), with the face it hit. Not thread-safe (OpenCASCADE's
+  // intersector keeps state).
+  std::optional<FacePoint> cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance);
 
  private:
   const CadSolid& cad_;

@@ -11,6 +11,7 @@
 #include "chordal/chordal_fairing.hpp"
 #include "chordal/chordal_surface.hpp"
 #include "core/error.hpp"
+#include "geometry/cad_faces.hpp"
 #include "geometry/wall_projector.hpp"
 #include "geometry/wall_rays.hpp"
 #include "geometry/sheet_junctions.hpp"
@@ -18,6 +19,7 @@
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 #include "quadmesh/sizing.hpp"
+#include "pipeline/surface_groups.hpp"
 #include "quality/quality.hpp"
 #include "sweep/quadratic.hpp"
 #include "sweep/sweep.hpp"
@@ -78,11 +80,11 @@ double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalAr
 // π_b, π_t (§3): the sweep line cast onto the CAD walls; the radius function's ends (§7.2) where a ray misses.
 SweepLine castSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r) {
   SweepLine line = radiusSweepLine(q, n, r);
-  auto keep = [&](const std::optional<Vec3>& hit, Vec3& end) {
-    if (hit && (*hit - q).norm() > kMinReach * r) end = *hit;
+  auto keep = [&](const std::optional<FacePoint>& hit, Vec3& end, int& face) {
+    if (hit && (hit->point - q).norm() > kMinReach * r) end = hit->point, face = hit->face;
   };
-  keep(rays.cast(Side::Top, q, n, kMaxReach * r), line.top);
-  keep(rays.cast(Side::Bottom, q, -n, kMaxReach * r), line.bottom);
+  keep(rays.cast(Side::Top, q, n, kMaxReach * r), line.top, line.topFace);
+  keep(rays.cast(Side::Bottom, q, -n, kMaxReach * r), line.bottom, line.bottomFace);
   return line;
 }
 
@@ -141,15 +143,15 @@ std::size_t projectRim(HexMesh& mesh, const WallProjector& walls, double thickne
   std::size_t moved = 0;
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
     if (!mesh.nodeOnRim[i]) continue;
-    const std::optional<Vec3> p = walls.project(Side::Lateral, mesh.nodes[i]);
-    if (!p || (*p - mesh.nodes[i]).norm() >= 0.5 * thickness) continue;
+    const std::optional<FacePoint> p = walls.project(Side::Lateral, mesh.nodes[i]);
+    if (!p || (p->point - mesh.nodes[i]).norm() >= 0.5 * thickness) continue;
     const Vec3 at = mesh.nodes[i];
     const std::vector<double> before = around(i);
-    mesh.nodes[i] = *p;
+    mesh.nodes[i] = p->point;
     const std::vector<double> after = around(i);
     bool spoils = false;
     for (std::size_t k = 0; k < after.size(); ++k) spoils |= after[k] < 0.2 && after[k] < before[k];
-    if (spoils) mesh.nodes[i] = at; else ++moved;
+    if (spoils) mesh.nodes[i] = at; else ++moved, mesh.nodeFace[i] = p->face;
   }
   return moved;
 }
@@ -158,6 +160,7 @@ std::size_t projectRim(HexMesh& mesh, const WallProjector& walls, double thickne
 nlohmann::json makeQuadratic(HexMesh& mesh, const WallProjector& walls) {
   const QuadraticStats s = addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) { return walls.project(side, p); });
   return {{"mid_edge_nodes", s.midNodes}, {"wall_mid_edge_nodes", s.wallNodes}, {"projected_onto_cad", s.projected},
+          {"rim_mid_edge_nodes", s.rimNodes}, {"rim_projected_onto_lateral_faces", s.rimProjected},
           {"max_projection_move", s.maxProjectionMove}};
 }
 
@@ -205,12 +208,24 @@ std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
   return sets;
 }
 
+// The mesh's boundary on the CAD faces (FreeCAD's FaceN): surface groups and boundary deviation in the report.
+std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, const WallProjector& walls, nlohmann::json& r) {
+  const std::vector<int> boundary = boundaryNodes(mesh);
+  const std::size_t unplaced = faceUnplacedNodes(mesh, walls, boundary);
+  SurfaceGroups s = surfaceGroups(mesh, CadFaces(cad), boundary);
+  r["surface_groups"] = std::move(s.surfaceReport);
+  r["surface_groups"]["nodes_not_put_on_cad"] = unplaced;
+  r["boundary_deviation"] = std::move(s.deviationReport);
+  return std::move(s.groups);
+}
+
 void append(HexMesh& all, const HexMesh& part) {
   const int offset = static_cast<int>(all.nodes.size());
   all.layers = part.layers;
   all.nodes.insert(all.nodes.end(), part.nodes.begin(), part.nodes.end());
   all.nodeLayer.insert(all.nodeLayer.end(), part.nodeLayer.begin(), part.nodeLayer.end());
   all.nodeOnRim.insert(all.nodeOnRim.end(), part.nodeOnRim.begin(), part.nodeOnRim.end());
+  all.nodeFace.insert(all.nodeFace.end(), part.nodeFace.begin(), part.nodeFace.end());
   for (auto h : part.hexes) {
     for (int& v : h) v += offset;
     all.hexes.push_back(h);
@@ -301,6 +316,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   compareTopology(r, eulerCharacteristic(cad));
   if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);
   result.nodeSets = surfaceNodeSets(result.mesh);
+  result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   return result;
 }
 
@@ -315,6 +331,8 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
     MeshResult one = meshSolid(solids[i], o);
     cad += one.report["volume"]["cad"].get<double>();
     all.report["solids"].push_back(one.report);
+    appendSurfaceGroups(all.surfaceGroups, one.surfaceGroups, static_cast<int>(all.mesh.nodes.size()),
+                        static_cast<int>(all.mesh.hexes.size()));
     append(all.mesh, one.mesh);
   }
   all.scaledJacobian = reportQuality(all.mesh, cad, all.report);

@@ -25,6 +25,7 @@ struct MeshOptions {
 struct MeshResult {
   HexMesh mesh;                  // all solids of the input, one conformal mesh per solid
   std::vector<NodeSet> nodeSets; // TOP, BOTTOM, RIM
+  std::vector<SurfaceGroup> surfaceGroups;  // one per CAD face, Face1..FaceN as FreeCAD numbers them
   nlohmann::json report;         // numbers of every stage, see README "Report"
   std::vector<double> scaledJacobian;  // per hex, as measured for the report
 };

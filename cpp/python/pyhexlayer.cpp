@@ -64,6 +64,8 @@ struct PyMeshResult {
   py::array_t<long long> hexes;         // (M, 8) or (M, 20), 0-based: 8 corners, then 12 mid-edge nodes (C3D20)
   py::array_t<double> scaledJacobian;   // (M,)
   py::dict nodeSets;                    // name -> node ids (0-based)
+  py::dict faceNodes;                   // "FaceN" -> ids of the boundary nodes on CAD face N (0-based)
+  py::dict faceElements;                // "FaceN" -> (K, 2): hex (0-based), local face 0..5 (CalculiX S1..S6)
   py::dict report;
 };
 
@@ -100,6 +102,13 @@ PyMeshResult toPython(const hexlayer::MeshResult& r) {
   p.scaledJacobian = vectorArray(r.scaledJacobian);
   for (const hexlayer::NodeSet& set : r.nodeSets)
     p.nodeSets[py::str(set.name)] = vectorArray(std::vector<long long>(set.nodes.begin(), set.nodes.end()));
+  for (const hexlayer::SurfaceGroup& g : r.surfaceGroups) {
+    p.faceNodes[py::str(g.name)] = vectorArray(std::vector<long long>(g.nodes.begin(), g.nodes.end()));
+    py::array_t<long long> faces({static_cast<py::ssize_t>(g.hexFaces.size()), py::ssize_t(2)});
+    auto v = faces.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < g.hexFaces.size(); ++i) v(i, 0) = g.hexFaces[i].hex, v(i, 1) = g.hexFaces[i].localFace;
+    p.faceElements[py::str(g.name)] = faces;
+  }
   p.report = toPython(r.report);
   return p;
 }
@@ -247,6 +256,12 @@ PYBIND11_MODULE(pyhexlayer, m) {
                     "them, then the 12 mid-edge nodes in C3D20 order (see the module doc)")
       .def_readonly("scaled_jacobian", &PyMeshResult::scaledJacobian, "float64 (M,) Verdict scaled Jacobian per hex")
       .def_readonly("node_sets", &PyMeshResult::nodeSets, "dict: 'TOP', 'BOTTOM', 'RIM' -> int64 node ids (0-based)")
+      .def_readonly("face_nodes", &PyMeshResult::faceNodes,
+                    "dict: 'Face1'..'FaceN' (FreeCAD's numbering of the CAD faces) -> int64 ids (0-based) of the "
+                    "boundary nodes on that face; a node on a CAD edge is on every face there")
+      .def_readonly("face_elements", &PyMeshResult::faceElements,
+                    "dict: 'Face1'..'FaceN' -> int64 (K, 2): hex row (0-based) and its local face 0..5 on that CAD "
+                    "face (0 bottom 0-3-2-1, 1 top 4-5-6-7, 2..5 sides 0-1-5-4 .. 3-0-4-7: CalculiX S1..S6)")
       .def_readonly("report", &PyMeshResult::report, "dict: the CLI's JSON report")
       .def("__repr__", [](const PyMeshResult& r) {
         return "<pyhexlayer.MeshResult " + std::to_string(r.hexes.shape(0)) + " hexes, " +

@@ -77,35 +77,47 @@ std::vector<char> rimEdges(const HexMesh& mesh, const EdgeTable& t) {
   return rim;
 }
 
+// `at` projected onto the `side` faces if that moves it less than kMaxWallMove edge lengths, else `at`.
+FacePoint projectIfClose(const FacePoint& at, double edgeLength, Side side, const WallProjection& project,
+                         std::size_t& projected, double& maxMove) {
+  const std::optional<FacePoint> onCad = project(side, at.point);
+  if (!onCad) return at;
+  const double move = (onCad->point - at.point).norm();
+  if (move > kMaxWallMove * edgeLength) return at;
+  ++projected;
+  maxMove = std::max(maxMove, move);
+  return *onCad;
+}
+
 // Mid-edge node of a top or bottom wall edge: the midpoint, projected onto that wall if the move is small enough.
-Vec3 wallMidNode(const Vec3& a, const Vec3& b, Side side, const WallProjection& project, QuadraticStats& stats) {
-  const Vec3 mid = 0.5 * (a + b);
+FacePoint wallMidNode(const Vec3& a, const Vec3& b, Side side, const WallProjection& project, QuadraticStats& stats) {
   ++stats.wallNodes;
-  const std::optional<Vec3> onWall = project(side, mid);
-  if (!onWall) return mid;
-  const double move = (*onWall - mid).norm();
-  if (move > kMaxWallMove * (b - a).norm()) return mid;
-  ++stats.projected;
-  stats.maxProjectionMove = std::max(stats.maxProjectionMove, move);
-  return *onWall;
+  return projectIfClose(FacePoint{0.5 * (a + b), -1}, (b - a).norm(), side, project, stats.projected, stats.maxProjectionMove);
 }
 
 struct MidEdgeNodes {
   std::vector<Vec3> position;
   std::vector<int> layer;  // the layer of an in-plane edge, -1 for a sweep edge
+  std::vector<int> face;   // the CAD face a wall node was projected onto, else -1
 };
 
-// Places the node of every edge: sweep and wall edges first, as inner-layer edges interpolate the walls'.
-MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const WallProjection& project, QuadraticStats& stats) {
+// Places the node of every edge: sweep and wall edges first, as inner-layer edges interpolate the walls';
+// then the nodes of rim edges onto the lateral faces (a rim wall edge's node, on the wall already, then
+// lies on the CAD edge between the wall and the lateral face).
+MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const std::vector<char>& rim,
+                               const WallProjection& project, QuadraticStats& stats) {
   const SweepColumns col = sweepColumns(mesh);
-  MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size())};
+  MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size()), std::vector<int>(t.edges.size(), -1)};
   auto isWall = [&](int layer) { return layer == 0 || layer == mesh.layers; };
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [a, b] = t.edges[e];
     const int ka = mesh.nodeLayer[a], kb = mesh.nodeLayer[b];
     mid.layer[e] = ka == kb ? ka : -1;
     if (ka != kb) mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
-    else if (isWall(ka)) mid.position[e] = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
+    else if (isWall(ka)) {
+      const FacePoint p = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
+      mid.position[e] = p.point, mid.face[e] = p.face;
+    }
   }
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [a, b] = t.edges[e];
@@ -113,6 +125,14 @@ MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const Wa
     const Vec3& below = mid.position[t.index.at(edgeKey(col.bottom[a], col.bottom[b]))];
     const Vec3& above = mid.position[t.index.at(edgeKey(col.top[a], col.top[b]))];
     mid.position[e] = below + 0.5 * (col.fraction[a] + col.fraction[b]) * (above - below);
+  }
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    if (!rim[e]) continue;
+    const auto [a, b] = t.edges[e];
+    ++stats.rimNodes;
+    const FacePoint p = projectIfClose({mid.position[e], mid.face[e]}, (mesh.nodes[b] - mesh.nodes[a]).norm(), Side::Lateral,
+                                       project, stats.rimProjected, stats.maxProjectionMove);
+    mid.position[e] = p.point, mid.face[e] = p.face;
   }
   return mid;
 }
@@ -126,12 +146,13 @@ QuadraticStats addMidEdgeNodes(HexMesh& mesh, const WallProjection& project) {
   const EdgeTable t = collectEdges(mesh);
   QuadraticStats stats;
   stats.midNodes = t.edges.size();
-  const MidEdgeNodes mid = placeMidEdgeNodes(mesh, t, project, stats);
   const std::vector<char> rim = rimEdges(mesh, t);
+  const MidEdgeNodes mid = placeMidEdgeNodes(mesh, t, rim, project, stats);
   const int corners = static_cast<int>(mesh.nodes.size());
   mesh.nodes.insert(mesh.nodes.end(), mid.position.begin(), mid.position.end());
   mesh.nodeLayer.insert(mesh.nodeLayer.end(), mid.layer.begin(), mid.layer.end());
   mesh.nodeOnRim.insert(mesh.nodeOnRim.end(), rim.begin(), rim.end());
+  if (mesh.nodeFace.size() == static_cast<std::size_t>(corners)) mesh.nodeFace.insert(mesh.nodeFace.end(), mid.face.begin(), mid.face.end());
   mesh.midEdges = t.ofHex;
   for (auto& hex : mesh.midEdges)
     for (int& e : hex) e += corners;

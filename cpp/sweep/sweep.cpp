@@ -18,6 +18,7 @@ HexMesh layeredHexes(const QuadMesh& q, const std::vector<SweepDirection>& dir, 
   mesh.nodes.assign(q.nodes.size() * stride, Vec3::Zero());
   mesh.nodeLayer.resize(mesh.nodes.size());
   mesh.nodeOnRim.resize(mesh.nodes.size());
+  mesh.nodeFace.assign(mesh.nodes.size(), -1);
   for (size_t i = 0; i < q.nodes.size(); ++i)
     for (int k = 0; k <= m; ++k) {
       mesh.nodeLayer[i * stride + k] = k;
@@ -43,6 +44,8 @@ void placeSweepLine(HexMesh& mesh, const Vec3& q, int i, const Vec3& normal, dou
   const SweepLine line = walls(q, normal, radius);
   const int stride = static_cast<int>(offsets.size());
   for (int k = 0; k < stride; ++k) mesh.nodes[i * stride + k] = layerNode(q, line, offsets[k]);
+  mesh.nodes[i * stride] = line.bottom, mesh.nodes[i * stride + stride - 1] = line.top;  // exactly on the walls
+  mesh.nodeFace[i * stride] = line.bottomFace, mesh.nodeFace[i * stride + stride - 1] = line.topFace;
 }
 
 double columnQuality(const HexMesh& mesh, int quad) {
@@ -72,7 +75,7 @@ std::vector<double> layerOffsets(int m) {
   return offsets;
 }
 
-SweepLine radiusSweepLine(const Vec3& q, const Vec3& n, double r) { return {q - r * n, q + r * n}; }
+SweepLine radiusSweepLine(const Vec3& q, const Vec3& n, double r) { return {q - r * n, q + r * n, -1, -1}; }
 
 Vec3 layerNode(const Vec3& q, const SweepLine& line, double t) {
   return t >= 0 ? Vec3(q + t * (line.top - q)) : Vec3(q - t * (line.bottom - q));

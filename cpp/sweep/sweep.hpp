@@ -24,9 +24,11 @@ SweepDirection interpolateSweep(const ChordalSurface& chordal, const ChordalPoin
 // both are q + n̄ s (k - m/2), k = 0..m, with step s = 2r/m.
 std::vector<double> layerOffsets(int layers);
 
-// The ends of a quad node's sweep line: its images π_b(q) on the bottom and π_t(q) on the top wall (§3).
+// The ends of a quad node's sweep line: its images π_b(q) on the bottom and π_t(q) on the top wall (§3),
+// and the CAD faces they lie on (-1: an end not on the CAD). The hex nodes at the ends inherit the faces.
 struct SweepLine {
   Vec3 bottom, top;
+  int bottomFace = -1, topFace = -1;
 };
 
 // Where the sweep line of chordal point q, swept along the unit vector n with radius r, meets the walls.

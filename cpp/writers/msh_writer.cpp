@@ -1,5 +1,6 @@
 // Gmsh 4.1 ASCII. Volume entity 1 holds every node and hex; the boundary quads are split into
-// surface entities "top", "bottom", "rim", each its own physical group. Gmsh's 8-node hex order is
+// surface entities, one per CAD face (physical groups FaceN and top/bottom/rim) or, without surface
+// groups, "top", "bottom", "rim". Gmsh's 8-node hex order is
 // HexMesh's; its 20-node hex lists the mid-edge nodes in another edge order (kGmshHexEdges).
 #include <algorithm>
 #include <array>
@@ -14,27 +15,16 @@ constexpr int kGmshQuad = 3, kGmshHex = 5, kGmshQuad8 = 16, kGmshHex20 = 17;
 // Gmsh's 20-node hex (type 17) mid-edge nodes 8..19 are on edges 0-1, 0-3, 0-4, 1-2, 1-5, 2-3,
 // 2-6, 3-7, 4-5, 4-7, 5-6, 6-7: here as indices into kHexEdges.
 constexpr std::array<int, 12> kGmshHexEdges = {0, 3, 8, 1, 9, 2, 10, 11, 4, 7, 5, 6};
-constexpr int kSolidPhysical = 4;  // physical tags 1..3 are the surfaces, so every tag is unique
+constexpr int kSolidPhysical = 4;  // physical tags 1..3 are "top", "bottom", "rim", 5.. the CAD faces: every tag is unique
 const std::array<const char*, 3> kSurfaceNames = {"top", "bottom", "rim"};
 
-// Boundary quads of each surface (index = surface tag - 1): 4 corners, then for 20-node hexes the
-// mid-edge nodes of the quad's edges 0-1, 1-2, 2-3, 3-0 (Gmsh's 8-node quad, type 16).
-using SurfaceQuads = std::array<std::vector<std::vector<int>>, 3>;
-
-// Index into kHexEdges of the edge between local corners a and b.
-int hexEdge(int a, int b) {
-  for (int e = 0; e < 12; ++e)
-    if (std::minmax(a, b) == std::minmax(kHexEdges[e][0], kHexEdges[e][1])) return e;
-  return -1;
-}
-
-std::vector<int> quadNodes(const HexMesh& mesh, const BoundaryFace& f) {
-  std::vector<int> nodes(f.nodes.begin(), f.nodes.end());
-  if (!mesh.quadratic()) return nodes;
-  const std::array<int, 4>& local = kHexFaces[f.localFace];
-  for (int i = 0; i < 4; ++i) nodes.push_back(mesh.midEdges[f.hex][hexEdge(local[i], local[(i + 1) % 4])]);
-  return nodes;
-}
+// One surface entity: boundary quads (4 corners, then for 20-node hexes the mid-edge nodes of the
+// quad's edges, Gmsh's 8-node quad), their class (0 top, 1 bottom, 2 rim) and the CAD face, if any.
+struct Patch {
+  std::string cadFace;  // "FaceN", or empty without surface groups
+  int surfaceClass = 2;
+  std::vector<std::vector<int>> quads;
+};
 
 int surfaceOf(const HexMesh& mesh, const std::array<int, 4>& quad) {
   if (mesh.nodeLayer.size() != mesh.nodes.size()) return 2;
@@ -46,17 +36,39 @@ int surfaceOf(const HexMesh& mesh, const std::array<int, 4>& quad) {
   return all(mesh.layers) ? 0 : all(0) ? 1 : 2;
 }
 
-SurfaceQuads splitBoundary(const HexMesh& mesh) {
-  SurfaceQuads s;
-  for (const BoundaryFace& f : boundaryFaces(mesh)) s[surfaceOf(mesh, f.nodes)].push_back(quadNodes(mesh, f));
-  return s;
+BoundaryFace boundaryFace(const HexMesh& mesh, const HexFace& f) {
+  BoundaryFace b{{}, f.hex, f.localFace};
+  for (int i = 0; i < 4; ++i) b.nodes[i] = mesh.hexes[f.hex][kHexFaces[f.localFace][i]];
+  return b;
 }
 
-std::vector<int> nonEmptySurfaceTags(const SurfaceQuads& s) {
-  std::vector<int> tags;
-  for (int i = 0; i < 3; ++i)
-    if (!s[i].empty()) tags.push_back(i + 1);
-  return tags;
+// Without surface groups: the boundary split into top, bottom and rim by nodeLayer.
+std::vector<Patch> classPatches(const HexMesh& mesh) {
+  std::vector<Patch> byClass(3);
+  for (int c = 0; c < 3; ++c) byClass[c].surfaceClass = c;
+  for (const BoundaryFace& f : boundaryFaces(mesh)) byClass[surfaceOf(mesh, f.nodes)].quads.push_back(boundaryFaceNodes(mesh, f));
+  std::vector<Patch> patches;
+  for (Patch& p : byClass)
+    if (!p.quads.empty()) patches.push_back(std::move(p));
+  return patches;
+}
+
+// With surface groups: one patch per CAD face with mesh faces, in the class most of its quads have.
+std::vector<Patch> facePatches(const HexMesh& mesh, const std::vector<SurfaceGroup>& surfaces) {
+  std::vector<Patch> patches;
+  for (const SurfaceGroup& g : surfaces) {
+    if (g.hexFaces.empty()) continue;
+    Patch p{g.name, 0, {}};
+    std::array<int, 3> votes{};
+    for (const HexFace& f : g.hexFaces) {
+      const BoundaryFace b = boundaryFace(mesh, f);
+      ++votes[surfaceOf(mesh, b.nodes)];
+      p.quads.push_back(boundaryFaceNodes(mesh, b));
+    }
+    p.surfaceClass = static_cast<int>(std::max_element(votes.begin(), votes.end()) - votes.begin());
+    patches.push_back(std::move(p));
+  }
+  return patches;
 }
 
 // Axis-aligned bounding box, written as "minX minY minZ maxX maxY maxZ " (zeros if empty).
@@ -81,28 +93,49 @@ std::string quoted(std::string name) {
   return "\"" + name + "\"";
 }
 
-void writePhysicalNames(std::ostream& out, const std::vector<int>& surfaces) {
-  out << "$PhysicalNames\n" << surfaces.size() + 1 << "\n";
-  for (int t : surfaces) out << "2 " << t << " \"" << kSurfaceNames[t - 1] << "\"\n";
+// Physical tag of patch i's CAD face.
+int facePhysical(std::size_t i) { return kSolidPhysical + 1 + static_cast<int>(i); }
+
+std::vector<int> usedClasses(const std::vector<Patch>& patches) {
+  std::vector<int> classes;
+  for (int c = 0; c < 3; ++c)
+    for (const Patch& p : patches)
+      if (p.surfaceClass == c) {
+        classes.push_back(c);
+        break;
+      }
+  return classes;
+}
+
+void writePhysicalNames(std::ostream& out, const std::vector<Patch>& patches) {
+  const std::vector<int> classes = usedClasses(patches);
+  std::size_t faces = 0;
+  for (const Patch& p : patches) faces += !p.cadFace.empty();
+  out << "$PhysicalNames\n" << classes.size() + faces + 1 << "\n";
+  for (int c : classes) out << "2 " << c + 1 << " \"" << kSurfaceNames[c] << "\"\n";
+  for (std::size_t i = 0; i < patches.size(); ++i)
+    if (!patches[i].cadFace.empty()) out << "2 " << facePhysical(i) << " " << quoted(patches[i].cadFace) << "\n";
   out << "3 " << kSolidPhysical << " \"solid\"\n$EndPhysicalNames\n";
 }
 
-void writeEntities(std::ostream& out, const HexMesh& mesh, const SurfaceQuads& quads, const std::vector<int>& surfaces) {
-  out << "$Entities\n0 0 " << surfaces.size() << " 1\n";
-  for (int t : surfaces) {
+// Surface entity i + 1 per patch, in its class's physical group and its CAD face's.
+void writeEntities(std::ostream& out, const HexMesh& mesh, const std::vector<Patch>& patches) {
+  out << "$Entities\n0 0 " << patches.size() << " 1\n";
+  for (std::size_t i = 0; i < patches.size(); ++i) {
     Box box;
-    for (const auto& q : quads[t - 1])
+    for (const auto& q : patches[i].quads)
       for (int n : q) box.add(mesh.nodes[n]);
-    out << t << " ";
+    out << i + 1 << " ";
     writeBox(out, box);
-    out << "1 " << t << " 0\n";
+    if (patches[i].cadFace.empty()) out << "1 " << patches[i].surfaceClass + 1 << " 0\n";
+    else out << "2 " << patches[i].surfaceClass + 1 << " " << facePhysical(i) << " 0\n";
   }
   Box box;
   for (const Vec3& p : mesh.nodes) box.add(p);
   out << "1 ";
   writeBox(out, box);
-  out << "1 " << kSolidPhysical << " " << surfaces.size();
-  for (int t : surfaces) out << " " << t;
+  out << "1 " << kSolidPhysical << " " << patches.size();
+  for (std::size_t i = 0; i < patches.size(); ++i) out << " " << i + 1;
   out << "\n$EndEntities\n";
 }
 
@@ -131,17 +164,17 @@ void writeElement(std::ostream& out, std::size_t tag, const std::vector<int>& no
   out << "\n";
 }
 
-// Hexes get tags 1..H (as in the .inp), then the quads of each surface in turn.
-void writeElements(std::ostream& out, const HexMesh& mesh, const SurfaceQuads& quads, const std::vector<int>& surfaces) {
+// Hexes get tags 1..H (as in the .inp), then the quads of each patch in turn.
+void writeElements(std::ostream& out, const HexMesh& mesh, const std::vector<Patch>& patches) {
   std::size_t total = mesh.hexes.size();
-  for (int t : surfaces) total += quads[t - 1].size();
-  out << "$Elements\n" << surfaces.size() + 1 << " " << total << " " << (total ? 1 : 0) << " " << total << "\n";
+  for (const Patch& p : patches) total += p.quads.size();
+  out << "$Elements\n" << patches.size() + 1 << " " << total << " " << (total ? 1 : 0) << " " << total << "\n";
   out << "3 1 " << (mesh.quadratic() ? kGmshHex20 : kGmshHex) << " " << mesh.hexes.size() << "\n";
   std::size_t tag = 0;
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) writeElement(out, ++tag, gmshHexNodes(mesh, h));
-  for (int t : surfaces) {
-    out << "2 " << t << " " << (mesh.quadratic() ? kGmshQuad8 : kGmshQuad) << " " << quads[t - 1].size() << "\n";
-    for (const auto& q : quads[t - 1]) writeElement(out, ++tag, q);
+  for (std::size_t i = 0; i < patches.size(); ++i) {
+    out << "2 " << i + 1 << " " << (mesh.quadratic() ? kGmshQuad8 : kGmshQuad) << " " << patches[i].quads.size() << "\n";
+    for (const auto& q : patches[i].quads) writeElement(out, ++tag, q);
   }
   out << "$EndElements\n";
 }
@@ -155,15 +188,14 @@ void writeElementData(std::ostream& out, const CellField& f) {
 
 }  // namespace
 
-void writeMsh(std::ostream& out, const HexMesh& mesh, const std::vector<CellField>& cellFields) {
-  const SurfaceQuads quads = splitBoundary(mesh);
-  const std::vector<int> surfaces = nonEmptySurfaceTags(quads);
+void writeMsh(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups) {
+  const std::vector<Patch> patches = groups.surfaces.empty() ? classPatches(mesh) : facePatches(mesh, groups.surfaces);
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-  writePhysicalNames(out, surfaces);
-  writeEntities(out, mesh, quads, surfaces);
+  writePhysicalNames(out, patches);
+  writeEntities(out, mesh, patches);
   writeNodes(out, mesh);
-  writeElements(out, mesh, quads, surfaces);
-  for (const CellField& f : cellFields) writeElementData(out, f);
+  writeElements(out, mesh, patches);
+  for (const CellField& f : groups.cellFields) writeElementData(out, f);
 }
 
 }  // namespace hexlayer

@@ -34,9 +34,18 @@ void writeValues(std::ostream& out, std::size_t n, Value&& value) {
   out << "</DataArray>\n";
 }
 
-void writePointData(std::ostream& out, const HexMesh& mesh, const std::vector<NodeSet>& nodeSets) {
+// N of the first surface group FaceN (in the groups' order) holding each node, 0 for none.
+std::vector<int> cadFaceOfNodes(const HexMesh& mesh, const std::vector<SurfaceGroup>& surfaces) {
+  std::vector<int> face(mesh.nodes.size(), 0);
+  for (std::size_t g = surfaces.size(); g-- > 0;)
+    for (int n : surfaces[g].nodes) face[n] = static_cast<int>(g) + 1;
+  return face;
+}
+
+void writePointData(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups) {
+  const std::vector<NodeSet>& nodeSets = groups.nodeSets;
   const bool layers = mesh.nodeLayer.size() == mesh.nodes.size();
-  if (!layers && nodeSets.empty()) return;
+  if (!layers && nodeSets.empty() && groups.surfaces.empty()) return;
   out << "<PointData>\n";
   if (layers) {
     openArray(out, "Int32", "layer");
@@ -48,6 +57,11 @@ void writePointData(std::ostream& out, const HexMesh& mesh, const std::vector<No
     for (int n : s.nodes) member[n] = 1;
     openArray(out, "Int32", s.name);
     writeValues(out, member.size(), [&](std::size_t i) { return member[i]; });
+  }
+  if (!groups.surfaces.empty()) {
+    const std::vector<int> face = cadFaceOfNodes(mesh, groups.surfaces);
+    openArray(out, "Int32", "cad_face");
+    writeValues(out, face.size(), [&](std::size_t i) { return face[i]; });
   }
   out << "</PointData>\n";
 }
@@ -88,14 +102,13 @@ void writeCells(std::ostream& out, const HexMesh& mesh) {
 
 }  // namespace
 
-void writeVtu(std::ostream& out, const HexMesh& mesh, const std::vector<NodeSet>& nodeSets,
-              const std::vector<CellField>& cellFields) {
+void writeVtu(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups) {
   out << "<?xml version=\"1.0\"?>\n";
   out << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
   out << "<UnstructuredGrid>\n";
   out << "<Piece NumberOfPoints=\"" << mesh.nodes.size() << "\" NumberOfCells=\"" << mesh.hexes.size() << "\">\n";
-  writePointData(out, mesh, nodeSets);
-  writeCellData(out, cellFields);
+  writePointData(out, mesh, groups);
+  writeCellData(out, groups.cellFields);
   writePoints(out, mesh);
   writeCells(out, mesh);
   out << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";

@@ -19,7 +19,21 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-void checkFits(const HexMesh& mesh, const std::vector<NodeSet>& nodeSets, const std::vector<CellField>& cellFields) {
+void checkSurfaces(const HexMesh& mesh, const std::vector<SurfaceGroup>& surfaces) {
+  for (const SurfaceGroup& g : surfaces) {
+    for (int n : g.nodes)
+      if (n < 0 || static_cast<std::size_t>(n) >= mesh.nodes.size())
+        throw Error(ExitCode::Internal, "surface group '" + g.name + "' has node " + std::to_string(n) + " out of range");
+    for (const HexFace& f : g.hexFaces)
+      if (f.hex < 0 || static_cast<std::size_t>(f.hex) >= mesh.hexes.size() || f.localFace < 0 || f.localFace > 5)
+        throw Error(ExitCode::Internal, "surface group '" + g.name + "' has a face of hex " + std::to_string(f.hex) + " out of range");
+  }
+}
+
+void checkFits(const HexMesh& mesh, const MeshGroups& groups) {
+  const std::vector<NodeSet>& nodeSets = groups.nodeSets;
+  const std::vector<CellField>& cellFields = groups.cellFields;
+  checkSurfaces(mesh, groups.surfaces);
   if (mesh.quadratic() && mesh.midEdges.size() != mesh.hexes.size())
     throw Error(ExitCode::Internal, "mid-edge nodes of " + std::to_string(mesh.midEdges.size()) + " hexes for " +
                                         std::to_string(mesh.hexes.size()) + " hexes");
@@ -33,7 +47,22 @@ void checkFits(const HexMesh& mesh, const std::vector<NodeSet>& nodeSets, const 
         throw Error(ExitCode::Internal, "node set '" + s.name + "' has node " + std::to_string(n) + " out of range");
 }
 
+// Index into kHexEdges of the edge between local corners a and b.
+int hexEdge(int a, int b) {
+  for (int e = 0; e < 12; ++e)
+    if (std::minmax(a, b) == std::minmax(kHexEdges[e][0], kHexEdges[e][1])) return e;
+  return -1;
+}
+
 }  // namespace
+
+std::vector<int> boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& f) {
+  std::vector<int> nodes(f.nodes.begin(), f.nodes.end());
+  if (!mesh.quadratic()) return nodes;
+  const std::array<int, 4>& local = kHexFaces[f.localFace];
+  for (int i = 0; i < 4; ++i) nodes.push_back(mesh.midEdges[f.hex][hexEdge(local[i], local[(i + 1) % 4])]);
+  return nodes;
+}
 
 std::vector<int> elementNodes(const HexMesh& mesh, std::size_t h) {
   std::vector<int> ids(mesh.hexes[h].begin(), mesh.hexes[h].end());
@@ -47,17 +76,16 @@ std::string formatDouble(double v) {
   return std::string(buf, r.ptr);
 }
 
-void writeMesh(const std::string& path, const HexMesh& mesh, const std::vector<NodeSet>& nodeSets,
-               const std::vector<CellField>& cellFields) {
+void writeMesh(const std::string& path, const HexMesh& mesh, const MeshGroups& groups) {
   const std::string ext = lowerExtension(path);
   if (ext != ".inp" && ext != ".vtu" && ext != ".msh")
     throw usageError("unknown output format '" + ext + "' of '" + path + "': use .inp, .vtu or .msh");
-  checkFits(mesh, nodeSets, cellFields);
+  checkFits(mesh, groups);
   std::ofstream out(path);
   if (!out) throw inputError("cannot open the output file '" + path + "' for writing");
-  if (ext == ".inp") writeInp(out, mesh, nodeSets);
-  if (ext == ".vtu") writeVtu(out, mesh, nodeSets, cellFields);
-  if (ext == ".msh") writeMsh(out, mesh, cellFields);
+  if (ext == ".inp") writeInp(out, mesh, groups);
+  if (ext == ".vtu") writeVtu(out, mesh, groups);
+  if (ext == ".msh") writeMsh(out, mesh, groups);
   out.close();
   if (!out) throw inputError("failed writing the output file '" + path + "'");
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "quality/quality.hpp"
 
 namespace hexlayer {
 
@@ -14,26 +15,40 @@ struct CellField {
   std::vector<double> values;
 };
 
+// What is written besides the mesh: node sets (TOP, BOTTOM, RIM), surface groups (one per CAD face)
+// and cell fields. Any of them may be empty.
+struct MeshGroups {
+  std::vector<NodeSet> nodeSets;
+  std::vector<SurfaceGroup> surfaces;
+  std::vector<CellField> cellFields;
+};
+
 // Writes the mesh in the format of the path's extension (.inp, .vtu, .msh, any case).
 // Throws usageError for an unknown extension, inputError if the file cannot be written,
-// Error(Internal) if a cell field or node set does not fit the mesh.
-void writeMesh(const std::string& path, const HexMesh& mesh, const std::vector<NodeSet>& nodeSets,
-               const std::vector<CellField>& cellFields = {});
+// Error(Internal) if a cell field, node set or surface group does not fit the mesh.
+void writeMesh(const std::string& path, const HexMesh& mesh, const MeshGroups& groups);
 
 // CalculiX/Abaqus: *NODE (NSET=NALL), *ELEMENT TYPE=C3D8I (C3D20R for 20-node hexes) ELSET=EALL,
-// one *NSET per node set.
-void writeInp(std::ostream& out, const HexMesh& mesh, const std::vector<NodeSet>& nodeSets);
+// one *NSET per node set; per non-empty surface group FaceN an *NSET FACEN of its nodes and an
+// element-face *SURFACE FACEN_S (lines "element, Sk", k = localFace + 1: CalculiX's S1..S6).
+void writeInp(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 
-// VTK XML UnstructuredGrid (VTK_HEXAHEDRON = 12, VTK_QUADRATIC_HEXAHEDRON = 25): point data "layer"
-// and one 0/1 array per node set, cell data per field.
-void writeVtu(std::ostream& out, const HexMesh& mesh, const std::vector<NodeSet>& nodeSets,
-              const std::vector<CellField>& cellFields);
+// VTK XML UnstructuredGrid (VTK_HEXAHEDRON = 12, VTK_QUADRATIC_HEXAHEDRON = 25): point data "layer",
+// one 0/1 array per node set and, with surface groups, "cad_face": N of the node's first group FaceN
+// (the lowest N; a node on a CAD edge is in several groups), 0 for a node on no face; cell data per field.
+void writeVtu(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 
-// Gmsh 4.1: volume 1 ("solid") with the hexes (type 5, or 17 with 20 nodes), boundary quads (type 3,
-// or 16 with 8 nodes) in surfaces "top", "bottom", "rim" (by nodeLayer; all "rim" if nodeLayer is
-// not sized), cell fields as $ElementData.
-// Node sets are not written: the surface physical groups carry the same information.
-void writeMsh(std::ostream& out, const HexMesh& mesh, const std::vector<CellField>& cellFields);
+// Gmsh 4.1: volume 1 ("solid") with the hexes (type 5, or 17 with 20 nodes) and the boundary quads
+// (type 3, or 16 with 8 nodes). With surface groups, one surface entity per meshed CAD face, in a
+// physical group named FaceN, each also in one of the physical groups "top", "bottom", "rim" (the
+// class most of its quads have by nodeLayer); without, three surfaces "top", "bottom", "rim" (all
+// "rim" if nodeLayer is not sized). Cell fields as $ElementData. Node sets are not written: the
+// surface physical groups carry the same information.
+void writeMsh(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
+
+// Node ids of a boundary face: its 4 corners (outward, kHexFaces order), then for 20-node hexes the
+// mid-edge nodes of its edges 0-1, 1-2, 2-3, 3-0 (Gmsh's 8-node quad, type 16).
+std::vector<int> boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& face);
 
 // Node ids of hex h in CalculiX C3D8/C3D20 order (= VTK's): the 8 corners, then for a 20-node hex
 // its 12 mid-edge nodes (kHexEdges order).

@@ -40,7 +40,7 @@ std::size_t edgeCount(int nx, int ny, int m) {
   return static_cast<std::size_t>((m + 1) * (nx * (ny + 1) + ny * (nx + 1)) + m * (nx + 1) * (ny + 1));
 }
 
-std::optional<Vec3> keep(Side, const Vec3& p) { return p; }
+std::optional<FacePoint> keep(Side, const Vec3& p) { return FacePoint{p, -1}; }
 
 // An affine map of space (shear, stretch, shift): edges stay straight and midpoints stay midpoints.
 Vec3 affine(const Vec3& p) {
@@ -114,11 +114,13 @@ TEST(Quadratic, LayerAndRimOfMidEdgeNodes) {
 
 TEST(Quadratic, ProjectionIsAskedForWallEdgesOnlyAndInnerLayersFollow) {
   HexMesh mesh = block(2, 2, 2, {0, 1, 2});
+  mesh.nodeFace.assign(mesh.nodes.size(), -1);
   std::vector<std::pair<Side, Vec3>> asked;
   const Vec3 lift(0, 0, 0.1), drop(0, 0, -0.2);  // both within a quarter of the unit edges
-  addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) -> std::optional<Vec3> {
+  addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) -> std::optional<FacePoint> {
+    if (side == Side::Lateral) return std::nullopt;  // rim nodes: see the next test
     asked.emplace_back(side, p);
-    return p + (side == Side::Top ? lift : drop);
+    return FacePoint{p + (side == Side::Top ? lift : drop), side == Side::Top ? 7 : 3};
   });
   ASSERT_EQ(asked.size(), 24u);  // 12 in-plane edges on each wall
   for (const auto& [side, p] : asked) EXPECT_EQ(p.z(), side == Side::Top ? 2.0 : 0.0);
@@ -127,8 +129,31 @@ TEST(Quadratic, ProjectionIsAskedForWallEdgesOnlyAndInnerLayersFollow) {
     const double z = mesh.nodes[i].z();
     if (k == 2) EXPECT_DOUBLE_EQ(z, 2.1);
     if (k == 0) EXPECT_DOUBLE_EQ(z, -0.2);
+    EXPECT_EQ(mesh.nodeFace[i], k == 2 ? 7 : k == 0 ? 3 : -1) << "the face of the projection, wall nodes only";
     if (k == 1) EXPECT_DOUBLE_EQ(z, 0.5 * (2.1 - 0.2));  // half way between the walls' mid-edge nodes
     if (k == -1) EXPECT_TRUE(z == 0.5 || z == 1.5);      // sweep edges: plain midpoints
+  }
+}
+
+TEST(Quadratic, RimNodesAreProjectedOntoTheLateralFacesLast) {
+  HexMesh mesh = block(2, 2, 2, {0, 1, 2});
+  mesh.nodeFace.assign(mesh.nodes.size(), -1);
+  std::size_t lateral = 0;
+  const QuadraticStats s = addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) -> std::optional<FacePoint> {
+    if (side != Side::Lateral) return FacePoint{p + Vec3(0, 0, side == Side::Top ? 0.1 : -0.1), side == Side::Top ? 7 : 3};
+    ++lateral;
+    if (p.x() == 0) return FacePoint{p + Vec3(-0.3, 0, 0), 2};  // more than a quarter of the unit edges: refused
+    return FacePoint{p + Vec3(0.01, 0, 0), 1};
+  });
+  EXPECT_EQ(lateral, 3u * 8 + 2u * 8) << "8 border edges per node layer, 8 border sweep lines with 2 edges";
+  EXPECT_EQ(s.rimNodes, lateral);
+  EXPECT_EQ(s.rimProjected, lateral - (3 * 2 + 2 * 3)) << "the x = 0 side: 2 edges per layer and 3 sweep lines of 2";
+  for (std::size_t i = 27; i < mesh.nodes.size(); ++i) {
+    if (!mesh.nodeOnRim[i]) continue;
+    const int k = mesh.nodeLayer[i];
+    const bool refused = mesh.nodes[i].x() <= 0;  // at x = 0 (or -0.3 if it had been projected)
+    EXPECT_EQ(mesh.nodeFace[i], refused ? (k == 2 ? 7 : k == 0 ? 3 : -1) : 1) << i;
+    if (k == 2) EXPECT_DOUBLE_EQ(mesh.nodes[i].z(), 2.1) << "on the wall, then moved along it";
   }
 }
 
@@ -144,9 +169,9 @@ TEST(Quadratic, InnerMidEdgeNodeTakesTheMeanFractionOfItsEnds) {
 
 TEST(Quadratic, FarOrFailedProjectionKeepsTheMidpoint) {
   HexMesh mesh = block(1, 1, 1, {0, 1});
-  const QuadraticStats s = addMidEdgeNodes(mesh, [](Side side, const Vec3& p) -> std::optional<Vec3> {
-    if (side == Side::Bottom) return std::nullopt;
-    return p + Vec3(0, 0, p.x() == 0.5 ? 0.2 : 0.3);  // edges along x move 0.2 (kept), along y 0.3 (> 1/4)
+  const QuadraticStats s = addMidEdgeNodes(mesh, [](Side side, const Vec3& p) -> std::optional<FacePoint> {
+    if (side != Side::Top) return std::nullopt;
+    return FacePoint{p + Vec3(0, 0, p.x() == 0.5 ? 0.2 : 0.3), 5};  // edges along x move 0.2 (kept), along y 0.3 (> 1/4)
   });
   EXPECT_EQ(s.wallNodes, 8u);
   EXPECT_EQ(s.projected, 2u);

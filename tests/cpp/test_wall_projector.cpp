@@ -2,6 +2,7 @@
 // trimmed faces (their edges when the point lies beyond them), exact on curved walls.
 #include <gtest/gtest.h>
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -17,11 +18,15 @@ using namespace hexlayer;
 TEST(WallProjector, PlateWallsAndTheirEdges) {
   const CadSolid cad = prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40, 30, 2).Solid());
   const WallProjector walls(cad, classifyWallSides(cad));
-  EXPECT_NEAR((*walls.project(Side::Top, Vec3(10, 10, 1.4)) - Vec3(10, 10, 2)).norm(), 0, 1e-9);
-  EXPECT_NEAR((*walls.project(Side::Bottom, Vec3(10, 10, 1.4)) - Vec3(10, 10, 0)).norm(), 0, 1e-9);
-  EXPECT_NEAR((*walls.project(Side::Top, Vec3(10, 10, -3)) - Vec3(10, 10, 2)).norm(), 0, 1e-9) << "from the far side";
-  EXPECT_NEAR((*walls.project(Side::Top, Vec3(41, 10, 2.5)) - Vec3(40, 10, 2)).norm(), 0, 1e-9) << "beyond the rim: its edge";
-  EXPECT_NEAR((*walls.project(Side::Lateral, Vec3(39.8, 10, 1.3)) - Vec3(40, 10, 1.3)).norm(), 0, 1e-9) << "the rim";
+  EXPECT_NEAR((walls.project(Side::Top, Vec3(10, 10, 1.4))->point - Vec3(10, 10, 2)).norm(), 0, 1e-9);
+  EXPECT_NEAR((walls.project(Side::Bottom, Vec3(10, 10, 1.4))->point - Vec3(10, 10, 0)).norm(), 0, 1e-9);
+  EXPECT_NEAR((walls.project(Side::Top, Vec3(10, 10, -3))->point - Vec3(10, 10, 2)).norm(), 0, 1e-9) << "from the far side";
+  EXPECT_NEAR((walls.project(Side::Top, Vec3(41, 10, 2.5))->point - Vec3(40, 10, 2)).norm(), 0, 1e-9) << "beyond the rim: its edge";
+  EXPECT_NEAR((walls.project(Side::Lateral, Vec3(39.8, 10, 1.3))->point - Vec3(40, 10, 1.3)).norm(), 0, 1e-9) << "the rim";
+  // MakeBox numbers its faces like FreeCAD's Part box: Face1 x = 0, Face2 x = 40, ..., Face5 z = 0, Face6 z = 2.
+  EXPECT_EQ(walls.project(Side::Top, Vec3(10, 10, 1.4))->face, 5);
+  EXPECT_EQ(walls.project(Side::Bottom, Vec3(10, 10, 1.4))->face, 4);
+  EXPECT_EQ(walls.project(Side::Lateral, Vec3(39.8, 10, 1.3))->face, 1);
 }
 
 TEST(WallProjector, CylinderShellWallsAreHitExactly) {
@@ -37,11 +42,13 @@ TEST(WallProjector, CylinderShellWallsAreHitExactly) {
   const Vec3 chordMidpoint(11.2 * std::cos(angle), 11.2 * std::sin(angle), 17);
   double radii[2];
   for (int s = 0; s < 2; ++s) {
-    const std::optional<Vec3> p = walls.project(s ? Side::Top : Side::Bottom, chordMidpoint);
-    ASSERT_TRUE(p);
-    radii[s] = std::hypot(p->x(), p->y());
-    EXPECT_NEAR(std::atan2(p->y(), p->x()), angle, 1e-9);
-    EXPECT_NEAR(p->z(), 17, 1e-9);
+    const std::optional<FacePoint> hit = walls.project(s ? Side::Top : Side::Bottom, chordMidpoint);
+    ASSERT_TRUE(hit);
+    const Vec3& p = hit->point;
+    radii[s] = std::hypot(p.x(), p.y());
+    EXPECT_NEAR(std::atan2(p.y(), p.x()), angle, 1e-9);
+    EXPECT_NEAR(p.z(), 17, 1e-9);
+    EXPECT_EQ(BRepAdaptor_Surface(TopoDS::Face(cad.faces(hit->face + 1))).GetType(), GeomAbs_Cylinder);
   }
   EXPECT_NEAR(std::min(radii[0], radii[1]), 10, 1e-9);
   EXPECT_NEAR(std::max(radii[0], radii[1]), 12, 1e-9);

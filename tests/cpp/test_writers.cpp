@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -41,6 +42,27 @@ std::vector<NodeSet> layerSets(const HexMesh& m) {
   std::vector<NodeSet> sets{{"TOP", {}}, {"bottom", {}}};
   for (std::size_t i = 0; i < m.nodes.size(); ++i) sets[m.nodeLayer[i] == 1 ? 0 : 1].nodes.push_back(static_cast<int>(i));
   return sets;
+}
+
+// Surface groups of the block as the CAD box 2 x 1 x 1 numbers its faces (BRepPrimAPI_MakeBox, FreeCAD's
+// Part box): Face1 x = 0, Face2 x = 2, Face3 y = 0, Face4 y = 1, Face5 z = 0, Face6 z = 1; plus an empty Face7.
+std::vector<SurfaceGroup> boxSurfaces(const HexMesh& m) {
+  std::vector<SurfaceGroup> groups;
+  const std::array<std::pair<int, double>, 6> planes = {{{0, 0}, {0, 2}, {1, 0}, {1, 1}, {2, 0}, {2, 1}}};
+  for (std::size_t g = 0; g < planes.size(); ++g) {
+    const auto [axis, value] = planes[g];
+    auto on = [&, axis = axis, value = value](int n) { return m.nodes[n][axis] == value; };
+    SurfaceGroup group{"Face" + std::to_string(g + 1), {}, {}};
+    for (std::size_t n = 0; n < m.nodes.size(); ++n)
+      if (on(static_cast<int>(n))) group.nodes.push_back(static_cast<int>(n));
+    for (std::size_t h = 0; h < m.hexes.size(); ++h)
+      for (int f = 0; f < 6; ++f)
+        if (std::all_of(kHexFaces[f].begin(), kHexFaces[f].end(), [&](int c) { return on(m.hexes[h][c]); }))
+          group.hexFaces.push_back({static_cast<int>(h), f});
+    groups.push_back(group);
+  }
+  groups.push_back({"Face7", {}, {}});
+  return groups;
 }
 
 std::string readText(const fs::path& p) {
@@ -90,6 +112,25 @@ void expectPythonPasses(const fs::path& script, const fs::path& file) {
   EXPECT_EQ(WEXITSTATUS(status), 0) << command;
 }
 
+// Elements of each physical group (by name) of the model Gmsh has open.
+std::map<std::string, std::size_t> elementsPerPhysicalGroup() {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups);
+  std::map<std::string, std::size_t> elements;
+  for (const auto& [dim, tag] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    std::vector<int> entities, types;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    std::vector<std::vector<std::size_t>> elementTags, elementNodes;
+    for (int e : entities) {
+      gmsh::model::mesh::getElements(types, elementTags, elementNodes, dim, e);
+      for (const auto& t : elementTags) elements[name] += t.size();
+    }
+  }
+  return elements;
+}
+
 ExitCode codeOf(const std::function<void()>& f) {
   try {
     f();
@@ -114,13 +155,14 @@ class WriterTest : public ::testing::Test {
 
   fs::path write(const std::string& name) {
     const fs::path p = dir_ / name;
-    writeMesh(p.string(), mesh_, sets_, fields_);
+    writeMesh(p.string(), mesh_, {sets_, surfaces_, fields_});
     return p;
   }
 
   fs::path dir_;
   HexMesh mesh_;
   std::vector<NodeSet> sets_;
+  std::vector<SurfaceGroup> surfaces_;
   std::vector<CellField> fields_;
 };
 
@@ -153,21 +195,8 @@ TEST_F(WriterTest, MshReadsBackThroughGmsh) {
   }
   EXPECT_EQ(quads, 10u);
 
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups);
-  std::map<std::string, std::size_t> elementsPerGroup;
-  for (const auto& [dim, tag] : groups) {
-    std::string name;
-    gmsh::model::getPhysicalName(dim, tag, name);
-    std::vector<int> entities;
-    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-    for (int e : entities) {
-      gmsh::model::mesh::getElements(types, elementTags, elementNodes, dim, e);
-      for (const auto& t : elementTags) elementsPerGroup[name] += t.size();
-    }
-  }
   const std::map<std::string, std::size_t> expected{{"top", 2}, {"bottom", 2}, {"rim", 6}, {"solid", 2}};
-  EXPECT_EQ(elementsPerGroup, expected);
+  EXPECT_EQ(elementsPerPhysicalGroup(), expected);
 
   std::vector<int> views;
   gmsh::view::getTags(views);
@@ -181,7 +210,47 @@ TEST_F(WriterTest, MshOmitsEmptySurfacesAndPutsAllQuadsInRimWithoutLayers) {
   EXPECT_NE(text.find("2 3 \"rim\""), std::string::npos);
   EXPECT_EQ(text.find("\"top\""), std::string::npos);
   EXPECT_EQ(text.find("\"bottom\""), std::string::npos);
-  EXPECT_NE(text.find("\n2 3 3 10\n"), std::string::npos);  // one block of 10 quads in surface 3
+  EXPECT_NE(text.find("\n2 1 3 10\n"), std::string::npos);  // one block of 10 quads in surface entity 1 (physical 3)
+}
+
+TEST_F(WriterTest, MshHasOnePhysicalGroupPerCadFaceReadBackThroughGmsh) {
+  surfaces_ = boxSurfaces(mesh_);
+  const fs::path p = write("faces.msh");
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open(p.string());
+  const std::map<std::string, std::size_t> elementsPerGroup = elementsPerPhysicalGroup();
+  gmsh::finalize();
+  const std::map<std::string, std::size_t> expected{{"Face1", 1}, {"Face2", 1}, {"Face3", 2}, {"Face4", 2}, {"Face5", 2},
+                                                    {"Face6", 2}, {"top", 2}, {"bottom", 2}, {"rim", 6}, {"solid", 2}};
+  EXPECT_EQ(elementsPerGroup, expected) << "Face7 has no mesh faces: no group";
+}
+
+TEST_F(WriterTest, InpHasANodeSetAndAnElementFaceSurfacePerCadFace) {
+  surfaces_ = boxSurfaces(mesh_);
+  const std::vector<std::string> all = lines(readText(write("faces.inp")));
+  EXPECT_EQ(inpBlock(all, "*NSET, NSET=FACE1"), (std::vector<std::string>{"1, 4, 7, 10"}));
+  // CalculiX's C3D8 faces: S1 = 1-2-3-4 (bottom), S2 = 5-8-7-6 (top), S3 = 1-5-6-2 (y = 0), S4 = 2-6-7-3,
+  // S5 = 3-7-8-4 (y = 1), S6 = 4-8-5-1 (x = 0 for hex 1, whose nodes 1, 4, 5, 8 are there).
+  EXPECT_EQ(inpBlock(all, "*SURFACE, NAME=FACE1_S, TYPE=ELEMENT"), (std::vector<std::string>{"1, S6"}));
+  EXPECT_EQ(inpBlock(all, "*SURFACE, NAME=FACE2_S, TYPE=ELEMENT"), (std::vector<std::string>{"2, S4"}));
+  EXPECT_EQ(inpBlock(all, "*SURFACE, NAME=FACE3_S, TYPE=ELEMENT"), (std::vector<std::string>{"1, S3", "2, S3"}));
+  EXPECT_EQ(inpBlock(all, "*SURFACE, NAME=FACE4_S, TYPE=ELEMENT"), (std::vector<std::string>{"1, S5", "2, S5"}));
+  EXPECT_EQ(inpBlock(all, "*SURFACE, NAME=FACE5_S, TYPE=ELEMENT"), (std::vector<std::string>{"1, S1", "2, S1"}));
+  EXPECT_EQ(inpBlock(all, "*SURFACE, NAME=FACE6_S, TYPE=ELEMENT"), (std::vector<std::string>{"1, S2", "2, S2"}));
+  EXPECT_NE(std::find(all.begin(), all.end(), "** CAD face Face7 has no mesh faces"), all.end());
+  EXPECT_EQ(inpBlock(all, "*NSET, NSET=FACE7"), std::vector<std::string>{});
+}
+
+TEST_F(WriterTest, VtuHasTheCadFaceOfEveryNode) {
+  surfaces_ = boxSurfaces(mesh_);
+  const fs::path p = write("faces.vtu");
+  const fs::path script = dir_ / "check.py";
+  // Every node of the block is on a face; a node on several gets the lowest N (x = 0 before z = 0 ...).
+  std::ofstream(script) << "import sys, meshio\n"
+                           "m = meshio.read(sys.argv[1])\n"
+                           "assert list(m.point_data['cad_face']) == [1, 3, 2, 1, 4, 2] * 2, m.point_data['cad_face']\n";
+  expectPythonPasses(script, p);
 }
 
 TEST_F(WriterTest, InpHasNodesC3D8IElementsAndNodeSets) {
@@ -335,7 +404,7 @@ TEST_F(WriterTest, UnknownExtensionIsUsageError) {
 TEST_F(WriterTest, UnwritablePathIsInputError) {
   const std::string path = (dir_ / "missing_dir" / "block.inp").string();
   try {
-    writeMesh(path, mesh_, sets_);
+    writeMesh(path, mesh_, {sets_, {}, {}});
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::BadInput);

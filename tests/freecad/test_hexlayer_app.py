@@ -34,7 +34,9 @@ class PlateMesh(unittest.TestCase):
         self.assertEqual(fem.HexaCount, fem.VolumeCount)
         self.assertEqual(fem.NodeCount, len(result.nodes))
         groups = {fem.getGroupName(g): len(fem.getGroupElements(g)) for g in fem.Groups}
-        self.assertEqual(groups, {name: len(nodes) for name, nodes in result.node_sets.items()})
+        expected = {name: len(nodes) for name, nodes in list(result.node_sets.items()) + list(result.face_nodes.items())}
+        self.assertEqual(groups, expected, "TOP, BOTTOM, RIM and Face1..Face6")
+        self.assertEqual(sorted(n for n in groups if n.startswith("Face")), ["Face{}".format(i) for i in range(1, 7)])
         self.assertIn("{} hexes".format(fem.VolumeCount), self.mesh.Status)
 
     def test_hexes_written_for_calculix_fill_the_plate(self):

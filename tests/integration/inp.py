@@ -1,5 +1,6 @@
 """Reads back what the end-to-end tests need of a CalculiX/Abaqus .inp written by hexlayer: the
-nodes, the elements (a data line ending with a comma continues on the next line) and the node sets."""
+nodes, the elements (a data line ending with a comma continues on the next line), the node sets and
+the element-face surfaces."""
 
 
 def read_inp(path):
@@ -32,3 +33,22 @@ def read_inp(path):
         elif block == "set":
             sets[name] += [int(x) for x in fields]
     return nodes, elements, sets
+
+
+def read_surfaces(path):
+    """Element-face surfaces of an .inp: {NAME: [(element id, face number 1..6 of "S1".."S6")]}."""
+    surfaces, name = {}, None
+    with open(path) as f:
+        for line in f:
+            if line.startswith("**"):
+                continue
+            if line.startswith("*"):
+                keyword = line.upper()
+                name = keyword.split("NAME=")[1].split(",")[0].strip() if keyword.startswith("*SURFACE") else None
+                if name:
+                    surfaces[name] = []
+                continue
+            if name and line.strip():
+                element, face = [x.strip() for x in line.split(",")]
+                surfaces[name].append((int(element), int(face.upper().lstrip("S"))))
+    return surfaces

@@ -83,6 +83,25 @@ class PlateMesh(unittest.TestCase):
         self.assertTrue(np.all(np.isin(self.result.hexes[:, 4:], sets["BOTTOM"], invert=True)),
                         "corners 4-7 are above the bottom layer")
 
+    def test_face_groups_are_the_six_plate_faces(self):
+        r = self.result
+        self.assertEqual(sorted(r.face_nodes), ["Face{}".format(i) for i in range(1, 7)])
+        self.assertEqual(sorted(r.face_elements), sorted(r.face_nodes))
+        planes = set()
+        hex_faces = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
+        for name, nodes in r.face_nodes.items():
+            xyz = r.nodes[nodes]
+            axis = int(np.argmin(np.ptp(xyz, axis=0)))
+            self.assertEqual(np.ptp(xyz[:, axis]), 0.0, name + " lies on a plane x, y or z = const")
+            planes.add((axis, round(float(xyz[0, axis]), 9)))
+            faces = r.face_elements[name]
+            self.assertEqual(faces.shape[1], 2)
+            self.assertGreater(len(faces), 0)
+            corners = {int(r.hexes[h, c]) for h, f in faces for c in hex_faces[f]}
+            self.assertTrue(corners <= set(nodes.tolist()), name + ": its element faces' corners are its nodes")
+        self.assertEqual(planes, {(0, 0.0), (0, 60.0), (1, 0.0), (1, 40.0), (2, 0.0), (2, 2.0)})
+        self.assertEqual(sum(len(f) for f in r.face_elements.values()), r.report["boundary"]["faces"])
+
     def test_progress_once_per_stage(self):
         stages = [line.split(":")[0] for line in self.lines]
         self.assertCountEqual(stages, self.result.report["timings_s"])  # the report sorts its keys

@@ -59,16 +59,20 @@ def mesh(part, opts, progress=None):
 
 
 def femmesh(result):
-    """A FemMesh of hexa8 (order 1) or hexa20 (order 2) volumes and the node groups TOP, BOTTOM and RIM
-    (ids 1-based, as FreeCAD's)."""
+    """A FemMesh of hexa8 (order 1) or hexa20 (order 2) volumes, the node groups TOP, BOTTOM and RIM, and
+    one node group per CAD face named as FreeCAD names the part's faces ("Face1", ...: its nodes are
+    the ones FemMesh.getNodesByFace finds on that face). Ids 1-based, as FreeCAD's. FreeCAD 0.20's
+    FemMesh groups nodes or whole elements, not faces of volumes: the element faces on each CAD face
+    (pyhexlayer's face_elements, the .inp's *SURFACE FaceN_S) have no FemMesh group."""
     fem = Fem.FemMesh()
     for i, (x, y, z) in enumerate(result.nodes.tolist(), start=1):
         fem.addNode(x, y, z, i)
     smesh_order = SMESH_HEXA20 if result.hexes.shape[1] == 20 else SMESH_HEXA8
     for i, hexa in enumerate((result.hexes[:, smesh_order] + 1).tolist(), start=1):
         fem.addVolume(hexa, i)
-    for name, nodes in result.node_sets.items():
-        fem.addGroupElements(fem.addGroup(name, "Node"), (nodes + 1).tolist())
+    for name, nodes in list(result.node_sets.items()) + list(result.face_nodes.items()):
+        if len(nodes):
+            fem.addGroupElements(fem.addGroup(name, "Node"), (nodes + 1).tolist())
     return fem
 
 

@@ -1,0 +1,160 @@
+#include "pipeline/surface_groups.hpp"
+
+#include <algorithm>
+#include <iterator>
+#include <limits>
+#include <string>
+
+#include "core/error.hpp"
+#include "quality/quality.hpp"
+#include "writers/writers.hpp"
+
+namespace hexlayer {
+namespace {
+
+std::string faceName(int face) { return "Face" + std::to_string(face + 1); }
+
+Side sideOf(const HexMesh& mesh, int i) {
+  if (mesh.nodeOnRim[i]) return Side::Lateral;
+  return mesh.nodeLayer[i] == 0 ? Side::Bottom : Side::Top;
+}
+
+// Local wall thickness at every hex: its four sweep edges' mean length times the layers.
+std::vector<double> hexThickness(const HexMesh& mesh) {
+  std::vector<double> t(mesh.hexes.size());
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+    double sum = 0;
+    for (int c = 0; c < 4; ++c) sum += (mesh.nodes[mesh.hexes[h][c + 4]] - mesh.nodes[mesh.hexes[h][c]]).norm();
+    t[h] = 0.25 * sum * mesh.layers;
+  }
+  return t;
+}
+
+// The CAD face of a boundary hex face: the one its corners all lie on, else the nearest to its centre
+// of those several (or, if none is shared, all) of its corners lie on. Counts the faces that share none.
+int faceOfQuad(const HexMesh& mesh, const CadFaces& faces, const BoundaryFace& quad,
+               const std::vector<std::vector<int>>& facesOf, std::size_t& across) {
+  std::vector<int> shared = facesOf[quad.nodes[0]], all = shared;
+  std::sort(shared.begin(), shared.end());
+  for (int c = 1; c < 4; ++c) {
+    std::vector<int> next = facesOf[quad.nodes[c]], both;
+    std::sort(next.begin(), next.end());
+    std::set_intersection(shared.begin(), shared.end(), next.begin(), next.end(), std::back_inserter(both));
+    shared.swap(both);
+    all.insert(all.end(), next.begin(), next.end());
+  }
+  if (shared.size() == 1) return shared[0];
+  if (shared.empty()) ++across;
+  const std::vector<int>& candidates = shared.empty() ? all : shared;
+  Vec3 centre = Vec3::Zero();
+  for (int n : quad.nodes) centre += 0.25 * mesh.nodes[n];
+  int best = candidates[0];
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int f : candidates)
+    if (const double d = faces.distance(f, centre); d < nearest) nearest = d, best = f;
+  return best;
+}
+
+struct NodeKinds {
+  std::vector<char> midEdge;        // a mid-edge node of a 20-node hex
+  std::vector<double> thickness;    // local wall thickness at a boundary node
+};
+
+NodeKinds nodeKinds(const HexMesh& mesh, const std::vector<BoundaryFace>& quads) {
+  NodeKinds k{std::vector<char>(mesh.nodes.size(), 0), std::vector<double>(mesh.nodes.size(), 0)};
+  for (const auto& mids : mesh.midEdges)
+    for (int n : mids) k.midEdge[n] = 1;
+  const std::vector<double> t = hexThickness(mesh);
+  for (const BoundaryFace& q : quads)
+    for (int n : boundaryFaceNodes(mesh, q))
+      if (k.thickness[n] == 0) k.thickness[n] = t[q.hex];
+  return k;
+}
+
+// Max and mean distance of the boundary nodes to their faces, and per kind of node how many are not on
+// their face to its tolerance (FreeCAD's getNodesByFace would not find them).
+nlohmann::json deviationReport(const HexMesh& mesh, const CadFaces& faces, const std::vector<int>& boundary,
+                               const std::vector<double>& distance, const NodeKinds& kinds) {
+  double max = 0, sum = 0, maxRelative = 0, sumRelative = 0;
+  int worst = boundary.empty() ? -1 : boundary[0];
+  nlohmann::json above = {{"wall_corners", 0}, {"rim_corners", 0}, {"wall_mid_edge", 0}, {"rim_mid_edge", 0}};
+  for (int i : boundary) {
+    const double d = distance[i], relative = kinds.thickness[i] > 0 ? d / kinds.thickness[i] : 0;
+    sum += d, sumRelative += relative;
+    if (d > max) max = d, worst = i;
+    maxRelative = std::max(maxRelative, relative);
+    if (d >= faces.tolerance(mesh.nodeFace[i])) {
+      const std::string kind = std::string(mesh.nodeOnRim[i] ? "rim" : "wall") + (kinds.midEdge[i] ? "_mid_edge" : "_corners");
+      above[kind] = above[kind].get<int>() + 1;
+    }
+  }
+  const double n = boundary.empty() ? 1 : static_cast<double>(boundary.size());
+  nlohmann::json r = {{"nodes", boundary.size()}, {"max", max}, {"mean", sum / n}, {"max_relative", maxRelative},
+                      {"mean_relative", sumRelative / n}, {"off_face_tolerance", above}};
+  if (worst >= 0) {
+    r["worst_at"] = {mesh.nodes[worst].x(), mesh.nodes[worst].y(), mesh.nodes[worst].z()};
+    r["worst_face"] = faceName(mesh.nodeFace[worst]);
+  }
+  return r;
+}
+
+}  // namespace
+
+std::vector<int> boundaryNodes(const HexMesh& mesh) {
+  std::vector<char> on(mesh.nodes.size(), 0);
+  for (const BoundaryFace& q : boundaryFaces(mesh))
+    for (int n : boundaryFaceNodes(mesh, q)) on[n] = 1;
+  std::vector<int> nodes;
+  for (std::size_t i = 0; i < on.size(); ++i)
+    if (on[i]) nodes.push_back(static_cast<int>(i));
+  return nodes;
+}
+
+std::size_t faceUnplacedNodes(HexMesh& mesh, const WallProjector& walls, const std::vector<int>& boundary) {
+  std::size_t given = 0;
+  for (int i : boundary) {
+    if (mesh.nodeFace[i] >= 0) continue;
+    const std::optional<FacePoint> p = walls.project(sideOf(mesh, i), mesh.nodes[i]);
+    if (!p) throw Error(ExitCode::Internal, "no CAD face for the boundary node " + std::to_string(i + 1));
+    mesh.nodeFace[i] = p->face;
+    ++given;
+  }
+  return given;
+}
+
+SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const std::vector<int>& boundary) {
+  SurfaceGroups out;
+  for (int f = 0; f < faces.count(); ++f) out.groups.push_back({faceName(f), {}, {}});
+  std::vector<std::vector<int>> facesOf(mesh.nodes.size());
+  std::vector<double> distance(mesh.nodes.size(), 0);
+  std::size_t several = 0;
+  for (int i : boundary) {  // ascending: the groups' nodes come out sorted
+    if (mesh.nodeFace[i] < 0) throw Error(ExitCode::Internal, "boundary node " + std::to_string(i + 1) + " has no CAD face");
+    FacesAtPoint at = faces.facesAt(mesh.nodeFace[i], mesh.nodes[i]);
+    for (int f : at.faces) out.groups[f].nodes.push_back(i);
+    several += at.faces.size() > 1;
+    facesOf[i] = std::move(at.faces);
+    distance[i] = at.distance;
+  }
+  const std::vector<BoundaryFace> quads = boundaryFaces(mesh);  // sorted by hex, then local face
+  std::size_t across = 0;
+  for (const BoundaryFace& q : quads) out.groups[faceOfQuad(mesh, faces, q, facesOf, across)].hexFaces.push_back({q.hex, q.localFace});
+  std::size_t nonEmpty = 0;
+  for (const SurfaceGroup& g : out.groups) nonEmpty += !g.hexFaces.empty();
+  out.surfaceReport = {{"cad_faces", faces.count()}, {"meshed_cad_faces", nonEmpty}, {"boundary_nodes", boundary.size()},
+                       {"nodes_on_several_faces", several}, {"element_faces", quads.size()},
+                       {"element_faces_across_cad_edges", across}};
+  out.deviationReport = deviationReport(mesh, faces, boundary, distance, nodeKinds(mesh, quads));
+  return out;
+}
+
+void appendSurfaceGroups(std::vector<SurfaceGroup>& all, const std::vector<SurfaceGroup>& part, int nodeOffset, int hexOffset) {
+  for (SurfaceGroup g : part) {
+    g.name = faceName(static_cast<int>(all.size()));
+    for (int& n : g.nodes) n += nodeOffset;
+    for (HexFace& f : g.hexFaces) f.hex += hexOffset;
+    all.push_back(std::move(g));
+  }
+}
+
+}  // namespace hexlayer
