@@ -32,6 +32,8 @@ namespace {
 
 constexpr double kGoodQuad = 0.97;                 // quads below this get their nodes optimized
 constexpr double kMeanWeight = 0.5;                // weight of the mean quad against the worst one
+constexpr double kMinGain = 1e-4;                  // a node moves only for a better score than this
+constexpr double kSmallestStep = 1e-2;             // pattern search stops at this x the longest edge around
 constexpr double kRimCornerAngle = 30 * M_PI / 180;  // a rim node turning more than this stays
 
 struct NodeQuads {
@@ -118,7 +120,7 @@ void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<
   double best = before, step = 0;
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
     for (int c : q.quads[nq.quads[k]]) step = std::max(step, (q.nodes[c] - q.nodes[node]).norm());
-  const double smallest = 1e-3 * step;
+  const double smallest = kSmallestStep * step;
   Vec3 at = q.nodes[node];
   for (step *= 0.2; step > smallest;) {
     Vec3 bestAt = at;
@@ -131,7 +133,7 @@ void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<
     at = bestAt;
   }
   const Vec3 placed = project(at);
-  if (scoreAround(q, nq, node, placed) > before) q.nodes[node] = placed;
+  if (scoreAround(q, nq, node, placed) > before + kMinGain) q.nodes[node] = placed;
 }
 
 // Eight directions in the tangent plane of the quads around an interior node.
