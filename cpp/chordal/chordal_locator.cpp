@@ -43,8 +43,10 @@ Eigen::Vector2d inverseBilinear(const std::array<Vec3, 4>& p, const Vec3& x) {
   return uv;
 }
 
-ChordalLocator::ChordalLocator(const ChordalSurface& chordal) : chordal_(chordal), facets_(1.0) {
-  std::vector<Vec3> lo(chordal.facets.size()), hi(chordal.facets.size());
+ChordalLocator::ChordalLocator(const ChordalSurface& chordal)
+    : chordal_(chordal), facets_(1.0), lo_(chordal.facets.size()), hi_(chordal.facets.size()) {
+  std::vector<Vec3>& lo = lo_;
+  std::vector<Vec3>& hi = hi_;
   std::vector<double> extent(chordal.facets.size());
   for (size_t f = 0; f < chordal.facets.size(); ++f) {
     const auto& fc = chordal.facets[f];
@@ -77,7 +79,11 @@ ChordalPoint ChordalLocator::project(int facet, const Vec3& p) const {
 }
 
 ChordalPoint ChordalLocator::locate(const Vec3& p) const {
-  const int f = facets_.nearest(p, [&](int id) { return (project(id, p).point - p).squaredNorm(); });
+  const int f = facets_.nearest(p, [&](int id, double bestD2) {
+    // The facet's bounding box is farther than the nearest facet so far: it cannot be nearer.
+    if ((p - p.cwiseMax(lo_[id]).cwiseMin(hi_[id])).squaredNorm() > bestD2) return bestD2 * 2 + 1;
+    return (project(id, p).point - p).squaredNorm();
+  });
   return f < 0 ? ChordalPoint{} : project(f, p);
 }
 

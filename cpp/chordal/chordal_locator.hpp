@@ -2,6 +2,7 @@
 // (barycentric on triangles, inverse bilinear on quads), used by the quad smoothing and the sweep.
 #pragma once
 #include <array>
+#include <vector>
 
 #include "chordal/chordal_surface.hpp"
 #include "core/box_grid.hpp"
@@ -33,6 +34,7 @@ class ChordalLocator {
   ChordalPoint project(int facet, const Vec3& p) const;
   const ChordalSurface& chordal_;
   BoxGrid facets_;  // facets by bounding box
+  std::vector<Vec3> lo_, hi_;  // each facet's bounding box
 };
 
 }  // namespace hexlayer

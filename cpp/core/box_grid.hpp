@@ -25,9 +25,11 @@ class BoxGrid {
     lo_ = lo_.cwiseMin(a), hi_ = hi_.cwiseMax(b);
   }
 
-  // Calls distance(id) -> squared distance of item id to p, for items in growing rings of cells
-  // around p, until the nearest item found is closer than any unvisited cell. Returns its id (-1
-  // if the grid is empty). An item spanning several cells may be offered more than once.
+  // Calls distance(id, bestD2) -> squared distance of item id to p, for items in growing rings of
+  // cells around p, until the nearest item found is closer than any unvisited cell. bestD2 is the
+  // nearest squared distance so far: an item that cannot be closer may return anything above it
+  // (a bounding-box test instead of the exact distance). Returns the nearest id (-1 if the grid is
+  // empty), the lowest id on a tie. An item spanning several cells may be offered more than once.
   template <class Distance>
   int nearest(const Vec3& p, Distance&& distance) const {
     if (!p.allFinite()) return -1;
@@ -42,7 +44,7 @@ class BoxGrid {
         const auto it = cells_.find(key(cell));
         if (it == cells_.end()) return;
         for (int id : it->second)
-          if (const double d2 = distance(id); d2 < bestD2 || (d2 == bestD2 && id < best)) best = id, bestD2 = d2;
+          if (const double d2 = distance(id, bestD2); d2 < bestD2 || (d2 == bestD2 && id < best)) best = id, bestD2 = d2;
       });
       if (best >= 0 && bestD2 <= (r * h_) * (r * h_)) break;  // cells of ring r+1 are at least r*h away
     }

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <iomanip>
 #include <iterator>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "chordal/chordal_surface.hpp"
 #include "core/error.hpp"
 #include "geometry/cad_faces.hpp"
+#include "core/threads.hpp"
 #include "geometry/wall_projector.hpp"
 #include "geometry/wall_rays.hpp"
 #include "geometry/sheet_junctions.hpp"
@@ -301,9 +303,11 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   });
   r["quad_mesh"]["quads"] = quads.quads.size();
   r["quad_mesh"]["nodes"] = quads.nodes.size();
-  WallRays rays(cad, sides);
+  std::deque<WallRays> rays;  // one per thread: OpenCASCADE's intersector keeps state
+  for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
   SweepResult swept = clock.run("sweep", [&] {
-    return sweepQuads(quads, *locator, o.layers, [&](const Vec3& q, const Vec3& n, double rr) { return castSweepLine(rays, q, n, rr); });
+    return sweepQuads(quads, *locator, o.layers,
+                      [&](const Vec3& q, const Vec3& n, double rr) { return castSweepLine(rays[threadIndex()], q, n, rr); });
   });
   r["sweep"] = {{"untangled_regions", swept.untangled.regions}, {"untangling_rounds_kept", swept.untangled.improved},
                 {"worst_column_before_untangling", swept.untangled.worstBefore}};

@@ -32,6 +32,8 @@ namespace {
 
 constexpr double kGoodQuad = 0.97;                 // quads below this get their nodes optimized
 constexpr double kMeanWeight = 0.5;                // weight of the mean quad against the worst one
+constexpr double kMinGain = 1e-4;                  // a node moves only for a better score than this
+constexpr double kSmallestStep = 1e-2;             // pattern search stops at this x the longest edge around
 constexpr double kRimCornerAngle = 30 * M_PI / 180;  // a rim node turning more than this stays
 
 struct NodeQuads {
@@ -118,7 +120,7 @@ void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<
   double best = before, step = 0;
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
     for (int c : q.quads[nq.quads[k]]) step = std::max(step, (q.nodes[c] - q.nodes[node]).norm());
-  const double smallest = 1e-3 * step;
+  const double smallest = kSmallestStep * step;
   Vec3 at = q.nodes[node];
   for (step *= 0.2; step > smallest;) {
     Vec3 bestAt = at;
@@ -131,7 +133,7 @@ void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<
     at = bestAt;
   }
   const Vec3 placed = project(at);
-  if (scoreAround(q, nq, node, placed) > before) q.nodes[node] = placed;
+  if (scoreAround(q, nq, node, placed) > before + kMinGain) q.nodes[node] = placed;
 }
 
 // Eight directions in the tangent plane of the quads around an interior node.
@@ -166,6 +168,39 @@ int cornerOf(const std::array<int, 4>& quad, int v) {
   for (int k = 0; k < 4; ++k)
     if (quad[k] == v) return k;
   return -1;
+}
+
+// Which nodes can still move in a Gauss-Seidel sweep: a node's update depends only on the nodes of
+// the quads around it, so if none of them (itself included) moved since its last visit, the visit
+// would decide as before and is skipped. The result is the same as visiting every node.
+class MoveClock {
+ public:
+  explicit MoveClock(std::size_t nodes) : movedAt_(nodes, 0), visitedAt_(nodes, -1) {}
+  bool unchanged(const QuadMesh& q, const NodeQuads& nq, int node) const {
+    for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
+      for (int c : q.quads[nq.quads[k]])
+        if (movedAt_[c] > visitedAt_[node]) return false;
+    return true;
+  }
+  void visit(int node) { visitedAt_[node] = now_; }
+  void moved(int node) { movedAt_[node] = ++now_; }
+
+ private:
+  std::vector<long> movedAt_, visitedAt_;
+  long now_ = 0;
+};
+
+// Visits the nodes in order, `iterations` times, skipping those whose neighbourhood has not
+// changed; update(node) returns whether it moved the node.
+template <class Update>
+void gaussSeidel(const QuadMesh& q, const NodeQuads& nq, int iterations, Update update) {
+  MoveClock clock(q.nodes.size());
+  for (int it = 0; it < iterations; ++it)
+    for (int node = 0; node < static_cast<int>(q.nodes.size()); ++node) {
+      if (clock.unchanged(q, nq, node)) continue;
+      clock.visit(node);
+      if (update(node)) clock.moved(node);
+    }
 }
 
 }  // namespace
@@ -203,30 +238,30 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations) 
   const NodeQuads nq = quadsAroundNodes(q);
   const std::vector<std::array<int, 2>> rim = rimNeighbours(q);
   const std::vector<Vec3> rimStart = q.nodes;  // rim nodes slide along the rim as Gmsh placed it
-  for (int it = 0; it < iterations; ++it)
-    for (size_t i = 0; i < q.nodes.size(); ++i) {
-      if (rim[i][0] != -1) continue;
-      const int node = static_cast<int>(i);
-      const double before = worstAround(q, nq, node, q.nodes[i]);
-      const Vec3 target = chordal.locate(centroidTarget(q, nq, node)).point;
-      if (worstAround(q, nq, node, target) >= std::min(before, 0.999)) q.nodes[i] = target;
-    }
+  gaussSeidel(q, nq, iterations, [&](int node) {
+    if (rim[node][0] != -1) return false;
+    const double before = worstAround(q, nq, node, q.nodes[node]);
+    const Vec3 target = chordal.locate(centroidTarget(q, nq, node)).point;
+    if (!(worstAround(q, nq, node, target) >= std::min(before, 0.999)) || target == q.nodes[node]) return false;
+    q.nodes[node] = target;
+    return true;
+  });
   // Then the nodes of poor quads are moved to make the worst quad around them as good as can be.
-  for (int it = 0; it < iterations; ++it)
-    for (size_t i = 0; i < q.nodes.size(); ++i) {
-      const int node = static_cast<int>(i);
-      if (rim[i][0] == -2 || worstAround(q, nq, node, q.nodes[i]) >= kGoodQuad) continue;
-      if (rim[i][0] == -1) {
-        improveWorst(q, nq, node, tangentDirections(q, nq, node), [&](const Vec3& p) { return chordal.locate(p).point; });
-        continue;
-      }
-      const Vec3 a = rimStart[rim[i][0]], b = rimStart[i], c = rimStart[rim[i][1]];
-      const Vec3 t = (c - a).normalized();
-      improveWorst(q, nq, node, {t, -t}, [&](const Vec3& p) {
-        const Vec3 x = closestOnSegment(a, b, p), y = closestOnSegment(b, c, p);
-        return (x - p).squaredNorm() < (y - p).squaredNorm() ? x : y;
-      });
+  gaussSeidel(q, nq, iterations, [&](int node) {
+    const Vec3 from = q.nodes[node];
+    if (rim[node][0] == -2 || worstAround(q, nq, node, from) >= kGoodQuad) return false;
+    if (rim[node][0] == -1) {
+      improveWorst(q, nq, node, tangentDirections(q, nq, node), [&](const Vec3& p) { return chordal.locate(p).point; });
+      return q.nodes[node] != from;
     }
+    const Vec3 a = rimStart[rim[node][0]], b = rimStart[node], c = rimStart[rim[node][1]];
+    const Vec3 t = (c - a).normalized();
+    improveWorst(q, nq, node, {t, -t}, [&](const Vec3& p) {
+      const Vec3 x = closestOnSegment(a, b, p), y = closestOnSegment(b, c, p);
+      return (x - p).squaredNorm() < (y - p).squaredNorm() ? x : y;
+    });
+    return q.nodes[node] != from;
+  });
 }
 
 }  // namespace hexlayer

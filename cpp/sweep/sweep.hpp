@@ -32,6 +32,7 @@ struct SweepLine {
 };
 
 // Where the sweep line of chordal point q, swept along the unit vector n with radius r, meets the walls.
+// Called from several OpenMP threads at once.
 using WallMap = std::function<SweepLine(const Vec3& q, const Vec3& n, double r)>;
 
 // The paper's sweep line (§7.2): q ∓ r n̄, the walls as the radius function sees them.

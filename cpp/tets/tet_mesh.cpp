@@ -72,27 +72,34 @@ TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
 }
 
 TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
+  enum Verdict : char { kKept, kKeptCoplanar, kFlat, kOutside };
+  std::vector<char> verdict(mesh.tets.size());
+  const double tolerance = 1e-7 * cad.diagonal;
+  #pragma omp parallel
+  {
+    BRepClass3d_SolidClassifier classifier(cad.solid);  // one per thread: OpenCASCADE's keeps state
+    #pragma omp for schedule(static)
+    for (long i = 0; i < static_cast<long>(mesh.tets.size()); ++i) {
+      const auto& t = mesh.tets[i];
+      int top = 0;
+      for (int v : t) top += mesh.side[v] == Side::Top;
+      const Vec3 c = 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
+      if (top == 0 || top == 4)
+        verdict[i] = kFlat;
+      else if (classifier.Perform(gp_Pnt(c.x(), c.y(), c.z()), tolerance), classifier.State() != TopAbs_IN)
+        verdict[i] = kOutside;
+      else
+        verdict[i] = isCoplanar(mesh, t) ? kKeptCoplanar : kKept;
+    }
+  }
   TetFilterCounts counts;
   counts.delaunay = mesh.tets.size();
-  BRepClass3d_SolidClassifier classifier(cad.solid);
-  const double tolerance = 1e-7 * cad.diagonal;
+  counts.flat = std::count(verdict.begin(), verdict.end(), kFlat);
+  counts.coplanar = std::count(verdict.begin(), verdict.end(), kKeptCoplanar);
+  counts.outside = std::count(verdict.begin(), verdict.end(), kOutside);
   std::vector<std::array<int, 4>> kept;
-  for (const auto& t : mesh.tets) {
-    int top = 0;
-    for (int v : t) top += mesh.side[v] == Side::Top;
-    if (top == 0 || top == 4) {
-      ++counts.flat;
-      continue;
-    }
-    const Vec3 c = 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
-    classifier.Perform(gp_Pnt(c.x(), c.y(), c.z()), tolerance);
-    if (classifier.State() != TopAbs_IN) {
-      ++counts.outside;
-      continue;
-    }
-    counts.coplanar += isCoplanar(mesh, t);
-    kept.push_back(t);
-  }
+  for (std::size_t i = 0; i < mesh.tets.size(); ++i)
+    if (verdict[i] == kKept || verdict[i] == kKeptCoplanar) kept.push_back(mesh.tets[i]);
   mesh.tets.swap(kept);
   return counts;
 }

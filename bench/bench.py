@@ -1,0 +1,226 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: AGPL-3.0-or-later
+"""HexLayer speed and scale benchmark (issue 6). Not part of the test suite.
+
+Meshes parts with the `hexlayer` CLI and, in the same run, Gmsh's 3D tet mesh of the same part at
+the same size (what a FreeCAD FEM user runs today). Prints, per case: wall time and peak memory of
+each, hexes per second, the time of every HexLayer stage (the report's timings_s) and the ratio
+HexLayer / Gmsh. Writes all numbers as JSON, and optionally a scaling plot.
+
+Usage (Debian's /usr/bin/python3, which has python3-gmsh and matplotlib):
+    bench/bench.py [--hexlayer build/hexlayer] [--suite target|scaling|samples|all]
+                   [--threads N] [--out out/bench] [--plot docs/scaling.png]
+                   [--no-gmsh-above HEXES] [--timeout SECONDS]
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+# Gmsh's tet mesh of a STEP file at one size, run in its own process so that its time and memory
+# are measured like HexLayer's. Prints the tet count and Gmsh's own meshing time.
+GMSH_TETS = r"""
+import sys, time, gmsh
+step, size = sys.argv[1], float(sys.argv[2])
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(step)
+gmsh.model.occ.synchronize()
+gmsh.option.setNumber("Mesh.MeshSizeMin", size)
+gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+start = time.perf_counter()
+gmsh.model.mesh.generate(3)
+seconds = time.perf_counter() - start
+tags, _ = gmsh.model.mesh.getElementsByType(4)
+print(len(tags), seconds)
+gmsh.finalize()
+"""
+
+
+def make_plate(path, length, width, thickness, holes):
+    """A box plate with vertical through holes (x, y, radius), written as STEP by Gmsh's OCC
+    (whose STEP writer prints its statistics on file descriptor 1: sent to /dev/null)."""
+    import gmsh
+    sys.stdout.flush()
+    saved, devnull = os.dup(1), os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, 1)
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        occ = gmsh.model.occ
+        box = occ.addBox(0, 0, 0, length, width, thickness)
+        if holes:
+            occ.cut([(3, box)], [(3, occ.addCylinder(x, y, -1, 0, 0, thickness + 2, r)) for x, y, r in holes])
+        occ.synchronize()
+        gmsh.write(path)
+    finally:
+        gmsh.finalize()
+        os.dup2(saved, 1)
+        os.close(saved), os.close(devnull)
+
+
+def run_measured(command, timeout, env=None):
+    """Runs a command; returns (exit code, stdout, stderr, wall seconds, peak RSS in MiB). The peak
+    is the kernel's for the process and every child it waited for (wait4, RUSAGE_BOTH)."""
+    out_path, err_path = "/tmp/hexlayer_bench_%d.out" % os.getpid(), "/tmp/hexlayer_bench_%d.err" % os.getpid()
+    with open(out_path, "w") as out, open(err_path, "w") as err:
+        start = time.perf_counter()
+        proc = subprocess.Popen(command, stdout=out, stderr=err, env=env)
+        deadline = start + timeout
+        while True:
+            pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+            if pid:
+                break
+            if time.perf_counter() > deadline:
+                proc.kill()
+                pid, status, usage = os.wait4(proc.pid, 0)
+                break
+            time.sleep(0.01)
+        wall = time.perf_counter() - start
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    with open(out_path) as out, open(err_path) as err:
+        stdout, stderr = out.read(), err.read()
+    os.remove(out_path), os.remove(err_path)
+    return proc.returncode, stdout, stderr, wall, usage.ru_maxrss / 1024.0
+
+
+def run_hexlayer(args, case, out_dir):
+    report = os.path.join(out_dir, case["name"] + ".json")
+    mesh = os.path.join(out_dir, case["name"] + ".inp")
+    command = [args.hexlayer, "mesh", case["step"], "-o", mesh, "--report", report, "--quiet",
+               "--layers", str(case["layers"]), "--size", str(case["size"])]
+    env = dict(os.environ, OMP_NUM_THREADS=str(args.threads))
+    code, _, stderr, wall, peak = run_measured(command, args.timeout, env)
+    result = {"exit_code": code, "wall_s": wall, "peak_mib": peak}
+    if code != 0:
+        result["error"] = stderr.strip()[-500:]
+        return result
+    with open(report) as f:
+        r = json.load(f)
+    result.update(hexes=r["hexes"], timings_s=r["timings_s"], sj_min=r["scaled_jacobian"]["min"],
+                  sj_avg=r["scaled_jacobian"]["avg"], inverted=r["inverted_hexes"],
+                  volume_error=r["volume"]["relative_error"], hexes_per_s=r["hexes"] / wall)
+    if not args.keep_meshes:
+        os.remove(mesh)
+    return result
+
+
+def run_gmsh_tets(args, case):
+    command = [sys.executable, "-c", GMSH_TETS, case["step"], str(case["size"])]
+    code, stdout, stderr, wall, peak = run_measured(command, args.timeout)
+    if code != 0:
+        return {"exit_code": code, "wall_s": wall, "peak_mib": peak, "error": stderr.strip()[-500:]}
+    tets, mesh_s = stdout.split()[-2:]
+    return {"exit_code": 0, "wall_s": wall, "peak_mib": peak, "tets": int(tets), "generate_s": float(mesh_s)}
+
+
+def cases(suite, parts):
+    """The benchmark cases: name, STEP file, quad size, layers, expected hexes (for --no-gmsh-above)."""
+    target = [dict(name="plate200_holes", step=parts["plate200_holes"], size=2.0, layers=2, hexes=12600)]
+    scaling = []
+    for name, (length, width) in SHEETS.items():
+        hexes = round(2 * length * width / 1.5 ** 2)
+        scaling.append(dict(name=name, step=parts[name], size=1.5, layers=2, hexes=hexes))
+    samples = [dict(name=s, step=os.path.join(ROOT, "Resources", "samples", s + ".step"), size=size, layers=2, hexes=0)
+               for s, size in (("plate_holes", 2.0), ("lbracket", 3.0), ("uchannel", 2.0), ("hat_holes", 1.5))]
+    return {"target": target, "scaling": scaling, "samples": samples,
+            "all": target + samples + scaling}[suite]
+
+
+# 3 mm sheets meshed at 1.5 mm in 2 layers: about 1e3, 1e4, 1e5 and 1e6 hexes.
+SHEETS = {"sheet_1e3": (45, 25), "sheet_1e4": (150, 75), "sheet_1e5": (475, 237), "sheet_1e6": (1500, 750)}
+
+
+def make_parts(out_dir):
+    parts = {"plate200_holes": os.path.join(out_dir, "plate200_holes.step")}
+    if not os.path.exists(parts["plate200_holes"]):  # the issue's 200 x 100 x 3 plate with four holes
+        make_plate(parts["plate200_holes"], 200, 100, 3, [(30, 25, 6), (170, 25, 6), (30, 75, 6), (170, 75, 6)])
+    for name, (length, width) in SHEETS.items():
+        parts[name] = os.path.join(out_dir, name + ".step")
+        if not os.path.exists(parts[name]):
+            make_plate(parts[name], length, width, 3, [])
+    return parts
+
+
+def print_row(case, h, g):
+    if h["exit_code"] != 0:
+        print(f"{case['name']:16s} hexlayer failed (exit {h['exit_code']}): {h.get('error', '')}")
+        return
+    line = (f"{case['name']:16s} {h['hexes']:8d} hexes  {h['wall_s']:7.2f} s  {h['peak_mib']:7.0f} MiB  "
+            f"{h['hexes_per_s']:9.0f} hex/s  SJ {h['sj_min']:.2f}/{h['sj_avg']:.3f}")
+    if g and g["exit_code"] == 0:
+        line += (f" | gmsh tets {g['tets']:8d}  {g['wall_s']:7.2f} s  {g['peak_mib']:6.0f} MiB"
+                 f" | ratio {h['wall_s'] / g['wall_s']:.2f}")
+    elif g:
+        line += f" | gmsh failed (exit {g['exit_code']})"
+    print(line)
+    stages = "  ".join(f"{k} {v:.2f}" for k, v in h["timings_s"].items())
+    print(f"{'':16s} stages (s): {stages}")
+    sys.stdout.flush()
+
+
+def plot(results, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    ok = sorted((r for r in results if r["hexlayer"]["exit_code"] == 0), key=lambda r: r["hexlayer"]["hexes"])
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    hexes = [r["hexlayer"]["hexes"] for r in ok]
+    ax.loglog(hexes, [r["hexlayer"]["wall_s"] for r in ok], "o-", label="HexLayer total (wall)")
+    ax.loglog(hexes, [r["hexlayer"]["timings_s"].get("quad_mesh", 0) for r in ok], "s--",
+              label="HexLayer quad_mesh stage (Gmsh + smoothing)")
+    with_gmsh = [r for r in ok if r.get("gmsh") and r["gmsh"]["exit_code"] == 0]
+    ax.loglog([r["hexlayer"]["hexes"] for r in with_gmsh], [r["gmsh"]["wall_s"] for r in with_gmsh], "^:",
+              label="Gmsh 3D tet mesh, same part and size")
+    if hexes:
+        ax.loglog(hexes, [ok[0]["hexlayer"]["wall_s"] * h / hexes[0] for h in hexes], color="grey",
+                  lw=0.8, label="O(n) from the smallest case")
+    ax.set_xlabel("hexes")
+    ax.set_ylabel("wall time (s)")
+    ax.set_title("HexLayer scaling: 3 mm sheets, 1.5 mm quads, 2 layers")
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--hexlayer", default=os.path.join(ROOT, "build", "hexlayer"))
+    p.add_argument("--suite", default="target", choices=["target", "scaling", "samples", "all"])
+    p.add_argument("--threads", type=int, default=os.cpu_count() or 1, help="OMP_NUM_THREADS for hexlayer")
+    p.add_argument("--out", default=os.path.join(ROOT, "out", "bench"))
+    p.add_argument("--plot", help="write a time vs hexes PNG here")
+    p.add_argument("--no-gmsh-above", type=int, default=200000, help="skip Gmsh's tet mesh above this many hexes")
+    p.add_argument("--timeout", type=float, default=3600)
+    p.add_argument("--keep-meshes", action="store_true")
+    p.add_argument("--max-hexes", type=int, default=0, help="skip cases above this many hexes (0: none)")
+    args = p.parse_args()
+    if not os.access(args.hexlayer, os.X_OK):
+        sys.exit(f"bench.py: no hexlayer executable at {args.hexlayer}; build first or pass --hexlayer")
+    os.makedirs(args.out, exist_ok=True)
+    parts = make_parts(args.out)
+    results = []
+    print(f"threads {args.threads}, cores {os.cpu_count()}, load average {os.getloadavg()[0]:.2f}")
+    for case in cases(args.suite, parts):
+        if args.max_hexes and case["hexes"] > args.max_hexes:
+            print(f"{case['name']:16s} skipped (--max-hexes {args.max_hexes})")
+            continue
+        h = run_hexlayer(args, case, args.out)
+        g = run_gmsh_tets(args, case) if case["hexes"] <= args.no_gmsh_above else None
+        results.append({"case": case, "hexlayer": h, "gmsh": g})
+        print_row(case, h, g)
+    with open(os.path.join(args.out, f"results_{args.suite}.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    if args.plot:
+        plot(results, args.plot)
+        print("plot:", args.plot)
+
+
+if __name__ == "__main__":
+    main()
