@@ -25,8 +25,9 @@ using hexlayer::ExitCode;
 // The options of the CLI, checked by the core as the CLI checks them.
 using Options = hexlayer::MeshOptions;
 
-Options makeOptions(int layers, double size, const std::string& sizing, double aspect, int order) {
+Options makeOptions(int layers, double size, const std::string& sizing, double aspect, int order, bool dropJunctions) {
   Options o;
+  o.dropJunctions = dropJunctions;
   o.layers = layers;
   o.size = size;
   o.sizing = sizing;
@@ -229,12 +230,13 @@ void registerTranslator(const ExceptionTypes& types) {
 // The keyword arguments shared by mesh_file, mesh_brep and check_options.
 #define HEXLAYER_OPTION_ARGS                                                                                 \
   py::kw_only(), py::arg("layers") = 2, py::arg("size") = 0.0, py::arg("sizing") = "uniform",             \
-      py::arg("aspect") = 0.0, py::arg("order") = 1
+      py::arg("aspect") = 0.0, py::arg("order") = 1, py::arg("drop_junctions") = false
 
 constexpr const char* kOptionsDoc =
     "layers: hex layers through the thickness (1-64); size: quad edge length, 0 = the wall thickness; "
     "sizing: 'uniform' or 'adaptive' (radius function and curvature); aspect: in-plane size / layer thickness instead of size, 0 = off; "
     "order: 1 = linear hexes (M, 8), 2 = quadratic hexes (M, 20), wall mid-edge nodes on the CAD walls; "
+    "drop_junctions: mesh the largest sheet and leave out ribs, bosses and flanges standing on it (else GeometryError); "
     "progress: callable taking one line per finished stage, or None "
     "(an exception it raises ends the run).";
 
@@ -270,18 +272,22 @@ PYBIND11_MODULE(pyhexlayer, m) {
 
   m.def("mesh_file",
         [](const std::string& path, int layers, double size, const std::string& sizing, double aspect, int order,
-           const py::object& progress) { return meshFile(path, makeOptions(layers, size, sizing, aspect, order), progress); },
+           bool dropJunctions, const py::object& progress) {
+          return meshFile(path, makeOptions(layers, size, sizing, aspect, order, dropJunctions), progress);
+        },
         py::arg("path"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(),
         (std::string("Meshes every solid of a STEP, IGES or BREP file. ") + kOptionsDoc).c_str());
   m.def("mesh_brep",
         [](const std::string& text, int layers, double size, const std::string& sizing, double aspect, int order,
-           const py::object& progress) { return meshBrep(text, makeOptions(layers, size, sizing, aspect, order), progress); },
+           bool dropJunctions, const py::object& progress) {
+          return meshBrep(text, makeOptions(layers, size, sizing, aspect, order, dropJunctions), progress);
+        },
         py::arg("brep"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(),
         (std::string("Meshes every solid of a shape in OpenCASCADE's BREP text (FreeCAD: Shape.exportBrepToString()). ") +
          kOptionsDoc).c_str());
   m.def("check_options",
-        [](int layers, double size, const std::string& sizing, double aspect, int order) {
-          makeOptions(layers, size, sizing, aspect, order);
+        [](int layers, double size, const std::string& sizing, double aspect, int order, bool dropJunctions) {
+          makeOptions(layers, size, sizing, aspect, order, dropJunctions);
         },
         HEXLAYER_OPTION_ARGS, "Raises UsageError, with the CLI's message, if an option value is not supported.");
 }

@@ -148,6 +148,22 @@ class Failures(unittest.TestCase):
         self.assert_fails(mesh, "not a thin section")
         self.assert_recovers(mesh)
 
+    def test_boss_is_refused_unless_junctions_are_dropped(self):
+        import Part
+        plate = Part.makeBox(60, 40, 2)
+        tube = Part.makeCylinder(3, 7, FreeCAD.Vector(20, 20, 2)).cut(Part.makeCylinder(1.5, 7, FreeCAD.Vector(20, 20, 2)))
+        part = self.doc.addObject("Part::Feature", "PlateWithBoss")
+        part.Shape = plate.fuse(tube).Solids[0]
+        mesh = HexLayer.makeMesh(self.doc, part)
+        self.assert_fails(mesh, "T-junction: 1 sheet(s)", "DropJunctions")
+        mesh.DropJunctions = True
+        self.doc.recompute()
+        self.assertTrue(mesh.isValid(), mesh.Status)
+        volumes = t.written_hex_volumes(mesh.FemMesh)
+        self.assertGreater(volumes.min(), 0)
+        plate_volume = 60 * 40 * 2
+        self.assertLess(abs(volumes.sum() - plate_volume) / plate_volume, 0.01, "the plate, filled under the boss")
+
     def test_bad_option_values(self):
         plate = t.add_plate(self.doc)
         for name, value, phrase in (("Order", 3, "Order must be 1 or 2, got 3"), ("Aspect", -1.0, "Aspect must be a positive ratio"),

@@ -8,10 +8,10 @@ from . import Stateless, meshing
 
 
 class MeshHexLayer(Stateless):
-    """Proxy of the mesh object: properties Part, Layers, Size, Sizing, Aspect, Order and the read-only Status."""
+    """Proxy of the mesh object: properties Part, Layers, Size, Sizing, Aspect, Order, DropJunctions and the read-only Status."""
 
     Type = "Fem::MeshHexLayer"
-    OPTIONS = ("Layers", "Size", "Sizing", "Aspect", "Order")  # the properties the mesher takes besides Part
+    OPTIONS = ("Layers", "Size", "Sizing", "Aspect", "Order", "DropJunctions")  # the properties the mesher takes besides Part
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -30,6 +30,8 @@ class MeshHexLayer(Stateless):
             list(meshing.SIZINGS))
         add("App::PropertyFloat", "Aspect", "In-plane size / layer thickness instead of Size (Size must then be 0); 0 = off", 0.0)
         add("App::PropertyInteger", "Order", "Element order: 1 = hexa8, 2 = hexa20 (wall mid-edge nodes on the CAD walls)", 1)
+        add("App::PropertyBool", "DropJunctions",
+            "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (else meshing refuses them)", False)
         add("App::PropertyString", "Status", "Summary of the last meshing, or why it failed", "")
         obj.setEditorMode("Status", 1)  # read-only
 

@@ -20,12 +20,13 @@ SIZINGS = ("uniform", "adaptive")
 
 def options(obj):
     """pyhexlayer's keyword options from the mesh object's properties."""
-    return dict(layers=obj.Layers, size=obj.Size.Value, sizing=obj.Sizing, aspect=obj.Aspect, order=obj.Order)
+    return dict(layers=obj.Layers, size=obj.Size.Value, sizing=obj.Sizing, aspect=obj.Aspect, order=obj.Order,
+                drop_junctions=obj.DropJunctions)
 
 
 def for_people(message):
-    """A message naming CLI options ("--order must be ...") in the property editor's words ("Order must be ...")."""
-    return re.sub(r"--(\w)(\w*)", lambda m: m.group(1).upper() + m.group(2), message)
+    """A message naming CLI options ("--drop-junctions ...") in the property editor's words ("DropJunctions ...")."""
+    return re.sub(r"--([\w-]+)", lambda m: "".join(word.capitalize() for word in m.group(1).split("-")), message)
 
 
 def part_problem(part):

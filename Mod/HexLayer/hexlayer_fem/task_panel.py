@@ -65,8 +65,10 @@ class TaskPanel:
         self.aspect.setSpecialValueText("off")
         self.order = self.named(QtGui.QSpinBox(), "order")
         self.order.setRange(1, 2)
+        self.drop_junctions = self.named(QtGui.QCheckBox("leave out ribs and bosses"), "drop_junctions")
         for name, widget in (("Part", self.part), ("Layers", self.layers), ("Size", self.size),
-                             ("Sizing", self.sizing), ("Aspect", self.aspect), ("Order", self.order)):
+                             ("Sizing", self.sizing), ("Aspect", self.aspect), ("Order", self.order),
+                             ("Junctions", self.drop_junctions)):
             fields.addRow(name + ":", widget)
         self.part.currentIndexChanged.connect(self.check)
         self.sizing.currentIndexChanged.connect(self.check)
@@ -86,6 +88,7 @@ class TaskPanel:
         self.sizing.setCurrentIndex(self.sizing.findText(self.obj.Sizing))
         self.aspect.setValue(self.obj.Aspect)
         self.order.setValue(self.obj.Order)
+        self.drop_junctions.setChecked(self.obj.DropJunctions)
         self.check()
 
     def selected_part(self):
@@ -94,13 +97,14 @@ class TaskPanel:
 
     def options(self):
         return dict(layers=self.layers.value(), size=self.size.value(), sizing=self.sizing.currentText(),
-                    aspect=self.aspect.value(), order=self.order.value())
+                    aspect=self.aspect.value(), order=self.order.value(), drop_junctions=self.drop_junctions.isChecked())
 
     def apply(self):
         opts = self.options()
         self.obj.Part = self.selected_part()
         self.obj.Layers, self.obj.Size, self.obj.Sizing = opts["layers"], opts["size"], opts["sizing"]
         self.obj.Aspect, self.obj.Order = opts["aspect"], opts["order"]
+        self.obj.DropJunctions = opts["drop_junctions"]
 
     # ---- checks, meshing, results ----------------------------------------------------------------
 
