@@ -296,6 +296,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
       }
     }
     r["quad_mesh"]["triangles_paired"] = q.pairedTriangles;
+    r["quad_mesh"]["triangles_split"] = q.splitTriangles;
     r["quad_mesh"]["unpaired_triangles"] = q.holes;
     r["quad_mesh"]["doublets_removed"] = removeDoublets(q);
     smoothQuadMesh(q, *locator, kSmoothingIterations);

@@ -126,7 +126,70 @@ std::size_t pairingRound(std::vector<std::array<int, 4>>& quads, std::vector<std
   return paired;
 }
 
+// Every edge that gets a midpoint: the triangles' edges, and across each quad from a split edge to
+// its opposite edge, until the rim or an edge already split.
+std::unordered_map<std::uint64_t, int> edgesToSplit(const std::vector<std::array<int, 4>>& quads,
+                                                    const std::vector<std::array<int, 3>>& triangles) {
+  std::unordered_map<std::uint64_t, std::vector<int>> quadsOnEdge;
+  for (std::size_t q = 0; q < quads.size(); ++q)
+    for (int k = 0; k < 4; ++k) quadsOnEdge[edgeKey(quads[q][k], quads[q][(k + 1) % 4])].push_back(static_cast<int>(q));
+  std::unordered_map<std::uint64_t, int> split;  // edge -> midpoint node, set later
+  std::vector<std::pair<int, int>> todo;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) todo.push_back({t[k], t[(k + 1) % 3]});
+  while (!todo.empty()) {
+    const auto [a, b] = todo.back();
+    todo.pop_back();
+    if (!split.emplace(edgeKey(a, b), -1).second) continue;
+    const auto on = quadsOnEdge.find(edgeKey(a, b));
+    if (on == quadsOnEdge.end()) continue;
+    for (int q : on->second)
+      for (int k = 0; k < 4; ++k)
+        if (edgeKey(quads[q][k], quads[q][(k + 1) % 4]) == edgeKey(a, b)) todo.push_back({quads[q][(k + 2) % 4], quads[q][(k + 3) % 4]});
+  }
+  return split;
+}
+
 }  // namespace
+
+std::size_t splitTriangles(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& quads, std::vector<std::array<int, 3>>& triangles) {
+  if (triangles.empty()) return 0;
+  std::unordered_map<std::uint64_t, int> split = edgesToSplit(quads, triangles);
+  auto mid = [&](int a, int b) {  // the midpoint node of edge (a, b), or -1 if it is not split
+    const auto it = split.find(edgeKey(a, b));
+    if (it == split.end()) return -1;
+    if (it->second < 0) it->second = static_cast<int>(nodes.size()), nodes.push_back(0.5 * (nodes[a] + nodes[b]));
+    return it->second;
+  };
+  auto centre = [&](const auto& corners, int n) {
+    Vec3 c = Vec3::Zero();
+    for (int k = 0; k < n; ++k) c += nodes[corners[k]] / n;
+    nodes.push_back(c);
+    return static_cast<int>(nodes.size()) - 1;
+  };
+  std::vector<std::array<int, 4>> out;
+  for (const auto& q : quads) {
+    const std::array<int, 4> m{mid(q[0], q[1]), mid(q[1], q[2]), mid(q[2], q[3]), mid(q[3], q[0])};
+    if (m[0] >= 0 && m[1] >= 0) {  // quartered (v_k, m_k, c, m_k-1)
+      const int c = centre(q, 4);
+      for (int k = 0; k < 4; ++k) out.push_back({q[k], m[k], c, m[(k + 3) % 4]});
+    } else if (m[0] >= 0 || m[1] >= 0) {  // halved across: edges k and k + 2 split
+      const int k = m[0] >= 0 ? 0 : 1;
+      out.push_back({q[k], m[k], m[k + 2], q[(k + 3) % 4]});
+      out.push_back({m[k], q[k + 1], q[k + 2], m[k + 2]});
+    } else {
+      out.push_back(q);
+    }
+  }
+  for (const auto& t : triangles) {  // three quads (v_k, m_k, c, m_k-1)
+    const int c = centre(t, 3);
+    for (int k = 0; k < 3; ++k) out.push_back({t[k], mid(t[k], t[(k + 1) % 3]), c, mid(t[(k + 2) % 3], t[k])});
+  }
+  quads.swap(out);
+  const std::size_t count = triangles.size();
+  triangles.clear();
+  return count;
+}
 
 QuadCompletion pairTriangles(std::vector<std::array<int, 4>>& quads, std::vector<std::array<int, 3>>& triangles, int maxStrip) {
   QuadCompletion done;

@@ -98,7 +98,7 @@ std::vector<std::array<std::size_t, N>> elementsOfType(int type) {
   return out;
 }
 
-// Gmsh's quads, and its leftover triangles paired into quads where they can be (quad_completion).
+// Gmsh's quads, and its leftover triangles paired into quads, the rest split (quad_completion).
 QuadMesh collectQuads() {
   const auto quadTags = elementsOfType<4>(3);
   const auto triangleTags = elementsOfType<3>(2);
@@ -123,13 +123,14 @@ QuadMesh collectQuads() {
   for (const auto& e : triangleTags) triangles.push_back({node(e[0]), node(e[1]), node(e[2])});
   const QuadCompletion done = pairTriangles(q.quads, triangles, kMaxStrip);
   q.pairedTriangles = done.paired;
-  q.holes = done.unpaired;
+  q.splitTriangles = splitTriangles(q.nodes, q.quads, triangles);
+  q.holes = triangles.size();
   return q;
 }
 
 // A quad mesh as bytes and back, to cross from the child process that runs Gmsh.
 std::string toBytes(const QuadMesh& q) {
-  const std::size_t counts[4] = {q.nodes.size(), q.quads.size(), q.pairedTriangles, q.holes};
+  const std::size_t counts[5] = {q.nodes.size(), q.quads.size(), q.pairedTriangles, q.splitTriangles, q.holes};
   std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
   for (const Vec3& p : q.nodes) bytes.append(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
   bytes.append(reinterpret_cast<const char*>(q.quads.data()), q.quads.size() * sizeof(q.quads[0]));
@@ -137,14 +138,15 @@ std::string toBytes(const QuadMesh& q) {
 }
 
 QuadMesh fromBytes(const std::string& bytes) {
-  std::size_t counts[4];
+  std::size_t counts[5];
   if (bytes.size() < sizeof counts) throw std::runtime_error("truncated quad mesh");
   std::memcpy(counts, bytes.data(), sizeof counts);
   QuadMesh q;
   q.nodes.resize(counts[0]);
   q.quads.resize(counts[1]);
   q.pairedTriangles = counts[2];
-  q.holes = counts[3];
+  q.splitTriangles = counts[3];
+  q.holes = counts[4];
   const std::size_t nodeBytes = counts[0] * 3 * sizeof(double), quadBytes = counts[1] * sizeof(q.quads[0]);
   if (bytes.size() != sizeof counts + nodeBytes + quadBytes) throw std::runtime_error("truncated quad mesh");
   const char* at = bytes.data() + sizeof counts;

@@ -13,7 +13,8 @@ struct QuadMesh {
   std::vector<Vec3> nodes;                 // on the chordal surface
   std::vector<std::array<int, 4>> quads;   // orientation as Gmsh made it (the sweep orients them)
   std::size_t pairedTriangles = 0;         // Gmsh's leftover triangles turned into quads (quad_completion)
-  std::size_t holes = 0;                   // leftover triangles that could not be: each is a hole
+  std::size_t splitTriangles = 0;          // the others, split into quads with the strips from them
+  std::size_t holes = 0;                   // leftover triangles neither could handle: each is a hole
 };
 
 // How Gmsh cuts the chordal surface into patches it can parametrize, in degrees: chordal edges

@@ -1,9 +1,14 @@
 #include "tets/tet_mesh.hpp"
 
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepClass3d.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <TopoDS_Shell.hxx>
 #include <tetgen.h>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <string>
 
@@ -31,13 +36,28 @@ double diagonal(const std::vector<SurfaceNode>& nodes) {
 }
 
 // Four nodes in one plane: a tet of zero volume, as two top and two bottom bubbles on the parallel
-// edges of a bend give. It is kept: it joins the tets on either side of that plane, and the chordal
-// surface collapses its degenerate facet.
+// edges of a bend give. Inside the wall it is kept: it joins the tets on either side of that plane,
+// and the chordal surface collapses its degenerate facet. On a rim face (two bubbles on each of the
+// parallel rim edges of a rounded corner) it is a sliver of the hull, dropped like the flat ones.
 bool isCoplanar(const TetMesh& mesh, const std::array<int, 4>& t) {
   const Vec3 e1 = mesh.nodes[t[1]] - mesh.nodes[t[0]], e2 = mesh.nodes[t[2]] - mesh.nodes[t[0]],
              e3 = mesh.nodes[t[3]] - mesh.nodes[t[0]];
   const double scale = std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()});
   return std::abs(e1.dot(e2.cross(e3))) < 1e-9 * std::pow(scale, 1.5);
+}
+
+// Whether the coplanar tet lies in the rim: its centre closer to the solid's boundary than a quarter
+// of its shortest top-bottom edge (about the wall thickness; a bend's coplanar tet is half of it away).
+bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Shape& boundary) {
+  double shortest = std::numeric_limits<double>::infinity();
+  Vec3 c = Vec3::Zero();
+  for (int a : t) {
+    c += 0.25 * mesh.nodes[a];
+    for (int b : t)
+      if (mesh.side[a] == Side::Top && mesh.side[b] == Side::Bottom) shortest = std::min(shortest, (mesh.nodes[a] - mesh.nodes[b]).norm());
+  }
+  BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(gp_Pnt(c.x(), c.y(), c.z())).Vertex(), boundary);
+  return distance.IsDone() && distance.Value() < 0.25 * shortest;
 }
 
 }  // namespace
@@ -95,6 +115,9 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
   TetFilterCounts counts;
   counts.delaunay = mesh.tets.size();
   counts.flat = std::count(verdict.begin(), verdict.end(), kFlat);
+  const TopoDS_Shell boundary = BRepClass3d::OuterShell(cad.solid);
+  for (std::size_t i = 0; i < mesh.tets.size(); ++i)
+    if (verdict[i] == kKeptCoplanar && onTheRim(mesh, mesh.tets[i], boundary)) verdict[i] = kOutside;
   counts.coplanar = std::count(verdict.begin(), verdict.end(), kKeptCoplanar);
   counts.outside = std::count(verdict.begin(), verdict.end(), kOutside);
   std::vector<std::array<int, 4>> kept;

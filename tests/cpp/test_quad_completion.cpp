@@ -64,3 +64,26 @@ TEST(QuadCompletion, ALoneTriangleIsCountedAsAHole) {
   EXPECT_EQ(quads.size(), 1u);
   EXPECT_EQ(triangles.size(), 1u);
 }
+
+// A lone triangle beside a row of two quads: the triangle becomes three quads and the row, whose
+// edge the triangle's edge midpoint splits, is halved lengthwise up to the rim.
+//   3---4---5          nodes 0..5 a 2 x 1 row of quads (0 1 4 3), (1 2 5 4);
+//   |   |   |          triangle (3, 4, 6) above it.
+//   0---1---2
+TEST(QuadCompletion, ALoneTriangleIsSplitAndItsStripHalved) {
+  std::vector<Vec3> nodes{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {0.5, 2, 0}};
+  std::vector<std::array<int, 4>> quads{{0, 1, 4, 3}, {1, 2, 5, 4}};
+  std::vector<std::array<int, 3>> triangles{{3, 4, 6}};
+  EXPECT_EQ(splitTriangles(nodes, quads, triangles), 1u);
+  EXPECT_TRUE(triangles.empty());
+  EXPECT_EQ(quads.size(), 3u + 2u + 1u) << "3 from the triangle, the quad below it halved, its neighbour untouched";
+  double area = 0;
+  for (const auto& q : quads) {
+    EXPECT_EQ(std::set<int>(q.begin(), q.end()).size(), 4u);
+    const Vec3 n = (nodes[q[2]] - nodes[q[0]]).cross(nodes[q[3]] - nodes[q[1]]);
+    EXPECT_GT(n.z(), 0) << "orientation kept";
+    area += 0.5 * n.norm();
+  }
+  EXPECT_NEAR(area, 2.0 + 0.5, 1e-12) << "same area as the row and the triangle";
+  for (const auto& [edge, n] : edgeUses(quads)) EXPECT_LE(n, 2) << "conformal";
+}
