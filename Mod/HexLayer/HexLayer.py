@@ -4,13 +4,23 @@
     mesh = HexLayer.makeMesh(doc, part, Layers=2, Size=2.0)
     doc.recompute()   # meshes; mesh.Status says how it went, mesh.FemMesh holds the hexa8 (Order 1) or hexa20 (Order 2) volumes
 
+The method's stages as objects to look at (from the mesh's last meshing; meshes if needed):
+    views = HexLayer.makeStageViews(mesh)   # {"ChordalSurface": ..., "QuadMesh": ..., "ExplodedLayers": ..., "Quality": ...}
+or one of makeChordalSurface(mesh), makeQuadMesh(mesh), makeExplodedLayers(mesh, gap=None), makeQualityView(mesh).
+
 Works in freecadcmd (no GUI) and in the GUI, where the mesh gets its view provider and task panel.
 """
 import FreeCAD
 
-from hexlayer_fem import mesh_object
+from hexlayer_fem import mesh_object, stage_views
 
-__all__ = ["makeMesh"]
+__all__ = ["makeMesh", "makeStageViews", "makeChordalSurface", "makeQuadMesh", "makeExplodedLayers", "makeQualityView"]
+
+makeStageViews = stage_views.make_stage_views
+makeChordalSurface = stage_views.make_chordal_surface
+makeQuadMesh = stage_views.make_quad_mesh
+makeExplodedLayers = stage_views.make_exploded_layers
+makeQualityView = stage_views.make_quality_view
 
 
 def makeMesh(doc, part=None, name="HexLayerMesh", **properties):

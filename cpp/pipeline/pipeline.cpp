@@ -238,6 +238,22 @@ void append(HexMesh& all, const HexMesh& part) {
   }
 }
 
+// The chordal surface and quad mesh of one more solid, their ids after those already there (-1 stays).
+void appendStages(MeshResult& all, const MeshResult& part) {
+  auto appendCells = [](auto& to, const auto& from, int offset) {
+    for (auto cell : from) {
+      for (int& v : cell) v += v >= 0 ? offset : 0;
+      to.push_back(cell);
+    }
+  };
+  ChordalSurface& c = all.chordalSurface;
+  appendCells(c.facets, part.chordalSurface.facets, static_cast<int>(c.vertices.size()));
+  c.vertices.insert(c.vertices.end(), part.chordalSurface.vertices.begin(), part.chordalSurface.vertices.end());
+  QuadMesh& q = all.quadMesh;
+  appendCells(q.quads, part.quadMesh.quads, static_cast<int>(q.nodes.size()));
+  q.nodes.insert(q.nodes.end(), part.quadMesh.nodes.begin(), part.quadMesh.nodes.end());
+}
+
 }  // namespace
 
 void validateOptions(const MeshOptions& o) {
@@ -322,6 +338,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);
   result.nodeSets = surfaceNodeSets(result.mesh);
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
+  result.chordalSurface = std::move(chordal);
+  result.quadMesh = quads;
   return result;
 }
 
@@ -339,6 +357,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
     appendSurfaceGroups(all.surfaceGroups, one.surfaceGroups, static_cast<int>(all.mesh.nodes.size()),
                         static_cast<int>(all.mesh.hexes.size()));
     append(all.mesh, one.mesh);
+    appendStages(all, one);
   }
   all.scaledJacobian = reportQuality(all.mesh, cad, all.report);
   long cadEuler = 0;

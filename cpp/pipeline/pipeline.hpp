@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "chordal/chordal_surface.hpp"
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
+#include "quadmesh/quad_mesh.hpp"
 
 namespace hexlayer {
 
@@ -28,6 +30,10 @@ struct MeshResult {
   std::vector<SurfaceGroup> surfaceGroups;  // one per CAD face, Face1..FaceN as FreeCAD numbers them
   nlohmann::json report;         // numbers of every stage, see README "Report"
   std::vector<double> scaledJacobian;  // per hex, as measured for the report
+  // The stages as used (§5-6), for looking at them: the (faired) chordal surface the quad mesh was made on,
+  // and that quad mesh, which the sweep turned into the hexes (mesh.nodeLayer: each node's layer).
+  ChordalSurface chordalSurface;
+  QuadMesh quadMesh;
 };
 
 // Checks the options; throws usageError naming the bad one.

@@ -68,6 +68,11 @@ struct PyMeshResult {
   py::dict faceNodes;                   // "FaceN" -> ids of the boundary nodes on CAD face N (0-based)
   py::dict faceElements;                // "FaceN" -> (K, 2): hex (0-based), local face 0..5 (CalculiX S1..S6)
   py::dict report;
+  py::array_t<double> chordalVertices;  // (V, 3)
+  py::array_t<long long> chordalFacets; // (F, 4), triangles end with -1
+  py::array_t<double> quadNodes;        // (Q, 3)
+  py::array_t<long long> quads;         // (K, 4)
+  py::array_t<long long> nodeLayer;     // (N,)
 };
 
 py::array_t<double> nodeArray(const std::vector<hexlayer::Vec3>& nodes) {
@@ -91,6 +96,16 @@ py::array_t<long long> hexArray(const hexlayer::HexMesh& mesh) {
   return a;
 }
 
+// One row per cell (facet, quad) of its node ids.
+template <std::size_t W>
+py::array_t<long long> cellArray(const std::vector<std::array<int, W>>& cells) {
+  py::array_t<long long> a({static_cast<py::ssize_t>(cells.size()), static_cast<py::ssize_t>(W)});
+  auto v = a.mutable_unchecked<2>();
+  for (size_t i = 0; i < cells.size(); ++i)
+    for (std::size_t k = 0; k < W; ++k) v(i, k) = cells[i][k];
+  return a;
+}
+
 template <class T>
 py::array_t<T> vectorArray(const std::vector<T>& values) {
   return py::array_t<T>(static_cast<py::ssize_t>(values.size()), values.data());
@@ -111,6 +126,11 @@ PyMeshResult toPython(const hexlayer::MeshResult& r) {
     p.faceElements[py::str(g.name)] = faces;
   }
   p.report = toPython(r.report);
+  p.chordalVertices = nodeArray(r.chordalSurface.vertices);
+  p.chordalFacets = cellArray(r.chordalSurface.facets);
+  p.quadNodes = nodeArray(r.quadMesh.nodes);
+  p.quads = cellArray(r.quadMesh.quads);
+  p.nodeLayer = vectorArray(std::vector<long long>(r.mesh.nodeLayer.begin(), r.mesh.nodeLayer.end()));
   return p;
 }
 
@@ -265,6 +285,15 @@ PYBIND11_MODULE(pyhexlayer, m) {
                     "dict: 'Face1'..'FaceN' -> int64 (K, 2): hex row (0-based) and its local face 0..5 on that CAD "
                     "face (0 bottom 0-3-2-1, 1 top 4-5-6-7, 2..5 sides 0-1-5-4 .. 3-0-4-7: CalculiX S1..S6)")
       .def_readonly("report", &PyMeshResult::report, "dict: the CLI's JSON report")
+      .def_readonly("chordal_vertices", &PyMeshResult::chordalVertices,
+                    "float64 (V, 3): vertices of the chordal surface (§5) the quad mesh was made on (after fairing)")
+      .def_readonly("chordal_facets", &PyMeshResult::chordalFacets,
+                    "int64 (F, 4) 0-based rows of chordal_vertices: quads, and triangles padded with -1")
+      .def_readonly("quad_nodes", &PyMeshResult::quadNodes, "float64 (Q, 3): nodes of the quad mesh on the chordal surface")
+      .def_readonly("quads", &PyMeshResult::quads, "int64 (K, 4) 0-based rows of quad_nodes: the quads the sweep made the hexes of")
+      .def_readonly("node_layer", &PyMeshResult::nodeLayer,
+                    "int64 (N,): layer of each node, 0 = bottom surface .. layers = top surface; -1 = a mid-edge node "
+                    "between two layers (order 2). A hex's layer is the lowest of its corners'")
       .def("__repr__", [](const PyMeshResult& r) {
         return "<pyhexlayer.MeshResult " + std::to_string(r.hexes.shape(0)) + " hexes, " +
                std::to_string(r.nodes.shape(0)) + " nodes>";

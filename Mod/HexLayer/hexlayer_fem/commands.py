@@ -1,8 +1,8 @@
-"""The workbench's commands: "Hex-Layer mesh" (FEM_MeshGmshFromShape's conventions)."""
+"""The workbench's commands: "Hex-Layer mesh" (FEM_MeshGmshFromShape's conventions) and the stage views."""
 import FreeCAD
 import FreeCADGui
 
-from . import icon, meshing
+from . import icon, meshing, stage_views
 
 
 def active_analysis():
@@ -53,7 +53,69 @@ class MeshCommand:
         FreeCADGui.doCommand("Gui.ActiveDocument.setEdit(hexlayer_mesh.Name)")
 
 
-COMMANDS = {"HexLayer_Mesh": MeshCommand()}
+def selected_mesh():
+    """The first selected Hex-Layer mesh object, or None."""
+    meshes = [o for o in FreeCADGui.Selection.getSelection() if stage_views.is_hexlayer_mesh(o)]
+    return (meshes or [None])[0]
+
+
+class StageViewCommand:
+    """Makes one stage view of the selected Hex-Layer mesh and shows it alone (the mesh and its part hidden)."""
+
+    def __init__(self, stage, menu_text, tool_tip):
+        self.stage, self.menu_text, self.tool_tip = stage, menu_text, tool_tip
+
+    def GetResources(self):
+        return {"Pixmap": icon("HexLayer_" + self.stage), "MenuText": self.menu_text,
+                "ToolTip": self.tool_tip + "\nSelect a Hex-Layer mesh first."}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and selected_mesh() is not None
+
+    def Activated(self):
+        mesh = selected_mesh()
+        FreeCADGui.addModule("HexLayer")
+        FreeCAD.ActiveDocument.openTransaction(self.menu_text)
+        error = None
+        try:
+            FreeCADGui.doCommand("HexLayer.{}(App.ActiveDocument.getObject('{}'))".format(STAGE_API[self.stage], mesh.Name))
+        except Exception as e:
+            error = e
+        view = stage_views.find_view(mesh, self.stage)
+        if view is None:  # the mesher's message; the document stays as it was
+            FreeCAD.ActiveDocument.abortTransaction()
+            FreeCAD.Console.PrintError("{}: {}\n".format(self.menu_text, meshing.for_people(str(error or mesh.Status))))
+            return
+        FreeCAD.ActiveDocument.commitTransaction()
+        show_alone(view, mesh)
+
+
+def show_alone(view, mesh):
+    """Shows `view` (and its members), hides the mesh, its part and the other stage views; fits the 3D view."""
+    group = stage_views.stage_group(mesh)
+    for obj in [mesh, mesh.Part] + group.Group:
+        if obj is not None and obj is not view:
+            obj.ViewObject.Visibility = False
+    for obj in [view] + list(getattr(view, "Group", [])):
+        obj.ViewObject.Visibility = True
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.SendMsgToActiveView("ViewFit")
+
+
+STAGE_API = {"ChordalSurface": "makeChordalSurface", "QuadMesh": "makeQuadMesh",
+             "ExplodedLayers": "makeExplodedLayers", "Quality": "makeQualityView"}
+
+COMMANDS = {
+    "HexLayer_Mesh": MeshCommand(),
+    "HexLayer_ChordalSurface": StageViewCommand(
+        "ChordalSurface", "Chordal surface", "Show the chordal surface (mid-surface cut through the tets) the quads were made on."),
+    "HexLayer_QuadMesh": StageViewCommand(
+        "QuadMesh", "Quad mesh", "Show the quad mesh of the chordal surface that the sweep turned into hexes."),
+    "HexLayer_ExplodedLayers": StageViewCommand(
+        "ExplodedLayers", "Exploded layers", "Show the hex layers pulled apart along the sweep direction."),
+    "HexLayer_Quality": StageViewCommand(
+        "Quality", "Quality view", "Colour the hexes by scaled Jacobian: green 1, yellow 0.5, red 0, dark red inverted."),
+}
 
 for _name, _command in COMMANDS.items():
     FreeCADGui.addCommand(_name, _command)

@@ -44,12 +44,15 @@ class MeshHexLayer(Stateless):
         try:
             result = meshing.mesh(obj.Part, meshing.options(obj), progress=self.progress)
         except Exception as error:
+            self.result = None
             obj.FemMesh = Fem.FemMesh()
             obj.Status = "Failed: " + meshing.for_people(str(error))
             raise
+        self.result = result  # the stages and quality of the last meshing, for the stage views (not saved)
         obj.FemMesh = meshing.femmesh(result)
         obj.Status = meshing.summary(result.report, time.perf_counter() - start)
 
+    result = None  # pyhexlayer.MeshResult of the last meshing in this session
     listener = None  # a task panel sets a callable here while it meshes, to show the progress lines
 
     def progress(self, line):

@@ -65,15 +65,21 @@ def femmesh(result):
     the ones FemMesh.getNodesByFace finds on that face). Ids 1-based, as FreeCAD's. FreeCAD 0.20's
     FemMesh groups nodes or whole elements, not faces of volumes: the element faces on each CAD face
     (pyhexlayer's face_elements, the .inp's *SURFACE FaceN_S) have no FemMesh group."""
-    fem = Fem.FemMesh()
-    for i, (x, y, z) in enumerate(result.nodes.tolist(), start=1):
-        fem.addNode(x, y, z, i)
-    smesh_order = SMESH_HEXA20 if result.hexes.shape[1] == 20 else SMESH_HEXA8
-    for i, hexa in enumerate((result.hexes[:, smesh_order] + 1).tolist(), start=1):
-        fem.addVolume(hexa, i)
+    fem = hexa_femmesh(result.nodes, result.hexes)
     for name, nodes in list(result.node_sets.items()) + list(result.face_nodes.items()):
         if len(nodes):
             fem.addGroupElements(fem.addGroup(name, "Node"), (nodes + 1).tolist())
+    return fem
+
+
+def hexa_femmesh(nodes, hexes):
+    """A FemMesh of the (N, 3) nodes and the (M, 8) or (M, 20) pyhexlayer hexes (0-based), 1-based ids in row order."""
+    fem = Fem.FemMesh()
+    for i, (x, y, z) in enumerate(nodes.tolist(), start=1):
+        fem.addNode(x, y, z, i)
+    smesh_order = SMESH_HEXA20 if hexes.shape[1] == 20 else SMESH_HEXA8
+    for i, hexa in enumerate((hexes[:, smesh_order] + 1).tolist(), start=1):
+        fem.addVolume(hexa, i)
     return fem
 
 
