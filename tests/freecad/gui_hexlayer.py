@@ -5,7 +5,8 @@ Run (CTest does, see tests/CMakeLists.txt):
     QTWEBENGINE_DISABLE_SANDBOX=1 xvfb-run -a -s "-screen 0 1920x1200x24" \
         freecad -P tests/python -P tests/freecad tests/freecad/gui_hexlayer.py
 FreeCAD imports this file once its main window is up; it ends FreeCAD with exit code 0 if every test passed.
-HEXLAYER_SCREENSHOTS: folder for freecad_panel.png and freecad_mesh.png (the README's are made with docs/).
+HEXLAYER_SCREENSHOTS: folder for freecad_panel.png, freecad_mesh.png and freecad_stages.png (the README's are
+made with docs/).
 """
 import os
 import sys
@@ -38,6 +39,10 @@ def widget(name, kind=QtGui.QWidget):
 def mesh_command():
     from hexlayer_fem import commands
     return commands.COMMANDS["HexLayer_Mesh"]
+
+
+STAGE_MENU = ["Chordal surface", "Quad mesh", "Exploded layers", "Quality view"]
+STAGE_COMMANDS = ["HexLayer_ChordalSurface", "HexLayer_QuadMesh", "HexLayer_ExplodedLayers", "HexLayer_Quality"]
 
 
 def distinct_colours(path):
@@ -92,7 +97,8 @@ class Workbench(GuiTest):
         self.assertEqual(len(toolbars), 1)
         self.assertIn("Hex-Layer mesh", [a.text() for a in toolbars[0].actions()])
         menus = [m for m in window.menuBar().actions() if m.text() == "&Hex-Layer"]
-        self.assertEqual([a.text() for a in menus[0].menu().actions()], ["Hex-Layer mesh"])
+        self.assertEqual([a.text() for a in menus[0].menu().actions()], ["Hex-Layer mesh"] + STAGE_MENU)
+        self.assertEqual([a.text() for a in toolbars[0].actions()], ["Hex-Layer mesh"] + STAGE_MENU)
 
 
 class BadSelections(GuiTest):
@@ -191,16 +197,108 @@ class MeshSamplePart(GuiTest):
         """The 3D view as on screen: isometric, the part filling it, hexes with their edges."""
         Gui.Control.closeDialog()
         mesh.ViewObject.DisplayMode = "Faces & Wireframe"
-        view = Gui.ActiveDocument.ActiveView
-        view.viewIsometric()
-        view.fitAll()
-        camera = view.getCameraNode()
-        camera.height.setValue(camera.height.getValue() * 0.8)  # fitAll leaves room for the bounding sphere
-        settle()
-        # The on-screen framebuffer: FreeCAD's default off-screen one draws the edges half hidden on Mesa.
-        FreeCAD.ParamGet("User parameter:BaseApp/Preferences/View").SetString("SavePicture", "GrabFramebuffer")
-        view.saveImage(path, *view.getSize(), "Current")
+        save_3d_view(path)
         self.assertGreater(distinct_colours(path), 10)
+
+
+def save_3d_view(path, zoom=0.8, direction=None):
+    """The 3D view as on screen, isometric (or looking along `direction`) and fitted to what is shown."""
+    view = Gui.ActiveDocument.ActiveView
+    view.viewIsometric()
+    if direction is not None:
+        view.setViewDirection(direction)
+    view.fitAll()
+    camera = view.getCameraNode()
+    camera.height.setValue(camera.height.getValue() * zoom)  # fitAll leaves room for the bounding sphere
+    settle()
+    # The on-screen framebuffer: FreeCAD's default off-screen one draws the edges half hidden on Mesa.
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/View").SetString("SavePicture", "GrabFramebuffer")
+    view.saveImage(path, *view.getSize(), "Current")
+
+
+def tile(paths, captions, path, columns=2, width=900):
+    """The images side by side, `columns` a row, each scaled to `width` with its caption on top."""
+    images = [QtGui.QImage(p).scaledToWidth(width, QtCore.Qt.SmoothTransformation) for p in paths]
+    height = max(i.height() for i in images)
+    rows = (len(images) + columns - 1) // columns
+    sheet = QtGui.QImage(columns * width, rows * height, QtGui.QImage.Format_RGB32)
+    sheet.fill(QtGui.QColor("white"))
+    painter = QtGui.QPainter(sheet)
+    font = painter.font()
+    font.setPointSize(18)
+    font.setBold(True)
+    painter.setFont(font)
+    for k, (image, caption) in enumerate(zip(images, captions)):
+        x, y = (k % columns) * width, (k // columns) * height
+        painter.drawImage(x, y, image)
+        painter.drawText(QtCore.QRect(x + 16, y + 10, width - 32, 40), QtCore.Qt.AlignLeft, caption)
+    painter.end()
+    return sheet.save(path)
+
+
+class StageViews(GuiTest):
+    """The four stage commands on the meshed hat section; freecad_stages.png for the README."""
+
+    def mesh_sample(self):
+        import HexLayer
+        part = t.add_sample(self.doc, "hat_holes.step")
+        mesh = HexLayer.makeMesh(self.doc, part)
+        self.doc.recompute()
+        self.assertTrue(mesh.isValid(), mesh.Status)
+        return mesh
+
+    def run_stage(self, mesh, command):
+        Gui.Selection.clearSelection()
+        Gui.Selection.addSelection(self.doc.Name, mesh.Name)
+        from hexlayer_fem import commands
+        self.assertTrue(commands.COMMANDS[command].IsActive())
+        Gui.runCommand(command)
+        settle()
+        from hexlayer_fem import stage_views
+        view = stage_views.find_view(mesh, command.split("_")[1])
+        self.assertIsNotNone(view, command)
+        return view
+
+    def test_commands_need_a_hexlayer_mesh(self):
+        from hexlayer_fem import commands
+        part = t.add_plate(self.doc)
+        Gui.Selection.addSelection(self.doc.Name, part.Name)
+        self.assertEqual([commands.COMMANDS[c].IsActive() for c in STAGE_COMMANDS], [False] * 4, "a solid is no mesh")
+
+    def test_stage_views_of_the_hat_section(self):
+        from hexlayer_fem import commands, stage_views
+        mesh = self.mesh_sample()
+        result = mesh.Proxy.result
+        Gui.Selection.addSelection(self.doc.Name, mesh.Name)
+        self.assertEqual([commands.COMMANDS[c].IsActive() for c in STAGE_COMMANDS], [True] * 4)
+        paths = []
+        for command in STAGE_COMMANDS:
+            view = self.run_stage(mesh, command)
+            shown = [o for o in self.doc.Objects if o.ViewObject.Visibility and not o.isDerivedFrom("App::DocumentObjectGroup")]
+            members = list(getattr(view, "Group", [])) or [view]
+            self.assertEqual(sorted(o.Name for o in shown), sorted(o.Name for o in members), "the view alone is shown")
+            paths.append(os.path.join(SCREENSHOTS, "freecad_stage_{}.png".format(command.split("_")[1])))
+            # the exploded layers seen along the hat's profile, where they stand apart
+            save_3d_view(paths[-1], zoom=0.7, direction=(0.3, 1, -0.35) if "Exploded" in command else None)
+            self.assertGreater(distinct_colours(paths[-1]), 10)
+        quality = stage_views.find_view(mesh, "Quality")
+        colours = quality.ViewObject.Proxy.colours  # what was set as ElementColor (0.20 cannot read it back)
+        self.assertEqual(len(colours), len(result.hexes))
+        for i in (1, len(result.hexes) // 2, len(result.hexes)):
+            expected = stage_views.quality_colour(result.scaled_jacobian[i - 1])
+            self.assertEqual(len(colours[i]), 3)
+            for got, want in zip(colours[i], expected):
+                self.assertAlmostEqual(got, want, delta=0.01)
+        layers = stage_views.find_view(mesh, "ExplodedLayers").Group
+        self.assertEqual(len(layers), 2)
+        sj = result.scaled_jacobian
+        captions = ["Chordal surface ({} facets)".format(len(result.chordal_facets)),
+                    "Quad mesh ({} quads)".format(len(result.quads)),
+                    "Exploded layers ({} x {} hexes)".format(len(layers), layers[0].FemMesh.VolumeCount),
+                    "Scaled Jacobian min {:.2f}, avg {:.2f} (green 1, red 0)".format(sj.min(), sj.mean())]
+        stages = os.path.join(SCREENSHOTS, "freecad_stages.png")
+        self.assertTrue(tile(paths, captions, stages))
+        self.assertGreater(distinct_colours(stages), 20)
 
 
 def main():

@@ -61,9 +61,9 @@ class PlateStages(unittest.TestCase):
             self.assertAlmostEqual(z.min(), layer.Layer * 4.0, delta=1e-6)
             self.assertAlmostEqual(z.max(), layer.Layer * 4.0 + 1.0, delta=1e-6)
 
-    def test_exploded_gap_defaults_to_the_wall_thickness(self):
+    def test_exploded_gap_defaults_to_twice_the_wall_thickness(self):
         layers = HexLayer.makeExplodedLayers(self.mesh).Group
-        self.assertAlmostEqual(layers[1].Offset.Value, t.PLATE[2], delta=1e-6)
+        self.assertAlmostEqual(layers[1].Offset.Value, 2 * t.PLATE[2], delta=1e-6)
 
     def test_quality_view_holds_the_scaled_jacobian_of_every_hex(self):
         view = HexLayer.makeQualityView(self.mesh)

@@ -161,9 +161,17 @@ def add_view(mesh_obj, stage, type_id, label):
 
 
 def show_faces_and_edges(obj, colour):
-    if FreeCAD.GuiUp:
-        obj.ViewObject.DisplayMode = "Flat Lines" if obj.isDerivedFrom("Mesh::Feature") else "Faces & Wireframe"
-        obj.ViewObject.ShapeColor = colour
+    """In the GUI: faces in `colour` with their edges in a darker shade, lit from both sides."""
+    if not FreeCAD.GuiUp:
+        return
+    vobj = obj.ViewObject
+    vobj.ShapeColor = colour
+    if obj.isDerivedFrom("Mesh::Feature"):
+        vobj.DisplayMode = "Flat Lines"
+        vobj.Lighting = "Two side"
+        vobj.LineColor = tuple(0.6 * c for c in colour)
+    else:
+        vobj.DisplayMode = "Faces & Wireframe"
 
 
 def make_chordal_surface(mesh_obj):
@@ -186,9 +194,9 @@ def make_quad_mesh(mesh_obj):
 
 def make_exploded_layers(mesh_obj, gap=None):
     """The hex layers pulled apart (Figure 12(f)): a group with one Fem::FemMeshObject per layer, layer k moved
-    by Offset = k x gap along the local sweep direction; gap defaults to the wall thickness."""
+    by Offset = k x gap along the local sweep direction; gap defaults to twice the wall thickness."""
     result = last_result(mesh_obj)
-    gap = wall_thickness(result) if gap is None else gap
+    gap = 2 * wall_thickness(result) if gap is None else gap
     group = add_view(mesh_obj, "ExplodedLayers", "App::DocumentObjectGroup", "exploded layers")
     for k, offset, nodes, hexes in exploded_layers(result, gap):
         layer = mesh_obj.Document.addObject("Fem::FemMeshObject", "{}Layer{}".format(mesh_obj.Name, k))
@@ -213,7 +221,10 @@ class QualityView(Stateless):
 
     def updateData(self, obj, prop):
         if prop in ("FemMesh", "ScaledJacobian") and len(obj.ScaledJacobian) == obj.FemMesh.VolumeCount:
-            obj.ViewObject.ElementColor = {i: quality_colour(v) for i, v in enumerate(obj.ScaledJacobian, start=1)}
+            self.colours = {i: quality_colour(v) for i, v in enumerate(obj.ScaledJacobian, start=1)}
+            obj.ViewObject.ElementColor = self.colours  # FreeCAD 0.20 cannot read it back
+
+    colours = None  # element id -> (r, g, b) as last set
 
 
 def make_quality_view(mesh_obj):
