@@ -38,6 +38,17 @@ def add_plate(doc, name="Plate"):
     return box
 
 
+def mesh_plate(test, layers=2):
+    """The plate in a new document, meshed by HexLayer.makeMesh with `layers` layers: (document, plate, mesh)."""
+    import HexLayer
+    doc = new_document(test)
+    plate = add_plate(doc)
+    mesh = HexLayer.makeMesh(doc, plate, Layers=layers)
+    doc.recompute()
+    test.assertTrue(mesh.isValid(), mesh.Status)
+    return doc, plate, mesh
+
+
 LBRACKET = dict(thickness=2.0, inner_radius=3.0, legs=(40.0, 30.0), width=20.0)  # mm
 
 

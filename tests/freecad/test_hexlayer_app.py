@@ -20,11 +20,7 @@ class PlateMesh(unittest.TestCase):
     """100 x 20 x 2 mm plate, 2 layers: the FemMesh holds exactly the binding's mesh, as positive hexa8."""
 
     def setUp(self):
-        self.doc = t.new_document(self)
-        self.plate = t.add_plate(self.doc)
-        self.mesh = HexLayer.makeMesh(self.doc, self.plate, Layers=2)
-        self.doc.recompute()
-        self.assertTrue(self.mesh.isValid(), self.mesh.Status)
+        self.doc, self.plate, self.mesh = t.mesh_plate(self)
 
     def test_femmesh_equals_the_binding(self):
         result = pyhexlayer.mesh_brep(self.plate.Shape.exportBrepToString(), layers=2)

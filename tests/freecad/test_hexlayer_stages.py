@@ -14,11 +14,7 @@ import hexlayer_testing as t
 
 class PlateStages(unittest.TestCase):
     def setUp(self):
-        self.doc = t.new_document(self)
-        self.plate = t.add_plate(self.doc)
-        self.mesh = HexLayer.makeMesh(self.doc, self.plate, Layers=2)
-        self.doc.recompute()
-        self.assertTrue(self.mesh.isValid(), self.mesh.Status)
+        self.doc, self.plate, self.mesh = t.mesh_plate(self)
         self.result = self.mesh.Proxy.result
 
     def test_result_hands_out_the_stages(self):

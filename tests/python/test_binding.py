@@ -18,6 +18,17 @@ from hex_geometry import hex_volumes
 PLATE_VOLUME = 60.0 * 40.0 * 2.0  # Resources/samples/plate.step: 60 x 40 x 2 mm
 
 
+PLATE_AREA = 60.0 * 40.0  # its mid-surface
+
+
+def facet_area(vertices, facets):
+    """Area of -1 padded triangles and quads (each quad as the triangles 0-1-2 and 0-2-3)."""
+    def area(a, b, c):
+        return 0.5 * np.linalg.norm(np.cross(vertices[b] - vertices[a], vertices[c] - vertices[a]), axis=1).sum()
+    quads = facets[facets[:, 3] >= 0]
+    return area(facets[:, 0], facets[:, 1], facets[:, 2]) + area(quads[:, 0], quads[:, 2], quads[:, 3])
+
+
 def sample(name):
     return os.path.join(harness.args.source, "Resources", "samples", name)
 
@@ -102,9 +113,51 @@ class PlateMesh(unittest.TestCase):
         self.assertEqual(planes, {(0, 0.0), (0, 60.0), (1, 0.0), (1, 40.0), (2, 0.0), (2, 2.0)})
         self.assertEqual(sum(len(f) for f in r.face_elements.values()), r.report["boundary"]["faces"])
 
+    def test_stages_are_handed_out(self):
+        r = self.result
+        self.assertEqual(r.chordal_facets.shape, (r.report["chordal_surface"]["triangles"] + r.report["chordal_surface"]["quads"], 4))
+        self.assertEqual(r.quads.shape, (r.report["quad_mesh"]["quads"], 4))
+        self.assertEqual(r.quad_nodes.shape, (r.report["quad_mesh"]["nodes"], 3))
+        self.assertEqual(len(r.hexes), 2 * len(r.quads), "one hex per quad and layer")
+        self.assertLess(abs(facet_area(r.chordal_vertices, r.chordal_facets) - PLATE_AREA) / PLATE_AREA, 0.02)
+        self.assertLess(abs(facet_area(r.quad_nodes, r.quads) - PLATE_AREA) / PLATE_AREA, 0.02)
+        self.assertLess(np.abs(r.quad_nodes[:, 2] - 1.0).max(), 0.05, "the quads lie on the mid-surface z = 1")
+
+    def test_node_layer_counts_up_from_the_bottom(self):
+        r = self.result
+        self.assertEqual(r.node_layer.shape, (len(r.nodes),))
+        self.assertEqual(set(r.node_layer[r.node_sets["BOTTOM"]].tolist()), {0})
+        self.assertEqual(set(r.node_layer[r.node_sets["TOP"]].tolist()), {2})
+        np.testing.assert_array_equal(r.node_layer[r.hexes[:, 4:]], r.node_layer[r.hexes[:, :4]] + 1)
+        self.assertAlmostEqual(np.abs(r.nodes[:, 2] - r.node_layer).max(), 0.0, places=6, msg="layer k at z = k mm")
+
     def test_progress_once_per_stage(self):
         stages = [line.split(":")[0] for line in self.lines]
         self.assertCountEqual(stages, self.result.report["timings_s"])  # the report sorts its keys
+
+
+class TwoSolids(unittest.TestCase):
+    def test_stages_of_each_solid_follow_each_other(self):
+        import gmsh
+        gmsh.initialize()
+        try:
+            gmsh.option.setNumber("General.Terminal", 0)
+            gmsh.model.occ.addBox(0, 0, 0, 60, 40, 2)
+            gmsh.model.occ.addBox(0, 0, 10, 30, 40, 2)
+            gmsh.model.occ.synchronize()
+            with tempfile.TemporaryDirectory() as tmp:
+                gmsh.write(os.path.join(tmp, "two.brep"))
+                both = pyhexlayer.mesh_file(os.path.join(tmp, "two.brep"), layers=2)
+        finally:
+            gmsh.finalize()
+        solids = both.report["solids"]
+        self.assertEqual(len(both.quads), sum(s["quad_mesh"]["quads"] for s in solids))
+        self.assertEqual(len(both.quad_nodes), sum(s["quad_mesh"]["nodes"] for s in solids))
+        self.assertEqual(len(both.chordal_vertices), sum(s["chordal_surface"]["vertices"] for s in solids))
+        self.assertEqual(len(np.unique(both.quads)), len(both.quad_nodes), "the second solid's quads use its own nodes")
+        self.assertEqual(len(np.unique(both.chordal_facets[both.chordal_facets >= 0])), len(both.chordal_vertices))
+        self.assertLess(abs(facet_area(both.quad_nodes, both.quads) - 1.5 * PLATE_AREA) / PLATE_AREA, 0.03)
+        self.assertEqual(len(both.node_layer), len(both.nodes))
 
 
 class QuadraticPlateMesh(unittest.TestCase):

@@ -174,22 +174,24 @@ def show_faces_and_edges(obj, colour):
         vobj.DisplayMode = "Faces & Wireframe"
 
 
+def make_surface_view(mesh_obj, stage, type_id, label, build, colour):
+    """A view of a surface stage: an object of `type_id` whose Mesh or FemMesh is build(result)."""
+    result = last_result(mesh_obj)
+    obj = add_view(mesh_obj, stage, type_id, label)
+    setattr(obj, "Mesh" if type_id.startswith("Mesh") else "FemMesh", build(result))
+    show_faces_and_edges(obj, colour)
+    return obj
+
+
 def make_chordal_surface(mesh_obj):
     """The chordal surface (§5) as a Mesh::Feature (its quads split into two triangles)."""
-    result = last_result(mesh_obj)
-    obj = add_view(mesh_obj, "ChordalSurface", "Mesh::Feature", "chordal surface")
-    obj.Mesh = chordal_mesh(result)
-    show_faces_and_edges(obj, (0.95, 0.82, 0.42))
-    return obj
+    return make_surface_view(mesh_obj, "ChordalSurface", "Mesh::Feature", "chordal surface", chordal_mesh,
+                             (0.95, 0.82, 0.42))
 
 
 def make_quad_mesh(mesh_obj):
     """The quad mesh of the chordal surface (§6) as a Fem::FemMeshObject of quadrangles."""
-    result = last_result(mesh_obj)
-    obj = add_view(mesh_obj, "QuadMesh", "Fem::FemMeshObject", "quad mesh")
-    obj.FemMesh = quad_femmesh(result)
-    show_faces_and_edges(obj, (0.55, 0.77, 0.95))
-    return obj
+    return make_surface_view(mesh_obj, "QuadMesh", "Fem::FemMeshObject", "quad mesh", quad_femmesh, (0.55, 0.77, 0.95))
 
 
 def make_exploded_layers(mesh_obj, gap=None):
