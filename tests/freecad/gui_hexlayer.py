@@ -216,7 +216,7 @@ def save_3d_view(path, zoom=0.8, direction=None):
     view.saveImage(path, *view.getSize(), "Current")
 
 
-def tile(paths, captions, path, columns=2, width=900):
+def tile(paths, captions, path, columns=2, width=720):
     """The images side by side, `columns` a row, each scaled to `width` with its caption on top."""
     images = [QtGui.QImage(p).scaledToWidth(width, QtCore.Qt.SmoothTransformation) for p in paths]
     height = max(i.height() for i in images)
@@ -225,15 +225,29 @@ def tile(paths, captions, path, columns=2, width=900):
     sheet.fill(QtGui.QColor("white"))
     painter = QtGui.QPainter(sheet)
     font = painter.font()
-    font.setPointSize(18)
+    font.setPointSize(15)
     font.setBold(True)
     painter.setFont(font)
     for k, (image, caption) in enumerate(zip(images, captions)):
         x, y = (k % columns) * width, (k // columns) * height
         painter.drawImage(x, y, image)
         painter.drawText(QtCore.QRect(x + 16, y + 10, width - 32, 40), QtCore.Qt.AlignLeft, caption)
+    draw_quality_legend(painter, (len(images) - 1) % columns * width + 24, rows * height - 70)
     painter.end()
-    return sheet.save(path)
+    # 256 colours (ordered dither) keep the PNG a few hundred kB for the README
+    return sheet.convertToFormat(QtGui.QImage.Format_Indexed8, QtCore.Qt.OrderedDither).save(path)
+
+
+def draw_quality_legend(painter, x, y, length=300):
+    """The quality view's colour bar, scaled Jacobian 0 to 1, with its labels (into the last tile)."""
+    from hexlayer_fem import stage_views
+    for i in range(length):
+        painter.setPen(QtGui.QColor.fromRgbF(*stage_views.quality_colour(max(i / (length - 1), 1e-6))))
+        painter.drawLine(x + i, y, x + i, y + 18)
+    painter.setPen(QtGui.QColor("black"))
+    painter.drawRect(x, y, length, 18)
+    for value in (0, 0.5, 1):
+        painter.drawText(QtCore.QRect(x + int(value * length) - 30, y + 20, 60, 30), QtCore.Qt.AlignHCenter, str(value))
 
 
 class StageViews(GuiTest):
@@ -295,7 +309,7 @@ class StageViews(GuiTest):
         captions = ["Chordal surface ({} facets)".format(len(result.chordal_facets)),
                     "Quad mesh ({} quads)".format(len(result.quads)),
                     "Exploded layers ({} x {} hexes)".format(len(layers), layers[0].FemMesh.VolumeCount),
-                    "Scaled Jacobian min {:.2f}, avg {:.2f} (green 1, red 0)".format(sj.min(), sj.mean())]
+                    "Scaled Jacobian: min {:.2f}, avg {:.2f}".format(sj.min(), sj.mean())]
         stages = os.path.join(SCREENSHOTS, "freecad_stages.png")
         self.assertTrue(tile(paths, captions, stages))
         self.assertGreater(distinct_colours(stages), 20)
