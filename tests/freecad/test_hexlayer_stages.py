@@ -3,10 +3,13 @@ quality view (HexLayer.makeStageViews and friends), on the 100 x 20 x 2 mm plate
 
 Run: freecadcmd -t test_hexlayer_stages -M tests/freecad (see hexlayer_testing for the environment).
 """
+import os
+import tempfile
 import unittest
 
 import numpy as np
 
+import FreeCAD
 import HexLayer
 
 import hexlayer_testing as t
@@ -77,6 +80,19 @@ class PlateStages(unittest.TestCase):
         count = len(self.doc.Objects)
         HexLayer.makeStageViews(self.mesh)
         self.assertEqual(len(self.doc.Objects), count, "views made again replace the old ones")
+
+    def test_saved_views_reopen_with_their_values(self):
+        HexLayer.makeStageViews(self.mesh)
+        path = os.path.join(tempfile.mkdtemp(), "stages.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        doc = FreeCAD.openDocument(path)
+        self.addCleanup(t.close_document, doc.Name)
+        quality = next(o for o in doc.Objects if getattr(o, "Stage", None) == "Quality")
+        self.assertEqual(quality.FemMesh.VolumeCount, len(self.result.hexes))
+        np.testing.assert_allclose(quality.ScaledJacobian, self.result.scaled_jacobian)
+        layers = next(o for o in doc.Objects if getattr(o, "Stage", None) == "ExplodedLayers").Group
+        self.assertEqual([layer.FemMesh.VolumeCount for layer in layers], [len(self.result.quads)] * 2)
 
     def test_views_mesh_again_when_the_session_has_no_result(self):
         self.mesh.Proxy.result = None  # as after reopening the document
