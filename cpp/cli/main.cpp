@@ -1,5 +1,5 @@
 // hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H | --aspect A] [--sizing uniform|adaptive]
-// [--min-size H] [--max-size H] [--order 1|2] [--report R] [--quiet]`
+// [--min-size H] [--max-size H] [--order 1|2] [--report R] [--force] [--quiet]`
 #include <CLI/CLI.hpp>
 
 #include <fstream>
@@ -52,13 +52,9 @@ int runMesh(MeshCommand& c) {
     out << std::setw(2) << result.report << "\n";
   }
   if (!c.quiet) std::cout << summary(result.report, c.output) << std::endl;
-  if (const auto inverted = result.report["inverted_hexes"].get<std::size_t>(); inverted > 0) {
-    const auto& at = result.report["worst_hex_at"];
-    std::cerr << "hexlayer: warning: " << inverted << " inverted hexes (scaled Jacobian <= 0), the worst at ("
-              << at[0].get<double>() << ", " << at[1].get<double>() << ", " << at[2].get<double>()
-              << "): the mesh is not fit for a solver there (sharp crease or junction in the chordal surface?)"
+  for (const auto& f : result.report["validation"]["failures"])  // only with --force: else meshFile threw
+    std::cerr << "hexlayer: warning: validation failed (written because of --force): " << f["message"].get<std::string>()
               << std::endl;
-  }
   if (const auto& b = result.report["boundary"]; !b["same_topology_as_cad"].get<bool>())
     std::cerr << "hexlayer: warning: the mesh boundary has Euler characteristic " << b["euler_characteristic"]
               << " but the part " << b["cad_euler_characteristic"]
@@ -83,6 +79,7 @@ int main(int argc, char** argv) {
   mesh->add_option("--max-size", c.options.maxSize, "Largest adaptive quad size (default: 4 x the size)");
   mesh->add_option("--order", c.options.order, "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
   mesh->add_option("--report", c.report, "Write a JSON report of every stage");
+  mesh->add_flag("--force", c.options.force, "Write the mesh even if it fails validation (with a warning per failed check)");
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
   try {
     app.parse(argc, argv);
@@ -91,6 +88,8 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : static_cast<int>(ExitCode::BadUsage);
   }
   try {
+    if (mesh->count("--size") > 0 && !(c.options.size > 0))  // 0 is the default's "from the part", not a size
+      throw hexlayer::usageError("--size must be a positive length");
     return runMesh(c);
   } catch (const hexlayer::Error& e) {
     std::cerr << "hexlayer: error: " << e.what() << std::endl;

@@ -94,6 +94,7 @@ ChildResult runInChildProcess(const std::function<std::string()>& work, double t
     result.output = bytes.substr(1);
   } else {
     result.failure = bytes.substr(1);
+    result.threw = true;
   }
   return result;
 }

@@ -18,6 +18,7 @@
 #include "quadmesh/quad_smoothing.hpp"
 #include "quadmesh/sizing.hpp"
 #include "quality/quality.hpp"
+#include "quality/validation.hpp"
 #include "sweep/quadratic.hpp"
 #include "sweep/sweep.hpp"
 #include "tets/tet_mesh.hpp"
@@ -142,7 +143,23 @@ std::vector<double> reportQuality(const HexMesh& mesh, double cadVolume, nlohman
   const BoundaryCheck b = checkBoundary(mesh);
   r["boundary"] = {{"faces", b.faces}, {"open_edges", b.openEdges}, {"non_manifold_edges", b.nonManifoldEdges},
                    {"watertight", b.watertight()}, {"euler_characteristic", b.eulerCharacteristic}};
+  r["validation"] = {{"passed", true}, {"failures", nlohmann::json::array()}};
+  for (const ValidationFailure& f : validateMesh(mesh, q, b, cadVolume)) {
+    nlohmann::json one = {{"check", f.check}, {"count", f.count}, {"message", f.message}};
+    if (f.at) one["at"] = {f.at->x(), f.at->y(), f.at->z()};
+    r["validation"]["passed"] = false;
+    r["validation"]["failures"].push_back(one);
+  }
   return std::move(q.scaledJacobian);
+}
+
+// A mesh that failed a validation check is not handed on, unless the caller forces it.
+void enforceValidation(const nlohmann::json& r, const MeshOptions& o) {
+  if (o.force || r["validation"]["passed"].get<bool>()) return;
+  std::string message = "the mesh failed validation, nothing written (--force writes it anyway):";
+  for (const auto& f : r["validation"]["failures"]) message += " " + f["message"].get<std::string>() + ";";
+  message.back() = '.';
+  throw validationError(message);
 }
 
 // Share of the hexes whose aspect ratio is within 10 % of the requested one (Figure 11).
@@ -184,6 +201,19 @@ void append(HexMesh& all, const HexMesh& part) {
     for (int& v : m) v += offset;
     all.midEdges.push_back(m);
   }
+}
+
+// Several solids are separate bodies (nodes where two touch are not shared): their validations,
+// each failure prefixed with its solid.
+nlohmann::json validationOfSolids(const nlohmann::json& solids) {
+  nlohmann::json v = {{"passed", true}, {"failures", nlohmann::json::array()}};
+  for (std::size_t i = 0; i < solids.size(); ++i)
+    for (nlohmann::json f : solids[i]["validation"]["failures"]) {
+      f["message"] = "solid " + std::to_string(i + 1) + ": " + f["message"].get<std::string>();
+      v["passed"] = false;
+      v["failures"].push_back(f);
+    }
+  return v;
 }
 
 }  // namespace
@@ -263,6 +293,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   compareTopology(r, eulerCharacteristic(cad));
   if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);
   result.nodeSets = surfaceNodeSets(result.mesh);
+  enforceValidation(r, o);
   return result;
 }
 
@@ -273,8 +304,14 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
   MeshResult all;  // several solids: mesh each, one report per solid plus the totals
   double cad = 0;
   for (size_t i = 0; i < solids.size(); ++i) {
-    if (o.progress) o.progress("solid " + std::to_string(i + 1) + " of " + std::to_string(solids.size()));
-    MeshResult one = meshSolid(solids[i], o);
+    const std::string which = "solid " + std::to_string(i + 1) + " of " + std::to_string(solids.size());
+    if (o.progress) o.progress(which);
+    MeshResult one;
+    try {
+      one = meshSolid(solids[i], o);
+    } catch (const Error& e) {
+      throw Error(e.code(), which + ": " + e.what());
+    }
     cad += one.report["volume"]["cad"].get<double>();
     all.report["solids"].push_back(one.report);
     append(all.mesh, one.mesh);
@@ -283,6 +320,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
   long cadEuler = 0;
   for (const auto& one : all.report["solids"]) cadEuler += one["boundary"]["cad_euler_characteristic"].get<long>();
   compareTopology(all.report, cadEuler);
+  all.report["validation"] = validationOfSolids(all.report["solids"]);
   all.nodeSets = surfaceNodeSets(all.mesh);
   return all;
 }
