@@ -32,6 +32,13 @@ std::string summary(const nlohmann::json& r, const std::string& output) {
     << std::noshowpos << " %).";
   if (r.contains("size")) s << " Quad size " << r["size"].get<double>() << " (" << r["size_source"].get<std::string>() << ").";
   if (r.contains("solids")) s << " " << r["solids"].size() << " solids, each meshed on its own.";
+  if (r.contains("small_features")) {
+    const auto& f = r["small_features"];
+    if (const int n = f["edges_shorter_than_size"].get<int>() + f["narrow_faces"].get<int>(); n > 0)
+      s << " " << f["edges_shorter_than_size"].get<int>() << " CAD edges shorter than the quad size and " << f["narrow_faces"].get<int>()
+        << " faces narrower (the first at (" << f["first_at"][0].get<double>() << ", "
+        << f["first_at"][1].get<double>() << ", " << f["first_at"][2].get<double>() << ")): features that small may be smoothed over.";
+  }
   if (r.contains("timings_s")) {
     s << " Time:";
     for (const auto& [stage, t] : r["timings_s"].items()) s << " " << stage << " " << std::fixed << std::setprecision(2) << t.get<double>() << " s" << std::defaultfloat;
@@ -83,9 +90,12 @@ int main(int argc, char** argv) {
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : static_cast<int>(ExitCode::BadUsage);
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "hexlayer: error: " << e.what() << " (hexlayer mesh --help lists the options)" << std::endl;
+    return static_cast<int>(ExitCode::BadUsage);
   }
   try {
     if (mesh->count("--size") > 0 && !(c.options.size > 0))  // 0 is the default's "from the part", not a size

@@ -40,7 +40,7 @@ std::string lowerExtension(const std::string& path) {
 }
 
 // A reader gets this long, plus kReadSecondsPerMB per MB of file, before it is taken for hung.
-constexpr double kReadSeconds = 60, kReadSecondsPerMB = 30;
+constexpr double kReadSeconds = 10, kReadSecondsPerMB = 20;
 
 enum class Format { Step, Iges, Brep };
 
@@ -132,9 +132,9 @@ std::string contents(const TopoDS_Shape& shape) {
   };
   const int shells = count(TopAbs_SHELL), faces = count(TopAbs_FACE), edges = count(TopAbs_EDGE);
   std::ostringstream s;
-  if (shells > 0) s << shells << " shell(s) that are not closed, with " << faces << " face(s)";
+  if (shells > 0) s << shells << " open shell(s) of " << faces << " face(s) in all, not closed";
   else if (faces > 0) s << faces << " loose face(s)";
-  else if (edges > 0) s << edges << " edge(s) (wires or curves)";
+  else if (edges > 0) s << edges << " edge(s) (wires or curves), no face";
   else s << "no face and no edge";
   s << "; Hex-Layer needs a closed solid";
   return s.str();
@@ -144,7 +144,8 @@ std::string contents(const TopoDS_Shape& shape) {
 
 std::vector<TopoDS_Solid> readSolids(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw inputError("input file '" + path + "' does not exist");
+  if (!std::filesystem::exists(path, ec)) throw inputError("input file '" + path + "' does not exist");
+  if (!std::filesystem::is_regular_file(path, ec)) throw inputError("input '" + path + "' is not a regular file (a folder?)");
   if (std::filesystem::file_size(path, ec) == 0) throw inputError("input file '" + path + "' is empty");
   formatOf(path);  // an unknown extension is refused before reading
   if (!std::ifstream(path).good()) throw inputError("input file '" + path + "' cannot be opened");

@@ -6,6 +6,7 @@
 #include <iterator>
 #include <optional>
 #include <sstream>
+#include <unistd.h>
 
 #include "bubbles/bubble_packing.hpp"
 #include "chordal/chordal_fairing.hpp"
@@ -34,6 +35,7 @@ constexpr int kFairingIterations[] = {10, 3, 0};
 constexpr double kDefaultSizeOverThickness = 1.0;
 constexpr double kMaxAutoQuads = 250000;
 constexpr double kMinReach = 0.25, kMaxReach = 4;  // a wall hit counts between these multiples of r
+constexpr double kBytesPerHex = 2000;  // plate.step at size 0.3: 64 312 hexes, 73.5 MB peak (x 2 for safety)
 
 // Runs one stage, records its wall time in report["timings_s"][name] and reports progress.
 class StageClock {
@@ -73,6 +75,29 @@ double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalAr
   size = std::max(size, std::sqrt(chordalArea / kMaxAutoQuads));
   report["size_source"] = "auto: wall thickness (at most " + std::to_string(int(kMaxAutoQuads)) + " quads)";
   return size;
+}
+
+// The quad size the run will use, as far as it is known before the chordal surface: the given one,
+// the aspect's, or the wall thickness (the automatic size is never finer).
+double plannedSize(const MeshOptions& o, const WallSides& sides) {
+  return o.size > 0 ? o.size : o.aspect > 0 ? o.aspect * sides.thickness / o.layers : kDefaultSizeOverThickness * sides.thickness;
+}
+
+// Refuses, before meshing, a size that would need more memory than the machine has: quads from the
+// top wall's area, hexes = quads x layers, kBytesPerHex measured as the peak memory per hex on plate.step.
+void requireMemory(const MeshOptions& o, const WallSides& sides, nlohmann::json& r) {
+  double topArea = 0;
+  for (const FaceSide& f : sides.faces) topArea += f.side == Side::Top ? f.area : 0;
+  const double size = plannedSize(o, sides), quads = topArea / (size * size), hexes = quads * o.layers;
+  const double bytes = hexes * kBytesPerHex * (o.order == 2 ? 2 : 1);
+  const double machine = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  r["memory_estimate"] = {{"quads", quads}, {"hexes", hexes}, {"bytes", bytes}, {"machine_bytes", machine}};
+  if (bytes <= machine) return;
+  std::ostringstream msg;
+  msg << std::setprecision(3) << "quad size " << size << " would need about " << quads << " quads, " << hexes
+      << " hexes and " << bytes / 1e9 << " GB of memory (estimated), more than this machine's " << machine / 1e9
+      << " GB: choose a larger --size (or --aspect) or fewer --layers";
+  throw usageError(msg.str());
 }
 
 // π_b, π_t (§3): the sweep line cast onto the CAD walls; the radius function's ends (§7.2) where a ray misses.
@@ -240,6 +265,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   const WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
   r["thickness"] = sides.thickness;
   r["faces"] = faceSideCounts(sides);
+  requireMemory(o, sides, r);
   const auto nodes = clock.run("bubbles", [&] { return packBubbles(cad, sides, BubbleOptions{}); });
   r["bubbles"] = nodes.size();
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
@@ -251,6 +277,9 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   const double size = chooseSize(o, sides, chordalArea(cut), r);
   r["size"] = size;
   r["sizing"] = o.sizing;
+  const SmallFeatures small = findSmallFeatures(cad, sides, size);
+  r["small_features"] = {{"edges_shorter_than_size", small.shortEdges}, {"narrow_faces", small.narrowFaces},
+                         {"first_at", {small.firstAt.x(), small.firstAt.y(), small.firstAt.z()}}};
   ChordalSurface chordal;
   std::optional<ChordalLocator> locator;
   const QuadMesh quads = clock.run("quad_mesh", [&] {
