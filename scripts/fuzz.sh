@@ -1,0 +1,18 @@
+#!/bin/sh
+# Fuzzes the reader and the pipeline with libFuzzer (tests/fuzz/fuzz_reader.cpp): builds the target with
+# clang, AddressSanitizer and UndefinedBehaviorSanitizer in build-fuzz/ (-DHEXLAYER_FUZZ=ON), then mutates
+# the seeds of tests/fuzz/corpus (a STEP and a BREP plate, a truncated STEP) for SECONDS (default 300).
+# The growing corpus stays in build-fuzz/corpus; a crash leaves its input as build-fuzz/crash-*.
+# Each input is cut off after 60 s (-timeout), so a hang is reported like a crash.
+#   scripts/fuzz.sh [SECONDS]
+set -eu
+cd "$(dirname "$0")/.."
+seconds=${1:-300}
+build=build-fuzz
+CXX=clang++ CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHEXLAYER_FUZZ=ON -DBUILD_TESTING=OFF >/dev/null
+cmake --build "$build" -j2 --target hexlayer_fuzz
+mkdir -p "$build/corpus"
+cp -n tests/fuzz/corpus/* "$build/corpus/"
+export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+cd "$build"
+./hexlayer_fuzz -max_total_time="$seconds" -timeout=60 -rss_limit_mb=4096 -max_len=32768 -print_final_stats=1 corpus
