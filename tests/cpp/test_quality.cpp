@@ -333,8 +333,8 @@ TEST(Validation, InvertedHexIsNamedWithItsPlace) {
   ASSERT_NE(f, nullptr);
   EXPECT_EQ(f->count, 1u);
   ASSERT_TRUE(f->at);
-  EXPECT_TRUE(f->at->isApprox(Vec3(0.5, 0.5, 0.5)));  // the mirrored box's centroid
-  EXPECT_EQ(f->message, "inverted: 1 inverted hexes (scaled Jacobian <= 0), the worst at (0.5, 0.5, 0.5)");
+  EXPECT_TRUE(f->at->isApprox(Vec3(1, 0.5, 0.5)));  // the mirrored box's centroid
+  EXPECT_EQ(f->message, "inverted: 1 inverted hexes (scaled Jacobian <= 0), the worst at (1, 0.5, 0.5)");
   EXPECT_NE(find(failures, "volume"), nullptr);  // -2 against +2
 }
 
