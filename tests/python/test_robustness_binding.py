@@ -22,7 +22,8 @@ EXCEPTIONS = {2: pyhexlayer.UsageError, 3: pyhexlayer.InputError, 4: pyhexlayer.
 
 
 def keywords(extra):
-    """The row's options as keywords, or None if one has no keyword (output paths, --min-size, bad syntax)."""
+    """The row's options as keywords, or None if one has no keyword (output paths, --min-size, bad syntax) or
+    means something else to the binding."""
     pairs = []
     for arg in extra:
         if arg.startswith("--") and "=" in arg:
@@ -38,6 +39,8 @@ def keywords(extra):
             out[key] = kind(value)
         except ValueError:
             return None
+    if out.get("size") == 0:  # size=0 is the binding's (and the panel's) "the wall thickness", not a bad size
+        return None
     return out if len(pairs) % 2 == 0 else None
 
 
