@@ -60,19 +60,6 @@ TopoDS_Shape readWithTranslator(XSControl_Reader& reader, const std::string& pat
   return reader.OneShape();
 }
 
-std::string brepText(const TopoDS_Shape& shape) {
-  std::ostringstream text;
-  BRepTools::Write(shape, text);
-  return text.str();
-}
-
-TopoDS_Shape shapeOfBrepText(const std::string& text) {
-  TopoDS_Shape shape;
-  std::istringstream in(text);
-  BRepTools::Read(shape, in, BRep_Builder());
-  return shape;
-}
-
 }  // namespace
 
 TopoDS_Shape readShapeInProcess(const std::string& path) {
@@ -101,13 +88,15 @@ TopoDS_Shape readShapeInProcess(const std::string& path) {
 namespace {
 
 // OpenCASCADE's readers can loop forever (BRepTools::Read on a truncated .brep) or crash on a damaged
-// file, so the file is read in a child process, which hands the shape back as BREP text.
+// file, so the file is first read in a child process; only if that ends well is it read here (the
+// readers are deterministic, and a shape handed back as BREP text would not be bit-identical: its
+// reals are written with 15 digits).
 TopoDS_Shape readShape(const std::string& path) {
   const Format format = formatOf(path);
   std::error_code ec;
   const double seconds = kReadSeconds + kReadSecondsPerMB * std::filesystem::file_size(path, ec) / 1e6;
-  const ChildResult child = runInChildProcess([&] { return brepText(readShapeInProcess(path)); }, seconds);
-  if (child.ok) return shapeOfBrepText(child.output);
+  const ChildResult child = runInChildProcess([&] { return readShapeInProcess(path).IsNull() ? "null" : "shape"; }, seconds);
+  if (child.ok) return readShapeInProcess(path);
   if (child.threw) throw inputError("cannot read '" + path + "': " + child.failure);
   throw inputError("cannot read '" + path + "': the " + formatName(format) + " reader " + child.failure +
                    " (a truncated or damaged file?)");
