@@ -105,6 +105,7 @@ def sliver_face():
 
 SHAPES = {
     "lone_face.step": lone_face,
+    "lone_face.iges": lone_face,
     "wire.step": wire,
     "open_shell.step": open_shell,
     "open_shell.brep": open_shell,
@@ -124,11 +125,15 @@ def write_shape(shape, path):
     if path.endswith(".brep"):
         shape.exportBrep(path)
         return
-    shape.exportStep(path)
+    if path.endswith(".iges"):
+        shape.exportIges(path)
+    else:
+        shape.exportStep(path)
     with open(path, encoding="ascii") as f:
         text = f.read()
     text = re.sub(r"(FILE_NAME\('[^']*',')[^']*(')", r"\g<1>" + FIXED_TIMESTAMP + r"\g<2>", text, count=1)
     text = re.sub(r"(FILE_NAME\(')[^']*(')", r"\g<1>" + os.path.basename(path) + r"\g<2>", text, count=1)
+    text = re.sub(r"\d\dH\d{8}\.\d{6}", "15H20000101.000000", text)  # IGES: the file's and the model's dates
     with open(path, "w", encoding="ascii", newline="") as f:
         f.write(text)
 

@@ -31,6 +31,7 @@ TABLE = [
     ("unknown extension", "data/plate.txt", [], 3, "unknown input format '.txt'"),
     # files without one closed solid
     ("lone face", "data/lone_face.step", [], 3, "contains no solid: 1 open shell(s) of 1 face(s)"),
+    ("IGES lone face", "data/lone_face.iges", [], 3, "contains no solid: 1 loose face(s)"),
     ("wire only", "data/wire.step", [], 3, "contains no solid: 3 edge(s) (wires or curves), no face"),
     ("open shell (STEP)", "data/open_shell.step", [], 3, "1 open shell(s) of 5 face(s) in all, not closed"),
     ("open shell (BREP)", "data/open_shell.brep", [], 3, "1 open shell(s) of 5 face(s) in all, not closed"),
