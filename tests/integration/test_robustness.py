@@ -59,6 +59,7 @@ TABLE = [
     ("infinite size", "data/plate.brep", ["--size", "inf"], 2, "--size must be a positive length"),
     ("size needing terabytes", "data/plate.brep", ["--size", "1e-4"], 2, "GB of memory (estimated), more than this machine's"),
     ("64 layers of tiny quads", "data/plate.brep", ["--layers", "64", "--size", "0.01"], 2, "quads, 1.54e+09 hexes"),
+    ("size larger than the part", "data/plate.brep", ["--size", "1e6"], 0, "Wrote"),
     ("negative aspect", "data/plate.brep", ["--aspect=-1"], 2, "--aspect must be a positive ratio"),
     ("size and aspect", "data/plate.brep", ["--size", "1", "--aspect", "2"], 2, "give --size or --aspect, not both"),
     ("order 3", "data/plate.brep", ["--order", "3"], 2, "--order must be 1 or 2, got 3"),
