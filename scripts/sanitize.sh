@@ -10,7 +10,9 @@ build=${1:-build-sanitize}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHEXLAYER_SANITIZE=ON >/dev/null
 cmake --build "$build" -j2 --target hexlayer hexlayer_tests
 # Leaks are not checked: OpenCASCADE and Gmsh keep singletons to the end of the process.
-export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# alloc_dealloc_mismatch=0: OpenCASCADE 7.6's IntCurvesFace_ShapeIntersector allocates with new[] in
+# PerformNearest and frees with delete in Destroy (its own bug, inside libTKTopAlgo).
+export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:alloc_dealloc_mismatch=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 "$build/tests/hexlayer_tests" --gtest_brief=1
 
 out=$(mktemp -d)

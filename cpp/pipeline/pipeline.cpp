@@ -60,27 +60,21 @@ class StageClock {
   const MeshOptions& options_;
 };
 
-// Default quad size: the wall thickness (bending-accurate C3D8I with 2 layers), coarser if the part
-// would need too many quads; with --aspect A, A layer thicknesses (thickness / layers).
-double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalArea, nlohmann::json& report) {
-  if (o.size > 0) {
-    report["size_source"] = "given";
-    return o.size;
-  }
-  if (o.aspect > 0) {
-    report["size_source"] = "aspect x wall thickness / layers";
-    return o.aspect * sides.thickness / o.layers;
-  }
-  double size = kDefaultSizeOverThickness * sides.thickness;
-  size = std::max(size, std::sqrt(chordalArea / kMaxAutoQuads));
-  report["size_source"] = "auto: wall thickness (at most " + std::to_string(int(kMaxAutoQuads)) + " quads)";
-  return size;
-}
-
-// The quad size the run will use, as far as it is known before the chordal surface: the given one,
-// the aspect's, or the wall thickness (the automatic size is never finer).
+// The quad size as far as it is known before the chordal surface: the given one, A layer thicknesses
+// (thickness / layers) with --aspect A, else the wall thickness (bending-accurate C3D8I with 2 layers).
 double plannedSize(const MeshOptions& o, const WallSides& sides) {
   return o.size > 0 ? o.size : o.aspect > 0 ? o.aspect * sides.thickness / o.layers : kDefaultSizeOverThickness * sides.thickness;
+}
+
+// The quad size used: the planned one, made coarser by default if the part would need too many quads.
+double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalArea, nlohmann::json& report) {
+  const double planned = plannedSize(o, sides);
+  if (o.size > 0 || o.aspect > 0) {
+    report["size_source"] = o.size > 0 ? "given" : "aspect x wall thickness / layers";
+    return planned;
+  }
+  report["size_source"] = "auto: wall thickness (at most " + std::to_string(int(kMaxAutoQuads)) + " quads)";
+  return std::max(planned, std::sqrt(chordalArea / kMaxAutoQuads));
 }
 
 // Refuses, before meshing, a size that would need more memory than the machine has: quads from the
