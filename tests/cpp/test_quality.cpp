@@ -313,6 +313,7 @@ std::vector<ValidationFailure> validate(const HexMesh& m, double cadVolume) {
   return validateMesh(m, measureQuality(m), checkBoundary(m), cadVolume);
 }
 
+// The failure of that check in `failures` (which must outlive the pointer), or nullptr.
 const ValidationFailure* find(const std::vector<ValidationFailure>& failures, const std::string& check) {
   for (const ValidationFailure& f : failures)
     if (f.check == check) return &f;
@@ -352,7 +353,8 @@ TEST(Validation, DuplicateNodesAreNotConformal) {
 TEST(Validation, OpenBoundaryIsNotWatertight) {
   HexMesh m = block({0, 1, 2}, {0, 1}, {0, 1});
   m.hexes.push_back(m.hexes[1]);  // the face x=1 used three times: hex 0 is an open box
-  const ValidationFailure* f = find(validate(m, 3.0), "watertight");
+  const auto failures = validate(m, 3.0);
+  const ValidationFailure* f = find(failures, "watertight");
   ASSERT_NE(f, nullptr);
   EXPECT_EQ(f->count, 4u);
   EXPECT_DOUBLE_EQ(f->at->x(), 1.0);  // an edge of the x=1 face
@@ -372,7 +374,8 @@ TEST(Validation, VolumeFarFromTheCadIsRefused) {
 TEST(Validation, ElementWithARepeatedNodeIsNotAHex) {
   HexMesh m = singleHex(box(1, 1, 1));
   m.hexes[0][7] = 4;  // a wedge written as a hex
-  const ValidationFailure* f = find(validate(m, 1.0), "hexes");
+  const auto failures = validate(m, 1.0);
+  const ValidationFailure* f = find(failures, "hexes");
   ASSERT_NE(f, nullptr);
   EXPECT_EQ(f->count, 1u);
 }
