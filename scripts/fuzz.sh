@@ -3,7 +3,7 @@
 # clang, AddressSanitizer and UndefinedBehaviorSanitizer in build-fuzz/ (-DHEXLAYER_FUZZ=ON), then mutates
 # the seeds of tests/fuzz/corpus (a STEP and a BREP plate, a truncated STEP) for SECONDS (default 300).
 # The growing corpus stays in build-fuzz/corpus; a crash leaves its input as build-fuzz/crash-*.
-# Each input is cut off after 60 s (-timeout), so a hang is reported like a crash.
+# Each input is cut off after 120 s (-timeout), so a hang is reported like a crash.
 #   scripts/fuzz.sh [SECONDS]
 set -eu
 cd "$(dirname "$0")/.."
@@ -13,6 +13,7 @@ CXX=clang++ CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -D
 cmake --build "$build" -j2 --target hexlayer_fuzz
 mkdir -p "$build/corpus"
 cp -n tests/fuzz/corpus/* "$build/corpus/"
-export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# alloc_dealloc_mismatch=0: OpenCASCADE 7.6's own new[]/delete mismatch (see scripts/sanitize.sh).
+export ASAN_OPTIONS=detect_leaks=0:alloc_dealloc_mismatch=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd "$build"
-./hexlayer_fuzz -max_total_time="$seconds" -timeout=60 -rss_limit_mb=4096 -max_len=32768 -print_final_stats=1 corpus
+./hexlayer_fuzz -max_total_time="$seconds" -timeout=120 -rss_limit_mb=4096 -max_len=32768 -print_final_stats=1 corpus
