@@ -15,7 +15,8 @@ import harness
 SECONDS = 120  # every row is done in a few seconds; a hang is cut off here and fails its row
 
 # (name, input file, extra arguments, exit code, fragment of stderr (or of stdout for exit 0)).
-# Inputs: "data/X" is tests/data/robustness/X, "sample/X" is Resources/samples/X, "tmp/X" a path in
+# Inputs: "data/X" is tests/data/robustness/X, "sample/X" is Resources/samples/X, "fuzz/X" is an input the
+# fuzzer found (tests/fuzz/findings/X), "tmp/X" a path in
 # the run's temporary folder (empty.step is made there empty, folder.step as a folder).
 TABLE = [
     # files that cannot be read
@@ -27,6 +28,7 @@ TABLE = [
     ("garbage IGES", "data/garbage.iges", [], 3, "not a valid IGES file"),
     ("truncated STEP", "data/truncated.step", [], 3, "not a valid STEP file"),
     ("truncated BREP", "data/truncated.brep", [], 3, "the BREP reader timed out"),
+    ("STEP that crashes OpenCASCADE", "fuzz/step_reader_segv.step", [], 3, "the STEP reader crashed (Segmentation fault)"),
     ("STEP text named .brep", "data/step_text.brep", [], 3, "not a valid BREP file"),
     ("unknown extension", "data/plate.txt", [], 3, "unknown input format '.txt'"),
     # files without one closed solid
@@ -74,7 +76,8 @@ TABLE = [
 def resolve(path, tmp):
     kind, name = path.split("/", 1)
     folder = {"data": os.path.join(harness.args.source, "tests", "data", "robustness"),
-              "sample": os.path.join(harness.args.source, "Resources", "samples"), "tmp": tmp}[kind]
+              "sample": os.path.join(harness.args.source, "Resources", "samples"),
+              "fuzz": os.path.join(harness.args.source, "tests", "fuzz", "findings"), "tmp": tmp}[kind]
     return os.path.join(folder, name)
 
 
