@@ -53,6 +53,24 @@ class BadParts(unittest.TestCase):
         self.assertGreater(mesh.FemMesh.VolumeCount, 0)
 
 
+class ValidationInFreeCAD(unittest.TestCase):
+    """The real L-bracket meshes with a few inverted hexes (tests/integration/test_real_parts.py)."""
+
+    def test_failed_validation_keeps_no_mesh_unless_forced(self):
+        import Part
+        doc = t.new_document(self)
+        part = doc.addObject("Part::Feature", "LBracket")
+        part.Shape = Part.read(os.path.join(os.environ["HEXLAYER_SOURCE"], "..", "shared", "parts", "real",
+                                            "ender3_lcd_support_Lbracket.step"))
+        mesh = HexLayer.makeMesh(doc, part)
+        t.assert_fails(self, mesh, "the mesh failed validation, nothing written (Force writes it anyway): inverted: ")
+        mesh.Force = True
+        doc.recompute()
+        self.assertTrue(mesh.isValid(), mesh.Status)
+        self.assertGreater(mesh.FemMesh.VolumeCount, 9000)
+        self.assertIn("Validation failed, kept as Force is on: inverted: ", mesh.Status)
+
+
 class HardParts(unittest.TestCase):
     def setUp(self):
         self.doc = t.new_document(self)

@@ -8,10 +8,10 @@ from . import Stateless, meshing
 
 
 class MeshHexLayer(Stateless):
-    """Proxy of the mesh object: properties Part, Layers, Size, Sizing, Aspect, Order and the read-only Status."""
+    """Proxy of the mesh object: properties Part, Layers, Size, Sizing, Aspect, Order, Force and the read-only Status."""
 
     Type = "Fem::MeshHexLayer"
-    OPTIONS = ("Layers", "Size", "Sizing", "Aspect", "Order")  # the properties the mesher takes besides Part
+    OPTIONS = ("Layers", "Size", "Sizing", "Aspect", "Order", "Force")  # the properties the mesher takes besides Part
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -30,6 +30,8 @@ class MeshHexLayer(Stateless):
             list(meshing.SIZINGS))
         add("App::PropertyFloat", "Aspect", "In-plane size / layer thickness instead of Size (Size must then be 0); 0 = off", 0.0)
         add("App::PropertyInteger", "Order", "Element order: 1 = hexa8, 2 = hexa20 (wall mid-edge nodes on the CAD walls)", 1)
+        add("App::PropertyBool", "Force", "Keep a mesh that fails its validation (an inverted hex, a crack, the volume), "
+            "with the failures in Status", False)
         add("App::PropertyString", "Status", "Summary of the last meshing, or why it failed", "")
         obj.setEditorMode("Status", 1)  # read-only
 
@@ -40,7 +42,7 @@ class MeshHexLayer(Stateless):
         """Meshes the Part; on failure the FemMesh is emptied (no stale mesh reaches a solver) and the error raised."""
         start = time.perf_counter()
         try:
-            result = meshing.mesh(obj.Part, meshing.options(obj), progress=self.progress)
+            result = meshing.mesh(obj.Part, meshing.options(obj), progress=self.progress, force=obj.Force)
         except Exception as error:
             obj.FemMesh = Fem.FemMesh()
             obj.Status = "Failed: " + meshing.for_people(str(error))
