@@ -25,7 +25,7 @@ makeQualityView = stage_views.make_quality_view
 
 def makeMesh(doc, part=None, name="HexLayerMesh", **properties):
     """Adds a Hex-Layer mesh of `part` to `doc` and returns it, not yet meshed (recompute meshes it).
-    `properties` sets any of Layers, Size (mm), Sizing, Aspect, Order."""
+    `properties` sets any of Layers, Size (mm), Sizing, Aspect, Order, Force."""
     unknown = sorted(set(properties) - set(mesh_object.MeshHexLayer.OPTIONS))
     if unknown:
         raise TypeError("makeMesh: unknown properties {}; use {}".format(

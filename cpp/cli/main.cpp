@@ -1,5 +1,5 @@
 // hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H | --aspect A] [--sizing uniform|adaptive]
-// [--min-size H] [--max-size H] [--order 1|2] [--report R] [--quiet]`
+// [--min-size H] [--max-size H] [--order 1|2] [--report R] [--force] [--quiet]`
 #include <CLI/CLI.hpp>
 
 #include <fstream>
@@ -32,6 +32,13 @@ std::string summary(const nlohmann::json& r, const std::string& output) {
     << std::noshowpos << " %).";
   if (r.contains("size")) s << " Quad size " << r["size"].get<double>() << " (" << r["size_source"].get<std::string>() << ").";
   if (r.contains("solids")) s << " " << r["solids"].size() << " solids, each meshed on its own.";
+  if (r.contains("small_features")) {
+    const auto& f = r["small_features"];
+    if (const int n = f["edges_shorter_than_size"].get<int>() + f["narrow_faces"].get<int>(); n > 0)
+      s << " " << f["edges_shorter_than_size"].get<int>() << " CAD edges shorter than the quad size and " << f["narrow_faces"].get<int>()
+        << " faces narrower (the first at (" << f["first_at"][0].get<double>() << ", "
+        << f["first_at"][1].get<double>() << ", " << f["first_at"][2].get<double>() << ")): features that small may be smoothed over.";
+  }
   if (r.contains("timings_s")) {
     s << " Time:";
     for (const auto& [stage, t] : r["timings_s"].items()) s << " " << stage << " " << std::fixed << std::setprecision(2) << t.get<double>() << " s" << std::defaultfloat;
@@ -52,13 +59,9 @@ int runMesh(MeshCommand& c) {
     out << std::setw(2) << result.report << "\n";
   }
   if (!c.quiet) std::cout << summary(result.report, c.output) << std::endl;
-  if (const auto inverted = result.report["inverted_hexes"].get<std::size_t>(); inverted > 0) {
-    const auto& at = result.report["worst_hex_at"];
-    std::cerr << "hexlayer: warning: " << inverted << " inverted hexes (scaled Jacobian <= 0), the worst at ("
-              << at[0].get<double>() << ", " << at[1].get<double>() << ", " << at[2].get<double>()
-              << "): the mesh is not fit for a solver there (sharp crease or junction in the chordal surface?)"
+  for (const auto& f : result.report["validation"]["failures"])  // only with --force: else meshFile threw
+    std::cerr << "hexlayer: warning: validation failed (written because of --force): " << f["message"].get<std::string>()
               << std::endl;
-  }
   if (const auto& b = result.report["boundary"]; !b["same_topology_as_cad"].get<bool>())
     std::cerr << "hexlayer: warning: the mesh boundary has Euler characteristic " << b["euler_characteristic"]
               << " but the part " << b["cad_euler_characteristic"]
@@ -85,14 +88,20 @@ int main(int argc, char** argv) {
   mesh->add_option("--max-size", c.options.maxSize, "Largest adaptive quad size (default: 4 x the size)");
   mesh->add_option("--order", c.options.order, "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
   mesh->add_option("--report", c.report, "Write a JSON report of every stage");
+  mesh->add_flag("--force", c.options.force, "Write the mesh even if it fails validation (with a warning per failed check)");
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : static_cast<int>(ExitCode::BadUsage);
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "hexlayer: error: " << e.what() << " (hexlayer mesh --help lists the options)" << std::endl;
+    return static_cast<int>(ExitCode::BadUsage);
   }
   try {
+    if (mesh->count("--size") > 0 && !(c.options.size > 0))  // 0 is the default's "from the part", not a size
+      throw hexlayer::usageError("--size must be a positive length");
     return runMesh(c);
   } catch (const hexlayer::Error& e) {
     std::cerr << "hexlayer: error: " << e.what() << std::endl;

@@ -24,6 +24,9 @@ void writeAll(int fd, const std::string& bytes) {
 
 // The child: first byte '1' and the output, or '0' and the error message.
 [[noreturn]] void childMain(int fd, const std::function<std::string()>& work) {
+  // A crash ends the child by its signal, whatever handler the parent installed (a sanitizer's, libFuzzer's,
+  // FreeCAD's), so that the parent can name it.
+  for (const int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) signal(sig, SIG_DFL);
   // The library's own chatter (Gmsh's solver warnings) is not for the user: the result says it all.
   if (const int null = open("/dev/null", O_WRONLY); null >= 0) dup2(null, 1), dup2(null, 2), close(null);
   std::string message;
@@ -94,6 +97,7 @@ ChildResult runInChildProcess(const std::function<std::string()>& work, double t
     result.output = bytes.substr(1);
   } else {
     result.failure = bytes.substr(1);
+    result.threw = true;
   }
   return result;
 }

@@ -10,6 +10,7 @@ struct ChildResult {
   bool ok = false;
   std::string output;   // the bytes the work returned, if ok
   std::string failure;  // why not: the work's exception message, the signal that ended it, or the time-out
+  bool threw = false;   // the failure is the message of an exception the work threw
 };
 
 // Calls work() in a child process and returns its bytes. The child ends with _exit, so nothing of

@@ -1,11 +1,12 @@
-// Errors that end a run, each with the CLI exit code of the brief (0 done, 2 usage, 3 input, 4 geometry).
+// Errors that end a run, each with the CLI exit code of the brief (0 done, 2 usage, 3 input, 4 geometry,
+// 5 internal) and 6 for a mesh that failed its validation (README, "Exit codes").
 #pragma once
 #include <stdexcept>
 #include <string>
 
 namespace hexlayer {
 
-enum class ExitCode : int { Ok = 0, BadUsage = 2, BadInput = 3, UnsupportedGeometry = 4, Internal = 5 };
+enum class ExitCode : int { Ok = 0, BadUsage = 2, BadInput = 3, UnsupportedGeometry = 4, Internal = 5, InvalidMesh = 6 };
 
 class Error : public std::runtime_error {
  public:
@@ -22,5 +23,8 @@ inline Error usageError(const std::string& m) { return Error(ExitCode::BadUsage,
 inline Error inputError(const std::string& m) { return Error(ExitCode::BadInput, m); }
 // A valid solid this method does not handle: not thin, non-manifold chordal surface (exit 4).
 inline Error geometryError(const std::string& m) { return Error(ExitCode::UnsupportedGeometry, m); }
+// The finished mesh failed a validation check (inverted hex, not conformal, not watertight, volume);
+// nothing was written (exit 6).
+inline Error validationError(const std::string& m) { return Error(ExitCode::InvalidMesh, m); }
 
 }  // namespace hexlayer

@@ -17,6 +17,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
+#include <Standard_Failure.hxx>
 #include <XSControl_Reader.hxx>
 #include <gp_Vec.hxx>
 
@@ -24,7 +25,9 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
+#include "core/child_process.hpp"
 #include "core/error.hpp"
 
 namespace hexlayer {
@@ -36,31 +39,67 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
+// A reader gets this long, plus kReadSecondsPerMB per MB of file, before it is taken for hung.
+constexpr double kReadSeconds = 10, kReadSecondsPerMB = 20;
+
+enum class Format { Step, Iges, Brep };
+
+Format formatOf(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".step" || ext == ".stp") return Format::Step;
+  if (ext == ".iges" || ext == ".igs") return Format::Iges;
+  if (ext == ".brep" || ext == ".brp") return Format::Brep;
+  throw inputError("unknown input format '" + ext + "' of '" + path + "': use .step, .stp, .iges, .igs or .brep");
+}
+
+const char* formatName(Format f) { return f == Format::Step ? "STEP" : f == Format::Iges ? "IGES" : "BREP"; }
+
 TopoDS_Shape readWithTranslator(XSControl_Reader& reader, const std::string& path) {
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
-    throw inputError("cannot read '" + path + "': not a valid " + lowerExtension(path).substr(1) + " file");
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw inputError("not a valid " + std::string(formatName(formatOf(path))) + " file");
   reader.TransferRoots();
   return reader.OneShape();
 }
 
+}  // namespace
+
+TopoDS_Shape readShapeInProcess(const std::string& path) {
+  try {
+    switch (formatOf(path)) {
+      case Format::Step: {
+        STEPControl_Reader reader;
+        return readWithTranslator(reader, path);
+      }
+      case Format::Iges: {
+        IGESControl_Reader reader;
+        return readWithTranslator(reader, path);
+      }
+      case Format::Brep: {
+        TopoDS_Shape shape;
+        if (!BRepTools::Read(shape, path.c_str(), BRep_Builder())) throw inputError("not a valid BREP file");
+        return shape;
+      }
+    }
+  } catch (const Standard_Failure& e) {  // OpenCASCADE's exceptions are not std::exceptions
+    throw inputError(std::string("not a valid ") + formatName(formatOf(path)) + " file (" + e.GetMessageString() + ")");
+  }
+  return {};
+}
+
+namespace {
+
+// OpenCASCADE's readers can loop forever (BRepTools::Read on a truncated .brep) or crash on a damaged
+// file, so the file is first read in a child process; only if that ends well is it read here (the
+// readers are deterministic, and a shape handed back as BREP text would not be bit-identical: its
+// reals are written with 15 digits).
 TopoDS_Shape readShape(const std::string& path) {
-  const std::string ext = lowerExtension(path);
-  if (ext == ".step" || ext == ".stp") {
-    STEPControl_Reader reader;
-    return readWithTranslator(reader, path);
-  }
-  if (ext == ".iges" || ext == ".igs") {
-    IGESControl_Reader reader;
-    return readWithTranslator(reader, path);
-  }
-  if (ext == ".brep" || ext == ".brp") {
-    TopoDS_Shape shape;
-    BRep_Builder builder;
-    if (!BRepTools::Read(shape, path.c_str(), builder))
-      throw inputError("cannot read '" + path + "': not a valid BREP file");
-    return shape;
-  }
-  throw inputError("unknown input format '" + ext + "' of '" + path + "': use .step, .stp, .iges, .igs or .brep");
+  const Format format = formatOf(path);
+  std::error_code ec;
+  const double seconds = kReadSeconds + kReadSecondsPerMB * std::filesystem::file_size(path, ec) / 1e6;
+  const ChildResult child = runInChildProcess([&] { return readShapeInProcess(path).IsNull() ? "null" : "shape"; }, seconds);
+  if (child.ok) return readShapeInProcess(path);
+  if (child.threw) throw inputError("cannot read '" + path + "': " + child.failure);
+  throw inputError("cannot read '" + path + "': the " + formatName(format) + " reader " + child.failure +
+                   " (a truncated or damaged file?)");
 }
 
 // The solid a closed shell bounds, its faces turned outward.
@@ -72,12 +111,32 @@ TopoDS_Solid solidOfClosedShell(const TopoDS_Shell& shell) {
   return fixed.ShapeType() == TopAbs_SOLID ? TopoDS::Solid(fixed) : make.Solid();
 }
 
+// What a shape without a solid holds, e.g. "1 open shell of 5 faces".
+std::string contents(const TopoDS_Shape& shape) {
+  if (shape.IsNull()) return "nothing that could be transferred";
+  auto count = [&](TopAbs_ShapeEnum type) {
+    TopTools_IndexedMapOfShape map;
+    TopExp::MapShapes(shape, type, map);
+    return map.Extent();
+  };
+  const int shells = count(TopAbs_SHELL), faces = count(TopAbs_FACE), edges = count(TopAbs_EDGE);
+  std::ostringstream s;
+  if (shells > 0) s << shells << " open shell(s) of " << faces << " face(s) in all, not closed";
+  else if (faces > 0) s << faces << " loose face(s)";
+  else if (edges > 0) s << edges << " edge(s) (wires or curves), no face";
+  else s << "no face and no edge";
+  s << "; Hex-Layer needs a closed solid";
+  return s.str();
+}
+
 }  // namespace
 
 std::vector<TopoDS_Solid> readSolids(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw inputError("input file '" + path + "' does not exist");
+  if (!std::filesystem::exists(path, ec)) throw inputError("input file '" + path + "' does not exist");
+  if (!std::filesystem::is_regular_file(path, ec)) throw inputError("input '" + path + "' is not a regular file (a folder?)");
   if (std::filesystem::file_size(path, ec) == 0) throw inputError("input file '" + path + "' is empty");
+  formatOf(path);  // an unknown extension is refused before reading
   if (!std::ifstream(path).good()) throw inputError("input file '" + path + "' cannot be opened");
   const TopoDS_Shape shape = readShape(path);
   std::vector<TopoDS_Solid> solids;
@@ -86,7 +145,7 @@ std::vector<TopoDS_Solid> readSolids(const std::string& path) {
   if (solids.empty() && !shape.IsNull())  // a closed shell bounds a solid: sheet-metal files often hold only that
     for (TopExp_Explorer it(shape, TopAbs_SHELL); it.More(); it.Next())
       if (BRep_Tool::IsClosed(it.Current())) solids.push_back(solidOfClosedShell(TopoDS::Shell(it.Current())));
-  if (solids.empty()) throw inputError("'" + path + "' contains no solid (only surfaces, curves or nothing)");
+  if (solids.empty()) throw inputError("'" + path + "' contains no solid: " + contents(shape));
   return solids;
 }
 

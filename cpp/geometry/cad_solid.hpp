@@ -19,8 +19,13 @@ struct CadSolid {
 };
 
 // Reads STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep/.brp) and returns every solid in it.
-// Throws inputError for a missing/unreadable file or one without a solid.
+// Throws inputError for a missing/unreadable file or one without a solid; the reading runs in a child
+// process, so a reader that hangs or crashes on a damaged file gives an inputError too.
 std::vector<TopoDS_Solid> readSolids(const std::string& path);
+
+// The shape in a STEP, IGES or BREP file, read in this process (readSolids reads in a child process, as
+// a reader can hang or crash on a damaged file). Throws inputError for an unknown or invalid file.
+TopoDS_Shape readShapeInProcess(const std::string& path);
 
 // Checks the solid (BRepCheck, closed shell, positive volume), numbers its topology and
 // triangulates its faces for the later stages. Throws inputError naming what is wrong.

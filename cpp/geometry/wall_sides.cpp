@@ -23,6 +23,9 @@ namespace hexlayer {
 namespace {
 
 constexpr int kRaysPerFace = 150;
+constexpr double kMaxSlenderness = 0.25;  // wall thickness over the part's diagonal
+// Wall faces facing a wall on their own side, as a share of the wall area, above which the sheet branches.
+constexpr double kMaxJunctionAreaShare = 0.02;
 
 struct Ray {
   double length;
@@ -40,12 +43,20 @@ double weightedMedian(std::vector<Ray> rays) {
   return rays.back().length;
 }
 
+double edgeLength(const TopoDS_Shape& edge) {
+  BRepAdaptor_Curve curve(TopoDS::Edge(edge));
+  return GCPnts_AbscissaPoint::Length(curve);
+}
+
+Vec3 edgeMiddle(const TopoDS_Shape& edge) {
+  BRepAdaptor_Curve curve(TopoDS::Edge(edge));
+  const gp_Pnt p = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
+  return {p.X(), p.Y(), p.Z()};
+}
+
 double perimeter(const TopoDS_Shape& face) {
   double p = 0;  // a seam edge is met twice, as the face's boundary runs along it twice
-  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
-    BRepAdaptor_Curve curve(TopoDS::Edge(it.Current()));
-    p += GCPnts_AbscissaPoint::Length(curve);
-  }
+  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) p += edgeLength(it.Current());
   return p;
 }
 
@@ -98,19 +109,50 @@ struct ParityUnionFind {
 
 std::string faceName(int f) { return "Face" + std::to_string(f + 1); }
 
-void requireThin(const WallSides& w, const CadSolid& cad) {
+// thicknessEverywhere: the area-weighted median ray length over all faces, the part's thickness
+// where no face is a wall face.
+void requireThin(const WallSides& w, const CadSolid& cad, double thicknessEverywhere) {
   std::ostringstream msg;
-  if (w.thickness <= 0) {
-    msg << "not a thin section: no face has an opposite wall closer than its own width";
-    throw geometryError(msg.str());
+  const double thickness = w.thickness > 0 ? w.thickness : thicknessEverywhere;
+  const double slenderness = thickness / cad.diagonal;
+  if (w.thickness > 0 && w.sheetAreaShare >= 0.5 && slenderness <= kMaxSlenderness) return;
+  msg << "not a thin section: measured thickness " << thickness << " over part size (diagonal) " << cad.diagonal
+      << " = " << slenderness << " (a thin section has at most " << kMaxSlenderness << ")";
+  if (w.thickness > 0) msg << ", top+bottom area share " << w.sheetAreaShare << " (at least 0.5)";
+  else msg << ", and no face has an opposite wall closer than its own width";
+  throw geometryError(msg.str());
+}
+
+// Where the wall faces that face a wall on their own side meet other wall faces: the junction lines.
+std::vector<Vec3> junctionPoints(const CadSolid& cad, const WallSides& w, const std::vector<int>& faces) {
+  std::vector<Vec3> points;
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  for (int e = 1; e <= edgeFaces.Extent(); ++e) {
+    std::vector<int> walls;
+    bool junction = false;
+    for (const TopoDS_Shape& f : edgeFaces(e)) {
+      const int i = cad.faces.FindIndex(f) - 1;
+      if (w.faces[i].side == Side::Lateral) continue;
+      walls.push_back(i);
+      junction |= std::find(faces.begin(), faces.end(), i) != faces.end();
+    }
+    if (junction && walls.size() >= 2 && walls[0] != walls[1]) points.push_back(edgeMiddle(edgeFaces.FindKey(e)));
   }
-  const double slenderness = w.thickness / cad.diagonal;
-  if (w.sheetAreaShare < 0.5 || slenderness > 0.25) {
-    msg << "not a thin section: wall thickness " << w.thickness << " over part size " << cad.diagonal
-        << " = " << slenderness << " (at most 0.25), top+bottom area share " << w.sheetAreaShare
-        << " (at least 0.5)";
-    throw geometryError(msg.str());
-  }
+  return points;
+}
+
+Error junctionError(const CadSolid& cad, const WallSides& w, const std::vector<int>& faces) {
+  const std::vector<Vec3> at = junctionPoints(cad, w, faces);
+  std::ostringstream msg;
+  msg << "non-manifold chordal surface: the wall branches (a rib, T-junction or boss): ";
+  for (std::size_t k = 0; k < faces.size() && k < 4; ++k) msg << (k ? ", " : "") << faceName(faces[k]);
+  msg << (faces.size() == 1 ? " faces" : " face") << " a wall on its own side";
+  if (!at.empty()) msg << "; junction" << (at.size() > 1 ? "s" : "") << " at";
+  for (std::size_t k = 0; k < at.size() && k < 4; ++k)
+    msg << (k ? "," : "") << " (" << at[k].x() << ", " << at[k].y() << ", " << at[k].z() << ")";
+  if (at.size() > 4) msg << " and " << at.size() - 4 << " more";
+  return geometryError(msg.str());
 }
 
 // Same side across shared edges, opposite sides across the wall; returns (group, parity) per face.
@@ -129,9 +171,15 @@ std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, const WallSides
         throw geometryError("top and bottom cannot be told apart: " + faceName(wallFaces[0]) + " and " +
                             faceName(wallFaces[k]) + " share an edge but lie on opposite sides of the wall");
   }
+  std::vector<int> junctionFaces;  // faces whose wall is on their own side: the sheet branches (rib, T-junction)
+  double junctionArea = 0, wallArea = 0;
   for (int f = 0; f < n; ++f)
-    if (isWall(f) && w.faces[f].opposite >= 0 && isWall(w.faces[f].opposite))
-      uf.unite(f, w.faces[f].opposite, 1);  // a contradicting stray ray is outvoted by the edges
+    if (isWall(f)) {
+      wallArea += w.faces[f].area;
+      const int g = w.faces[f].opposite;
+      if (g >= 0 && isWall(g) && !uf.unite(f, g, 1)) junctionFaces.push_back(f), junctionArea += w.faces[f].area;
+    }
+  if (junctionArea > kMaxJunctionAreaShare * wallArea) throw junctionError(cad, w, junctionFaces);
   std::vector<std::pair<int, int>> rootParity(n);
   for (int f = 0; f < n; ++f) rootParity[f] = uf.find(f);
   return rootParity;
@@ -157,13 +205,15 @@ WallSides classifyWallSides(const CadSolid& cad) {
     fs.side = (!hits.empty() && fs.thickness < fs.width) ? Side::Top : Side::Lateral;  // Top = "wall" for now
     totalArea += fs.area;
   }
-  std::vector<Ray> wallThickness;
+  std::vector<Ray> wallThickness, everywhere;
   double wallArea = 0;
+  for (const FaceSide& fs : w.faces)
+    if (fs.thickness > 0) everywhere.push_back({fs.thickness, 0, fs.area});
   for (const FaceSide& fs : w.faces)
     if (fs.side != Side::Lateral) wallThickness.push_back({fs.thickness, 0, fs.area}), wallArea += fs.area;
   w.thickness = weightedMedian(wallThickness);
   w.sheetAreaShare = wallArea / std::max(totalArea, 1e-30);
-  requireThin(w, cad);
+  requireThin(w, cad, weightedMedian(everywhere));
 
   const std::vector<std::pair<int, int>> rootParity = solveSides(cad, w);
   // In each group of connected wall faces, the parity class that faces +z more is Top.
@@ -175,6 +225,28 @@ WallSides classifyWallSides(const CadSolid& cad) {
     if (w.faces[f].side != Side::Lateral)
       w.faces[f].side = ((rootParity[f].second == 0) == (up[rootParity[f].first] >= 0)) ? Side::Top : Side::Bottom;
   return w;
+}
+
+SmallFeatures findSmallFeatures(const CadSolid& cad, const WallSides& sides, double size) {
+  SmallFeatures small;
+  auto note = [&](int& count, const Vec3& at) {
+    if (small.shortEdges + small.narrowFaces == 0) small.firstAt = at;
+    ++count;
+  };
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  for (int e = 1; e <= edgeFaces.Extent(); ++e) {
+    bool onWall = false;
+    for (const TopoDS_Shape& f : edgeFaces(e)) onWall |= sides.faces[cad.faces.FindIndex(f) - 1].side != Side::Lateral;
+    if (onWall && edgeLength(edgeFaces.FindKey(e)) < size) note(small.shortEdges, edgeMiddle(edgeFaces.FindKey(e)));
+  }
+  for (int f = 0; f < cad.faces.Extent(); ++f) {
+    const FaceSide& face = sides.faces[f];  // a lateral face is about as wide as the wall is thick
+    if (face.width >= size || (face.side == Side::Lateral && face.width >= 0.5 * sides.thickness)) continue;
+    TopExp_Explorer edge(cad.faces(f + 1), TopAbs_EDGE);
+    note(small.narrowFaces, edge.More() ? edgeMiddle(edge.Current()) : Vec3::Zero());
+  }
+  return small;
 }
 
 }  // namespace hexlayer

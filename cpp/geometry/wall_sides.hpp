@@ -32,4 +32,13 @@ struct WallSides {
 // Throws geometryError when the part is not a thin section or its sides cannot be told apart.
 WallSides classifyWallSides(const CadSolid& cad);
 
+// CAD features smaller than the quad size, which the quad mesh may smooth over: edges of the top
+// and bottom walls shorter than `size` (a small hole's rim, a short edge), faces narrower than it
+// (walls) or than half the wall thickness (lateral faces): slivers, small fillets and chamfers.
+struct SmallFeatures {
+  int shortEdges = 0, narrowFaces = 0;  // narrowFaces: wall or lateral
+  Vec3 firstAt = Vec3::Zero();  // the middle of the first such edge, else a point of the first such face
+};
+SmallFeatures findSmallFeatures(const CadSolid& cad, const WallSides& sides, double size);
+
 }  // namespace hexlayer

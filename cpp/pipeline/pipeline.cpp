@@ -7,6 +7,7 @@
 #include <iterator>
 #include <optional>
 #include <sstream>
+#include <unistd.h>
 
 #include "bubbles/bubble_packing.hpp"
 #include "chordal/chordal_fairing.hpp"
@@ -23,6 +24,7 @@
 #include "quadmesh/sizing.hpp"
 #include "pipeline/surface_groups.hpp"
 #include "quality/quality.hpp"
+#include "quality/validation.hpp"
 #include "sweep/quadratic.hpp"
 #include "sweep/sweep.hpp"
 #include "tets/tet_mesh.hpp"
@@ -38,6 +40,7 @@ constexpr int kFairingIterations[] = {10, 3, 0};
 constexpr double kDefaultSizeOverThickness = 1.0;
 constexpr double kMaxAutoQuads = 250000;
 constexpr double kMinReach = 0.25, kMaxReach = 4;  // a wall hit counts between these multiples of r
+constexpr double kBytesPerHex = 2000;  // plate.step at size 0.3: 64 312 hexes, 73.5 MB peak (x 2 for safety)
 
 // Runs one stage, records its wall time in report["timings_s"][name] and reports progress.
 class StageClock {
@@ -62,21 +65,38 @@ class StageClock {
   const MeshOptions& options_;
 };
 
-// Default quad size: the wall thickness (bending-accurate C3D8I with 2 layers), coarser if the part
-// would need too many quads; with --aspect A, A layer thicknesses (thickness / layers).
+// The quad size as far as it is known before the chordal surface: the given one, A layer thicknesses
+// (thickness / layers) with --aspect A, else the wall thickness (bending-accurate C3D8I with 2 layers).
+double plannedSize(const MeshOptions& o, const WallSides& sides) {
+  return o.size > 0 ? o.size : o.aspect > 0 ? o.aspect * sides.thickness / o.layers : kDefaultSizeOverThickness * sides.thickness;
+}
+
+// The quad size used: the planned one, made coarser by default if the part would need too many quads.
 double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalArea, nlohmann::json& report) {
-  if (o.size > 0) {
-    report["size_source"] = "given";
-    return o.size;
+  const double planned = plannedSize(o, sides);
+  if (o.size > 0 || o.aspect > 0) {
+    report["size_source"] = o.size > 0 ? "given" : "aspect x wall thickness / layers";
+    return planned;
   }
-  if (o.aspect > 0) {
-    report["size_source"] = "aspect x wall thickness / layers";
-    return o.aspect * sides.thickness / o.layers;
-  }
-  double size = kDefaultSizeOverThickness * sides.thickness;
-  size = std::max(size, std::sqrt(chordalArea / kMaxAutoQuads));
   report["size_source"] = "auto: wall thickness (at most " + std::to_string(int(kMaxAutoQuads)) + " quads)";
-  return size;
+  return std::max(planned, std::sqrt(chordalArea / kMaxAutoQuads));
+}
+
+// Refuses, before meshing, a size that would need more memory than the machine has: quads from the
+// top wall's area, hexes = quads x layers, kBytesPerHex measured as the peak memory per hex on plate.step.
+void requireMemory(const MeshOptions& o, const WallSides& sides, nlohmann::json& r) {
+  double topArea = 0;
+  for (const FaceSide& f : sides.faces) topArea += f.side == Side::Top ? f.area : 0;
+  const double size = plannedSize(o, sides), quads = topArea / (size * size), hexes = quads * o.layers;
+  const double bytes = hexes * kBytesPerHex * (o.order == 2 ? 2 : 1);
+  const double machine = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  r["memory_estimate"] = {{"quads", quads}, {"hexes", hexes}, {"bytes", bytes}, {"machine_bytes", machine}};
+  if (bytes <= machine) return;
+  std::ostringstream msg;
+  msg << std::setprecision(3) << "quad size " << size << " would need about " << quads << " quads, " << hexes
+      << " hexes and " << bytes / 1e9 << " GB of memory (estimated), more than this machine's " << machine / 1e9
+      << " GB: choose a larger --size (or --aspect) or fewer --layers";
+  throw usageError(msg.str());
 }
 
 // π_b, π_t (§3): the sweep line cast onto the CAD walls; the radius function's ends (§7.2) where a ray misses.
@@ -182,7 +202,23 @@ std::vector<double> reportQuality(const HexMesh& mesh, double cadVolume, nlohman
   const BoundaryCheck b = checkBoundary(mesh);
   r["boundary"] = {{"faces", b.faces}, {"open_edges", b.openEdges}, {"non_manifold_edges", b.nonManifoldEdges},
                    {"watertight", b.watertight()}, {"euler_characteristic", b.eulerCharacteristic}};
+  r["validation"] = {{"passed", true}, {"failures", nlohmann::json::array()}};
+  for (const ValidationFailure& f : validateMesh(mesh, q, b, cadVolume)) {
+    nlohmann::json one = {{"check", f.check}, {"count", f.count}, {"message", f.message}};
+    if (f.at) one["at"] = {f.at->x(), f.at->y(), f.at->z()};
+    r["validation"]["passed"] = false;
+    r["validation"]["failures"].push_back(one);
+  }
   return std::move(q.scaledJacobian);
+}
+
+// A mesh that failed a validation check is not handed on, unless the caller forces it.
+void enforceValidation(const nlohmann::json& r, const MeshOptions& o) {
+  if (o.force || r["validation"]["passed"].get<bool>()) return;
+  std::string message = "the mesh failed validation, nothing written (--force writes it anyway):";
+  for (const auto& f : r["validation"]["failures"]) message += " " + f["message"].get<std::string>() + ";";
+  message.back() = '.';
+  throw validationError(message);
 }
 
 // Share of the hexes whose aspect ratio is within 10 % of the requested one (Figure 11).
@@ -254,6 +290,19 @@ void appendStages(MeshResult& all, const MeshResult& part) {
   q.nodes.insert(q.nodes.end(), part.quadMesh.nodes.begin(), part.quadMesh.nodes.end());
 }
 
+// Several solids are separate bodies (nodes where two touch are not shared): their validations,
+// each failure prefixed with its solid.
+nlohmann::json validationOfSolids(const nlohmann::json& solids) {
+  nlohmann::json v = {{"passed", true}, {"failures", nlohmann::json::array()}};
+  for (std::size_t i = 0; i < solids.size(); ++i)
+    for (nlohmann::json f : solids[i]["validation"]["failures"]) {
+      f["message"] = "solid " + std::to_string(i + 1) + ": " + f["message"].get<std::string>();
+      v["passed"] = false;
+      v["failures"].push_back(f);
+    }
+  return v;
+}
+
 }  // namespace
 
 void validateOptions(const MeshOptions& o) {
@@ -279,6 +328,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   handleJunctions(cad, sides, o.dropJunctions, r);
   r["thickness"] = sides.thickness;
   r["faces"] = faceSideCounts(sides);
+  requireMemory(o, sides, r);
   const auto nodes = clock.run("bubbles", [&] { return packBubbles(cad, sides, BubbleOptions{}); });
   r["bubbles"] = nodes.size();
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
@@ -290,6 +340,9 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   const double size = chooseSize(o, sides, chordalArea(cut), r);
   r["size"] = size;
   r["sizing"] = o.sizing;
+  const SmallFeatures small = findSmallFeatures(cad, sides, size);
+  r["small_features"] = {{"edges_shorter_than_size", small.shortEdges}, {"narrow_faces", small.narrowFaces},
+                         {"first_at", {small.firstAt.x(), small.firstAt.y(), small.firstAt.z()}}};
   ChordalSurface chordal;
   std::optional<ChordalLocator> locator;
   const QuadMesh quads = clock.run("quad_mesh", [&] {
@@ -340,6 +393,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   result.chordalSurface = std::move(chordal);
   result.quadMesh = quads;
+  enforceValidation(r, o);
   return result;
 }
 
@@ -350,8 +404,14 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
   MeshResult all;  // several solids: mesh each, one report per solid plus the totals
   double cad = 0;
   for (size_t i = 0; i < solids.size(); ++i) {
-    if (o.progress) o.progress("solid " + std::to_string(i + 1) + " of " + std::to_string(solids.size()));
-    MeshResult one = meshSolid(solids[i], o);
+    const std::string which = "solid " + std::to_string(i + 1) + " of " + std::to_string(solids.size());
+    if (o.progress) o.progress(which);
+    MeshResult one;
+    try {
+      one = meshSolid(solids[i], o);
+    } catch (const Error& e) {
+      throw Error(e.code(), which + ": " + e.what());
+    }
     cad += one.report["volume"]["cad"].get<double>();
     all.report["solids"].push_back(one.report);
     appendSurfaceGroups(all.surfaceGroups, one.surfaceGroups, static_cast<int>(all.mesh.nodes.size()),
@@ -363,6 +423,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
   long cadEuler = 0;
   for (const auto& one : all.report["solids"]) cadEuler += one["boundary"]["cad_euler_characteristic"].get<long>();
   compareTopology(all.report, cadEuler);
+  all.report["validation"] = validationOfSolids(all.report["solids"]);
   all.nodeSets = surfaceNodeSets(all.mesh);
   return all;
 }

@@ -21,6 +21,7 @@ struct MeshOptions {
   double aspect = 0;  // in-plane quad size / layer thickness; 0 = off (size from --size or the wall)
   double minSize = 0, maxSize = 0;  // bounds of the adaptive size; 0 = a quarter and 4 x the size
   bool dropJunctions = false;  // mesh the largest sheet and leave out ribs/bosses standing on it (else refuse)
+  bool force = false;  // hand on a mesh that failed validation (report "validation") instead of throwing
   std::function<void(const std::string&)> progress;  // one line per finished stage (may be empty)
 };
 
@@ -39,10 +40,11 @@ struct MeshResult {
 // Checks the options; throws usageError naming the bad one.
 void validateOptions(const MeshOptions& options);
 
-// Meshes every solid of a CAD file (STEP, IGES, BREP).
+// Meshes every solid of a CAD file (STEP, IGES, BREP). The mesh is validated (report "validation");
+// unless options.force, a failed check throws validationError naming the check and the place.
 MeshResult meshFile(const std::string& path, const MeshOptions& options);
 
-// Meshes one solid.
+// Meshes one solid; validated like meshFile.
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options);
 
 }  // namespace hexlayer

@@ -1,7 +1,7 @@
 // pyhexlayer: the Hex-Layer pipeline as a Python module (pybind11), for FreeCAD's workbench and macros.
 // mesh_file(path, ...) and mesh_brep(text, ...) take the CLI's options as keywords and return a MeshResult
-// of NumPy arrays and the report dict. hexlayer::Error becomes UsageError / InputError / GeometryError
-// (subclasses of HexLayerError, with the CLI's exit code and message); no C++ exception reaches the interpreter.
+// of NumPy arrays and the report dict. hexlayer::Error becomes UsageError / InputError / GeometryError /
+// ValidationError (subclasses of HexLayerError, with the CLI's exit code and message); no C++ exception reaches the interpreter.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -34,6 +34,11 @@ Options makeOptions(int layers, double size, const std::string& sizing, double a
   o.aspect = aspect;
   o.order = order;
   hexlayer::validateOptions(o);
+  return o;
+}
+
+Options forced(Options o, bool force) {
+  o.force = force;
   return o;
 }
 
@@ -196,12 +201,13 @@ PyMeshResult meshBrep(const std::string& text, const Options& o, const py::objec
 // ---- exceptions ---------------------------------------------------------------------------------------
 
 struct ExceptionTypes {
-  py::object base, usage, input, geometry;
+  py::object base, usage, input, geometry, validation;
   const py::object& of(ExitCode code) const {
     switch (code) {
       case ExitCode::BadUsage: return usage;
       case ExitCode::BadInput: return input;
       case ExitCode::UnsupportedGeometry: return geometry;
+      case ExitCode::InvalidMesh: return validation;
       default: return base;
     }
   }
@@ -225,6 +231,9 @@ ExceptionTypes defineExceptions(py::module_& m) {
                             "A missing, unreadable or invalid input file or shape (exit code 3).");
   t.geometry = defineException(m, "GeometryError", t.base.ptr(), int(ExitCode::UnsupportedGeometry),
                                "A valid solid the method does not handle, e.g. not thin (exit code 4).");
+  t.validation = defineException(m, "ValidationError", t.base.ptr(), int(ExitCode::InvalidMesh),
+                                 "The mesh failed a validation check, e.g. an inverted hex (exit code 6); force=True "
+                                 "returns it with the failures in report['validation'].");
   return t;
 }
 
@@ -258,7 +267,8 @@ constexpr const char* kOptionsDoc =
     "order: 1 = linear hexes (M, 8), 2 = quadratic hexes (M, 20), wall mid-edge nodes on the CAD walls; "
     "drop_junctions: mesh the largest sheet and leave out ribs, bosses and flanges standing on it (else GeometryError); "
     "progress: callable taking one line per finished stage, or None "
-    "(an exception it raises ends the run).";
+    "(an exception it raises ends the run); force: return a mesh that failed validation instead of raising "
+    "ValidationError.";
 
 }  // namespace
 
@@ -301,17 +311,17 @@ PYBIND11_MODULE(pyhexlayer, m) {
 
   m.def("mesh_file",
         [](const std::string& path, int layers, double size, const std::string& sizing, double aspect, int order,
-           bool dropJunctions, const py::object& progress) {
-          return meshFile(path, makeOptions(layers, size, sizing, aspect, order, dropJunctions), progress);
+           bool dropJunctions, const py::object& progress, bool force) {
+          return meshFile(path, forced(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force), progress);
         },
-        py::arg("path"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(),
+        py::arg("path"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(), py::arg("force") = false,
         (std::string("Meshes every solid of a STEP, IGES or BREP file. ") + kOptionsDoc).c_str());
   m.def("mesh_brep",
         [](const std::string& text, int layers, double size, const std::string& sizing, double aspect, int order,
-           bool dropJunctions, const py::object& progress) {
-          return meshBrep(text, makeOptions(layers, size, sizing, aspect, order, dropJunctions), progress);
+           bool dropJunctions, const py::object& progress, bool force) {
+          return meshBrep(text, forced(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force), progress);
         },
-        py::arg("brep"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(),
+        py::arg("brep"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(), py::arg("force") = false,
         (std::string("Meshes every solid of a shape in OpenCASCADE's BREP text (FreeCAD: Shape.exportBrepToString()). ") +
          kOptionsDoc).c_str());
   m.def("check_options",

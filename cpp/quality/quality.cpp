@@ -78,9 +78,11 @@ struct DirectedEdge {
 // Adds one boundary edge group [b, e) (same lo, hi) to the counts.
 void classifyEdgeGroup(const DirectedEdge* b, const DirectedEdge* e, BoundaryCheck& c) {
   const std::ptrdiff_t uses = e - b;
-  if (uses == 1) ++c.openEdges;
-  else if (uses > 2) ++c.nonManifoldEdges;
-  else if (b[0].dir == b[1].dir) ++c.inconsistentlyOrientedEdges;
+  const bool open = uses == 1, nonManifold = uses > 2, flipped = uses == 2 && b[0].dir == b[1].dir;
+  c.openEdges += open;
+  c.nonManifoldEdges += nonManifold;
+  c.inconsistentlyOrientedEdges += flipped;
+  if ((open || nonManifold || flipped) && c.firstBadEdge[0] < 0) c.firstBadEdge = {b->lo, b->hi};
 }
 
 }  // namespace
@@ -201,8 +203,9 @@ BoundaryCheck checkBoundary(const HexMesh& mesh) {
   return c;
 }
 
-std::size_t countCoincidentNodes(const HexMesh& mesh, double tol) {
-  if (!(tol > 0) || mesh.nodes.empty()) return 0;
+CoincidentNodes findCoincidentNodes(const HexMesh& mesh, double tol) {
+  CoincidentNodes found;
+  if (!(tol > 0) || mesh.nodes.empty()) return found;
   Vec3 lo = mesh.nodes[0], hi = mesh.nodes[0];
   for (const Vec3& p : mesh.nodes) {
     lo = lo.cwiseMin(p);
@@ -210,13 +213,18 @@ std::size_t countCoincidentNodes(const HexMesh& mesh, double tol) {
   }
   // Cells no finer than 1e-6 of the extent keep the grid's integer cell indices in range.
   PointGrid grid(std::max(tol, 1e-6 * (hi - lo).maxCoeff()));
-  std::size_t pairs = 0;
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
     const Vec3 p = mesh.nodes[i] - lo;
-    grid.forEachNear(p, tol, [&](int, const Vec3& q) { pairs += (q - p).squaredNorm() < tol * tol; });
+    grid.forEachNear(p, tol, [&](int, const Vec3& q) {
+      if ((q - p).squaredNorm() >= tol * tol) return;
+      ++found.pairs;
+      if (found.firstNode < 0) found.firstNode = static_cast<int>(i);
+    });
     grid.insert(static_cast<int>(i), p);
   }
-  return pairs;
+  return found;
 }
+
+std::size_t countCoincidentNodes(const HexMesh& mesh, double tol) { return findCoincidentNodes(mesh, tol).pairs; }
 
 }  // namespace hexlayer

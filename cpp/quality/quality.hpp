@@ -56,14 +56,21 @@ std::vector<BoundaryFace> boundaryFaces(const HexMesh& mesh);
 
 struct BoundaryCheck {
   std::size_t faces = 0, openEdges = 0, nonManifoldEdges = 0, inconsistentlyOrientedEdges = 0;
-  long eulerCharacteristic = 0;  // V - E + F of the boundary faces: 2 - 2 x (number of holes) for one closed shell
+  long eulerCharacteristic = 0;
+  std::array<int, 2> firstBadEdge{-1, -1};  // nodes of the first open, non-manifold or flipped edge (by node ids)  // V - E + F of the boundary faces: 2 - 2 x (number of holes) for one closed shell
   // Every boundary edge is used by exactly 2 boundary faces, in opposite directions (true if no faces).
   bool watertight() const { return openEdges == 0 && nonManifoldEdges == 0 && inconsistentlyOrientedEdges == 0; }
 };
 
 BoundaryCheck checkBoundary(const HexMesh& mesh);
 
-// Number of node pairs closer than tol (strictly), found with a hash grid; 0 if tol <= 0.
+struct CoincidentNodes {
+  std::size_t pairs = 0;  // node pairs closer than the tolerance
+  int firstNode = -1;     // the lowest-numbered node that closes such a pair, -1 if none
+};
+
+// Node pairs closer than tol (strictly), found with a hash grid; none if tol <= 0.
+CoincidentNodes findCoincidentNodes(const HexMesh& mesh, double tol);
 std::size_t countCoincidentNodes(const HexMesh& mesh, double tol);
 
 }  // namespace hexlayer

@@ -30,6 +30,16 @@ def close_document(name):
         FreeCAD.closeDocument(name)
 
 
+def assert_fails(test, mesh, *phrases):
+    """Recomputing leaves `mesh` failed, with each phrase in its Status and no mesh for a solver."""
+    mesh.Document.recompute()
+    test.assertFalse(mesh.isValid())
+    test.assertEqual(mesh.FemMesh.VolumeCount, 0, "no stale mesh for a solver")
+    test.assertTrue(mesh.Status.startswith("Failed: "), mesh.Status)
+    for phrase in phrases:
+        test.assertIn(phrase, mesh.Status)
+
+
 def add_plate(doc, name="Plate"):
     """The 100 x 20 x 2 mm plate as a Part box: Face1 at x = 0, Face2 at x = 100, Face6 on top (z = 2)."""
     box = doc.addObject("Part::Box", name)

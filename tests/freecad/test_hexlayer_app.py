@@ -111,12 +111,7 @@ class Failures(unittest.TestCase):
         self.doc = t.new_document(self)
 
     def assert_fails(self, mesh, *phrases):
-        self.doc.recompute()
-        self.assertFalse(mesh.isValid())
-        self.assertEqual(mesh.FemMesh.VolumeCount, 0, "no stale mesh for a solver")
-        self.assertTrue(mesh.Status.startswith("Failed: "), mesh.Status)
-        for phrase in phrases:
-            self.assertIn(phrase, mesh.Status)
+        t.assert_fails(self, mesh, *phrases)
 
     def assert_recovers(self, mesh):
         """The same object meshes again once given a thin solid."""

@@ -8,10 +8,10 @@ from . import Stateless, meshing
 
 
 class MeshHexLayer(Stateless):
-    """Proxy of the mesh object: properties Part, Layers, Size, Sizing, Aspect, Order, DropJunctions and the read-only Status."""
+    """Proxy of the mesh object: properties Part, Layers, Size, Sizing, Aspect, Order, DropJunctions, Force and the read-only Status."""
 
     Type = "Fem::MeshHexLayer"
-    OPTIONS = ("Layers", "Size", "Sizing", "Aspect", "Order", "DropJunctions")  # the properties the mesher takes besides Part
+    OPTIONS = ("Layers", "Size", "Sizing", "Aspect", "Order", "DropJunctions", "Force")  # the properties the mesher takes besides Part
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -32,6 +32,8 @@ class MeshHexLayer(Stateless):
         add("App::PropertyInteger", "Order", "Element order: 1 = hexa8, 2 = hexa20 (wall mid-edge nodes on the CAD walls)", 1)
         add("App::PropertyBool", "DropJunctions",
             "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (else meshing refuses them)", False)
+        add("App::PropertyBool", "Force", "Keep a mesh that fails its validation (an inverted hex, a crack, the volume), "
+            "with the failures in Status", False)
         add("App::PropertyString", "Status", "Summary of the last meshing, or why it failed", "")
         obj.setEditorMode("Status", 1)  # read-only
 
@@ -42,7 +44,7 @@ class MeshHexLayer(Stateless):
         """Meshes the Part; on failure the FemMesh is emptied (no stale mesh reaches a solver) and the error raised."""
         start = time.perf_counter()
         try:
-            result = meshing.mesh(obj.Part, meshing.options(obj), progress=self.progress)
+            result = meshing.mesh(obj.Part, meshing.options(obj), progress=self.progress, force=obj.Force)
         except Exception as error:
             self.result = None
             obj.FemMesh = Fem.FemMesh()

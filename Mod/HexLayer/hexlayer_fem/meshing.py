@@ -51,12 +51,13 @@ def option_problem(opts):
     return None
 
 
-def mesh(part, opts, progress=None):
-    """pyhexlayer.MeshResult of the part's shape; the BREP text keeps FreeCAD's face numbering."""
+def mesh(part, opts, progress=None, force=False):
+    """pyhexlayer.MeshResult of the part's shape; the BREP text keeps FreeCAD's face numbering. A mesh that fails
+    its validation raises pyhexlayer.ValidationError, unless force."""
     problem = part_problem(part)
     if problem:
         raise pyhexlayer.InputError(problem)
-    return pyhexlayer.mesh_brep(part.Shape.exportBrepToString(), progress=progress, **opts)
+    return pyhexlayer.mesh_brep(part.Shape.exportBrepToString(), progress=progress, force=force, **opts)
 
 
 def femmesh(result):
@@ -84,10 +85,11 @@ def hexa_femmesh(nodes, hexes):
 
 
 def summary(report, seconds):
-    """One line for people: hexes, scaled Jacobian min/avg, volume error, time."""
+    """One line for people: hexes, scaled Jacobian min/avg, volume error, time, and the failed validation checks."""
     sj, volume = report["scaled_jacobian"], report["volume"]
     text = "{} hexes, {} nodes, {} layers. Scaled Jacobian min {:.3f}, avg {:.3f}. Volume {:+.2f} % vs CAD. {:.1f} s.".format(
         report["hexes"], report["nodes"], report["layers"], sj["min"], sj["avg"], 100 * volume["relative_error"], seconds)
-    if report["inverted_hexes"]:
-        text += " {} inverted hexes: not fit for a solver.".format(report["inverted_hexes"])
+    failures = [f["message"] for f in report["validation"]["failures"]]  # only with Force
+    if failures:
+        text += " Validation failed, kept as Force is on: {}. Not fit for a solver there.".format("; ".join(failures))
     return text

@@ -1,0 +1,127 @@
+"""Bad and hard inputs (issue 5): each row of TABLE runs the CLI on one input with a time limit and checks its
+exit code and a fragment of its message; none may crash (a signal) or hang (the time limit). The hard CAD
+files are made by scripts/make_bad_inputs.py into tests/data/robustness.
+
+Run by CTest as: /usr/bin/python3 test_robustness.py --hexlayer PATH --source DIR
+"""
+import json
+import os
+import subprocess
+import tempfile
+import unittest
+
+import harness
+
+SECONDS = 120  # every row is done in a few seconds; a hang is cut off here and fails its row
+
+# (name, input file, extra arguments, exit code, fragment of stderr (or of stdout for exit 0)).
+# Inputs: "data/X" is tests/data/robustness/X, "sample/X" is Resources/samples/X, "fuzz/X" is an input the
+# fuzzer found (tests/fuzz/findings/X), "tmp/X" a path in
+# the run's temporary folder (empty.step is made there empty, folder.step as a folder).
+TABLE = [
+    # files that cannot be read
+    ("missing file", "tmp/missing.step", [], 3, "does not exist"),
+    ("empty file", "tmp/empty.step", [], 3, "is empty"),
+    ("folder as input", "tmp/folder.step", [], 3, "is not a regular file"),
+    ("garbage STEP", "data/garbage.step", [], 3, "not a valid STEP file"),
+    ("garbage BREP", "data/garbage.brep", [], 3, "not a valid BREP file"),
+    ("garbage IGES", "data/garbage.iges", [], 3, "not a valid IGES file"),
+    ("truncated STEP", "data/truncated.step", [], 3, "not a valid STEP file"),
+    ("truncated BREP", "data/truncated.brep", [], 3, "the BREP reader timed out"),
+    ("STEP that crashes OpenCASCADE", "fuzz/step_reader_segv.step", [], 3, "the STEP reader crashed (Segmentation fault)"),
+    ("STEP text named .brep", "data/step_text.brep", [], 3, "not a valid BREP file"),
+    ("unknown extension", "data/plate.txt", [], 3, "unknown input format '.txt'"),
+    # files without one closed solid
+    ("lone face", "data/lone_face.step", [], 3, "contains no solid: 1 open shell(s) of 1 face(s)"),
+    ("IGES lone face", "data/lone_face.iges", [], 3, "contains no solid: 1 loose face(s)"),
+    ("wire only", "data/wire.step", [], 3, "contains no solid: 3 edge(s) (wires or curves), no face"),
+    ("open shell (STEP)", "data/open_shell.step", [], 3, "1 open shell(s) of 5 face(s) in all, not closed"),
+    ("open shell (BREP)", "data/open_shell.brep", [], 3, "1 open shell(s) of 5 face(s) in all, not closed"),
+    # geometry the method does not handle
+    ("thick block", "data/thick_block.step", [], 4, "not a thin section: measured thickness 20 over part size (diagonal) 39.05"),
+    ("cube", "sample/thick_block.step", [], 4, "= 0.57735 (a thin section has at most 0.25)"),
+    ("rib (T-junction)", "data/t_junction.step", [], 4, "the wall branches (a rib, T-junction or boss)"),
+    ("rib junction lines", "data/t_junction.step", [], 4, "junctions at (30, 21, 2), (30, 19, 2)"),
+    # several solids and small features: a valid mesh
+    ("two solids", "data/two_plates.step", [], 0, "2 solids, each meshed on its own"),
+    ("hole below the size", "data/small_hole.step", [], 0, "2 CAD edges shorter than the quad size and 1 faces narrower (the first at (29.75, 20, 2))"),
+    ("fillets below the size", "data/small_fillets.step", [], 0, "features that small may be smoothed over"),
+    ("chamfers below the size", "data/small_chamfers.step", [], 0, "features that small may be smoothed over"),
+    ("short edge", "data/short_edge.step", [], 0, "features that small may be smoothed over"),
+    ("sliver face", "data/sliver_face.step", [], 0, "features that small may be smoothed over"),
+    ("BREP file", "data/plate.brep", [], 0, "Wrote"),
+    # bad options
+    ("zero layers", "data/plate.brep", ["--layers", "0"], 2, "--layers must be between 1 and 64, got 0"),
+    ("negative layers", "data/plate.brep", ["--layers=-3"], 2, "--layers must be between 1 and 64, got -3"),
+    ("absurd layers", "data/plate.brep", ["--layers", "1000000"], 2, "--layers must be between 1 and 64"),
+    ("layers not a number", "data/plate.brep", ["--layers", "abc"], 2, "--layers"),
+    ("zero size", "data/plate.brep", ["--size", "0"], 2, "--size must be a positive length"),
+    ("negative size", "data/plate.brep", ["--size=-1"], 2, "--size must be a positive length"),
+    ("NaN size", "data/plate.brep", ["--size", "nan"], 2, "--size must be a positive length"),
+    ("infinite size", "data/plate.brep", ["--size", "inf"], 2, "--size must be a positive length"),
+    ("size needing terabytes", "data/plate.brep", ["--size", "1e-4"], 2, "GB of memory (estimated), more than this machine's"),
+    ("64 layers of tiny quads", "data/plate.brep", ["--layers", "64", "--size", "0.01"], 2, "quads, 1.54e+09 hexes"),
+    ("size larger than the part", "data/plate.brep", ["--size", "1e6"], 0, "Wrote"),
+    ("negative aspect", "data/plate.brep", ["--aspect=-1"], 2, "--aspect must be a positive ratio"),
+    ("size and aspect", "data/plate.brep", ["--size", "1", "--aspect", "2"], 2, "give --size or --aspect, not both"),
+    ("order 3", "data/plate.brep", ["--order", "3"], 2, "--order must be 1 or 2, got 3"),
+    ("unknown sizing", "data/plate.brep", ["--sizing", "fractal"], 2, "--sizing must be 'uniform' or 'adaptive'"),
+    ("min above max size", "data/plate.brep", ["--sizing", "adaptive", "--min-size", "5", "--max-size", "1"], 2,
+     "--min-size <= --max-size"),
+    ("unknown output format", "data/plate.brep", ["-o", "tmp/out.stl"], 2, "unknown output format '.stl'"),
+    ("output folder missing", "data/plate.brep", ["-o", "tmp/no/such/folder/out.inp"], 3, "cannot open the output file"),
+]
+
+
+def resolve(path, tmp):
+    kind, name = path.split("/", 1)
+    folder = {"data": os.path.join(harness.args.source, "tests", "data", "robustness"),
+              "sample": os.path.join(harness.args.source, "Resources", "samples"),
+              "fuzz": os.path.join(harness.args.source, "tests", "fuzz", "findings"), "tmp": tmp}[kind]
+    return os.path.join(folder, name)
+
+
+class BadAndHardInputs(unittest.TestCase):
+    def run_row(self, path, extra, tmp):
+        args = [resolve(a, tmp) if a.startswith("tmp/") else a for a in extra]
+        if "-o" not in args:
+            args += ["-o", os.path.join(tmp, "out.inp")]
+        report = os.path.join(tmp, "report.json")
+        return subprocess.run([harness.args.hexlayer, "mesh", resolve(path, tmp), *args, "--report", report],
+                              capture_output=True, text=True, timeout=SECONDS)
+
+    def test_table(self):
+        self.assertGreaterEqual(len(TABLE), 25)
+        with tempfile.TemporaryDirectory() as tmp:
+            open(os.path.join(tmp, "empty.step"), "w").close()
+            os.mkdir(os.path.join(tmp, "folder.step"))
+            for name, path, extra, code, fragment in TABLE:
+                with self.subTest(name):
+                    done = self.run_row(path, extra, tmp)
+                    self.assertEqual(done.returncode, code, f"{name}: {done.stderr[-1500:]}")
+                    self.assertIn(fragment, done.stdout if code == 0 else done.stderr)
+                    if code == 0:
+                        self.check_valid_mesh(os.path.join(tmp, "report.json"))
+                    else:
+                        self.assertIn("hexlayer: error: ", done.stderr)
+
+    def check_valid_mesh(self, report_path):
+        with open(report_path) as f:
+            r = json.load(f)
+        self.assertTrue(r["validation"]["passed"], r["validation"])
+        self.assertEqual(r["inverted_hexes"], 0)
+        self.assertLess(abs(r["volume"]["relative_error"]), 0.05)
+
+    def test_memory_estimate_is_in_the_report(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            done = self.run_row("data/plate.brep", [], tmp)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(os.path.join(tmp, "report.json")) as f:
+                estimate = json.load(f)["memory_estimate"]
+            self.assertAlmostEqual(estimate["quads"], 60 * 40 / 2.0 ** 2, delta=1)  # top wall area / size^2
+            self.assertAlmostEqual(estimate["hexes"], 2 * estimate["quads"], delta=1)
+            self.assertGreater(estimate["machine_bytes"], estimate["bytes"])
+
+
+if __name__ == "__main__":
+    harness.main()
