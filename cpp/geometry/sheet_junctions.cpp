@@ -1,10 +1,5 @@
 #include "geometry/sheet_junctions.hpp"
 
-#include <BRepOffset_Analyse.hxx>
-#include <BRepOffset_Interval.hxx>
-#include <TopExp.hxx>
-#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
-#include <TopoDS.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -12,11 +7,11 @@
 #include <numeric>
 
 #include "geometry/face_sampling.hpp"
+#include "geometry/sheet_edges.hpp"
 
 namespace hexlayer {
 namespace {
 
-constexpr double kTangentAngle = 0.5;  // radians: a bend's tangent edges, not a junction
 
 struct UnionFind {
   std::vector<int> parent;
@@ -27,14 +22,6 @@ struct UnionFind {
   }
   void unite(int a, int b) { parent[std::max(find(a), find(b))] = std::min(find(a), find(b)); }
 };
-
-// Whether the edge joins two faces of one sheet: smooth (within kTangentAngle) or convex. At a
-// concave sharp edge one sheet stands on another (OpenCASCADE's offset analysis of the solid tells).
-bool joinsOneSheet(const BRepOffset_Analyse& edges, const TopoDS_Edge& edge) {
-  for (const BRepOffset_Interval& piece : edges.Type(edge))
-    if (piece.Type() == ChFiDS_Concave) return false;
-  return true;
-}
 
 Vec3 faceCentre(const TopoDS_Shape& face, double area) {
   Vec3 c = Vec3::Zero();
@@ -48,16 +35,8 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
   const int n = static_cast<int>(sides.faces.size());
   auto isWall = [&](int f) { return f >= 0 && sides.faces[f].side != Side::Lateral; };
   UnionFind uf(n);
-  const BRepOffset_Analyse edgeTypes(cad.solid, kTangentAngle);
-  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
-  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
-  for (int e = 1; e <= edgeFaces.Extent(); ++e) {
-    std::vector<int> faces;
-    for (const TopoDS_Shape& f : edgeFaces(e))
-      if (const int i = cad.faces.FindIndex(f) - 1; isWall(i) && std::find(faces.begin(), faces.end(), i) == faces.end()) faces.push_back(i);
-    if (faces.size() == 2 && joinsOneSheet(edgeTypes, TopoDS::Edge(edgeFaces.FindKey(e))))
-      uf.unite(faces[0], faces[1]);
-  }
+  for (const auto& [a, b] : sheetJoins(cad))
+    if (isWall(a) && isWall(b)) uf.unite(a, b);
   for (int f = 0; f < n; ++f)
     if (isWall(f) && isWall(sides.faces[f].opposite)) uf.unite(f, sides.faces[f].opposite);
   std::map<int, Sheet> byRoot;

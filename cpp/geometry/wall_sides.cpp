@@ -18,6 +18,7 @@
 
 #include "core/error.hpp"
 #include "geometry/face_sampling.hpp"
+#include "geometry/sheet_edges.hpp"
 
 namespace hexlayer {
 namespace {
@@ -159,18 +160,11 @@ Error junctionError(const CadSolid& cad, const WallSides& w, const std::vector<i
 std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, const WallSides& w) {
   const int n = static_cast<int>(w.faces.size());
   ParityUnionFind uf(n);
-  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
-  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
   auto isWall = [&](int f) { return w.faces[f].side != Side::Lateral; };
-  for (int e = 1; e <= edgeFaces.Extent(); ++e) {
-    std::vector<int> wallFaces;
-    for (const TopoDS_Shape& f : edgeFaces(e))
-      if (int i = cad.faces.FindIndex(f) - 1; isWall(i)) wallFaces.push_back(i);
-    for (size_t k = 1; k < wallFaces.size(); ++k)
-      if (!uf.unite(wallFaces[0], wallFaces[k], 0))
-        throw geometryError("top and bottom cannot be told apart: " + faceName(wallFaces[0]) + " and " +
-                            faceName(wallFaces[k]) + " share an edge but lie on opposite sides of the wall");
-  }
+  for (const auto& [a, b] : sheetJoins(cad))  // not across concave edges: a rib's walls are not the sheet's side
+    if (isWall(a) && isWall(b) && !uf.unite(a, b, 0))
+      throw geometryError("top and bottom cannot be told apart: " + faceName(a) + " and " + faceName(b) +
+                          " share an edge but lie on opposite sides of the wall");
   std::vector<int> junctionFaces;  // faces whose wall is on their own side: the sheet branches (rib, T-junction)
   double junctionArea = 0, wallArea = 0;
   for (int f = 0; f < n; ++f)

@@ -125,16 +125,22 @@ std::string describeSheet(const Sheet& s) {
 }
 
 // Ribs, bosses and flanges standing on the sheet (T-junctions, where the chordal surface would be
-// non-manifold): refused, or left out with dropJunctions; they are listed in the report.
-void handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohmann::json& report) {
+// non-manifold): refused, or left out with dropJunctions; they are listed in the report. Returns
+// the estimated volume left out.
+double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohmann::json& report) {
   const std::vector<Sheet> sheets = findSheets(cad, sides);
   report["junctions"] = nlohmann::json::array();
   for (std::size_t s = 1; s < sheets.size(); ++s)
     report["junctions"].push_back({{"at", {sheets[s].centre.x(), sheets[s].centre.y(), sheets[s].centre.z()}},
                                    {"faces", faceNames(sheets[s])}, {"area", sheets[s].area},
                                    {"volume", sheets[s].volume}});
-  if (sheets.size() < 2) return;
-  if (drop) return keepFirstSheet(sheets, sides);
+  if (sheets.size() < 2) return 0;
+  if (drop) {
+    keepFirstSheet(sheets, sides);
+    double leftOut = 0;
+    for (std::size_t s = 1; s < sheets.size(); ++s) leftOut += sheets[s].volume;
+    return leftOut;
+  }
   std::ostringstream msg;
   msg << "T-junction: " << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
       << "chordal surface would be non-manifold, which this method does not mesh: " << describeSheet(sheets[1]);
@@ -325,7 +331,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   StageClock clock(r, o);
   const CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid); });
   WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
-  handleJunctions(cad, sides, o.dropJunctions, r);
+  const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r);
   r["thickness"] = sides.thickness;
   r["faces"] = faceSideCounts(sides);
   requireMemory(o, sides, r);
@@ -386,7 +392,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   r["sweep"]["rim_nodes"] = std::count(result.mesh.nodeOnRim.begin(), result.mesh.nodeOnRim.end(), 1);
   r["sweep"]["rim_nodes_on_lateral_faces"] = clock.run("rim", [&] { return projectRim(result.mesh, walls, sides.thickness); });
   if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
-  result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, cad.volume, r); });
+  result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, cad.volume - leftOut, r); });
+  r["volume"]["junctions_left_out"] = leftOut;  // "cad" is the part's volume without them
   compareTopology(r, eulerCharacteristic(cad));
   if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);
   result.nodeSets = surfaceNodeSets(result.mesh);

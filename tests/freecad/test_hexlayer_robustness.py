@@ -27,7 +27,7 @@ def add_file(doc, name):
 
 # (name, file or None for the 100 x 20 x 2 plate, mesh properties, phrases of the Status after "Failed: ")
 FAILURES = [
-    ("rib (T-junction)", "t_junction.step", {}, ("the wall branches (a rib, T-junction or boss)", "junctions at (30, 21, 2)")),
+    ("rib (T-junction)", "t_junction.step", {}, ("T-junction: 1 sheet(s)", "(30, 20, 8) [Face6 Face8]; DropJunctions meshes")),
     ("thick block", "thick_block.step", {}, ("not a thin section: measured thickness 20 over part size",)),
     ("open shell", "open_shell.brep", {}, ("not a solid",)),
     ("lone face", "lone_face.step", {}, ("not a solid",)),
@@ -59,9 +59,9 @@ class ValidationInFreeCAD(unittest.TestCase):
     def test_failed_validation_keeps_no_mesh_unless_forced(self):
         import Part
         doc = t.new_document(self)
-        part = doc.addObject("Part::Feature", "LBracket")
+        part = doc.addObject("Part::Feature", "SheetMetal")
         part.Shape = Part.read(os.path.join(os.environ["HEXLAYER_SOURCE"], "..", "shared", "parts", "real",
-                                            "ender3_lcd_support_Lbracket.step"))
+                                            "analysissitus_sheet_metal_54_SHELLONLY.brep"))
         mesh = HexLayer.makeMesh(doc, part)
         t.assert_fails(self, mesh, "the mesh failed validation, nothing written (Force writes it anyway): inverted: ")
         mesh.Force = True

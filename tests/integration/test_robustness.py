@@ -40,8 +40,9 @@ TABLE = [
     # geometry the method does not handle
     ("thick block", "data/thick_block.step", [], 4, "not a thin section: measured thickness 20 over part size (diagonal) 39.05"),
     ("cube", "sample/thick_block.step", [], 4, "= 0.57735 (a thin section has at most 0.25)"),
-    ("rib (T-junction)", "data/t_junction.step", [], 4, "the wall branches (a rib, T-junction or boss)"),
-    ("rib junction lines", "data/t_junction.step", [], 4, "junctions at (30, 21, 2), (30, 19, 2)"),
+    ("rib (T-junction)", "data/t_junction.step", [], 4, "T-junction: 1 sheet(s) (rib, boss or flange) stand on the main sheet"),
+    ("rib: where and which faces", "data/t_junction.step", [], 4, "(30, 20, 8) [Face6 Face8]; --drop-junctions meshes"),
+    ("rib left out", "data/t_junction.step", ["--drop-junctions"], 0, "Volume 4800 vs CAD 4800"),
     # several solids and small features: a valid mesh
     ("two solids", "data/two_plates.step", [], 0, "2 solids, each meshed on its own"),
     ("hole below the size", "data/small_hole.step", [], 0, "2 CAD edges shorter than the quad size and 1 faces narrower (the first at (29.75, 20, 2))"),

@@ -88,8 +88,8 @@ class TableThroughTheBinding(unittest.TestCase):
                 self.assertIn("the BREP string", str(raised.exception))
 
     def test_a_mesh_that_fails_validation_is_returned_only_when_forced(self):
-        # The real L-bracket meshes with a few inverted hexes at its sharp inside bend (test_real_parts).
-        part = os.path.join(harness.args.source, "..", "shared", "parts", "real", "ender3_lcd_support_Lbracket.step")
+        # The real sheet-metal part meshes with inverted hexes at its flanges' rims (test_real_parts).
+        part = os.path.join(harness.args.source, "..", "shared", "parts", "real", "analysissitus_sheet_metal_54_SHELLONLY.brep")
         with self.assertRaises(pyhexlayer.ValidationError) as raised:
             pyhexlayer.mesh_file(part)
         self.assertEqual(raised.exception.exit_code, 6)
