@@ -123,14 +123,16 @@ TEST(Tets, DelaunayTetsNeedFourNodes) {
   EXPECT_THROW(delaunayTets(three), Error);
 }
 
+void addTetNode(TetMesh& m, const Vec3& p, Side s) {
+  m.nodes.push_back(p);
+  m.side.push_back(s);
+}
+
 // §5.4: flat tets (all four nodes on one side) are dropped, so are tets outside; coplanar ones are kept.
 TEST(Tets, KeepSpanningTetsInsideDropsFlatAndOutsideTetsAndKeepsCoplanarOnes) {
   const CadSolid cad = box(10, 10, 2);
   TetMesh m;
-  auto add = [&](const Vec3& p, Side s) {
-    m.nodes.push_back(p);
-    m.side.push_back(s);
-  };
+  auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
   add({1, 1, 2}, Side::Top);         // 0
   add({4, 1, 2}, Side::Top);         // 1
   add({1, 4, 2}, Side::Top);         // 2
@@ -166,10 +168,7 @@ TEST(Tets, KeepSpanningTetsInsideDropsFlatAndOutsideTetsAndKeepsCoplanarOnes) {
 TEST(Tets, RimSliverSlightlyOffTheRimFaceIsDropped) {
   const CadSolid cad = box(10, 10, 2);
   TetMesh m;
-  auto add = [&](const Vec3& p, Side s) {
-    m.nodes.push_back(p);
-    m.side.push_back(s);
-  };
+  auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
   add({1, 2.6e-4, 2}, Side::Top);       // 0, 1: on the rim edge y = 0, z = 2, just inside
   add({4, 2.2e-4, 2}, Side::Top);
   add({1.5, 1.5e-4, 0}, Side::Bottom);  // 2, 3: on the rim edge y = 0, z = 0

@@ -30,19 +30,23 @@ class RealParts(unittest.TestCase):
             with open(report) as f:
                 return json.load(f)
 
+    def assert_sound(self, r, thickness, sj_min, sj_avg, volume_error):
+        """The wall found, no inverted hex, the quality bounds, the volume, and the part's closed boundary."""
+        self.assertAlmostEqual(r["thickness"], thickness, delta=0.01)
+        self.assertEqual(r["inverted_hexes"], 0)
+        self.assertGreaterEqual(r["scaled_jacobian"]["min"], sj_min)
+        self.assertGreaterEqual(r["scaled_jacobian"]["avg"], sj_avg)
+        self.assertLess(abs(r["volume"]["relative_error"]), volume_error)
+        self.assertTrue(r["boundary"]["watertight"], r["boundary"])
+        self.assertTrue(r["boundary"]["same_topology_as_cad"], r["boundary"])
+
     def test_flat_motor_bracket(self):
         for layers in (2, 3):
             with self.subTest(layers=layers):
                 r = self.mesh("ender3_x_motor_bracket_flatplate.step", layers)
                 print(f"layers {layers}: {r['hexes']} hexes, SJ min {r['scaled_jacobian']['min']:.3f} "
                       f"avg {r['scaled_jacobian']['avg']:.3f}, volume error {r['volume']['relative_error']:+.4f}")
-                self.assertAlmostEqual(r["thickness"], 3.0, delta=0.01)
-                self.assertEqual(r["inverted_hexes"], 0)
-                self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.9)
-                self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
-                self.assertLess(abs(r["volume"]["relative_error"]), 0.03)
-                self.assertTrue(r["boundary"]["watertight"])
-                self.assertTrue(r["boundary"]["same_topology_as_cad"], r["boundary"])
+                self.assert_sound(r, thickness=3.0, sj_min=0.3, sj_avg=0.9, volume_error=0.03)
                 self.assertEqual(r["hexes"] % layers, 0)
 
     def test_lbracket_bosses_are_refused_as_junctions(self):
@@ -86,13 +90,7 @@ class RealParts(unittest.TestCase):
         print(f"sheet_metal_54: {r['hexes']} hexes, {r['inverted_hexes']} inverted, SJ min "
               f"{r['scaled_jacobian']['min']:.3f} avg {r['scaled_jacobian']['avg']:.3f}, volume error "
               f"{r['volume']['relative_error']:+.4f}")
-        self.assertAlmostEqual(r["thickness"], 1.2, delta=0.01)
-        self.assertEqual(r["inverted_hexes"], 0)
-        self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.5)
-        self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.9)
-        self.assertLess(abs(r["volume"]["relative_error"]), 0.01)
-        self.assertTrue(r["boundary"]["watertight"], r["boundary"])
-        self.assertTrue(r["boundary"]["same_topology_as_cad"], r["boundary"])
+        self.assert_sound(r, thickness=1.2, sj_min=0.5, sj_avg=0.9, volume_error=0.01)
         self.assertEqual(r["quad_mesh"]["unpaired_triangles"], 0)
 
 
