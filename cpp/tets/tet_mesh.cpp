@@ -19,6 +19,7 @@ namespace hexlayer {
 namespace {
 
 constexpr double kJitter = 1e-6;  // of the nodes' bounding box diagonal
+constexpr double kCoplanar = 1e-4;  // isCoplanarTet: 6 V below this x shortest edge x longest edge squared
 
 // A fixed pseudo-random number in [-1, 1] for (node, coordinate): the same input gives the same tets.
 double jitter(std::size_t node, int coordinate) {
@@ -35,15 +36,8 @@ double diagonal(const std::vector<SurfaceNode>& nodes) {
   return (hi - lo).norm();
 }
 
-// Four nodes in one plane: a tet of zero volume, as two top and two bottom bubbles on the parallel
-// edges of a bend give. Inside the wall it is kept: it joins the tets on either side of that plane,
-// and the chordal surface collapses its degenerate facet. On a rim face (two bubbles on each of the
-// parallel rim edges of a rounded corner) it is a sliver of the hull, dropped like the flat ones.
 bool isCoplanar(const TetMesh& mesh, const std::array<int, 4>& t) {
-  const Vec3 e1 = mesh.nodes[t[1]] - mesh.nodes[t[0]], e2 = mesh.nodes[t[2]] - mesh.nodes[t[0]],
-             e3 = mesh.nodes[t[3]] - mesh.nodes[t[0]];
-  const double scale = std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()});
-  return std::abs(e1.dot(e2.cross(e3))) < 1e-9 * std::pow(scale, 1.5);
+  return isCoplanarTet({mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]});
 }
 
 // Whether the coplanar tet lies in the rim: its centre closer to the solid's boundary than a quarter
@@ -61,6 +55,14 @@ bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Sha
 }
 
 }  // namespace
+
+bool isCoplanarTet(const std::array<Vec3, 4>& p) {
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) shortest = std::min(shortest, (p[b] - p[a]).norm()), longest = std::max(longest, (p[b] - p[a]).norm());
+  const double sixVolume = std::abs((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])));
+  return sixVolume <= kCoplanar * shortest * longest * longest;
+}
 
 TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
   if (nodes.size() < 4) throw geometryError("too few surface nodes (" + std::to_string(nodes.size()) + ") to build tets");

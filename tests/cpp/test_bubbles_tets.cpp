@@ -123,14 +123,16 @@ TEST(Tets, DelaunayTetsNeedFourNodes) {
   EXPECT_THROW(delaunayTets(three), Error);
 }
 
+void addTetNode(TetMesh& m, const Vec3& p, Side s) {
+  m.nodes.push_back(p);
+  m.side.push_back(s);
+}
+
 // §5.4: flat tets (all four nodes on one side) are dropped, so are tets outside; coplanar ones are kept.
 TEST(Tets, KeepSpanningTetsInsideDropsFlatAndOutsideTetsAndKeepsCoplanarOnes) {
   const CadSolid cad = box(10, 10, 2);
   TetMesh m;
-  auto add = [&](const Vec3& p, Side s) {
-    m.nodes.push_back(p);
-    m.side.push_back(s);
-  };
+  auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
   add({1, 1, 2}, Side::Top);         // 0
   add({4, 1, 2}, Side::Top);         // 1
   add({1, 4, 2}, Side::Top);         // 2
@@ -159,6 +161,40 @@ TEST(Tets, KeepSpanningTetsInsideDropsFlatAndOutsideTetsAndKeepsCoplanarOnes) {
   EXPECT_EQ(m.tets[1], coplanar);
   EXPECT_EQ(m.tets[2], spanning22);
   EXPECT_EQ(m.nodes.size(), 14u) << "nodes are kept";
+}
+
+// Two top and two bottom bubbles on the rim edges of a rounded corner, a little off the rim face (as
+// sheet_metal_54's at (-3.4, 28, 3.4)): a sliver of the hull, dropped; a tet inside is not.
+TEST(Tets, RimSliverSlightlyOffTheRimFaceIsDropped) {
+  const CadSolid cad = box(10, 10, 2);
+  TetMesh m;
+  auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
+  add({1, 2.6e-4, 2}, Side::Top);       // 0, 1: on the rim edge y = 0, z = 2, just inside
+  add({4, 2.2e-4, 2}, Side::Top);
+  add({1.5, 1.5e-4, 0}, Side::Bottom);  // 2, 3: on the rim edge y = 0, z = 0
+  add({3.5, 2.0e-4, 0}, Side::Bottom);
+  add({2.5, 2, 0}, Side::Bottom);       // 4: inside
+  const std::array<int, 4> sliver{0, 1, 2, 3}, inside{0, 1, 2, 4};
+  ASSERT_FALSE(isCoplanarTet({m.nodes[0], m.nodes[1], m.nodes[2], m.nodes[4]}));
+  ASSERT_TRUE(isCoplanarTet({m.nodes[0], m.nodes[1], m.nodes[2], m.nodes[3]}));
+  m.tets = {sliver, inside};
+
+  const TetFilterCounts counts = keepSpanningTetsInside(m, cad);
+  EXPECT_EQ(counts.outside, 1u);
+  EXPECT_EQ(counts.coplanar, 0u);
+  ASSERT_EQ(m.tets.size(), 1u);
+  EXPECT_EQ(m.tets[0], inside);
+}
+
+// Coplanar: height over the shortest edge, so a thin tet is flat but one with a tiny edge is not.
+TEST(Tets, CoplanarTetIsFlatForItsShortestEdge) {
+  const Vec3 a(0, 0, 0), b(1.5, 0, 0), c(0, 1.5, 0), d(1.5, 1.5, 0);
+  EXPECT_TRUE(isCoplanarTet({a, b, c, d})) << "four nodes in one plane";
+  EXPECT_TRUE(isCoplanarTet({a, b, c, Vec3(1.5, 1.5, 1e-5)})) << "1e-5 off over 1.5 mm edges";
+  EXPECT_FALSE(isCoplanarTet({a, b, c, Vec3(1.5, 1.5, 1e-3)})) << "1e-3 off: a thin tet, not a plane";
+  EXPECT_FALSE(isCoplanarTet({a, b, c, Vec3(0.5, 0.5, 1)})) << "a tet of fair shape";
+  // The U-channel's 0.002 mm tunnel: flat only because one edge is 0.002 mm long.
+  EXPECT_FALSE(isCoplanarTet({Vec3(1.5, 0.002, 1.5), Vec3(1.502, 0.002, 0), Vec3(1.502, 0.002, 1.5), Vec3(1.502, 0, 0)}));
 }
 
 // A 40 x 30 x 2 plate: 2 mm thick, z = 2 is Top, z = 0 Bottom, the four rim faces Lateral.
