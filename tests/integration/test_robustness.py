@@ -113,6 +113,23 @@ class BadAndHardInputs(unittest.TestCase):
         self.assertEqual(r["inverted_hexes"], 0)
         self.assertLess(abs(r["volume"]["relative_error"]), 0.05)
 
+    def test_a_mesh_failing_validation_is_written_only_when_forced(self):
+        # Quads 8 x the wall across the hat section's bends and holes: the holes are lost, the volume is
+        # far off the part's.
+        with tempfile.TemporaryDirectory() as tmp:
+            done = self.run_row("sample/hat_holes.step", ["--size", "12"], tmp)
+            self.assertEqual(done.returncode, 6, done.stderr[-2000:])
+            self.assertRegex(done.stderr, r"hexlayer: error: the mesh failed validation, nothing written \(--force writes "
+                                          r"it anyway\): volume: the mesh's [\d.]+ differs from the CAD's [\d.]+ by -[\d.]+ %")
+            self.assertFalse(os.path.exists(os.path.join(tmp, "out.inp")))
+            done = self.run_row("sample/hat_holes.step", ["--size", "12", "--force"], tmp)
+            self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+            self.assertTrue(os.path.exists(os.path.join(tmp, "out.inp")))
+            with open(os.path.join(tmp, "report.json")) as f:
+                validation = json.load(f)["validation"]
+            self.assertFalse(validation["passed"])
+            self.assertIn("volume", [f["check"] for f in validation["failures"]])
+
     def test_memory_estimate_is_in_the_report(self):
         with tempfile.TemporaryDirectory() as tmp:
             done = self.run_row("data/plate.brep", [], tmp)

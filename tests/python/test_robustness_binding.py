@@ -88,18 +88,19 @@ class TableThroughTheBinding(unittest.TestCase):
                 self.assertIn("the BREP string", str(raised.exception))
 
     def test_a_mesh_that_fails_validation_is_returned_only_when_forced(self):
-        # The real sheet-metal part meshes with inverted hexes at its flanges' rims (test_real_parts).
-        part = os.path.join(harness.args.source, "..", "shared", "parts", "real", "analysissitus_sheet_metal_54_SHELLONLY.brep")
+        # Quads 8 x the wall across the hat section's bends and holes: the volume is far off the part's.
+        part = os.path.join(harness.args.source, "Resources", "samples", "hat_holes.step")
         with self.assertRaises(pyhexlayer.ValidationError) as raised:
-            pyhexlayer.mesh_file(part)
+            pyhexlayer.mesh_file(part, size=12)
         self.assertEqual(raised.exception.exit_code, 6)
         self.assertIn("the mesh failed validation, nothing written", str(raised.exception))
-        forced = pyhexlayer.mesh_file(part, force=True)
+        forced = pyhexlayer.mesh_file(part, size=12, force=True)
         failures = forced.report["validation"]["failures"]
         self.assertFalse(forced.report["validation"]["passed"])
-        self.assertEqual([f["check"] for f in failures], ["inverted"])
-        self.assertEqual(failures[0]["count"], int((forced.scaled_jacobian <= 0).sum()))
-        self.assertIn(failures[0]["message"], str(raised.exception))
+        self.assertIn("volume", [f["check"] for f in failures])
+        for f in failures:
+            self.assertIn(f["message"], str(raised.exception))
+
 
 if __name__ == "__main__":
     harness.main()
