@@ -150,6 +150,50 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohman
   throw geometryError(msg.str());
 }
 
+// §6: the chordal surface, faired as much as Gmsh can reparametrize (kFairingIterations, strongest
+// first), and its quad mesh: leftover triangles completed, doublets removed, smoothed on the surface.
+struct QuadStage {
+  ChordalSurface chordal;
+  QuadMesh quads;
+};
+
+QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const MeshOptions& o, double size, nlohmann::json& r) {
+  QuadMeshOptions qo;
+  qo.size = size;
+  QuadStage stage;
+  for (const int fairing : kFairingIterations) {
+    stage.chordal = cut;
+    fairChordalSurface(stage.chordal, fairing);
+    computeNormalsAndRadius(stage.chordal, tets);
+    const ChordalLocator locator(stage.chordal);
+    if (o.sizing == "adaptive") qo.vertexSize = adaptiveSizes(stage.chordal, {size, o.minSize, o.maxSize});
+    try {
+      stage.quads = meshChordalSurface(locator, qo);
+    } catch (const Error& e) {
+      if (fairing == kFairingIterations[std::size(kFairingIterations) - 1]) throw;
+      if (o.progress) o.progress("quad_mesh: " + std::string(e.what()) + "; trying a less faired chordal surface");
+      continue;
+    }
+    r["chordal_surface"]["fairing_iterations"] = fairing;
+    r["quad_mesh"]["triangles_paired"] = stage.quads.pairedTriangles;
+    r["quad_mesh"]["triangles_split"] = stage.quads.splitTriangles;
+    r["quad_mesh"]["unpaired_triangles"] = stage.quads.holes;
+    r["quad_mesh"]["doublets_removed"] = removeDoublets(stage.quads);
+    smoothQuadMesh(stage.quads, locator, kSmoothingIterations);
+    break;
+  }
+  return stage;
+}
+
+// §7: every quad node swept along its sweep line, cast onto the CAD walls (one ray caster per
+// thread: OpenCASCADE's intersector keeps state).
+SweepResult sweepToWalls(const QuadMesh& quads, const ChordalLocator& locator, const CadSolid& cad, const WallSides& sides, int layers) {
+  std::deque<WallRays> rays;
+  for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
+  return sweepQuads(quads, locator, layers,
+                    [&](const Vec3& q, const Vec3& n, double rr) { return castSweepLine(rays[threadIndex()], q, n, rr); });
+}
+
 nlohmann::json faceSideCounts(const WallSides& sides) {
   int top = 0, bottom = 0, lateral = 0;
   for (const FaceSide& f : sides.faces) (f.side == Side::Top ? top : f.side == Side::Bottom ? bottom : lateral)++;
@@ -349,42 +393,12 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   const SmallFeatures small = findSmallFeatures(cad, sides, size);
   r["small_features"] = {{"edges_shorter_than_size", small.shortEdges}, {"narrow_faces", small.narrowFaces},
                          {"first_at", {small.firstAt.x(), small.firstAt.y(), small.firstAt.z()}}};
-  ChordalSurface chordal;
-  std::optional<ChordalLocator> locator;
-  const QuadMesh quads = clock.run("quad_mesh", [&] {
-    QuadMeshOptions qo;
-    qo.size = size;
-    QuadMesh q;
-    for (const int fairing : kFairingIterations) {
-      chordal = cut;
-      fairChordalSurface(chordal, fairing);
-      computeNormalsAndRadius(chordal, tets);
-      locator.emplace(chordal);
-      if (o.sizing == "adaptive") qo.vertexSize = adaptiveSizes(chordal, {size, o.minSize, o.maxSize});
-      try {
-        q = meshChordalSurface(*locator, qo);
-        r["chordal_surface"]["fairing_iterations"] = fairing;
-        break;
-      } catch (const Error& e) {
-        if (fairing == kFairingIterations[std::size(kFairingIterations) - 1]) throw;
-        if (o.progress) o.progress("quad_mesh: " + std::string(e.what()) + "; trying a less faired chordal surface");
-      }
-    }
-    r["quad_mesh"]["triangles_paired"] = q.pairedTriangles;
-    r["quad_mesh"]["triangles_split"] = q.splitTriangles;
-    r["quad_mesh"]["unpaired_triangles"] = q.holes;
-    r["quad_mesh"]["doublets_removed"] = removeDoublets(q);
-    smoothQuadMesh(q, *locator, kSmoothingIterations);
-    return q;
-  });
+  QuadStage stage = clock.run("quad_mesh", [&] { return quadMeshStage(cut, tets, o, size, r); });
+  const QuadMesh& quads = stage.quads;
   r["quad_mesh"]["quads"] = quads.quads.size();
   r["quad_mesh"]["nodes"] = quads.nodes.size();
-  std::deque<WallRays> rays;  // one per thread: OpenCASCADE's intersector keeps state
-  for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
-  SweepResult swept = clock.run("sweep", [&] {
-    return sweepQuads(quads, *locator, o.layers,
-                      [&](const Vec3& q, const Vec3& n, double rr) { return castSweepLine(rays[threadIndex()], q, n, rr); });
-  });
+  const ChordalLocator locator(stage.chordal);
+  SweepResult swept = clock.run("sweep", [&] { return sweepToWalls(quads, locator, cad, sides, o.layers); });
   r["sweep"] = {{"untangled_regions", swept.untangled.regions}, {"untangling_rounds_kept", swept.untangled.improved},
                 {"worst_column_before_untangling", swept.untangled.worstBefore}};
   result.mesh = std::move(swept.mesh);
@@ -398,8 +412,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);
   result.nodeSets = surfaceNodeSets(result.mesh);
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
-  result.chordalSurface = std::move(chordal);
-  result.quadMesh = quads;
+  result.chordalSurface = std::move(stage.chordal);
+  result.quadMesh = std::move(stage.quads);
   enforceValidation(r, o);
   return result;
 }
