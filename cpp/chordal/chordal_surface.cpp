@@ -6,20 +6,16 @@
 
 #include "core/error.hpp"
 #include "core/point_grid.hpp"
+#include "core/union_find.hpp"
 
 namespace hexlayer {
 namespace {
 
 constexpr int kMaxCollapseRounds = 10;
 
-std::uint64_t pairKey(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-}
-
 // The chordal vertex of tet edge (top, bottom), created on first use.
 int chordalVertex(ChordalSurface& s, std::unordered_map<std::uint64_t, int>& index, const TetMesh& m, int top, int bottom) {
-  const auto [it, added] = index.emplace(pairKey(top, bottom), static_cast<int>(s.vertices.size()));
+  const auto [it, added] = index.emplace(edgeKey(top, bottom), static_cast<int>(s.vertices.size()));
   if (added) {
     s.vertices.push_back(0.5 * (m.nodes[top] + m.nodes[bottom]));  // v = (v_t + v_b) / 2 (§5.4)
     s.tetEdge.push_back({top, bottom});
@@ -36,31 +32,12 @@ void orientTowardsTop(std::array<int, 4>& facet, const ChordalSurface& s, const 
     std::swap(facet[1], facet[3]);
 }
 
-// Chordal vertices that are one point of the surface, joined (union-find).
-class VertexMerges {
- public:
-  explicit VertexMerges(std::size_t n) : parent_(n) {
-    for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<int>(i);
-  }
-  int find(int v) {
-    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
-    return v;
-  }
-  void join(int a, int b) {
-    a = find(a), b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<int> parent_;
-};
-
 // Cospherical nodes (a rectangle of two top and two bottom nodes) can make TetGen use both
 // diagonals of a planar quad; their midpoints coincide and are one point of the surface.
-void joinCoincidentVertices(const ChordalSurface& s, double tolerance, VertexMerges& merges) {
+void joinCoincidentVertices(const ChordalSurface& s, double tolerance, UnionFind& merges) {
   PointGrid grid(std::max(tolerance, 1e-300) * 4);
   for (size_t i = 0; i < s.vertices.size(); ++i) {
-    grid.forEachNear(s.vertices[i], tolerance, [&](int j, const Vec3&) { merges.join(static_cast<int>(i), j); });
+    grid.forEachNear(s.vertices[i], tolerance, [&](int j, const Vec3&) { merges.unite(static_cast<int>(i), j); });
     grid.insert(static_cast<int>(i), s.vertices[i]);
   }
 }
@@ -70,7 +47,7 @@ void joinCoincidentVertices(const ChordalSurface& s, double tolerance, VertexMer
 // The facets on the tet's two sides meet it along different chains of that line; joining the
 // facet's inner corners (a quad's inner diagonal, a triangle's middle corner with the nearer end)
 // zips the two chains into one edge chain. Returns whether any facet was degenerate.
-bool joinDegenerateFacets(const ChordalSurface& s, VertexMerges& merges) {
+bool joinDegenerateFacets(const ChordalSurface& s, UnionFind& merges) {
   bool any = false;
   for (const auto& f : s.facets) {
     const int n = f[3] < 0 ? 3 : 4;
@@ -84,11 +61,11 @@ bool joinDegenerateFacets(const ChordalSurface& s, VertexMerges& merges) {
     any = true;
     if (n == 4) {  // the diagonal with the nearer corners is inside the other one on the line
       const bool inner13 = (at(3) - at(1)).squaredNorm() <= (at(2) - at(0)).squaredNorm();
-      merges.join(f[inner13 ? 1 : 0], f[inner13 ? 3 : 2]);
+      merges.unite(f[inner13 ? 1 : 0], f[inner13 ? 3 : 2]);
     } else {
       const int mid = (longest + 2) % 3;
       const bool toStart = (at(mid) - at(longest)).squaredNorm() <= (at(mid) - at(longest + 1)).squaredNorm();
-      merges.join(f[mid], f[(longest + (toStart ? 0 : 1)) % 3]);
+      merges.unite(f[mid], f[(longest + (toStart ? 0 : 1)) % 3]);
     }
   }
   return any;
@@ -96,7 +73,7 @@ bool joinDegenerateFacets(const ChordalSurface& s, VertexMerges& merges) {
 
 // Rebuilds the surface with every group of joined vertices as one vertex at the group's centroid;
 // facets that lose corners become triangles or are dropped.
-void applyMerges(ChordalSurface& s, VertexMerges& merges) {
+void applyMerges(ChordalSurface& s, UnionFind& merges) {
   std::vector<int> newIndex(s.vertices.size(), -1);
   std::vector<int> members;
   ChordalSurface merged;
@@ -130,11 +107,11 @@ void applyMerges(ChordalSurface& s, VertexMerges& merges) {
 // Joins coincident vertices, then collapses degenerate facets until none is left (a collapse can
 // leave a neighbour degenerate).
 void collapseDegenerateFacets(ChordalSurface& s, double tolerance) {
-  VertexMerges coincident(s.vertices.size());
+  UnionFind coincident(s.vertices.size());
   joinCoincidentVertices(s, tolerance, coincident);
   applyMerges(s, coincident);
   for (int round = 0; round < kMaxCollapseRounds; ++round) {
-    VertexMerges merges(s.vertices.size());
+    UnionFind merges(s.vertices.size());
     if (!joinDegenerateFacets(s, merges)) return;
     applyMerges(s, merges);
   }
@@ -257,12 +234,12 @@ std::map<std::string, std::size_t> classifyTets(const TetMesh& m) {
   for (const auto& t : m.tets)
     for (const auto& f : faceOf)
       if (triUse[triKey({t[f[0]], t[f[1]], t[f[2]]})] == 1)
-        for (int k = 0; k < 3; ++k) exteriorEdge[pairKey(t[f[k]], t[f[(k + 1) % 3]])] = true;
+        for (int k = 0; k < 3; ++k) exteriorEdge[edgeKey(t[f[k]], t[f[(k + 1) % 3]])] = true;
   std::map<std::string, std::size_t> classes;
   for (const auto& t : m.tets) {
     int tris = 0, edges = 0;
     for (const auto& f : faceOf) tris += triUse[triKey({t[f[0]], t[f[1]], t[f[2]]})] == 1;
-    for (const auto& e : edgeOf) edges += exteriorEdge.count(pairKey(t[e[0]], t[e[1]]));
+    for (const auto& e : edgeOf) edges += exteriorEdge.count(edgeKey(t[e[0]], t[e[1]]));
     ++classes[std::to_string(tris) + "/" + std::to_string(edges)];
   }
   return classes;

@@ -1,27 +1,14 @@
 #include "geometry/sheet_junctions.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 
+#include "core/union_find.hpp"
 #include "geometry/face_sampling.hpp"
-#include "geometry/sheet_edges.hpp"
 
 namespace hexlayer {
 namespace {
-
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void unite(int a, int b) { parent[std::max(find(a), find(b))] = std::min(find(a), find(b)); }
-};
 
 Vec3 faceCentre(const TopoDS_Shape& face, double area) {
   Vec3 c = Vec3::Zero();
@@ -35,7 +22,7 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
   const int n = static_cast<int>(sides.faces.size());
   auto isWall = [&](int f) { return f >= 0 && sides.faces[f].side != Side::Lateral; };
   UnionFind uf(n);
-  for (const auto& [a, b] : sheetJoins(cad))
+  for (const auto& [a, b] : sides.sheetJoins)
     if (isWall(a) && isWall(b)) uf.unite(a, b);
   for (int f = 0; f < n; ++f)
     if (isWall(f) && isWall(sides.faces[f].opposite)) uf.unite(f, sides.faces[f].opposite);

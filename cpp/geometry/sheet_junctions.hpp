@@ -18,7 +18,7 @@ struct Sheet {
   Vec3 centre = Vec3::Zero();  // area-weighted centre of the faces' samples
 };
 
-// Wall faces joined by a smooth edge (normals within 30 degrees), a convex edge or across the wall
+// Wall faces joined by a smooth or convex edge (WallSides::sheetJoins) or across the wall
 // (a face and the face its rays hit) are one sheet. Sheets joined only by concave sharp edges
 // stand on each other. The first sheet is the largest (the one that is meshed), the others follow
 // by decreasing area.

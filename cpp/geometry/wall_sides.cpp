@@ -161,7 +161,7 @@ std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, const WallSides
   const int n = static_cast<int>(w.faces.size());
   ParityUnionFind uf(n);
   auto isWall = [&](int f) { return w.faces[f].side != Side::Lateral; };
-  for (const auto& [a, b] : sheetJoins(cad))  // not across concave edges: a rib's walls are not the sheet's side
+  for (const auto& [a, b] : w.sheetJoins)  // not across concave edges: a rib's walls are not the sheet's side
     if (isWall(a) && isWall(b) && !uf.unite(a, b, 0))
       throw geometryError("top and bottom cannot be told apart: " + faceName(a) + " and " + faceName(b) +
                           " share an edge but lie on opposite sides of the wall");
@@ -209,6 +209,7 @@ WallSides classifyWallSides(const CadSolid& cad) {
   w.sheetAreaShare = wallArea / std::max(totalArea, 1e-30);
   requireThin(w, cad, weightedMedian(everywhere));
 
+  w.sheetJoins = sheetJoins(cad);
   const std::vector<std::pair<int, int>> rootParity = solveSides(cad, w);
   // In each group of connected wall faces, the parity class that faces +z more is Top.
   std::map<int, double> up;

@@ -1,6 +1,7 @@
 // Which faces of a thin solid are its top (ω_t), bottom (ω_b) and lateral (ω_l) surfaces (paper §3),
 // and how thick the wall is. The user gives neither: both are measured here by casting rays.
 #pragma once
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
@@ -20,6 +21,7 @@ struct WallSides {
   std::vector<FaceSide> faces;  // indexed like CadSolid::faces, 0-based (FreeCAD's Face<i+1>)
   double thickness = 0;         // area-weighted median over top and bottom faces
   double sheetAreaShare = 0;    // area of top + bottom over the whole boundary
+  std::vector<std::pair<int, int>> sheetJoins;  // faces sharing a smooth or convex edge (sheet_edges.hpp)
 };
 
 // Measures the wall and sorts the faces into top, bottom and lateral.

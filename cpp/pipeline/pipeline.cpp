@@ -119,7 +119,8 @@ std::vector<std::string> faceNames(const Sheet& s) {
 std::string describeSheet(const Sheet& s) {
   std::ostringstream out;
   out << "(" << s.centre.x() << ", " << s.centre.y() << ", " << s.centre.z() << ") [";
-  for (const std::string& name : faceNames(s)) out << (name == faceNames(s).front() ? "" : " ") << name;
+  const std::vector<std::string> names = faceNames(s);
+  for (std::size_t k = 0; k < names.size(); ++k) out << (k ? " " : "") << names[k];
   out << "]";
   return out.str();
 }

@@ -4,13 +4,10 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "core/union_find.hpp"
+
 namespace hexlayer {
 namespace {
-
-std::uint64_t edgeKey(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-}
 
 // Quads are elements 0..Q-1, triangles Q..Q+T-1.
 class Elements {

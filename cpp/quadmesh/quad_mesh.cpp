@@ -13,6 +13,7 @@
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
+#include "core/union_find.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
@@ -223,13 +224,12 @@ QuadCheck checkQuads(const QuadMesh& q, const ChordalLocator& chordal, double ac
 
 std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
   std::unordered_map<std::uint64_t, int> use;
-  auto key = [](int a, int b) { return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b)); };
   for (const auto& quad : q.quads)
-    for (int k = 0; k < 4; ++k) ++use[key(quad[k], quad[(k + 1) % 4])];
+    for (int k = 0; k < 4; ++k) ++use[edgeKey(quad[k], quad[(k + 1) % 4])];
   std::vector<std::vector<int>> around(q.nodes.size());
   for (const auto& quad : q.quads)
     for (int k = 0; k < 4; ++k)
-      if (int a = quad[k], b = quad[(k + 1) % 4]; use[key(a, b)] == 1) around[a].push_back(b), around[b].push_back(a);
+      if (int a = quad[k], b = quad[(k + 1) % 4]; use[edgeKey(a, b)] == 1) around[a].push_back(b), around[b].push_back(a);
   return around;
 }
 
