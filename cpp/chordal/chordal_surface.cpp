@@ -131,12 +131,6 @@ void requireManifold(const ChordalSurface& s) {
   throw geometryError(msg.str());
 }
 
-double boxDiagonal(const std::vector<Vec3>& points) {
-  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  return points.empty() ? 0.0 : (hi - lo).norm();
-}
-
 }  // namespace
 
 Vec3 facetNormal(const ChordalSurface& s, const std::array<int, 4>& f) {

@@ -11,6 +11,14 @@ namespace hexlayer {
 
 using Vec3 = Eigen::Vector3d;
 
+// Length of the diagonal of the points' bounding box; 0 for none.
+inline double boxDiagonal(const std::vector<Vec3>& points) {
+  if (points.empty()) return 0;
+  Vec3 lo = points[0], hi = points[0];
+  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).norm();
+}
+
 // Which side of the thin wall a surface point belongs to (paper §3: ω_t, ω_b, ω_l).
 enum class Side : signed char { Bottom = -1, Lateral = 0, Top = 1 };
 

@@ -43,9 +43,7 @@ std::optional<ValidationFailure> checkHexes(const HexMesh& mesh) {
 
 std::optional<ValidationFailure> checkConformal(const HexMesh& mesh) {
   if (mesh.nodes.empty()) return std::nullopt;
-  Vec3 lo = mesh.nodes[0], hi = mesh.nodes[0];
-  for (const Vec3& p : mesh.nodes) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  const CoincidentNodes c = findCoincidentNodes(mesh, kCoincidentTolerance * (hi - lo).norm());
+  const CoincidentNodes c = findCoincidentNodes(mesh, kCoincidentTolerance * boxDiagonal(mesh.nodes));
   if (c.pairs == 0) return std::nullopt;
   return failure("conformal", c.pairs, mesh.nodes[c.firstNode], "pairs of duplicate nodes (the hexes there are not joined), the first");
 }

@@ -30,12 +30,6 @@ double jitter(std::size_t node, int coordinate) {
   return 2.0 * static_cast<double>(h >> 11) / static_cast<double>(1ull << 53) - 1.0;
 }
 
-double diagonal(const std::vector<SurfaceNode>& nodes) {
-  Vec3 lo = nodes[0].point, hi = lo;
-  for (const SurfaceNode& n : nodes) lo = lo.cwiseMin(n.point), hi = hi.cwiseMax(n.point);
-  return (hi - lo).norm();
-}
-
 bool isCoplanar(const TetMesh& mesh, const std::array<int, 4>& t) {
   return isCoplanarTet({mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]});
 }
@@ -75,12 +69,10 @@ TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
   // cospherical: TetGen's tie-breaking then joined nodes across a hole (the Ender-3 motor bracket
   // lost 4 of its 10 holes). TetGen gets the nodes moved by a tiny fixed jitter, which decides
   // every tie; the tets keep the exact nodes.
-  const double shift = kJitter * diagonal(nodes);
-  for (size_t i = 0; i < nodes.size(); ++i) {
+  for (const SurfaceNode& n : nodes) mesh.nodes.push_back(n.point), mesh.side.push_back(n.side);
+  const double shift = kJitter * boxDiagonal(mesh.nodes);
+  for (size_t i = 0; i < nodes.size(); ++i)
     for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = nodes[i].point[k] + shift * jitter(i, k);
-    mesh.nodes.push_back(nodes[i].point);
-    mesh.side.push_back(nodes[i].side);
-  }
   char switches[] = "zQ";  // z: zero-based indices, Q: quiet; no 'p': Delaunay of the point set
   try {
     tetrahedralize(switches, &in, &out);
