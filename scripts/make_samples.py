@@ -254,6 +254,138 @@ def hat_holes():
         wall="1.5")
 
 
+def cylinder_shell():
+    # Annular sector in the XY plane (mid radius 30, wall 2, 120° from +X
+    # towards +Y), extruded along +Z: the rims are the two radial planes
+    # and the two planes z = 0 and z = Lz.
+    rm, t, deg, Lz = 30.0, 2.0, 120.0, 40.0
+    ri, ro = rm - t / 2, rm + t / 2
+    a = math.radians(deg)
+    c, s = math.cos(a), math.sin(a)
+    p = [occ.addPoint(ri, 0, 0), occ.addPoint(ro, 0, 0),
+         occ.addPoint(ro * c, ro * s, 0), occ.addPoint(ri * c, ri * s, 0)]
+    centre = occ.addPoint(0, 0, 0)             # construction point only
+    curves = [occ.addLine(p[0], p[1]),
+              occ.addCircleArc(p[1], centre, p[2]),
+              occ.addLine(p[2], p[3]),
+              occ.addCircleArc(p[3], centre, p[0])]
+    occ.remove([(0, centre)])
+    surf = occ.addPlaneSurface([occ.addCurveLoop(curves)])
+    occ.extrude([(2, surf)], 0.0, 0.0, Lz)
+    vol = a / 2 * (ro ** 2 - ri ** 2) * Lz
+    return vol, dict(dims="cylindrical shell segment, mid radius 30 (R29 inner / "
+                          "R31 outer), 120° of arc from +X, 40 long along Z "
+                          "(axis = Z axis)", wall="2")
+
+
+def spherical_cap():
+    # Spherical shell (centre at the origin) cut by a cone with its apex at
+    # the centre, half-angle 35° around +Z: the rim is a conical face normal
+    # to the shell (a plane cut would give a wide planar rim instead).
+    rm, t, deg = 50.0, 2.0, 35.0
+    ri, ro = rm - t / 2, rm + t / 2
+    a = math.radians(deg)
+    h = ro + 5.0
+    cone = occ.addCone(0, 0, 0, 0, 0, h, 0.0, h * math.tan(a))
+    outer = occ.addSphere(0, 0, 0, ro)
+    inner = occ.addSphere(0, 0, 0, ri)
+    cap, _ = occ.intersect([(3, outer)], [(3, cone)])
+    out, _ = occ.cut(cap, [(3, inner)])
+    assert len([tag for dim, tag in out if dim == 3]) == 1, out
+    vol = 2 * PI / 3 * (1 - math.cos(a)) * (ro ** 3 - ri ** 3)
+    return vol, dict(dims="spherical cap, mid radius 50 (R49 inner / R51 outer, "
+                          "centre at the origin), half-angle 35° around +Z, rim "
+                          "cut by the cone through the centre", wall="2")
+
+
+def filleted_box_volume(L, W, H, r):
+    """Volume of the box [0,L]x[0,W]x[0,H] with its 4 vertical and 4 bottom
+    edges rounded with radius r (top edges sharp): the points below z = H
+    within r of the core [r,L-r]x[r,W-r]x[r,inf) -- core, 5 slabs, 4 vertical
+    and 4 bottom quarter cylinders, 4 eighth spheres."""
+    a, b, h = L - 2 * r, W - 2 * r, H - r
+    return (a * b * h + 2 * r * (a + b) * h + r * a * b
+            + PI * r ** 2 * h + PI * r ** 2 / 2 * (a + b)
+            + 2 * PI / 3 * r ** 3)
+
+
+def filleted_box(x0, y0, z0, L, W, H, r):
+    """Box with its 4 vertical and 4 bottom edges filleted with radius r."""
+    box = occ.addBox(x0, y0, z0, L, W, H)
+    occ.synchronize()
+    edges = []
+    curves = sorted({abs(c) for _, f in gmsh.model.getBoundary([(3, box)], combined=False,
+                                                               oriented=False)
+                     for _, c in gmsh.model.getBoundary([(2, f)], combined=False,
+                                                        oriented=False)})
+    for c in curves:
+        xmin, ymin, zmin, xmax, ymax, zmax = gmsh.model.getBoundingBox(1, c)
+        # (bounding boxes are padded by the tolerance: compare with 1e-3)
+        if zmax - zmin > 1e-3 or zmax < z0 + 1e-3:     # vertical or bottom edge
+            edges.append(c)
+    assert len(edges) == 8, edges
+    out = occ.fillet([box], edges, [r])
+    assert len(out) == 1 and out[0][0] == 3, out
+    return out[0][1]
+
+
+def housing():
+    # Open-top box housing: the outer solid (80 x 60 x 30, vertical and bottom
+    # edges R8, exact cylinders and sphere corners) minus the inner one offset
+    # inward by the wall (R8 - 2.5 = R5.5), which sticks out through the top,
+    # so the wall is 2.5 everywhere and the open top is a flat rim at z = 30.
+    L, W, H, r, t = 80.0, 60.0, 30.0, 8.0, 2.5
+    outer = filleted_box(0, 0, 0, L, W, H, r)
+    inner = filleted_box(t, t, t, L - 2 * t, W - 2 * t, H, r - t)   # top at z = H + t
+    out, _ = occ.cut([(3, outer)], [(3, inner)])
+    assert len([tag for dim, tag in out if dim == 3]) == 1, out
+    vol = filleted_box_volume(L, W, H, r) - filleted_box_volume(L - 2 * t, W - 2 * t, H - t, r - t)
+    return vol, dict(dims="open-top box housing, outside 80 × 60 × 30, vertical "
+                          "and bottom edges rounded R8 outside / R5.5 inside "
+                          "(sphere corners), top open", wall="2.5")
+
+
+def twisted_strip():
+    # 100 x 20 x 2 strip along X (section centred on the X axis, 20 along Y
+    # at x = 0), twisted 90° about X over its length (to 20 along Z at
+    # x = 100). Gmsh 4.8 has no occ.twist: a ThruSections (B-spline) solid
+    # through the section rotated every 100/N. Each section has area 20 x 2,
+    # so the exact volume is 100 x 20 x 2 (Cavalieri); with N = 8 the CAD
+    # volume is within 2e-8 of it and the faces within 1e-6 mm of the exact
+    # twisted surfaces (N = 5 would be 7e-6 off in volume, over REL_TOL).
+    L, W, t, n = 100.0, 20.0, 2.0, 8
+    wires, lines = [], []
+    for i in range(n + 1):
+        x, th = L * i / n, PI / 2 * i / n
+        c, s = math.cos(th), math.sin(th)
+        pts = [occ.addPoint(x, y * c - z * s, y * s + z * c)
+               for y, z in ((-W / 2, -t / 2), (W / 2, -t / 2), (W / 2, t / 2), (-W / 2, t / 2))]
+        ls = [occ.addLine(pts[j], pts[(j + 1) % 4]) for j in range(4)]
+        wires.append(occ.addWire(ls))
+        lines += ls
+    occ.addThruSections(wires, makeSolid=True, makeRuled=False)
+    # The section wires stay in the model as free curves: drop them.
+    occ.remove([(1, c) for c in lines], recursive=True)
+    return L * W * t, dict(dims="100 × 20 × 2 strip along X, twisted 90° about "
+                                "its long axis (the X axis) over its length "
+                                "(B-spline faces through 9 sections)", wall="2")
+
+
+def wedge_plate():
+    # Bottom face z = 0 flat, top face sloped from z = 1 at x = 0 to z = 4 at
+    # x = 80, 40 wide along Y.
+    L, W, t0, t1 = 80.0, 40.0, 1.0, 4.0
+    extrude_profile([
+        ("line", (0.0, 0.0), (L, 0.0)),
+        ("line", (L, 0.0), (L, t1)),
+        ("line", (L, t1), (0.0, t0)),
+        ("line", (0.0, t0), (0.0, 0.0)),
+    ], W)
+    return L * W * (t0 + t1) / 2, dict(dims="80 × 40 plate, flat bottom z = 0, "
+                                            "sloped top: thickness 1 at x = 0 to 4 "
+                                            "at x = 80", wall="1 → 4 (linear in x)")
+
+
 def thick_block():
     a = 20.0
     occ.addBox(0, 0, 0, a, a, a)
@@ -268,6 +400,14 @@ PARTS = [
     ("uchannel", uchannel),
     ("hat_holes", hat_holes),
     ("thick_block", thick_block),
+    # Curved parts after the others: OpenCASCADE numbers the STEP PRODUCT name
+    # by the count of files written in the session, so appending keeps the
+    # earlier files byte-identical.
+    ("cylinder_shell", cylinder_shell),
+    ("spherical_cap", spherical_cap),
+    ("housing", housing),
+    ("twisted_strip", twisted_strip),
+    ("wedge_plate", wedge_plate),
 ]
 
 
@@ -363,7 +503,7 @@ def write_readme(outdir, rows):
         "# HexLayer sample parts",
         "",
         "Small single-solid STEP files (AP214, units mm) for tests and examples.",
-        "All parts except `thick_block.step` are thin-walled sheet parts.",
+        "All parts except `thick_block.step` are thin-walled parts.",
         "",
         "| File | Part / dimensions (mm) | Wall thickness (mm) | CAD volume (mm³) |",
         "|---|---|---|---|",
@@ -376,6 +516,19 @@ def write_readme(outdir, rows):
         "closed 2D profile (lines and concentric, tangent arcs), so each bend is a",
         "true cylindrical surface with inner radius r and outer radius r + t.",
         "Profiles lie in the XZ plane and are extruded along +Y; the hole axes are Z.",
+        "",
+        "Curved parts: `cylinder_shell` is an annular sector extruded along Z (rims:",
+        "two radial planes and the planes z = 0, z = 40). `spherical_cap` is a",
+        "spherical shell cut by a cone with its apex at the sphere centre, so the rim",
+        "is a conical face normal to the shell; its spherical faces hold the sphere's",
+        "pole (+Z) as a degenerate edge. `housing` is the outer rounded box minus the",
+        "inner one offset inward by the wall, so the wall is 2.5 everywhere, also in",
+        "the cylindrical and spherical (corner) blends (OpenCASCADE fillets: each",
+        "corner sphere has a degenerate pole edge at its bottom point); the open top",
+        "is a flat rim at z = 30. `twisted_strip` is a B-spline ThruSections solid",
+        "through 9 rotated sections (within 1e-6 mm of the exact twisted surfaces;",
+        "volume exact to 2e-8). `wedge_plate` is a four-sided profile extruded along",
+        "+Y; its wall thickness varies linearly along X.",
         "",
         "Made by `scripts/make_samples.py` (run it with `/usr/bin/python3`, which",
         "needs the Debian package `python3-gmsh`); licence AGPL-3.0-or-later like the",
