@@ -87,4 +87,11 @@ ChordalPoint ChordalLocator::locate(const Vec3& p) const {
   return f < 0 ? ChordalPoint{} : project(f, p);
 }
 
+Vec3 normalAt(const ChordalSurface& chordal, const ChordalPoint& at) {
+  const auto& f = chordal.facets[at.facet];
+  Vec3 n = Vec3::Zero();
+  for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) n += at.weights[k] * chordal.normals[f[k]];  // Eq. 7 (Eq. 4 on an edge)
+  return n;
+}
+
 }  // namespace hexlayer

@@ -24,6 +24,10 @@ struct ChordalPoint {
   Vec3 point = Vec3::Zero();        // the nearest point on the chordal surface
 };
 
+// The vertex normals interpolated at a point of the chordal surface (Eq. 7; Eq. 4 on an edge):
+// shorter than 1 where they differ.
+Vec3 normalAt(const ChordalSurface& chordal, const ChordalPoint& at);
+
 class ChordalLocator {
  public:
   explicit ChordalLocator(const ChordalSurface& chordal);

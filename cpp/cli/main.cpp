@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
   mesh->add_option("-o,--output", c.output, "Output mesh: .inp (CalculiX), .vtu (VTK) or .msh (Gmsh 4.1)")->required();
   mesh->add_option("--layers", c.options.layers, "Hex layers through the thickness (default 2)");
   mesh->add_option("--size", c.options.size, "Quad edge length on the chordal surface (default: the wall thickness)");
-  mesh->add_option("--sizing", c.options.sizing, "Quad sizing: uniform or adaptive (radius function and curvature, §6.1) (default uniform)");
+  mesh->add_option("--sizing", c.options.sizing, "Quad sizing: uniform or adaptive (radius function and curvature, §6.1) (default adaptive)");
   mesh->add_flag("--drop-junctions", c.options.dropJunctions,
                  "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (default: refuse, exit 4)");
   mesh->add_option("--aspect", c.options.aspect, "In-plane quad size / layer thickness, instead of --size (default off)");

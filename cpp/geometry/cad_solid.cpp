@@ -187,11 +187,12 @@ Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {
 }
 
 long eulerCharacteristic(const CadSolid& cad) {
-  long wires = 0;
+  long wires = 0, edges = 0;
   for (int f = 1; f <= cad.faces.Extent(); ++f)
     for (TopExp_Explorer w(cad.faces(f), TopAbs_WIRE); w.More(); w.Next()) ++wires;
+  for (int e = 1; e <= cad.edges.Extent(); ++e) edges += !BRep_Tool::Degenerated(TopoDS::Edge(cad.edges(e)));  // a sphere's pole is no edge
   const long faces = cad.faces.Extent();
-  return cad.vertices.Extent() - cad.edges.Extent() + 2 * faces - wires;
+  return cad.vertices.Extent() - edges + 2 * faces - wires;
 }
 
 }  // namespace hexlayer

@@ -33,7 +33,6 @@ namespace hexlayer {
 namespace {
 
 constexpr int kMaxLayers = 64;
-constexpr int kSmoothingIterations = 10;
 // Fairing of the chordal surface, strongest first: a faired surface gives Gmsh fewer, cleaner
 // patches, but Gmsh's reparametrization can fail on one surface and not on another.
 constexpr int kFairingIterations[] = {10, 3, 0};
@@ -179,8 +178,8 @@ QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const Me
     r["quad_mesh"]["triangles_paired"] = stage.quads.pairedTriangles;
     r["quad_mesh"]["triangles_split"] = stage.quads.splitTriangles;
     r["quad_mesh"]["unpaired_triangles"] = stage.quads.holes;
-    r["quad_mesh"]["doublets_removed"] = removeDoublets(stage.quads);
-    smoothQuadMesh(stage.quads, locator, kSmoothingIterations);
+    r["quad_mesh"]["doublets_removed"] = stage.quads.doubletsRemoved;
+    r["quad_mesh"]["structured_patches"] = stage.quads.structuredPatches;
     break;
   }
   return stage;

@@ -17,7 +17,7 @@ struct MeshOptions {
   int layers = 2;   // hex layers through the thickness (§7.2)
   double size = 0;  // quad edge length on the chordal surface; 0 = chosen from the part
   int order = 1;    // 1: 8-node hexes, 2: 20-node hexes with the wall mid-edge nodes on the CAD
-  std::string sizing = "uniform";  // "uniform" or "adaptive" (§6.1: radius function and curvature)
+  std::string sizing = "adaptive";  // "adaptive" or "uniform" (§6.1: radius function and curvature)
   double aspect = 0;  // in-plane quad size / layer thickness; 0 = off (size from --size or the wall)
   double minSize = 0, maxSize = 0;  // bounds of the adaptive size; 0 = a quarter and 4 x the size
   bool dropJunctions = false;  // mesh the largest sheet and leave out ribs/bosses standing on it (else refuse)

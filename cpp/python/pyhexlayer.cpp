@@ -258,7 +258,7 @@ void registerTranslator(const ExceptionTypes& types) {
 
 // The keyword arguments shared by mesh_file, mesh_brep and check_options.
 #define HEXLAYER_OPTION_ARGS                                                                                 \
-  py::kw_only(), py::arg("layers") = 2, py::arg("size") = 0.0, py::arg("sizing") = "uniform",             \
+  py::kw_only(), py::arg("layers") = 2, py::arg("size") = 0.0, py::arg("sizing") = "adaptive",             \
       py::arg("aspect") = 0.0, py::arg("order") = 1, py::arg("drop_junctions") = false
 
 constexpr const char* kOptionsDoc =

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
@@ -24,6 +25,8 @@ namespace {
 // smoothing and recombination move them in 3D); farther than this x size means a failed reparametrization.
 constexpr double kOffSurface = 1.0;
 constexpr int kMaxStrip = 20;  // quads between two leftover triangles that are paired (quad_completion)
+constexpr int kCurveSamples = 64;  // points along a patch curve to measure it
+constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  // of a structured patch
 
 // Gmsh is one process-wide session: open it for this stage only, and always close it.
 struct GmshSession {
@@ -61,6 +64,7 @@ double smallestSize(const QuadMeshOptions& o) {
 
 // The target size at a point of the chordal surface, interpolated from its facet's corners.
 double sizeAt(const ChordalLocator& chordal, const std::vector<double>& vertexSize, const Vec3& p) {
+  if (vertexSize.empty()) return 0;
   const ChordalPoint at = chordal.locate(p);
   const auto& f = chordal.surface().facets[at.facet];
   double h = 0;
@@ -68,7 +72,7 @@ double sizeAt(const ChordalLocator& chordal, const std::vector<double>& vertexSi
   return h;
 }
 
-void setQuadOptions(const QuadMeshOptions& o, const ChordalLocator& chordal) {
+void setQuadOptions(const QuadMeshOptions& o, const PatchSplit& split, const ChordalLocator& chordal) {
   const bool adaptive = !o.vertexSize.empty();
   gmsh::option::setNumber("Mesh.MeshSizeMin", smallestSize(o));
   gmsh::option::setNumber("Mesh.MeshSizeMax", adaptive ? *std::max_element(o.vertexSize.begin(), o.vertexSize.end()) : o.size);
@@ -78,14 +82,113 @@ void setQuadOptions(const QuadMeshOptions& o, const ChordalLocator& chordal) {
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   // Frontal-Delaunay triangles (Frontal-Delaunay for quads, algorithm 8, crashes in Debian's Gmsh 4.8.4),
-  // then Blossom full-quad recombination: all quads without the §6.2 templates, which in Gmsh 4.8 leave
-  // far more distorted quads on a reparametrized discrete surface.
+  // then Blossom full-quad recombination (a perfect matching, each quad split in four): all quads
+  // without the §6.2 templates, and half the irregular nodes of the simple full-quad (algorithm 2),
+  // whose leftover triangles become three quads around a 3-valent node.
   gmsh::option::setNumber("Mesh.Algorithm", 6);
   gmsh::option::setNumber("Mesh.RecombineAll", 1);
-  gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 2);
+  gmsh::option::setNumber("Mesh.RecombinationAlgorithm", split.recombination);
   gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
   gmsh::option::setNumber("Mesh.Smoothing", 5);
   gmsh::option::setNumber("Mesh.RandomFactor", 1e-9);
+}
+
+// A curve of Gmsh's patches, sampled from its start, with the point tags at its two ends.
+struct SampledCurve {
+  int tag = 0;
+  std::array<int, 2> ends{-1, -1};
+  std::vector<Vec3> points;
+};
+
+SampledCurve sampleCurve(int tag) {
+  SampledCurve c;
+  c.tag = tag;
+  gmsh::vectorpair ends;
+  gmsh::model::getBoundary({{1, tag}}, ends, false, false, false);
+  if (ends.size() != 2 || std::abs(ends[0].second) == std::abs(ends[1].second)) return c;
+  std::vector<double> lo, hi, params, xyz;
+  gmsh::model::getParametrizationBounds(1, tag, lo, hi);
+  for (int i = 0; i <= kCurveSamples; ++i) params.push_back(lo[0] + (hi[0] - lo[0]) * i / kCurveSamples);
+  gmsh::model::getValue(1, tag, params, xyz);
+  for (size_t i = 0; i + 2 < xyz.size(); i += 3) c.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+  std::vector<double> first;
+  gmsh::model::getValue(0, std::abs(ends[0].second), {}, first);
+  const bool firstIsStart = (Vec3(first[0], first[1], first[2]) - c.points.front()).norm() <= (Vec3(first[0], first[1], first[2]) - c.points.back()).norm();
+  c.ends = {std::abs(ends[firstIsStart ? 0 : 1].second), std::abs(ends[firstIsStart ? 1 : 0].second)};
+  return c;
+}
+
+// The four curves of a patch bounded by four curves meeting at four corners of 45 to 135 degrees,
+// ordered around it (curve k is opposite curve k + 2); empty for any other patch.
+std::vector<SampledCurve> fourSides(int surface, std::map<int, SampledCurve>& curves) {
+  gmsh::vectorpair bounds;
+  gmsh::model::getBoundary({{2, surface}}, bounds, false, false, false);
+  std::vector<SampledCurve> sides;
+  for (const auto& [dim, tag] : bounds) {
+    auto it = curves.find(std::abs(tag));
+    if (it == curves.end()) it = curves.emplace(std::abs(tag), sampleCurve(std::abs(tag))).first;
+    if (it->second.ends[0] < 0) return {};
+    sides.push_back(it->second);
+  }
+  if (sides.size() != 4) return {};
+  for (int k = 1; k < 4; ++k) {  // chain them: side k starts or ends where side k - 1 ends
+    const int joint = sides[k - 1].ends[1];
+    auto next = std::find_if(sides.begin() + k, sides.end(), [&](const SampledCurve& c) { return c.ends[0] == joint || c.ends[1] == joint; });
+    if (next == sides.end()) return {};
+    std::swap(sides[k], *next);
+    if (sides[k].ends[1] == joint) std::reverse(sides[k].points.begin(), sides[k].points.end()), std::swap(sides[k].ends[0], sides[k].ends[1]);
+  }
+  if (sides[3].ends[1] != sides[0].ends[0]) return {};
+  for (int k = 0; k < 4; ++k) {  // the corner where side k ends and side k + 1 starts
+    const auto& in = sides[k].points;
+    const auto& out = sides[(k + 1) % 4].points;
+    const double angle = std::acos(std::clamp((in[in.size() - 2] - in.back()).normalized().dot((out[1] - out[0]).normalized()), -1.0, 1.0));
+    if (angle < kMinCorner || angle > kMaxCorner) return {};
+  }
+  return sides;
+}
+
+// Number of segments a curve needs at the target size.
+double segmentsNeeded(const SampledCurve& c, const QuadMeshOptions& o, const ChordalLocator& chordal) {
+  double segments = 0;
+  for (size_t i = 0; i + 1 < c.points.size(); ++i) {
+    const Vec3 mid = 0.5 * (c.points[i] + c.points[i + 1]);
+    segments += (c.points[i + 1] - c.points[i]).norm() / (o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, mid));
+  }
+  return std::max(1.0, std::round(segments));
+}
+
+// The patches bounded by four curves get a structured (transfinite) grid: no irregular node, so
+// the quads are as square as the patch's corners allow. Opposite curves get the same number of
+// evenly spaced nodes, the most any of them needs (§6.1 sizing) along a chain of such patches: a
+// structured patch takes the finest size it needs across it. (Spacing graded along the curves is
+// interpolated in Gmsh's parametrization of the patch, which squeezes the rows along the rim.)
+std::size_t structurePatches(const QuadMeshOptions& o, const ChordalLocator& chordal) {
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  std::map<int, SampledCurve> curves;
+  std::map<int, int> index;  // curve tag -> union-find element
+  std::vector<std::pair<int, std::vector<SampledCurve>>> patches;
+  for (const auto& [dim, surface] : surfaces) {
+    std::vector<SampledCurve> sides = fourSides(surface, curves);
+    if (sides.empty()) continue;
+    for (const auto& c : sides) index.emplace(c.tag, static_cast<int>(index.size()));
+    patches.emplace_back(surface, std::move(sides));
+  }
+  UnionFind opposite(index.size());
+  for (const auto& [surface, sides] : patches)
+    for (int k = 0; k < 2; ++k) opposite.unite(index[sides[k].tag], index[sides[k + 2].tag]);
+  std::map<int, double> segments;  // union-find root -> segments of every curve in it
+  for (const auto& [tag, at] : index) {
+    double& s = segments[opposite.find(at)];
+    s = std::max(s, segmentsNeeded(curves[tag], o, chordal));
+  }
+  for (const auto& [tag, at] : index) gmsh::model::mesh::setTransfiniteCurve(tag, static_cast<int>(segments[opposite.find(at)]) + 1);
+  for (const auto& [surface, sides] : patches) {
+    gmsh::model::mesh::setTransfiniteSurface(surface);
+    gmsh::model::mesh::setRecombine(2, surface);
+  }
+  return patches.size();
 }
 
 // Gmsh's elements of one type (3: triangles, 4: quads), as node tags.
@@ -131,7 +234,7 @@ QuadMesh collectQuads() {
 
 // A quad mesh as bytes and back, to cross from the child process that runs Gmsh.
 std::string toBytes(const QuadMesh& q) {
-  const std::size_t counts[5] = {q.nodes.size(), q.quads.size(), q.pairedTriangles, q.splitTriangles, q.holes};
+  const std::size_t counts[6] = {q.nodes.size(), q.quads.size(), q.pairedTriangles, q.splitTriangles, q.holes, q.structuredPatches};
   std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
   for (const Vec3& p : q.nodes) bytes.append(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
   bytes.append(reinterpret_cast<const char*>(q.quads.data()), q.quads.size() * sizeof(q.quads[0]));
@@ -139,7 +242,7 @@ std::string toBytes(const QuadMesh& q) {
 }
 
 QuadMesh fromBytes(const std::string& bytes) {
-  std::size_t counts[5];
+  std::size_t counts[6];
   if (bytes.size() < sizeof counts) throw std::runtime_error("truncated quad mesh");
   std::memcpy(counts, bytes.data(), sizeof counts);
   QuadMesh q;
@@ -148,6 +251,7 @@ QuadMesh fromBytes(const std::string& bytes) {
   q.pairedTriangles = counts[2];
   q.splitTriangles = counts[3];
   q.holes = counts[4];
+  q.structuredPatches = counts[5];
   const std::size_t nodeBytes = counts[0] * 3 * sizeof(double), quadBytes = counts[1] * sizeof(q.quads[0]);
   if (bytes.size() != sizeof counts + nodeBytes + quadBytes) throw std::runtime_error("truncated quad mesh");
   const char* at = bytes.data() + sizeof counts;
@@ -174,9 +278,15 @@ QuadMesh gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, cons
       const double toRadians = M_PI / 180.0;
       gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
       gmsh::model::mesh::createGeometry();
-      setQuadOptions(o, locator);
+      // Gmsh 4.8 caps every mesh size by the model's size, which is only computed on a synchronize:
+      // without it, the discrete model's default of 1 caps the adaptive sizes (§6.1).
+      gmsh::model::geo::synchronize();
+      setQuadOptions(o, split, locator);
+      const std::size_t structured = split.structured ? structurePatches(o, locator) : 0;
       gmsh::model::mesh::generate(2);
-      return toBytes(collectQuads());
+      QuadMesh q = collectQuads();
+      q.structuredPatches = structured;
+      return toBytes(q);
     } catch (const std::exception&) {
       throw;
     } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
@@ -193,31 +303,73 @@ QuadMesh gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, cons
 }
 
 // How far the quad mesh is from the chordal surface it should lie on (a failed reparametrization
-// puts nodes far away), and its worst quad.
-struct QuadCheck {
-  double worstQuad = -1;
-  std::size_t poorQuads = std::numeric_limits<std::size_t>::max();  // below acceptableQuad
+// puts nodes far away).
+struct SurfaceCheck {
   double farthest = 0;
   Vec3 farthestNode = Vec3::Zero();
   std::vector<Vec3> onSurface;  // every node moved to its nearest point of the chordal surface
 };
 
-QuadCheck checkQuads(const QuadMesh& q, const ChordalLocator& chordal, double acceptableQuad) {
-  QuadCheck c;
-  if (q.quads.empty()) return c;
-  c.worstQuad = 1;
-  c.poorQuads = 0;
-  for (const auto& quad : q.quads) {
-    const double sj = quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]});
-    c.worstQuad = std::min(c.worstQuad, sj);
-    c.poorQuads += sj < acceptableQuad;
-  }
+SurfaceCheck onChordalSurface(const QuadMesh& q, const ChordalLocator& chordal) {
+  SurfaceCheck c;
   for (const Vec3& p : q.nodes) {
     c.onSurface.push_back(p.allFinite() ? chordal.locate(p).point : p);
     const double d = p.allFinite() ? (c.onSurface.back() - p).norm() : std::numeric_limits<double>::infinity();
     if (d > c.farthest) c.farthest = d, c.farthestNode = p;
   }
   return c;
+}
+
+// Euler characteristic V - E + F of the quad mesh: Gmsh's quads too coarse for a small hole close it.
+long eulerCharacteristic(const QuadMesh& q) {
+  std::unordered_set<std::uint64_t> edges;
+  for (const auto& quad : q.quads)
+    for (int k = 0; k < 4; ++k) edges.insert(edgeKey(quad[k], quad[(k + 1) % 4]));
+  return static_cast<long>(q.nodes.size()) - static_cast<long>(edges.size()) + static_cast<long>(q.quads.size());
+}
+
+long eulerCharacteristic(const ChordalSurface& s) {
+  return static_cast<long>(s.vertices.size()) - static_cast<long>(facetEdgeUses(s).size()) + static_cast<long>(s.facets.size());
+}
+
+// A smoothed try's quads, best first: the chordal surface's topology, fewest holes, fewest poor
+// quads (and folded edges), best mean quad, best worst quad.
+struct QuadScore {
+  bool topologyChanged = true;
+  std::size_t holes = std::numeric_limits<std::size_t>::max(), poor = std::numeric_limits<std::size_t>::max();
+  double worst = -1, mean = -1;
+  bool operator<(const QuadScore& o) const {
+    return std::make_tuple(topologyChanged, holes, poor, -mean, -worst) < std::make_tuple(o.topologyChanged, o.holes, o.poor, -o.mean, -o.worst);
+  }
+  bool good() const { return !topologyChanged && holes == 0 && poor == 0; }
+};
+
+// Edges between quads the sweep will turn to face opposite ways: it turns every quad to face the
+// chordal normal, so a quad folded over against its neighbour gives hexes with flipped faces.
+std::size_t foldedEdges(const QuadMesh& q, const ChordalLocator& chordal) {
+  std::vector<char> facesNormal(q.quads.size());
+  std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> edgeUses;  // edge -> (quad, direction)
+  for (size_t e = 0; e < q.quads.size(); ++e) {
+    const auto& quad = q.quads[e];
+    const Vec3 centroid = 0.25 * (q.nodes[quad[0]] + q.nodes[quad[1]] + q.nodes[quad[2]] + q.nodes[quad[3]]);
+    const Vec3 n = (q.nodes[quad[2]] - q.nodes[quad[0]]).cross(q.nodes[quad[3]] - q.nodes[quad[1]]);
+    facesNormal[e] = n.dot(normalAt(chordal.surface(), chordal.locate(centroid))) >= 0;
+    for (int k = 0; k < 4; ++k) edgeUses[edgeKey(quad[k], quad[(k + 1) % 4])].push_back({static_cast<int>(e), quad[k] < quad[(k + 1) % 4]});
+  }
+  std::size_t folded = 0;
+  for (const auto& [edge, uses] : edgeUses)  // turned, the two quads must run the edge opposite ways
+    if (uses.size() == 2) folded += (uses[0].second != facesNormal[uses[0].first]) == (uses[1].second != facesNormal[uses[1].first]);
+  return folded;
+}
+
+QuadScore scoreQuads(const QuadMesh& q, const ChordalLocator& chordal, double acceptableQuad) {
+  QuadScore s{eulerCharacteristic(q) != eulerCharacteristic(chordal.surface()), q.holes, foldedEdges(q, chordal), 1, 0};
+  for (const auto& quad : q.quads) {
+    const double sj = quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]});
+    s.worst = std::min(s.worst, sj), s.mean += sj / q.quads.size();
+    s.poor += sj < acceptableQuad;
+  }
+  return s;
 }
 
 }  // namespace
@@ -236,20 +388,22 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   if (!(o.size > 0)) throw usageError("quad size must be positive");
   QuadMesh best;
-  best.holes = std::numeric_limits<std::size_t>::max();
-  QuadCheck bestCheck;
+  QuadScore bestScore;
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;
   for (const PatchSplit& split : o.patchSplits) {
     QuadMesh q = gmshQuads(chordal, o, split, gmshError);
-    const QuadCheck c = checkQuads(q, chordal, o.acceptableQuad);
-    if (q.quads.empty() || !(c.farthest < kOffSurface * o.size)) {
-      if (!q.quads.empty()) failedAt = c.farthestNode, gmshError.clear();
+    if (q.quads.empty()) continue;
+    SurfaceCheck c = onChordalSurface(q, chordal);
+    if (!(c.farthest < kOffSurface * o.size)) {
+      failedAt = c.farthestNode, gmshError.clear();
       continue;
     }
-    if (std::make_tuple(q.holes, c.poorQuads, -c.worstQuad) < std::make_tuple(best.holes, bestCheck.poorQuads, -bestCheck.worstQuad))
-      best = std::move(q), bestCheck = c;
-    if (best.holes == 0 && bestCheck.poorQuads == 0) break;
+    q.nodes = std::move(c.onSurface);
+    q.doubletsRemoved = removeDoublets(q);
+    smoothQuadMesh(q, chordal, o.smoothingIterations);
+    if (const QuadScore score = scoreQuads(q, chordal, o.acceptableQuad); score < bestScore) best = std::move(q), bestScore = score;
+    if (bestScore.good()) break;
   }
   if (best.quads.empty()) {
     std::ostringstream msg;
@@ -260,7 +414,6 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
       msg << "its reparametrization failed near (" << failedAt.x() << ", " << failedAt.y() << ", " << failedAt.z() << ")";
     throw geometryError(msg.str());
   }
-  best.nodes = std::move(bestCheck.onSurface);  // back onto the chordal surface
   return best;
 }
 

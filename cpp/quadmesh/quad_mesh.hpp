@@ -15,23 +15,35 @@ struct QuadMesh {
   std::size_t pairedTriangles = 0;         // Gmsh's leftover triangles turned into quads (quad_completion)
   std::size_t splitTriangles = 0;          // the others, split into quads with the strips from them
   std::size_t holes = 0;                   // leftover triangles neither could handle: each is a hole
+  int doubletsRemoved = 0;                 // before smoothing (quad_smoothing)
+  std::size_t structuredPatches = 0;       // patches meshed with a structured grid
 };
 
 // How Gmsh cuts the chordal surface into patches it can parametrize, in degrees: chordal edges
 // sharper than featureAngle bound the patches, and their boundary curves are split where they turn
 // more than curveAngle (180: never). Splitting at the rim's corners keeps them sharp; not splitting
 // the feature curves of a noisy bend keeps Gmsh from filling it with tiny quads.
+// `structured`: the patches bounded by four curves get a structured grid (structurePatches).
+// `recombination`: Gmsh's full-quad recombination, 3 Blossom (fewer irregular nodes) or 2 simple
+// (more robust on badly parametrized patches).
 struct PatchSplit {
   double featureAngle, curveAngle;
+  bool structured = false;
+  int recombination = 3;
 };
 
 struct QuadMeshOptions {
   double size = 0;  // target edge length (uniform sizing)
   std::vector<double> vertexSize;  // adaptive sizing: target edge length per chordal vertex (sizing.hpp)
-  // Gmsh's reparametrization of a patch can fail: the next split is tried then, or when some quads
-  // are below acceptableQuad; of the tries, the one with the fewest such quads (then the best worst) is kept.
-  std::vector<PatchSplit> patchSplits{{60, 60}, {60, 180}, {40, 40}, {40, 180}, {80, 80}, {25, 25}};
-  double acceptableQuad = 0.2;   // quad scaled Jacobian
+  // Gmsh's reparametrization of a patch can fail: the next split is tried then, or when the quads
+  // change the chordal surface's topology (close a hole) or some are below acceptableQuad once
+  // smoothed; of the tries, the one that keeps the topology, then with the fewest holes, then the
+  // fewest such quads, then the best mean quad, then the best worst is kept.
+  std::vector<PatchSplit> patchSplits{{60, 60, true}, {60, 180}, {40, 40}, {40, 180}, {80, 80}, {25, 25},
+                                      {60, 60, true, 2}, {60, 180, false, 2}, {40, 40, false, 2}, {40, 180, false, 2},
+                                      {80, 80, false, 2}, {25, 25, false, 2}};
+  double acceptableQuad = 0.1;   // quad scaled Jacobian, smoothed
+  int smoothingIterations = 10;  // of every try (quad_smoothing)
   // For one Gmsh try: a fixed minute plus a second per 2000 quads the surface will get (Gmsh 4.8
   // meshes tens of thousands of quads a second; a try that takes far longer has hung).
   double timeoutSeconds = 0;      // 0: from the chordal surface's area and the size
@@ -40,11 +52,10 @@ struct QuadMeshOptions {
 // For every node, the nodes it shares a rim edge with (an edge of a single quad); empty inside.
 std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& quads);
 
-// Meshes the chordal surface with quads only. Holes and the outer rim are the boundary curves of
-// the discrete surface, so they are kept. Of the tries (one per patch split) whose nodes all lie on
-// the chordal surface, the one with the fewest holes (unpaired triangles), then the fewest poor
-// quads, then the best worst quad is kept. Throws geometryError if
-// Gmsh cannot mesh the surface.
+// Meshes the chordal surface with quads only, doublets removed and smoothed. Holes and the outer
+// rim are the boundary curves of the discrete surface, so they are kept. Of the tries (one per
+// patch split) whose nodes all lie on the chordal surface, the best (QuadMeshOptions) is kept.
+// Throws geometryError if Gmsh cannot mesh the surface.
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& options);
 
 }  // namespace hexlayer

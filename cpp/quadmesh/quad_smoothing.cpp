@@ -30,8 +30,8 @@ double quadSmoothingQuality(const std::array<Vec3, 4>& p) {
 
 namespace {
 
-constexpr double kGoodQuad = 0.97;                 // quads below this get their nodes optimized
-constexpr double kMeanWeight = 0.5;                // weight of the mean quad against the worst one
+constexpr double kGoodQuad = 0.999;                // quads below this get their nodes optimized
+constexpr double kMeanWeight = 2;                  // weight of the mean quad against the worst one
 constexpr double kMinGain = 1e-4;                  // a node moves only for a better score than this
 constexpr double kSmallestStep = 1e-2;             // pattern search stops at this x the longest edge around
 constexpr double kRimCornerAngle = 30 * M_PI / 180;  // a rim node turning more than this stays

@@ -59,11 +59,8 @@ double columnQuality(const HexMesh& mesh, int quad) {
 
 SweepDirection interpolateSweep(const ChordalSurface& chordal, const ChordalPoint& at) {
   const auto& f = chordal.facets[at.facet];
-  SweepDirection d{Vec3::Zero(), 0};
-  for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) {
-    d.normal += at.weights[k] * chordal.normals[f[k]];  // Eq. 7 (Eq. 4 on an edge)
-    d.radius += at.weights[k] * chordal.radius[f[k]];   // Eq. 6 (Eq. 5 on an edge)
-  }
+  SweepDirection d{normalAt(chordal, at), 0};
+  for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) d.radius += at.weights[k] * chordal.radius[f[k]];  // Eq. 6 (Eq. 5 on an edge)
   d.normal.normalize();  // the weighted sum of unit normals is shorter than 1: sweep along a unit vector
   return d;
 }

@@ -190,8 +190,10 @@ class CantileverPlate(unittest.TestCase):
         ratio = tip_deflection(displacement, self.tip) / self.reference
         print("\ntip deflection C3D8 (FreeCAD's writer, 2 layers) / reference: {:.3f}".format(ratio))
         # A displacement FE model is stiffer than the converged solution: below 1. Fully integrated C3D8 in
-        # 2 layers of 2 mm quads locks in shear: 0.78 measured. Outside 0.70-0.90 more than the element changed.
-        self.assertGreater(ratio, 0.70)
+        # 2 layers of 2 mm quads locks in shear: 0.78 measured on Gmsh's unstructured quads, 0.695 on the
+        # structured grid the plate gets since 2026-11-24 (square bricks lock the most). Outside 0.65-0.90
+        # more than the element changed.
+        self.assertGreater(ratio, 0.65)
         self.assertLess(ratio, 0.90)
 
     def test_same_mesh_with_incompatible_modes_is_within_2_percent(self):

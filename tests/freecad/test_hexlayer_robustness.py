@@ -58,7 +58,7 @@ class ValidationInFreeCAD(unittest.TestCase):
 
     def test_failed_validation_keeps_no_mesh_unless_forced(self):
         doc = t.new_document(self)
-        mesh = HexLayer.makeMesh(doc, t.add_sample(doc, "hat_holes.step"), Size=12.0)
+        mesh = HexLayer.makeMesh(doc, t.add_sample(doc, "hat_holes.step"), Size=12.0, Sizing="uniform")
         t.assert_fails(self, mesh, "the mesh failed validation, nothing written (Force writes it anyway): volume: ")
         mesh.Force = True
         doc.recompute()

@@ -85,26 +85,40 @@ class MeshSamples(unittest.TestCase):
             self.assertIn("not a thin section", done.stderr)
 
     def test_adaptive_sizing_on_the_hat_section(self):
-        # Measured 2026-11-23: 19120 hexes (uniform: 8812), SJ min 0.58, avg 0.913, volume -0.27 %.
+        # Measured 2026-11-24: adaptive (the default) 8682 hexes, SJ min 0.64, avg 0.922, volume -0.71 %;
+        # uniform 8110 hexes.
         with tempfile.TemporaryDirectory() as tmp:
-            uniform = self.mesh("hat_holes", os.path.join(tmp, "u.vtu"))
-            r = self.mesh("hat_holes", os.path.join(tmp, "a.vtu"), "--sizing", "adaptive")
+            uniform = self.mesh("hat_holes", os.path.join(tmp, "u.vtu"), "--sizing", "uniform")
+            r = self.mesh("hat_holes", os.path.join(tmp, "a.vtu"))
+            self.assertEqual(uniform["sizing"], "uniform")
             self.assertEqual(r["sizing"], "adaptive")
             self.assertGreater(r["hexes"], uniform["hexes"], "the bends and the hole rims are refined")
             self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.9)
-            self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
+            self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.5)
             self.assertLess(abs(r["volume"]["relative_error"]), 0.01)
             self.assertTrue(r["boundary"]["same_topology_as_cad"], r["boundary"])
 
-    def test_aspect_sets_the_size_from_the_layer_thickness(self):
-        # Measured 2026-11-23 on the plate (2 mm, 2 layers): --aspect 1 hits within 10 % on 63 % of
-        # the hexes, --aspect 5 on 28 % (median 4.2: Gmsh's quads come out smaller than asked).
+    def test_adaptive_quads_follow_the_wall_thickness(self):
+        # The wedge plate thickens from 1 to 4 mm along x: its quads are sized by the thinnest wall
+        # across the structured patch (rows) and grow along it no more than the patch allows.
+        # Measured 2026-11-24: 3116 hexes, 40 rows of quads across, SJ min 0.88 avg 0.989.
         with tempfile.TemporaryDirectory() as tmp:
-            for aspect, hit in ((1, 0.5), (5, 0.2)):
+            r = self.mesh("wedge_plate", os.path.join(tmp, "w.vtu"))
+            u = self.mesh("wedge_plate", os.path.join(tmp, "u.vtu"), "--sizing", "uniform")
+            self.assertEqual(r["quad_mesh"]["structured_patches"], 1)
+            self.assertGreater(r["hexes"], 1.5 * u["hexes"], "the 1 mm end needs quads of about 1 mm")
+            self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.95)
+
+    def test_aspect_sets_the_size_from_the_layer_thickness(self):
+        # Measured 2026-11-24 on the plate (2 mm, 2 layers, a structured grid): --aspect 1 and --aspect 5
+        # both hit within 10 % on every hex (the issue asks 80 %). On the plate with holes (unstructured)
+        # 57 % and 22 %: Gmsh's quads vary in size too much.
+        with tempfile.TemporaryDirectory() as tmp:
+            for aspect in (1, 5):
                 with self.subTest(aspect=aspect):
                     r = self.mesh("plate", os.path.join(tmp, f"a{aspect}.vtu"), "--aspect", str(aspect))
                     self.assertAlmostEqual(r["size"], aspect * r["thickness"] / 2, places=9)
-                    self.assertGreaterEqual(r["aspect_ratio_hit"], hit)
+                    self.assertGreaterEqual(r["aspect_ratio_hit"], 0.8)
                     self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
 
     def test_bad_usage_and_missing_file(self):

@@ -65,8 +65,10 @@ class RealParts(unittest.TestCase):
         self.assertIn("--drop-junctions", done.stderr)
 
     def test_bent_parts(self):
-        # Measured 2026-11-23 (2 layers): L-bracket without its bosses 8408 hexes, min 0.19, avg 0.925,
-        # the part's topology; U-channel 10978 hexes, min 0.20, avg 0.894. The U-channel's CAD has two
+        # Measured 2026-11-24 (2 layers, adaptive sizing, the default): L-bracket without its bosses 8506
+        # hexes, min 0.44, avg 0.929, the part's topology; U-channel 19970 hexes, min 0.155, avg 0.872
+        # (uniform sizing: 10978 hexes, min 0.20, avg 0.900; adaptive refines the bends, and every size
+        # transition costs irregular quads). The U-channel's CAD has two
         # tunnels of about 0.002 mm at the corners where the flanges meet (zero-radius inside bend
         # faces running through the bottom flange): Euler characteristic -14, the mesh's -10.
         cases = (("ender3_lcd_support_Lbracket.step", 2.0, -6, ("--drop-junctions",)),
@@ -82,7 +84,7 @@ class RealParts(unittest.TestCase):
                 self.assertAlmostEqual(r["thickness"], thickness, delta=0.01)
                 self.assertEqual(r["inverted_hexes"], 0)
                 self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.15)
-                self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.88)
+                self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.86)
                 self.assertLess(abs(error), 0.02)
                 self.assertTrue(r["boundary"]["watertight"], r["boundary"])
                 self.assertEqual(r["boundary"]["euler_characteristic"], euler)

@@ -117,12 +117,12 @@ class BadAndHardInputs(unittest.TestCase):
         # Quads 8 x the wall across the hat section's bends and holes: the holes are lost, the volume is
         # far off the part's.
         with tempfile.TemporaryDirectory() as tmp:
-            done = self.run_row("sample/hat_holes.step", ["--size", "12"], tmp)
+            done = self.run_row("sample/hat_holes.step", ["--size", "12", "--sizing", "uniform"], tmp)
             self.assertEqual(done.returncode, 6, done.stderr[-2000:])
             self.assertRegex(done.stderr, r"hexlayer: error: the mesh failed validation, nothing written \(--force writes "
                                           r"it anyway\): volume: the mesh's [\d.]+ differs from the CAD's [\d.]+ by -[\d.]+ %")
             self.assertFalse(os.path.exists(os.path.join(tmp, "out.inp")))
-            done = self.run_row("sample/hat_holes.step", ["--size", "12", "--force"], tmp)
+            done = self.run_row("sample/hat_holes.step", ["--size", "12", "--sizing", "uniform", "--force"], tmp)
             self.assertEqual(done.returncode, 0, done.stderr[-2000:])
             self.assertTrue(os.path.exists(os.path.join(tmp, "out.inp")))
             with open(os.path.join(tmp, "report.json")) as f:

@@ -91,10 +91,10 @@ class TableThroughTheBinding(unittest.TestCase):
         # Quads 8 x the wall across the hat section's bends and holes: the volume is far off the part's.
         part = os.path.join(harness.args.source, "Resources", "samples", "hat_holes.step")
         with self.assertRaises(pyhexlayer.ValidationError) as raised:
-            pyhexlayer.mesh_file(part, size=12)
+            pyhexlayer.mesh_file(part, size=12, sizing="uniform")
         self.assertEqual(raised.exception.exit_code, 6)
         self.assertIn("the mesh failed validation, nothing written", str(raised.exception))
-        forced = pyhexlayer.mesh_file(part, size=12, force=True)
+        forced = pyhexlayer.mesh_file(part, size=12, sizing="uniform", force=True)
         failures = forced.report["validation"]["failures"]
         self.assertFalse(forced.report["validation"]["passed"])
         self.assertIn("volume", [f["check"] for f in failures])

@@ -15,7 +15,7 @@ SMESH_HEXA8 = (0, 3, 2, 1, 4, 7, 6, 5)
 SMESH_HEXA20 = SMESH_HEXA8 + (11, 10, 9, 8, 15, 14, 13, 12, 16, 19, 18, 17)
 
 # The values the mesh object's Sizing property offers; pyhexlayer.check_options says which are supported today.
-SIZINGS = ("uniform", "adaptive")
+SIZINGS = ("adaptive", "uniform")  # the first is the default
 
 
 def options(obj):
