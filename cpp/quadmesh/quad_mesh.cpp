@@ -64,7 +64,6 @@ double smallestSize(const QuadMeshOptions& o) {
 
 // The target size at a point of the chordal surface, interpolated from its facet's corners.
 double sizeAt(const ChordalLocator& chordal, const std::vector<double>& vertexSize, const Vec3& p) {
-  if (vertexSize.empty()) return 0;
   const ChordalPoint at = chordal.locate(p);
   const auto& f = chordal.surface().facets[at.facet];
   double h = 0;
