@@ -20,12 +20,29 @@ double quadScaledJacobian(const std::array<Vec3, 4>& p) {
 }
 
 double quadSmoothingQuality(const std::array<Vec3, 4>& p) {
+  // quadScaledJacobian's and the edge ratio's arithmetic, each edge vector and length computed once
+  // (corner k's second edge p[k+3] - p[k] is the exact negation of edge k+3): the same bits as
+  // std::min(quadScaledJacobian(p), 2 * shortest / longest).
+  std::array<Vec3, 4> edge;
+  std::array<double, 4> length;
   double shortest = std::numeric_limits<double>::infinity(), longest = 0;
   for (int k = 0; k < 4; ++k) {
-    const double l = (p[(k + 1) % 4] - p[k]).norm();
-    shortest = std::min(shortest, l), longest = std::max(longest, l);
+    edge[k] = p[(k + 1) % 4] - p[k];
+    length[k] = edge[k].norm();
+    shortest = std::min(shortest, length[k]), longest = std::max(longest, length[k]);
   }
-  return std::min(quadScaledJacobian(p), longest > 0 ? 2 * shortest / longest : -1.0);
+  double sj = -1;
+  Vec3 n = (p[2] - p[0]).cross(p[3] - p[1]);
+  if (n.norm() != 0) {
+    n.normalize();
+    sj = 1;
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 e2 = -edge[(k + 3) % 4];
+      const double len = length[k] * length[(k + 3) % 4];
+      sj = std::min(sj, len > 0 ? n.dot(edge[k].cross(e2)) / len : -1.0);
+    }
+  }
+  return std::min(sj, longest > 0 ? 2 * shortest / longest : -1.0);
 }
 
 namespace {
