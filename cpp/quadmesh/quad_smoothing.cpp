@@ -150,9 +150,14 @@ class MovingNodeScore {
       quads_.push_back(e);
     }
   }
-  double operator()(const Vec3& at) const {
+  // The score at `at`, or -infinity as soon as it cannot be above `floor`: every quality is at most 1,
+  // so worst + kMeanWeight * (sum + quads left) / count bounds the score from above (with a margin far
+  // above the rounding of the sums, so a trial is only dropped when its exact score could not pass).
+  double operator()(const Vec3& at, double floor = -std::numeric_limits<double>::infinity()) const {
     if (quads_.empty()) return scoreAround(q_, nq_, node_, at);
     double worst = 1, sum = 0;
+    const double count = static_cast<double>(quads_.size());
+    std::size_t left = quads_.size();
     for (const Quad& e : quads_) {
       double quality;
       if (e.moved < 0) {
@@ -167,6 +172,9 @@ class MovingNodeScore {
         quality = qualityFromEdges(p, edge, length);
       }
       worst = std::min(worst, quality), sum += quality;
+      --left;
+      if (worst + kMeanWeight * (sum + static_cast<double>(left)) / count + 1e-12 < floor)
+        return -std::numeric_limits<double>::infinity();
     }
     return worst + kMeanWeight * sum / std::max(1, static_cast<int>(quads_.size()));
   }
@@ -199,7 +207,7 @@ void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<
     Vec3 bestAt = at;
     for (const Vec3& d : directions) {
       const Vec3 trial = at + step * d;
-      const double w = score(trial);
+      const double w = score(trial, best + 1e-9);
       if (w > best + 1e-9) best = w, bestAt = trial;
     }
     if (bestAt == at) step *= 0.5;
