@@ -127,18 +127,38 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
   for (int f = 0; f < faces.count(); ++f) out.groups.push_back({faceName(f), {}, {}});
   std::vector<std::vector<int>> facesOf(mesh.nodes.size());
   std::vector<double> distance(mesh.nodes.size(), 0);
-  std::size_t several = 0;
-  for (int i : boundary) {  // ascending: the groups' nodes come out sorted
+  for (int i : boundary)
     if (mesh.nodeFace[i] < 0) throw Error(ExitCode::Internal, "boundary node " + std::to_string(i + 1) + " has no CAD face");
+  // The OpenCASCADE distance queries (BRepExtrema_DistShapeShape, built per query on the shared, read-only
+  // faces) in parallel; the groups are filled afterwards in the nodes' order, the same for any thread count.
+  const long nBoundary = static_cast<long>(boundary.size());
+  #pragma omp parallel for schedule(dynamic, 64)
+  for (long k = 0; k < nBoundary; ++k) {
+    const int i = boundary[k];
     FacesAtPoint at = faces.facesAt(mesh.nodeFace[i], mesh.nodes[i]);
-    for (int f : at.faces) out.groups[f].nodes.push_back(i);
-    several += at.faces.size() > 1;
     facesOf[i] = std::move(at.faces);
     distance[i] = at.distance;
   }
+  std::size_t several = 0;
+  for (int i : boundary) {  // ascending: the groups' nodes come out sorted
+    for (int f : facesOf[i]) out.groups[f].nodes.push_back(i);
+    several += facesOf[i].size() > 1;
+  }
   const std::vector<BoundaryFace> quads = boundaryFaces(mesh);  // sorted by hex, then local face
+  const long nQuads = static_cast<long>(quads.size());
+  std::vector<int> faceOf(quads.size());
+  std::vector<char> isAcross(quads.size(), 0);
+  #pragma omp parallel for schedule(dynamic, 64)
+  for (long k = 0; k < nQuads; ++k) {
+    std::size_t a = 0;
+    faceOf[k] = faceOfQuad(mesh, faces, quads[k], facesOf, a);
+    isAcross[k] = a > 0;
+  }
   std::size_t across = 0;
-  for (const BoundaryFace& q : quads) out.groups[faceOfQuad(mesh, faces, q, facesOf, across)].hexFaces.push_back({q.hex, q.localFace});
+  for (std::size_t k = 0; k < quads.size(); ++k) {
+    out.groups[faceOf[k]].hexFaces.push_back({quads[k].hex, quads[k].localFace});
+    across += isAcross[k];
+  }
   std::size_t nonEmpty = 0;
   for (const SurfaceGroup& g : out.groups) nonEmpty += !g.hexFaces.empty();
   out.surfaceReport = {{"cad_faces", faces.count()}, {"meshed_cad_faces", nonEmpty}, {"boundary_nodes", boundary.size()},

@@ -19,13 +19,36 @@ double quadScaledJacobian(const std::array<Vec3, 4>& p) {
   return sj;
 }
 
-double quadSmoothingQuality(const std::array<Vec3, 4>& p) {
+namespace {
+
+// quadSmoothingQuality from the corners and the edge vectors edge[k] = p[k+1] - p[k] and their lengths.
+double qualityFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge, const std::array<double, 4>& length) {
   double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-  for (int k = 0; k < 4; ++k) {
-    const double l = (p[(k + 1) % 4] - p[k]).norm();
-    shortest = std::min(shortest, l), longest = std::max(longest, l);
+  for (int k = 0; k < 4; ++k) shortest = std::min(shortest, length[k]), longest = std::max(longest, length[k]);
+  double sj = -1;
+  Vec3 n = (p[2] - p[0]).cross(p[3] - p[1]);
+  if (n.norm() != 0) {
+    n.normalize();
+    sj = 1;
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 e2 = -edge[(k + 3) % 4];
+      const double len = length[k] * length[(k + 3) % 4];
+      sj = std::min(sj, len > 0 ? n.dot(edge[k].cross(e2)) / len : -1.0);
+    }
   }
-  return std::min(quadScaledJacobian(p), longest > 0 ? 2 * shortest / longest : -1.0);
+  return std::min(sj, longest > 0 ? 2 * shortest / longest : -1.0);
+}
+
+}  // namespace
+
+double quadSmoothingQuality(const std::array<Vec3, 4>& p) {
+  // quadScaledJacobian's and the edge ratio's arithmetic, each edge vector and length computed once
+  // (corner k's second edge p[k+3] - p[k] is the exact negation of edge k+3): the same bits as
+  // std::min(quadScaledJacobian(p), 2 * shortest / longest).
+  std::array<Vec3, 4> edge;
+  std::array<double, 4> length;
+  for (int k = 0; k < 4; ++k) edge[k] = p[(k + 1) % 4] - p[k], length[k] = edge[k].norm();
+  return qualityFromEdges(p, edge, length);
 }
 
 namespace {
@@ -111,12 +134,70 @@ Vec3 centroidTarget(const QuadMesh& q, const NodeQuads& nq, int node) {
   return area > 0 ? Vec3(sum / area) : q.nodes[node];
 }
 
+// scoreAround for one node moving while the others stay: the edges not at the node and their lengths
+// are computed once (same arithmetic per quad, same bits as scoreAround).
+class MovingNodeScore {
+ public:
+  MovingNodeScore(const QuadMesh& q, const NodeQuads& nq, int node) : q_(q), nq_(nq), node_(node) {
+    for (int k = nq.start[node]; k < nq.start[node + 1]; ++k) {
+      Quad e;
+      const auto& quad = q.quads[nq.quads[k]];
+      e.p = corners(q, nq.quads[k], -1, Vec3::Zero());
+      for (int c = 0; c < 4; ++c) {
+        e.edge[c] = e.p[(c + 1) % 4] - e.p[c], e.length[c] = e.edge[c].norm();
+        if (quad[c] == node) e.moved = e.moved == -1 ? c : -2;  // -2: the node twice in the quad
+      }
+      quads_.push_back(e);
+    }
+  }
+  // The score at `at`, or -infinity as soon as it cannot be above `floor`: every quality is at most 1,
+  // so worst + kMeanWeight * (sum + quads left) / count bounds the score from above (with a margin far
+  // above the rounding of the sums, so a trial is only dropped when its exact score could not pass).
+  double operator()(const Vec3& at, double floor = -std::numeric_limits<double>::infinity()) const {
+    if (quads_.empty()) return scoreAround(q_, nq_, node_, at);
+    double worst = 1, sum = 0;
+    const double count = static_cast<double>(quads_.size());
+    std::size_t left = quads_.size();
+    for (const Quad& e : quads_) {
+      double quality;
+      if (e.moved < 0) {
+        quality = quadSmoothingQuality(corners(q_, nq_.quads[nq_.start[node_] + (&e - quads_.data())], node_, at));
+      } else {
+        std::array<Vec3, 4> p = e.p, edge = e.edge;
+        std::array<double, 4> length = e.length;
+        const int m = e.moved, before = (m + 3) % 4;
+        p[m] = at;
+        edge[before] = at - p[before], length[before] = edge[before].norm();
+        edge[m] = p[(m + 1) % 4] - at, length[m] = edge[m].norm();
+        quality = qualityFromEdges(p, edge, length);
+      }
+      worst = std::min(worst, quality), sum += quality;
+      --left;
+      if (worst + kMeanWeight * (sum + static_cast<double>(left)) / count + 1e-12 < floor)
+        return -std::numeric_limits<double>::infinity();
+    }
+    return worst + kMeanWeight * sum / std::max(1, static_cast<int>(quads_.size()));
+  }
+
+ private:
+  struct Quad {
+    std::array<Vec3, 4> p, edge;
+    std::array<double, 4> length;
+    int moved = -1;
+  };
+  const QuadMesh& q_;
+  const NodeQuads& nq_;
+  int node_;
+  std::vector<Quad> quads_;
+};
+
 // Pattern search: tries steps along the given directions, keeps the one that raises the worst quad
 // around the node most, halves the step when none does; the end point is put back on the surface
 // (or the rim) by `project` and kept if the worst quad around the node is then better than before.
 template <class Project>
 void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<Vec3>& directions, Project project) {
-  const double before = scoreAround(q, nq, node, q.nodes[node]);
+  const MovingNodeScore score(q, nq, node);
+  const double before = score(q.nodes[node]);
   double best = before, step = 0;
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
     for (int c : q.quads[nq.quads[k]]) step = std::max(step, (q.nodes[c] - q.nodes[node]).norm());
@@ -126,14 +207,14 @@ void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<
     Vec3 bestAt = at;
     for (const Vec3& d : directions) {
       const Vec3 trial = at + step * d;
-      const double w = scoreAround(q, nq, node, trial);
+      const double w = score(trial, best + 1e-9);
       if (w > best + 1e-9) best = w, bestAt = trial;
     }
     if (bestAt == at) step *= 0.5;
     at = bestAt;
   }
   const Vec3 placed = project(at);
-  if (scoreAround(q, nq, node, placed) > before + kMinGain) q.nodes[node] = placed;
+  if (score(placed) > before + kMinGain) q.nodes[node] = placed;
 }
 
 // Eight directions in the tangent plane of the quads around an interior node.
