@@ -6,49 +6,52 @@
 
 namespace hexlayer {
 
-double quadScaledJacobian(const std::array<Vec3, 4>& p) {
+namespace {
+
+// The quad's scaled Jacobian from its corners, the edge vectors edge[k] = p[k+1] - p[k] and their
+// lengths (corner k's second edge p[k+3] - p[k] is the exact negation of edge k+3).
+double scaledJacobianFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge, const std::array<double, 4>& length) {
   Vec3 n = (p[2] - p[0]).cross(p[3] - p[1]);
   if (n.norm() == 0) return -1;
   n.normalize();
   double sj = 1;
   for (int k = 0; k < 4; ++k) {
-    const Vec3 e1 = p[(k + 1) % 4] - p[k], e2 = p[(k + 3) % 4] - p[k];
-    const double len = e1.norm() * e2.norm();
-    sj = std::min(sj, len > 0 ? n.dot(e1.cross(e2)) / len : -1.0);
+    const Vec3 e2 = -edge[(k + 3) % 4];
+    const double len = length[k] * length[(k + 3) % 4];
+    sj = std::min(sj, len > 0 ? n.dot(edge[k].cross(e2)) / len : -1.0);
   }
   return sj;
 }
 
-namespace {
+std::array<Vec3, 4> edgesOf(const std::array<Vec3, 4>& p) {
+  std::array<Vec3, 4> edge;
+  for (int k = 0; k < 4; ++k) edge[k] = p[(k + 1) % 4] - p[k];
+  return edge;
+}
 
-// quadSmoothingQuality from the corners and the edge vectors edge[k] = p[k+1] - p[k] and their lengths.
+std::array<double, 4> lengthsOf(const std::array<Vec3, 4>& edge) {
+  std::array<double, 4> length;
+  for (int k = 0; k < 4; ++k) length[k] = edge[k].norm();
+  return length;
+}
+
+// quadSmoothingQuality from the corners, the edge vectors and their lengths.
 double qualityFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge, const std::array<double, 4>& length) {
   double shortest = std::numeric_limits<double>::infinity(), longest = 0;
   for (int k = 0; k < 4; ++k) shortest = std::min(shortest, length[k]), longest = std::max(longest, length[k]);
-  double sj = -1;
-  Vec3 n = (p[2] - p[0]).cross(p[3] - p[1]);
-  if (n.norm() != 0) {
-    n.normalize();
-    sj = 1;
-    for (int k = 0; k < 4; ++k) {
-      const Vec3 e2 = -edge[(k + 3) % 4];
-      const double len = length[k] * length[(k + 3) % 4];
-      sj = std::min(sj, len > 0 ? n.dot(edge[k].cross(e2)) / len : -1.0);
-    }
-  }
-  return std::min(sj, longest > 0 ? 2 * shortest / longest : -1.0);
+  return std::min(scaledJacobianFromEdges(p, edge, length), longest > 0 ? 2 * shortest / longest : -1.0);
 }
 
 }  // namespace
 
+double quadScaledJacobian(const std::array<Vec3, 4>& p) {
+  const std::array<Vec3, 4> edge = edgesOf(p);
+  return scaledJacobianFromEdges(p, edge, lengthsOf(edge));
+}
+
 double quadSmoothingQuality(const std::array<Vec3, 4>& p) {
-  // quadScaledJacobian's and the edge ratio's arithmetic, each edge vector and length computed once
-  // (corner k's second edge p[k+3] - p[k] is the exact negation of edge k+3): the same bits as
-  // std::min(quadScaledJacobian(p), 2 * shortest / longest).
-  std::array<Vec3, 4> edge;
-  std::array<double, 4> length;
-  for (int k = 0; k < 4; ++k) edge[k] = p[(k + 1) % 4] - p[k], length[k] = edge[k].norm();
-  return qualityFromEdges(p, edge, length);
+  const std::array<Vec3, 4> edge = edgesOf(p);
+  return qualityFromEdges(p, edge, lengthsOf(edge));
 }
 
 namespace {
