@@ -45,20 +45,18 @@ Eigen::Vector2d inverseBilinear(const std::array<Vec3, 4>& p, const Vec3& x) {
 
 ChordalLocator::ChordalLocator(const ChordalSurface& chordal)
     : chordal_(chordal), facets_(1.0), lo_(chordal.facets.size()), hi_(chordal.facets.size()) {
-  std::vector<Vec3>& lo = lo_;
-  std::vector<Vec3>& hi = hi_;
   std::vector<double> extent(chordal.facets.size());
   for (size_t f = 0; f < chordal.facets.size(); ++f) {
     const auto& fc = chordal.facets[f];
-    lo[f] = hi[f] = chordal.vertices[fc[0]];
+    lo_[f] = hi_[f] = chordal.vertices[fc[0]];
     for (int k = 1; k < (fc[3] < 0 ? 3 : 4); ++k)
-      lo[f] = lo[f].cwiseMin(chordal.vertices[fc[k]]), hi[f] = hi[f].cwiseMax(chordal.vertices[fc[k]]);
-    extent[f] = (hi[f] - lo[f]).maxCoeff();
+      lo_[f] = lo_[f].cwiseMin(chordal.vertices[fc[k]]), hi_[f] = hi_[f].cwiseMax(chordal.vertices[fc[k]]);
+    extent[f] = (hi_[f] - lo_[f]).maxCoeff();
   }
   // Cells as large as a typical facet: a few facets per cell, a long sliver in a few more cells.
   std::nth_element(extent.begin(), extent.begin() + extent.size() / 2, extent.end());
   facets_ = BoxGrid(extent.empty() ? 1.0 : std::max(extent[extent.size() / 2], 1e-12));
-  for (size_t f = 0; f < chordal.facets.size(); ++f) facets_.insert(static_cast<int>(f), lo[f], hi[f]);
+  for (size_t f = 0; f < chordal.facets.size(); ++f) facets_.insert(static_cast<int>(f), lo_[f], hi_[f]);
 }
 
 ChordalPoint ChordalLocator::project(int facet, const Vec3& p) const {

@@ -20,7 +20,6 @@
 #include "geometry/sheet_junctions.hpp"
 #include "geometry/wall_sides.hpp"
 #include "quadmesh/quad_mesh.hpp"
-#include "quadmesh/quad_smoothing.hpp"
 #include "quadmesh/sizing.hpp"
 #include "pipeline/surface_groups.hpp"
 #include "quality/quality.hpp"

@@ -361,8 +361,8 @@ std::size_t foldedEdges(const QuadMesh& q, const ChordalLocator& chordal) {
   return folded;
 }
 
-QuadScore scoreQuads(const QuadMesh& q, const ChordalLocator& chordal, double acceptableQuad) {
-  QuadScore s{eulerCharacteristic(q) != eulerCharacteristic(chordal.surface()), q.holes, foldedEdges(q, chordal), 1, 0};
+QuadScore scoreQuads(const QuadMesh& q, const ChordalLocator& chordal, long chordalEuler, double acceptableQuad) {
+  QuadScore s{eulerCharacteristic(q) != chordalEuler, q.holes, foldedEdges(q, chordal), 1, 0};
   for (const auto& quad : q.quads) {
     const double sj = quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]});
     s.worst = std::min(s.worst, sj), s.mean += sj / q.quads.size();
@@ -388,6 +388,7 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   if (!(o.size > 0)) throw usageError("quad size must be positive");
   QuadMesh best;
   QuadScore bestScore;
+  const long chordalEuler = eulerCharacteristic(chordal.surface());
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;
   for (const PatchSplit& split : o.patchSplits) {
@@ -401,7 +402,7 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
     q.nodes = std::move(c.onSurface);
     q.doubletsRemoved = removeDoublets(q);
     smoothQuadMesh(q, chordal, o.smoothingIterations);
-    if (const QuadScore score = scoreQuads(q, chordal, o.acceptableQuad); score < bestScore) best = std::move(q), bestScore = score;
+    if (const QuadScore score = scoreQuads(q, chordal, chordalEuler, o.acceptableQuad); score < bestScore) best = std::move(q), bestScore = score;
     if (bestScore.good()) break;
   }
   if (best.quads.empty()) {

@@ -114,16 +114,6 @@ double worstAround(const QuadMesh& q, const NodeQuads& nq, int node, const Vec3&
   return worst;
 }
 
-// What the node optimization maximizes: the worst quad around the node, then their mean.
-double scoreAround(const QuadMesh& q, const NodeQuads& nq, int node, const Vec3& at) {
-  double worst = 1, sum = 0;
-  for (int k = nq.start[node]; k < nq.start[node + 1]; ++k) {
-    const double quality = quadSmoothingQuality(corners(q, nq.quads[k], node, at));
-    worst = std::min(worst, quality), sum += quality;
-  }
-  return worst + kMeanWeight * sum / std::max(1, nq.start[node + 1] - nq.start[node]);
-}
-
 // Area-weighted mean of the centroids of the quads around the node.
 Vec3 centroidTarget(const QuadMesh& q, const NodeQuads& nq, int node) {
   Vec3 sum = Vec3::Zero();
@@ -137,8 +127,9 @@ Vec3 centroidTarget(const QuadMesh& q, const NodeQuads& nq, int node) {
   return area > 0 ? Vec3(sum / area) : q.nodes[node];
 }
 
-// scoreAround for one node moving while the others stay: the edges not at the node and their lengths
-// are computed once (same arithmetic per quad, same bits as scoreAround).
+// What the node optimization maximizes, the worst quad around the node plus kMeanWeight x their mean,
+// for one node moving while the others stay: the edges not at the node and their lengths are
+// computed once.
 class MovingNodeScore {
  public:
   MovingNodeScore(const QuadMesh& q, const NodeQuads& nq, int node) : q_(q), nq_(nq), node_(node) {
@@ -157,7 +148,6 @@ class MovingNodeScore {
   // so worst + kMeanWeight * (sum + quads left) / count bounds the score from above (with a margin far
   // above the rounding of the sums, so a trial is only dropped when its exact score could not pass).
   double operator()(const Vec3& at, double floor = -std::numeric_limits<double>::infinity()) const {
-    if (quads_.empty()) return scoreAround(q_, nq_, node_, at);
     double worst = 1, sum = 0;
     const double count = static_cast<double>(quads_.size());
     std::size_t left = quads_.size();
