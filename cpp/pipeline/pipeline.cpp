@@ -179,6 +179,7 @@ QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const Me
     r["quad_mesh"]["unpaired_triangles"] = stage.quads.holes;
     r["quad_mesh"]["doublets_removed"] = stage.quads.doubletsRemoved;
     r["quad_mesh"]["structured_patches"] = stage.quads.structuredPatches;
+    r["quad_mesh"]["layout"] = stage.quads.layout == QuadLayout::Gmsh ? "gmsh" : stage.quads.layout == QuadLayout::Grid ? "grid" : "o-grid";
     break;
   }
   return stage;

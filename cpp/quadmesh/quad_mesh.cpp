@@ -15,6 +15,7 @@
 #include "core/child_process.hpp"
 #include "core/error.hpp"
 #include "core/union_find.hpp"
+#include "quadmesh/block_grids.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
@@ -26,6 +27,7 @@ namespace {
 constexpr double kOffSurface = 1.0;
 constexpr int kMaxStrip = 20;  // quads between two leftover triangles that are paired (quad_completion)
 constexpr int kCurveSamples = 64;  // points along a patch curve to measure it
+constexpr double kStructuredMean = 0.98;  // mean quad scaled Jacobian of a try that needs no other
 constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  // of a structured patch
 
 // Gmsh is one process-wide session: open it for this stage only, and always close it.
@@ -331,16 +333,16 @@ long eulerCharacteristic(const ChordalSurface& s) {
   return static_cast<long>(s.vertices.size()) - static_cast<long>(facetEdgeUses(s).size()) + static_cast<long>(s.facets.size());
 }
 
-// A smoothed try's quads, best first: the chordal surface's topology, fewest holes, fewest poor
-// quads (and folded edges), best mean quad, best worst quad.
+// A smoothed try's quads, best first: the chordal surface's topology, fewest holes, fewest
+// inverted quads (and folded edges), fewest poor quads, best mean quad, best worst quad.
 struct QuadScore {
   bool topologyChanged = true;
-  std::size_t holes = std::numeric_limits<std::size_t>::max(), poor = std::numeric_limits<std::size_t>::max();
+  std::size_t holes = std::numeric_limits<std::size_t>::max(), inverted = std::numeric_limits<std::size_t>::max(),
+              poor = std::numeric_limits<std::size_t>::max();
   double worst = -1, mean = -1;
-  bool operator<(const QuadScore& o) const {
-    return std::make_tuple(topologyChanged, holes, poor, -mean, -worst) < std::make_tuple(o.topologyChanged, o.holes, o.poor, -o.mean, -o.worst);
-  }
-  bool good() const { return !topologyChanged && holes == 0 && poor == 0; }
+  auto key() const { return std::make_tuple(topologyChanged, holes, inverted, poor, -mean, -worst); }
+  bool operator<(const QuadScore& o) const { return key() < o.key(); }
+  bool good() const { return !topologyChanged && holes == 0 && inverted == 0 && poor == 0; }
 };
 
 // Edges between quads the sweep will turn to face opposite ways: it turns every quad to face the
@@ -362,13 +364,36 @@ std::size_t foldedEdges(const QuadMesh& q, const ChordalLocator& chordal) {
 }
 
 QuadScore scoreQuads(const QuadMesh& q, const ChordalLocator& chordal, long chordalEuler, double acceptableQuad) {
-  QuadScore s{eulerCharacteristic(q) != chordalEuler, q.holes, foldedEdges(q, chordal), 1, 0};
+  QuadScore s{eulerCharacteristic(q) != chordalEuler, q.holes, foldedEdges(q, chordal), 0, 1, 0};
   for (const auto& quad : q.quads) {
     const double sj = quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]});
     s.worst = std::min(s.worst, sj), s.mean += sj / q.quads.size();
-    s.poor += sj < acceptableQuad;
+    s.inverted += sj <= 0, s.poor += sj < acceptableQuad;
   }
   return s;
+}
+
+// A try's quads made ready and ranked: doublets removed, smoothed, scored.
+QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
+  q.doubletsRemoved = removeDoublets(q);
+  smoothQuadMesh(q, chordal, o.smoothingIterations);
+  return scoreQuads(q, chordal, chordalEuler, o.acceptableQuad);
+}
+
+// The structured block grids of the chordal surface (block_grids.hpp): an O-grid if it is a disc,
+// a grid with a pocket around each hole if it has four corners; none if it is neither.
+std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+  const SizeField size = [&](const Vec3& p) { return o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, p); };
+  std::vector<QuadMesh> tries;
+  auto add = [&](BlockGrid grid, QuadLayout layout) {
+    if (grid.empty()) return;
+    QuadMesh q;
+    q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks, q.layout = layout;
+    tries.push_back(std::move(q));
+  };
+  add(oGrid(mapToPlane(chordal.surface(), MapBoundary::Circle, o.size), size), QuadLayout::OGrid);
+  add(holedGrid(mapToPlane(chordal.surface(), MapBoundary::Square, o.size), size), QuadLayout::Grid);
+  return tries;
 }
 
 }  // namespace
@@ -389,10 +414,17 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   QuadMesh best;
   QuadScore bestScore;
   const long chordalEuler = eulerCharacteristic(chordal.surface());
+  // Structured block grids first: where one has square enough quads, Gmsh is not needed. A grid
+  // with an inverted quad (its layout does not fit the surface) is never kept.
+  for (QuadMesh& q : blockGridQuads(chordal, o)) {
+    q.nodes = onChordalSurface(q, chordal).onSurface;
+    const QuadScore score = finishTry(q, chordal, o, chordalEuler);
+    if (!score.topologyChanged && score.inverted == 0 && score < bestScore) best = std::move(q), bestScore = score;
+  }
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;
-  for (const PatchSplit& split : o.patchSplits) {
-    QuadMesh q = gmshQuads(chordal, o, split, gmshError);
+  for (std::size_t i = 0; i < o.patchSplits.size() && !(bestScore.good() && bestScore.mean >= kStructuredMean); ++i) {
+    QuadMesh q = gmshQuads(chordal, o, o.patchSplits[i], gmshError);
     if (q.quads.empty()) continue;
     SurfaceCheck c = onChordalSurface(q, chordal);
     if (!(c.farthest < kOffSurface * o.size)) {
@@ -400,9 +432,7 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
       continue;
     }
     q.nodes = std::move(c.onSurface);
-    q.doubletsRemoved = removeDoublets(q);
-    smoothQuadMesh(q, chordal, o.smoothingIterations);
-    if (const QuadScore score = scoreQuads(q, chordal, chordalEuler, o.acceptableQuad); score < bestScore) best = std::move(q), bestScore = score;
+    if (const QuadScore score = finishTry(q, chordal, o, chordalEuler); score < bestScore) best = std::move(q), bestScore = score;
     if (bestScore.good()) break;
   }
   if (best.quads.empty()) {

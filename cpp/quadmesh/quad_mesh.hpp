@@ -1,5 +1,7 @@
-// Quad mesh of the chordal surface (paper §6) through Gmsh's C++ API: the chordal facets become a
-// discrete surface, Gmsh reparametrizes it, meshes it quad-dominant and turns it all-quad.
+// Quad mesh of the chordal surface (paper §6): structured block grids laid out in a map of the
+// surface onto the plane (block_grids.hpp), or through Gmsh's C++ API, where the chordal facets
+// become a discrete surface that Gmsh reparametrizes, meshes quad-dominant and turns all-quad;
+// the best of the tries is kept.
 #pragma once
 #include <array>
 #include <vector>
@@ -9,6 +11,10 @@
 
 namespace hexlayer {
 
+// How the quads were laid out: by Gmsh on its patches (some of them structured, the rest
+// unstructured), or as structured block grids in a map of the surface (block_grids.hpp).
+enum class QuadLayout { Gmsh, Grid, OGrid };
+
 struct QuadMesh {
   std::vector<Vec3> nodes;                 // on the chordal surface
   std::vector<std::array<int, 4>> quads;   // orientation as Gmsh made it (the sweep orients them)
@@ -16,7 +22,8 @@ struct QuadMesh {
   std::size_t splitTriangles = 0;          // the others, split into quads with the strips from them
   std::size_t holes = 0;                   // leftover triangles neither could handle: each is a hole
   int doubletsRemoved = 0;                 // before smoothing (quad_smoothing)
-  std::size_t structuredPatches = 0;       // patches meshed with a structured grid
+  std::size_t structuredPatches = 0;       // patches (or blocks) meshed with a structured grid
+  QuadLayout layout = QuadLayout::Gmsh;
 };
 
 // How Gmsh cuts the chordal surface into patches it can parametrize, in degrees: chordal edges
@@ -35,10 +42,13 @@ struct PatchSplit {
 struct QuadMeshOptions {
   double size = 0;  // target edge length (uniform sizing)
   std::vector<double> vertexSize;  // adaptive sizing: target edge length per chordal vertex (sizing.hpp)
-  // Gmsh's reparametrization of a patch can fail: the next split is tried then, or when the quads
-  // change the chordal surface's topology (close a hole) or some are below acceptableQuad once
-  // smoothed; of the tries, the one that keeps the topology, then with the fewest holes, then the
-  // fewest such quads, then the best mean quad, then the best worst is kept.
+  // The structured block grids are tried first (block_grids.hpp); Gmsh, one split after the other,
+  // unless one of them is good with a mean quad of at least 0.98. Gmsh's reparametrization of a
+  // patch can fail: the next split is tried then, or when the quads change the chordal surface's
+  // topology (close a hole) or some are inverted or below acceptableQuad once smoothed. Of the
+  // tries, the one that keeps the topology, then with the fewest holes, then the fewest inverted
+  // (or folded), then the fewest below acceptableQuad, then the best mean quad, then the best
+  // worst is kept.
   std::vector<PatchSplit> patchSplits{{60, 60, true}, {60, 180}, {40, 40}, {40, 180}, {80, 80}, {25, 25},
                                       {60, 60, true, 2}, {60, 180, false, 2}, {40, 40, false, 2}, {40, 180, false, 2},
                                       {80, 80, false, 2}, {25, 25, false, 2}};

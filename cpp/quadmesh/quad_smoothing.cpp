@@ -35,11 +35,13 @@ std::array<double, 4> lengthsOf(const std::array<Vec3, 4>& edge) {
   return length;
 }
 
+constexpr double kFreeAspect = 4;  // quads up to this ratio of longest to shortest edge are not penalized
+
 // quadSmoothingQuality from the corners, the edge vectors and their lengths.
 double qualityFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge, const std::array<double, 4>& length) {
   double shortest = std::numeric_limits<double>::infinity(), longest = 0;
   for (int k = 0; k < 4; ++k) shortest = std::min(shortest, length[k]), longest = std::max(longest, length[k]);
-  return std::min(scaledJacobianFromEdges(p, edge, length), longest > 0 ? 2 * shortest / longest : -1.0);
+  return std::min(scaledJacobianFromEdges(p, edge, length), longest > 0 ? kFreeAspect * shortest / longest : -1.0);
 }
 
 }  // namespace

@@ -11,9 +11,9 @@ namespace hexlayer {
 // normal through the diagonals.
 double quadScaledJacobian(const std::array<Vec3, 4>& corners);
 
-// What the smoothing maximizes: the scaled Jacobian, capped by twice the ratio of the shortest to
+// What the smoothing maximizes: the scaled Jacobian, capped by four times the ratio of the shortest to
 // the longest edge. A quad with a collapsed edge can have square corners, but its hexes are as
-// thin as that edge; quads up to 2:1 are not penalized.
+// thin as that edge; quads up to 4:1 (a structured grid across a tapering wall) are not penalized.
 double quadSmoothingQuality(const std::array<Vec3, 4>& corners);
 
 // Removes the doublets: an interior node in just two quads, which share two of its edges, gives

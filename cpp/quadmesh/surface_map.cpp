@@ -1,0 +1,253 @@
+#include "quadmesh/surface_map.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+#include "chordal/chordal_locator.hpp"
+#include "core/union_find.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr double kSharpCorner = 50 * M_PI / 180;  // a rim turning more is a corner
+
+// The rim loops, each along its directed edges (the facets' own direction: the surface on the left),
+// or none if the surface is not a connected sphere with holes whose rims do not touch.
+std::vector<std::vector<int>> rimLoops(const std::vector<std::array<int, 3>>& triangles, std::size_t points) {
+  std::unordered_map<std::uint64_t, int> uses;
+  UnionFind connected(static_cast<int>(points));
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) ++uses[edgeKey(t[k], t[(k + 1) % 3])], connected.unite(t[k], t[(k + 1) % 3]);
+  std::vector<int> next(points, -1);
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k)
+      if (uses[edgeKey(t[k], t[(k + 1) % 3])] == 1) {
+        if (next[t[k]] >= 0) return {};  // two rim loops touch at a point
+        next[t[k]] = t[(k + 1) % 3];
+      }
+  for (std::size_t p = 0; p < points; ++p)
+    if (connected.find(static_cast<int>(p)) != 0) return {};
+  std::vector<std::vector<int>> loops;
+  std::vector<char> seen(points, 0);
+  for (std::size_t p = 0; p < points; ++p) {
+    if (next[p] < 0 || seen[p]) continue;
+    loops.emplace_back();
+    for (int q = static_cast<int>(p); !seen[q]; q = next[q]) seen[q] = 1, loops.back().push_back(q);
+  }
+  const long euler = static_cast<long>(points) - static_cast<long>(uses.size()) + static_cast<long>(triangles.size());
+  if (loops.empty() || euler != 2 - static_cast<long>(loops.size())) return {};
+  return loops;
+}
+
+// 3D arc length along a loop from its first point: up to point i at [i], the whole loop at [size].
+std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Vec3>& x) {
+  std::vector<double> length{0};
+  for (std::size_t i = 0; i < loop.size(); ++i) length.push_back(length.back() + (x[loop[(i + 1) % loop.size()]] - x[loop[i]]).norm());
+  return length;
+}
+
+// How much the rim turns at each of its points in the surface's tangent plane (the rim's bends
+// with a bent surface do not count): the angle from its direction `window` behind the point to
+// its direction `window` ahead, positive to the left (into the surface).
+std::vector<double> rimTurning(const std::vector<int>& loop, const std::vector<double>& length, const std::vector<Vec3>& x,
+                               const std::vector<Vec3>& normals, double window) {
+  const int n = static_cast<int>(loop.size());
+  const double total = length.back();
+  auto along = [&](int i, int j) { return std::fmod(length[(j % n + n) % n] - length[(i % n + n) % n] + 2 * total, total); };
+  std::vector<double> turn(n, 0);
+  for (int i = 0; i < n; ++i) {
+    int back = i - 1, ahead = i + 1;
+    while (back > i - n + 1 && along(back, i) < window) --back;
+    while (ahead < i + n - 1 && along(i, ahead) < window) ++ahead;
+    const Vec3& normal = normals[loop[i]];
+    auto tangent = [&](const Vec3& d) { return (d - d.dot(normal) * normal).normalized(); };
+    const Vec3 in = tangent(x[loop[i]] - x[loop[(back % n + n) % n]]), out = tangent(x[loop[ahead % n]] - x[loop[i]]);
+    turn[i] = std::atan2(normal.dot(in.cross(out)), in.dot(out));
+  }
+  return turn;
+}
+
+// The rim's four corners, ascending along it: its four sharpest corners (turning more than
+// kSharpCorner, the most within `window`) if it has four or more, else the diagonal extremes of
+// its principal axes (a rounded rectangle's arcs, a circle's 45° points).
+std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<int>& loop, const std::vector<double>& length, double window) {
+  const std::vector<double> turn = rimTurning(loop, length, chordal.vertices, chordal.normals, window);
+  const int n = static_cast<int>(loop.size());
+  std::vector<int> sharp;
+  for (int i = 0; i < n; ++i) {
+    bool peak = turn[i] > kSharpCorner;
+    for (int j = i - 1; peak && j > i - n && std::fmod(length[i] - length[(j % n + n) % n] + length.back(), length.back()) < window; --j)
+      peak = turn[(j % n + n) % n] < turn[i];
+    for (int j = i + 1; peak && j < i + n && std::fmod(length[j % n] - length[i] + length.back(), length.back()) < window; ++j)
+      peak = turn[j % n] <= turn[i];
+    if (peak) sharp.push_back(i);
+  }
+  std::array<int, 4> corners{};
+  if (sharp.size() >= 4) {
+    std::stable_sort(sharp.begin(), sharp.end(), [&](int a, int b) { return turn[a] > turn[b]; });
+    std::copy(sharp.begin(), sharp.begin() + 4, corners.begin());
+  } else {
+    std::vector<Vec3> points;
+    for (int p : loop) points.push_back(chordal.vertices[p]);
+    Vec3 mean = Vec3::Zero();
+    for (const Vec3& p : points) mean += p / points.size();
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (const Vec3& p : points) covariance += (p - mean) * (p - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance);
+    corners = diagonalExtremes(points, mean, axes.eigenvectors().col(2), axes.eigenvectors().col(1));
+  }
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+// Where the outer rim goes, `f` of the way from corner k to corner k + 1.
+Eigen::Vector2d boundaryPoint(MapBoundary boundary, int k, double f) {
+  if (boundary == MapBoundary::Circle) {
+    const double angle = M_PI / 4 + (k + f) * M_PI / 2;
+    return {std::cos(angle), std::sin(angle)};
+  }
+  const Eigen::Vector2d corner[4] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  return (1 - f) * corner[k] + f * corner[(k + 1) % 4];
+}
+
+// Floater's mean value weight of every edge (i, j) seen from i: (tan(α/2) + tan(β/2)) / |x_j - x_i|
+// with α, β the angles at i of the two triangles on the edge.
+std::vector<std::unordered_map<int, double>> meanValueWeights(const std::vector<std::array<int, 3>>& triangles, const std::vector<Vec3>& x) {
+  std::vector<std::unordered_map<int, double>> w(x.size());
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int i = t[k], j = t[(k + 1) % 3], l = t[(k + 2) % 3];
+      const Vec3 a = x[j] - x[i], b = x[l] - x[i];
+      const double la = std::max(a.norm(), 1e-300), lb = std::max(b.norm(), 1e-300);
+      const double halfTan = std::tan(0.5 * std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0)));
+      w[i][j] += halfTan / la, w[i][l] += halfTan / lb;
+    }
+  return w;
+}
+
+// Every point off the rim at the weighted mean of its neighbours, the rim fixed: one sparse solve.
+// False if the solve fails.
+bool solveInside(const std::vector<std::unordered_map<int, double>>& w, const std::vector<char>& onRim, std::vector<Eigen::Vector2d>& uv) {
+  std::vector<int> unknown(uv.size(), -1);
+  int n = 0;
+  for (size_t i = 0; i < uv.size(); ++i)
+    if (!onRim[i]) unknown[i] = n++;
+  if (n == 0) return true;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(n, 2);
+  for (size_t i = 0; i < uv.size(); ++i) {
+    if (onRim[i]) continue;
+    double sum = 0;
+    for (const auto& [j, wij] : w[i]) {
+      sum += wij;
+      if (onRim[j]) rhs.row(unknown[i]) += wij * uv[j].transpose();
+      else entries.emplace_back(unknown[i], unknown[j], -wij);
+    }
+    entries.emplace_back(unknown[i], unknown[i], sum);
+  }
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(a);
+  if (lu.info() != Eigen::Success) return false;
+  const Eigen::MatrixX2d solution = lu.solve(rhs);
+  if (lu.info() != Eigen::Success || !solution.allFinite()) return false;
+  for (size_t i = 0; i < uv.size(); ++i)
+    if (!onRim[i]) uv[i] = solution.row(unknown[i]).transpose();
+  return true;
+}
+
+}  // namespace
+
+std::array<int, 4> diagonalExtremes(const std::vector<Vec3>& loop, const Vec3& centre, const Vec3& e1, const Vec3& e2) {
+  double a = 0, b = 0;
+  for (const Vec3& p : loop) a = std::max(a, std::abs((p - centre).dot(e1))), b = std::max(b, std::abs((p - centre).dot(e2)));
+  std::array<int, 4> extremes{};
+  const int signs[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  for (int k = 0; k < 4; ++k) {
+    double best = -std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < loop.size(); ++i)
+      if (const double s = signs[k][0] * (loop[i] - centre).dot(e1) / a + signs[k][1] * (loop[i] - centre).dot(e2) / b; s > best)
+        best = s, extremes[k] = static_cast<int>(i);
+  }
+  return extremes;
+}
+
+SurfaceMap mapToPlane(const ChordalSurface& chordal, MapBoundary boundary, double window) {
+  SurfaceMap map;
+  map.points = chordal.vertices;
+  for (const auto& f : chordal.facets) {
+    map.triangles.push_back({f[0], f[1], f[2]});
+    if (f[3] >= 0) map.triangles.push_back({f[0], f[2], f[3]});
+  }
+  std::vector<std::vector<int>> loops = rimLoops(map.triangles, map.points.size());
+  if (loops.empty()) return {};
+  auto lengthOf = [&](const std::vector<int>& loop) { return arcLength(loop, map.points).back(); };
+  std::stable_sort(loops.begin(), loops.end(), [&](const auto& a, const auto& b) { return lengthOf(a) > lengthOf(b); });
+  for (std::size_t h = 1; h < loops.size(); ++h) {  // fill each hole, then walk it counter-clockwise
+    Vec3 centre = Vec3::Zero();
+    for (int p : loops[h]) centre += map.points[p] / loops[h].size();
+    const int c = static_cast<int>(map.points.size());
+    map.points.push_back(centre);
+    for (std::size_t i = 0; i < loops[h].size(); ++i) map.triangles.push_back({loops[h][(i + 1) % loops[h].size()], loops[h][i], c});
+    std::reverse(loops[h].begin(), loops[h].end());
+    map.holes.push_back(loops[h]);
+  }
+  std::vector<int> outer = loops[0];
+  if (outer.size() < 8) return {};
+  const std::array<int, 4> at = rimCorners(chordal, outer, arcLength(outer, map.points), window);
+  if (std::adjacent_find(at.begin(), at.end()) != at.end()) return {};
+  std::rotate(outer.begin(), outer.begin() + at[0], outer.end());  // the rim starts at a corner
+  map.rim = outer;
+  const std::vector<double> length = arcLength(outer, map.points);
+  for (int k = 0; k < 4; ++k) map.corners[k] = at[k] - at[0];
+  map.uv.assign(map.points.size(), Eigen::Vector2d::Zero());
+  std::vector<char> onRim(map.points.size(), 0);
+  for (int k = 0; k < 4; ++k) {
+    const std::size_t end = k == 3 ? outer.size() : map.corners[k + 1];
+    const double from = length[map.corners[k]], to = length[end];
+    for (std::size_t i = map.corners[k]; i < end; ++i)
+      map.uv[outer[i]] = boundaryPoint(boundary, k, (length[i] - from) / (to - from)), onRim[outer[i]] = 1;
+  }
+  if (!solveInside(meanValueWeights(map.triangles, map.points), onRim, map.uv)) return {};
+  return map;
+}
+
+LoopPoint loopPoint(const SurfaceMap& map, const std::vector<int>& loop, const std::vector<double>& measure, double s) {
+  const std::size_t n = loop.size();
+  const std::size_t i = std::clamp<std::size_t>(std::upper_bound(measure.begin(), measure.end(), s) - measure.begin(), 1, n) - 1;
+  const double span = measure[i + 1] - measure[i];
+  const double g = span > 0 ? std::clamp((s - measure[i]) / span, 0.0, 1.0) : 0.0;
+  const int a = loop[i], b = loop[(i + 1) % n];
+  return {(1 - g) * map.points[a] + g * map.points[b], (1 - g) * map.uv[a] + g * map.uv[b]};
+}
+
+MapLocator::MapLocator(const SurfaceMap& map) : map_(map), triangles_(2.0 / std::sqrt(static_cast<double>(map.triangles.size()) + 1)) {
+  for (size_t t = 0; t < map.triangles.size(); ++t) {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (int p : map.triangles[t]) lo = lo.cwiseMin(at(p)), hi = hi.cwiseMax(at(p));
+    triangles_.insert(static_cast<int>(t), lo, hi);
+  }
+}
+
+Vec3 MapLocator::operator()(const Eigen::Vector2d& uv) const {
+  const Vec3 p(uv.x(), uv.y(), 0);
+  auto weights = [&](int t) {
+    const auto& tri = map_.triangles[t];
+    return triangleWeights(at(tri[0]), at(tri[1]), at(tri[2]), p);
+  };
+  const int t = triangles_.nearest(p, [&](int id, double) {
+    const Eigen::Vector3d w = weights(id);
+    const auto& tri = map_.triangles[id];
+    return (w[0] * at(tri[0]) + w[1] * at(tri[1]) + w[2] * at(tri[2]) - p).squaredNorm();
+  });
+  const Eigen::Vector3d w = weights(t);
+  const auto& tri = map_.triangles[t];
+  return w[0] * map_.points[tri[0]] + w[1] * map_.points[tri[1]] + w[2] * map_.points[tri[2]];
+}
+
+}  // namespace hexlayer

@@ -1,0 +1,63 @@
+// A map of the chordal surface onto the plane, for the structured block grids (block_grids.hpp):
+// Gmsh 4.8 meshes a patch that is not bounded by four curves unstructured (its Frontal-Delaunay
+// for quads crashes), with irregular nodes and sheared regions. In the plane, a disc or a
+// rectangle with holes can be covered by a few structured blocks instead.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "chordal/chordal_surface.hpp"
+#include "core/box_grid.hpp"
+#include "core/types.hpp"
+
+namespace hexlayer {
+
+// What the outer rim is mapped onto: the unit circle or the square [-1, 1]^2. Its four corners go
+// to 45, 135, 225 and 315 degrees (the square's corners), the rim between them by arc length.
+enum class MapBoundary { Circle, Square };
+
+// The chordal surface with each hole filled by a fan of triangles around one added point (its
+// rim's centroid), mapped by Floater's mean value weights: each point inside is the weighted mean
+// of its neighbours, which embeds the surface in the plane without folds (the rim is convex).
+struct SurfaceMap {
+  std::vector<Vec3> points;                   // the chordal vertices, then one centre per hole
+  std::vector<std::array<int, 3>> triangles;  // the chordal facets (quads split on a diagonal), then the fans
+  std::vector<Eigen::Vector2d> uv;            // per point
+  // Rim loops as points, each counter-clockwise in the plane.
+  std::vector<int> rim;                       // the outer rim (the longest loop), starting at corner 0
+  std::array<int, 4> corners{};               // positions in rim of the four corners, ascending
+  std::vector<std::vector<int>> holes;        // the other rim loops
+  bool empty() const { return triangles.empty(); }
+};
+
+// Empty unless the chordal surface is a sphere with holes (connected, V - E + F = 2 - loops, rims
+// that do not touch). The four corners are the rim's four sharpest, or if it has fewer, its points
+// farthest out along the diagonals of its principal axes; the rim's turning is measured over
+// `window` (about a quad) on either side of a point.
+SurfaceMap mapToPlane(const ChordalSurface& chordal, MapBoundary boundary, double window);
+
+// The four points of a loop farthest out along the diagonals (+,+), (-,+), (-,-), (+,-) of the axes
+// e1, e2 around `centre`, as positions in the loop.
+std::array<int, 4> diagonalExtremes(const std::vector<Vec3>& loop, const Vec3& centre, const Vec3& e1, const Vec3& e2);
+
+// A point of a loop where a measure accumulated along it (cumulative, one more entry than the loop
+// has points: arc length, or the quads the target size needs) reaches s.
+struct LoopPoint {
+  Vec3 x;
+  Eigen::Vector2d uv;
+};
+LoopPoint loopPoint(const SurfaceMap& map, const std::vector<int>& loop, const std::vector<double>& measure, double s);
+
+// The 3D point of the chordal surface at a point of the plane (on the nearest mapped triangle).
+class MapLocator {
+ public:
+  explicit MapLocator(const SurfaceMap& map);
+  Vec3 operator()(const Eigen::Vector2d& uv) const;
+
+ private:
+  Vec3 at(int point) const { return Vec3(map_.uv[point].x(), map_.uv[point].y(), 0); }
+  const SurfaceMap& map_;
+  BoxGrid triangles_;  // by their bounding boxes in the plane
+};
+
+}  // namespace hexlayer

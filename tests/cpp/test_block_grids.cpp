@@ -1,0 +1,154 @@
+// Structured block grids of the chordal surface (block_grids, surface_map): the map onto the plane
+// folds no triangle, the rim's corners are found, and the grids are all-quad, square and keep the
+// surface's topology and extent.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/union_find.hpp"
+#include "quadmesh/block_grids.hpp"
+#include "quadmesh/quad_smoothing.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+// The surface without the vertices no facet uses.
+ChordalSurface withoutUnusedVertices(const ChordalSurface& s) {
+  ChordalSurface out;
+  std::vector<int> index(s.vertices.size(), -1);
+  for (auto f : s.facets) {
+    for (int& v : f)
+      if (v >= 0) {
+        if (index[v] < 0) index[v] = static_cast<int>(out.vertices.size()), out.vertices.push_back(s.vertices[v]), out.normals.push_back(s.normals[v]);
+        v = index[v];
+      }
+    out.facets.push_back(f);
+  }
+  return out;
+}
+
+// A flat nx x ny rectangle of unit quads, normal +z, without the cells whose lower left corner is
+// in [hx0, hx1) x [hy0, hy1) for each hole (hx0, hx1, hy0, hy1).
+ChordalSurface rectangle(int nx, int ny, const std::vector<std::array<int, 4>>& holes = {}) {
+  ChordalSurface s;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) s.vertices.emplace_back(i, j, 0), s.normals.push_back(Vec3::UnitZ());
+  auto v = [&](int i, int j) { return j * (nx + 1) + i; };
+  auto inHole = [&](int i, int j) {
+    return std::any_of(holes.begin(), holes.end(), [&](const auto& h) { return i >= h[0] && i < h[1] && j >= h[2] && j < h[3]; });
+  };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      if (!inHole(i, j)) s.facets.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
+  return withoutUnusedVertices(s);
+}
+
+// A flat disc of radius `rings`: a fan round the centre, then rings of `around` quads.
+ChordalSurface disc(int rings, int around) {
+  ChordalSurface s;
+  s.vertices.emplace_back(0, 0, 0);
+  for (int k = 1; k <= rings; ++k)
+    for (int j = 0; j < around; ++j) s.vertices.emplace_back(k * std::cos(2 * M_PI * j / around), k * std::sin(2 * M_PI * j / around), 0);
+  s.normals.assign(s.vertices.size(), Vec3::UnitZ());
+  auto v = [&](int k, int j) { return 1 + (k - 1) * around + j % around; };
+  for (int j = 0; j < around; ++j) s.facets.push_back({0, v(1, j), v(1, j + 1), -1});
+  for (int k = 1; k < rings; ++k)
+    for (int j = 0; j < around; ++j) s.facets.push_back({v(k, j), v(k + 1, j), v(k + 1, j + 1), v(k, j + 1)});
+  return s;
+}
+
+double signedArea(const SurfaceMap& map, const std::array<int, 3>& t) {
+  const Eigen::Vector2d a = map.uv[t[1]] - map.uv[t[0]], b = map.uv[t[2]] - map.uv[t[0]];
+  return 0.5 * (a.x() * b.y() - a.y() * b.x());
+}
+
+long euler(const BlockGrid& g) {
+  std::set<std::uint64_t> edges;
+  for (const auto& q : g.quads)
+    for (int k = 0; k < 4; ++k) edges.insert(edgeKey(q[k], q[(k + 1) % 4]));
+  return static_cast<long>(g.nodes.size()) - static_cast<long>(edges.size()) + static_cast<long>(g.quads.size());
+}
+
+struct Quality {
+  double worst = 1, mean = 0, area = 0;
+};
+
+// Quad scaled Jacobians (each quad counter-clockwise seen from +z: a flipped quad counts negative)
+// and the total area.
+Quality quality(const BlockGrid& g) {
+  Quality q;
+  for (const auto& quad : g.quads) {
+    const std::array<Vec3, 4> p{g.nodes[quad[0]], g.nodes[quad[1]], g.nodes[quad[2]], g.nodes[quad[3]]};
+    const Vec3 n = (p[2] - p[0]).cross(p[3] - p[1]);
+    const double sj = (n.z() > 0 ? 1 : -1) * quadScaledJacobian(p);
+    q.worst = std::min(q.worst, sj), q.mean += sj / g.quads.size(), q.area += 0.5 * n.norm();
+  }
+  return q;
+}
+
+const SizeField unit = [](const Vec3&) { return 1.0; };
+
+}  // namespace
+
+TEST(SurfaceMap, RectangleWithAHoleMapsOntoTheSquareWithoutFolds) {
+  const SurfaceMap map = mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), MapBoundary::Square, 1.0);
+  ASSERT_FALSE(map.empty());
+  EXPECT_EQ(map.holes.size(), 1u);
+  EXPECT_EQ(map.points.size(), 21u * 11u - 9u + 1u);  // the hole's centre added
+  for (const auto& t : map.triangles) EXPECT_GT(signedArea(map, t), 0);
+  std::set<std::pair<double, double>> corners;
+  for (int c : map.corners) corners.insert({map.points[map.rim[c]].x(), map.points[map.rim[c]].y()});
+  EXPECT_EQ(corners, (std::set<std::pair<double, double>>{{0, 0}, {20, 0}, {0, 10}, {20, 10}}));
+  for (const auto& uv : map.uv) EXPECT_LE(uv.cwiseAbs().maxCoeff(), 1 + 1e-12);
+}
+
+TEST(SurfaceMap, RefusesWhatIsNotASphereWithHoles) {
+  ChordalSurface two = rectangle(4, 4);
+  const ChordalSurface other = rectangle(4, 4);
+  const int offset = static_cast<int>(two.vertices.size());
+  for (const Vec3& p : other.vertices) two.vertices.push_back(p + Vec3(10, 0, 0)), two.normals.push_back(Vec3::UnitZ());
+  for (auto f : other.facets) {
+    for (int& v : f) v += offset;
+    two.facets.push_back(f);
+  }
+  EXPECT_TRUE(mapToPlane(two, MapBoundary::Square, 1.0).empty());  // not connected
+}
+
+TEST(BlockGrids, GridWithAPocketRoundTheHole) {
+  const SurfaceMap map = mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), MapBoundary::Square, 1.0);
+  const BlockGrid g = holedGrid(map, unit);
+  ASSERT_FALSE(g.empty());
+  EXPECT_EQ(g.blocks, 5u);
+  EXPECT_EQ(euler(g), 0);  // an annulus, like the surface
+  const Quality q = quality(g);
+  EXPECT_GT(q.worst, 0.6);
+  EXPECT_GT(q.mean, 0.95);
+  EXPECT_NEAR(q.area, 200 - 16, 1e-9);
+  EXPECT_NEAR(static_cast<double>(g.quads.size()), 184, 30);  // unit quads
+}
+
+TEST(BlockGrids, OGridOfADisc) {
+  const ChordalSurface s = disc(10, 64);
+  const BlockGrid g = oGrid(mapToPlane(s, MapBoundary::Circle, 1.0), unit);
+  ASSERT_FALSE(g.empty());
+  EXPECT_EQ(g.blocks, 5u);
+  EXPECT_EQ(euler(g), 1);
+  const Quality q = quality(g);
+  EXPECT_GT(q.worst, 0.6);
+  EXPECT_GT(q.mean, 0.9);
+  const double polygon = 0.5 * 64 * 100 * std::sin(2 * M_PI / 64);  // the disc's area
+  EXPECT_NEAR(q.area, polygon, 0.02 * polygon);
+  for (const Vec3& p : g.nodes) EXPECT_LE(p.norm(), 10 + 1e-9);
+  EXPECT_TRUE(oGrid(mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), MapBoundary::Circle, 1.0), unit).empty());  // has a hole
+}
+
+TEST(BlockGrids, PocketsThatMeetAreRefused) {
+  // two holes one cell apart: their pockets (one cell beyond each hole) overlap
+  const ChordalSurface s = rectangle(20, 10, {{6, 9, 3, 7}, {10, 13, 3, 7}});
+  const SurfaceMap map = mapToPlane(s, MapBoundary::Square, 1.0);
+  ASSERT_EQ(map.holes.size(), 2u);
+  EXPECT_TRUE(holedGrid(map, unit).empty());
+}
