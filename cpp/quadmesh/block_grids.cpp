@@ -175,7 +175,7 @@ bool holeCorners(const SurfaceMap& map, std::vector<int>& hole, std::array<int, 
 }  // namespace
 
 BlockGrid oGrid(const SurfaceMap& map, const SizeField& size) {
-  if (map.empty() || !map.holes.empty()) return {};
+  if (map.empty() || map.boundary != MapBoundary::Circle || !map.holes.empty()) return {};
   const MapLocator locate(map);
   const std::vector<double> quads = quadsAlongLoop(map, map.rim, size);
   auto side = [&](int k) { return (k == 3 ? quads.back() : quads[map.corners[k + 1]]) - quads[map.corners[k]]; };
@@ -189,7 +189,7 @@ BlockGrid oGrid(const SurfaceMap& map, const SizeField& size) {
 }
 
 BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
-  if (map.empty()) return {};
+  if (map.empty() || map.boundary != MapBoundary::Square) return {};
   const MapLocator locate(map);
   const std::vector<double> quads = quadsAlongLoop(map, map.rim, size);
   auto side = [&](int k) { return (k == 3 ? quads.back() : quads[map.corners[k + 1]]) - quads[map.corners[k]]; };

@@ -20,12 +20,12 @@ struct BlockGrid {
 };
 
 // O-grid of a disc mapped onto the circle: a core of n0 x n1 quads and four blocks around it, each
-// from a side of the core out to a quarter of the rim. Empty if the map has holes.
+// from a side of the core out to a quarter of the rim. Empty for any other map.
 BlockGrid oGrid(const SurfaceMap& map, const SizeField& size);
 
 // Grid of a surface mapped onto the square: n0 x n1 quads, and around each hole a pocket of four
-// blocks, from the sides of a box of grid cells in to the quarters of the hole. Empty if two
-// pockets meet or one reaches the rim.
+// blocks, from the sides of a box of grid cells in to the quarters of the hole. Empty for any other
+// map, or if two pockets meet or one reaches the rim.
 BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size);
 
 }  // namespace hexlayer

@@ -380,20 +380,17 @@ QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOp
   return scoreQuads(q, chordal, chordalEuler, o.acceptableQuad);
 }
 
-// The structured block grids of the chordal surface (block_grids.hpp): an O-grid if it is a disc,
-// a grid with a pocket around each hole if it has four corners; none if it is neither.
-std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+// The structured block grid of the chordal surface (block_grids.hpp): a grid with a pocket round
+// each hole if its rim has four sharp corners, else an O-grid if it is a disc; no quads if neither.
+QuadMesh blockGridQuads(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   const SizeField size = [&](const Vec3& p) { return o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, p); };
-  std::vector<QuadMesh> tries;
-  auto add = [&](BlockGrid grid, QuadLayout layout) {
-    if (grid.empty()) return;
-    QuadMesh q;
-    q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks, q.layout = layout;
-    tries.push_back(std::move(q));
-  };
-  add(oGrid(mapToPlane(chordal.surface(), MapBoundary::Circle, o.size), size), QuadLayout::OGrid);
-  add(holedGrid(mapToPlane(chordal.surface(), MapBoundary::Square, o.size), size), QuadLayout::Grid);
-  return tries;
+  const SurfaceMap map = mapToPlane(chordal.surface(), o.size);
+  const bool square = map.boundary == MapBoundary::Square;
+  BlockGrid grid = square ? holedGrid(map, size) : oGrid(map, size);
+  QuadMesh q;
+  q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks;
+  q.layout = square ? QuadLayout::Grid : QuadLayout::OGrid;
+  return q;
 }
 
 }  // namespace
@@ -416,10 +413,10 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   const long chordalEuler = eulerCharacteristic(chordal.surface());
   // Structured block grids first: where one has square enough quads, Gmsh is not needed. A grid
   // with an inverted quad (its layout does not fit the surface) is never kept.
-  for (QuadMesh& q : blockGridQuads(chordal, o)) {
+  if (QuadMesh q = blockGridQuads(chordal, o); !q.quads.empty()) {
     q.nodes = onChordalSurface(q, chordal).onSurface;
     const QuadScore score = finishTry(q, chordal, o, chordalEuler);
-    if (!score.topologyChanged && score.inverted == 0 && score < bestScore) best = std::move(q), bestScore = score;
+    if (!score.topologyChanged && score.inverted == 0) best = std::move(q), bestScore = score;
   }
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;

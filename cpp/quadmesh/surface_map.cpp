@@ -73,24 +73,26 @@ std::vector<double> rimTurning(const std::vector<int>& loop, const std::vector<d
 }
 
 // The rim's four corners, ascending along it: its four sharpest corners (turning more than
-// kSharpCorner, the most within `window`) if it has four or more, else the diagonal extremes of
-// its principal axes (a rounded rectangle's arcs, a circle's 45° points).
-std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<int>& loop, const std::vector<double>& length, double window) {
+// kSharpCorner, the most within `window`) if it has four or more (then `sharp`), else the diagonal
+// extremes of its principal axes (a rounded rectangle's arcs, a circle's 45° points).
+std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<int>& loop, const std::vector<double>& length, double window,
+                              bool& sharp) {
   const std::vector<double> turn = rimTurning(loop, length, chordal.vertices, chordal.normals, window);
   const int n = static_cast<int>(loop.size());
-  std::vector<int> sharp;
+  std::vector<int> peaks;
   for (int i = 0; i < n; ++i) {
     bool peak = turn[i] > kSharpCorner;
     for (int j = i - 1; peak && j > i - n && std::fmod(length[i] - length[(j % n + n) % n] + length.back(), length.back()) < window; --j)
       peak = turn[(j % n + n) % n] < turn[i];
     for (int j = i + 1; peak && j < i + n && std::fmod(length[j % n] - length[i] + length.back(), length.back()) < window; ++j)
       peak = turn[j % n] <= turn[i];
-    if (peak) sharp.push_back(i);
+    if (peak) peaks.push_back(i);
   }
   std::array<int, 4> corners{};
-  if (sharp.size() >= 4) {
-    std::stable_sort(sharp.begin(), sharp.end(), [&](int a, int b) { return turn[a] > turn[b]; });
-    std::copy(sharp.begin(), sharp.begin() + 4, corners.begin());
+  sharp = peaks.size() >= 4;
+  if (sharp) {
+    std::stable_sort(peaks.begin(), peaks.end(), [&](int a, int b) { return turn[a] > turn[b]; });
+    std::copy(peaks.begin(), peaks.begin() + 4, corners.begin());
   } else {
     std::vector<Vec3> points;
     for (int p : loop) points.push_back(chordal.vertices[p]);
@@ -177,7 +179,7 @@ std::array<int, 4> diagonalExtremes(const std::vector<Vec3>& loop, const Vec3& c
   return extremes;
 }
 
-SurfaceMap mapToPlane(const ChordalSurface& chordal, MapBoundary boundary, double window) {
+SurfaceMap mapToPlane(const ChordalSurface& chordal, double window) {
   SurfaceMap map;
   map.points = chordal.vertices;
   for (const auto& f : chordal.facets) {
@@ -199,7 +201,9 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, MapBoundary boundary, doubl
   }
   std::vector<int> outer = loops[0];
   if (outer.size() < 8) return {};
-  const std::array<int, 4> at = rimCorners(chordal, outer, arcLength(outer, map.points), window);
+  bool sharp = false;
+  const std::array<int, 4> at = rimCorners(chordal, outer, arcLength(outer, map.points), window, sharp);
+  map.boundary = sharp ? MapBoundary::Square : MapBoundary::Circle;
   if (std::adjacent_find(at.begin(), at.end()) != at.end()) return {};
   std::rotate(outer.begin(), outer.begin() + at[0], outer.end());  // the rim starts at a corner
   map.rim = outer;
@@ -211,7 +215,7 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, MapBoundary boundary, doubl
     const std::size_t end = k == 3 ? outer.size() : map.corners[k + 1];
     const double from = length[map.corners[k]], to = length[end];
     for (std::size_t i = map.corners[k]; i < end; ++i)
-      map.uv[outer[i]] = boundaryPoint(boundary, k, (length[i] - from) / (to - from)), onRim[outer[i]] = 1;
+      map.uv[outer[i]] = boundaryPoint(map.boundary, k, (length[i] - from) / (to - from)), onRim[outer[i]] = 1;
   }
   if (!solveInside(meanValueWeights(map.triangles, map.points), onRim, map.uv)) return {};
   return map;
