@@ -380,17 +380,22 @@ QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOp
   return scoreQuads(q, chordal, chordalEuler, o.acceptableQuad);
 }
 
-// The structured block grid of the chordal surface (block_grids.hpp): a grid with a pocket round
-// each hole if its rim has four sharp corners, else an O-grid if it is a disc; no quads if neither.
-QuadMesh blockGridQuads(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+// The structured block grids of the chordal surface (block_grids.hpp): a grid with a pocket round
+// each hole, and if its rim has no four sharp corners, an O-grid too (if it is a disc).
+std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   const SizeField size = [&](const Vec3& p) { return o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, p); };
-  const SurfaceMap map = mapToPlane(chordal.surface(), o.size);
-  const bool square = map.boundary == MapBoundary::Square;
-  BlockGrid grid = square ? holedGrid(map, size) : oGrid(map, size);
-  QuadMesh q;
-  q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks;
-  q.layout = square ? QuadLayout::Grid : QuadLayout::OGrid;
-  return q;
+  std::vector<QuadMesh> tries;
+  auto add = [&](BlockGrid grid, QuadLayout layout) {
+    if (grid.empty()) return;
+    QuadMesh q;
+    q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks, q.layout = layout;
+    tries.push_back(std::move(q));
+  };
+  const SurfaceMap square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
+  add(holedGrid(square, size), QuadLayout::Grid);
+  if (!square.empty() && !square.sharpCorners && square.holes.empty())
+    add(oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
+  return tries;
 }
 
 }  // namespace
@@ -413,10 +418,10 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   const long chordalEuler = eulerCharacteristic(chordal.surface());
   // Structured block grids first: where one has square enough quads, Gmsh is not needed. A grid
   // with an inverted quad (its layout does not fit the surface) is never kept.
-  if (QuadMesh q = blockGridQuads(chordal, o); !q.quads.empty()) {
+  for (QuadMesh& q : blockGridQuads(chordal, o)) {
     q.nodes = onChordalSurface(q, chordal).onSurface;
     const QuadScore score = finishTry(q, chordal, o, chordalEuler);
-    if (!score.topologyChanged && score.inverted == 0) best = std::move(q), bestScore = score;
+    if (!score.topologyChanged && score.inverted == 0 && score < bestScore) best = std::move(q), bestScore = score;
   }
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;

@@ -179,7 +179,7 @@ std::array<int, 4> diagonalExtremes(const std::vector<Vec3>& loop, const Vec3& c
   return extremes;
 }
 
-SurfaceMap mapToPlane(const ChordalSurface& chordal, double window) {
+SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary boundary) {
   SurfaceMap map;
   map.points = chordal.vertices;
   for (const auto& f : chordal.facets) {
@@ -201,9 +201,8 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, double window) {
   }
   std::vector<int> outer = loops[0];
   if (outer.size() < 8) return {};
-  bool sharp = false;
-  const std::array<int, 4> at = rimCorners(chordal, outer, arcLength(outer, map.points), window, sharp);
-  map.boundary = sharp ? MapBoundary::Square : MapBoundary::Circle;
+  const std::array<int, 4> at = rimCorners(chordal, outer, arcLength(outer, map.points), window, map.sharpCorners);
+  map.boundary = boundary;
   if (std::adjacent_find(at.begin(), at.end()) != at.end()) return {};
   std::rotate(outer.begin(), outer.begin() + at[0], outer.end());  // the rim starts at a corner
   map.rim = outer;

@@ -12,9 +12,8 @@
 
 namespace hexlayer {
 
-// What the outer rim is mapped onto: the square [-1, 1]^2 if it has four sharp corners, else the
-// unit circle. Its four corners go to 45, 135, 225 and 315 degrees (the square's corners), the rim
-// between them by arc length.
+// What the outer rim is mapped onto: the square [-1, 1]^2 or the unit circle. Its four corners go
+// to 45, 135, 225 and 315 degrees (the square's corners), the rim between them by arc length.
 enum class MapBoundary { Circle, Square };
 
 // The chordal surface with each hole filled by a fan of triangles around one added point (its
@@ -29,15 +28,15 @@ struct SurfaceMap {
   std::array<int, 4> corners{};               // positions in rim of the four corners, ascending
   std::vector<std::vector<int>> holes;        // the other rim loops
   MapBoundary boundary = MapBoundary::Circle;
+  bool sharpCorners = false;                  // the four corners are the rim's sharpest, all sharp
   bool empty() const { return triangles.empty(); }
 };
 
 // Empty unless the chordal surface is a sphere with holes (connected, V - E + F = 2 - loops, rims
 // that do not touch). The four corners are the rim's four sharpest (turning more than 50 degrees
-// in the surface), mapped onto the square, or if it has fewer, its points farthest out along the
-// diagonals of its principal axes, mapped onto the circle; the rim's turning is measured over
-// `window` (about a quad) on either side of a point.
-SurfaceMap mapToPlane(const ChordalSurface& chordal, double window);
+// in the surface), or if it has fewer, its points farthest out along the diagonals of its
+// principal axes; the rim's turning is measured over `window` (about a quad) on either side.
+SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary boundary);
 
 // The four points of a loop farthest out along the diagonals (+,+), (-,+), (-,-), (+,-) of the axes
 // e1, e2 around `centre`, as positions in the loop.

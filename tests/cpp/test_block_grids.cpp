@@ -94,9 +94,9 @@ const SizeField unit = [](const Vec3&) { return 1.0; };
 }  // namespace
 
 TEST(SurfaceMap, RectangleWithAHoleMapsOntoTheSquareWithoutFolds) {
-  const SurfaceMap map = mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0);
+  const SurfaceMap map = mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0, MapBoundary::Square);
   ASSERT_FALSE(map.empty());
-  EXPECT_EQ(map.boundary, MapBoundary::Square);  // four sharp corners
+  EXPECT_TRUE(map.sharpCorners);
   EXPECT_EQ(map.holes.size(), 1u);
   EXPECT_EQ(map.points.size(), 21u * 11u - 9u + 1u);  // the hole's centre added
   for (const auto& t : map.triangles) EXPECT_GT(signedArea(map, t), 0);
@@ -115,11 +115,11 @@ TEST(SurfaceMap, RefusesWhatIsNotASphereWithHoles) {
     for (int& v : f) v += offset;
     two.facets.push_back(f);
   }
-  EXPECT_TRUE(mapToPlane(two, 1.0).empty());  // not connected
+  EXPECT_TRUE(mapToPlane(two, 1.0, MapBoundary::Square).empty());  // not connected
 }
 
 TEST(BlockGrids, GridWithAPocketRoundTheHole) {
-  const SurfaceMap map = mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0);
+  const SurfaceMap map = mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0, MapBoundary::Square);
   const BlockGrid g = holedGrid(map, unit);
   ASSERT_FALSE(g.empty());
   EXPECT_EQ(g.blocks, 5u);
@@ -132,8 +132,8 @@ TEST(BlockGrids, GridWithAPocketRoundTheHole) {
 }
 
 TEST(BlockGrids, OGridOfADisc) {
-  const SurfaceMap map = mapToPlane(disc(10, 64), 1.0);
-  EXPECT_EQ(map.boundary, MapBoundary::Circle);  // no corner
+  const SurfaceMap map = mapToPlane(disc(10, 64), 1.0, MapBoundary::Circle);
+  EXPECT_FALSE(map.sharpCorners);
   const BlockGrid g = oGrid(map, unit);
   ASSERT_FALSE(g.empty());
   EXPECT_EQ(g.blocks, 5u);
@@ -144,13 +144,13 @@ TEST(BlockGrids, OGridOfADisc) {
   const double polygon = 0.5 * 64 * 100 * std::sin(2 * M_PI / 64);  // the disc's area
   EXPECT_NEAR(q.area, polygon, 0.02 * polygon);
   for (const Vec3& p : g.nodes) EXPECT_LE(p.norm(), 10 + 1e-9);
-  EXPECT_TRUE(oGrid(mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0), unit).empty());  // has a hole
+  EXPECT_TRUE(oGrid(mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0, MapBoundary::Circle), unit).empty());  // has a hole
 }
 
 TEST(BlockGrids, PocketsThatMeetAreRefused) {
   // two holes one cell apart: their pockets (one cell beyond each hole) overlap
   const ChordalSurface s = rectangle(20, 10, {{6, 9, 3, 7}, {10, 13, 3, 7}});
-  const SurfaceMap map = mapToPlane(s, 1.0);
+  const SurfaceMap map = mapToPlane(s, 1.0, MapBoundary::Square);
   ASSERT_EQ(map.holes.size(), 2u);
   EXPECT_TRUE(holedGrid(map, unit).empty());
 }
