@@ -114,8 +114,11 @@ void addRing(BlockGrid& grid, const MapLocator& locate, const GridLines& lines, 
 // The grid's nodes at their points and its cells as quads, but for the cells in `skip`.
 void addCells(BlockGrid& grid, const MapLocator& locate, const GridLines& lines, const std::vector<char>& skip) {
   const int n0 = static_cast<int>(lines.x.size()) - 1, n1 = static_cast<int>(lines.y.size()) - 1;
+  const std::size_t first = grid.nodes.size();
+  grid.nodes.resize(first + (n0 + 1) * (n1 + 1));
+  #pragma omp parallel for schedule(static)
   for (int i = 0; i <= n0; ++i)
-    for (int k = 0; k <= n1; ++k) grid.nodes.push_back(locate(lines.uv(i, k)));
+    for (int k = 0; k <= n1; ++k) grid.nodes[first + lines.node(i, k)] = locate(lines.uv(i, k));
   for (int i = 0; i < n0; ++i)
     for (int k = 0; k < n1; ++k)
       if (!skip[i * n1 + k]) grid.quads.push_back({lines.node(i, k), lines.node(i + 1, k), lines.node(i + 1, k + 1), lines.node(i, k + 1)});

@@ -313,9 +313,14 @@ struct SurfaceCheck {
 
 SurfaceCheck onChordalSurface(const QuadMesh& q, const ChordalLocator& chordal) {
   SurfaceCheck c;
-  for (const Vec3& p : q.nodes) {
-    c.onSurface.push_back(p.allFinite() ? chordal.locate(p).point : p);
-    const double d = p.allFinite() ? (c.onSurface.back() - p).norm() : std::numeric_limits<double>::infinity();
+  c.onSurface = q.nodes;
+  const long n = static_cast<long>(q.nodes.size());
+  #pragma omp parallel for schedule(dynamic, 256)
+  for (long i = 0; i < n; ++i)
+    if (q.nodes[i].allFinite()) c.onSurface[i] = chordal.locate(q.nodes[i]).point;
+  for (long i = 0; i < n; ++i) {
+    const Vec3& p = q.nodes[i];
+    const double d = p.allFinite() ? (c.onSurface[i] - p).norm() : std::numeric_limits<double>::infinity();
     if (d > c.farthest) c.farthest = d, c.farthestNode = p;
   }
   return c;
@@ -349,12 +354,17 @@ struct QuadScore {
 // chordal normal, so a quad folded over against its neighbour gives hexes with flipped faces.
 std::size_t foldedEdges(const QuadMesh& q, const ChordalLocator& chordal) {
   std::vector<char> facesNormal(q.quads.size());
-  std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> edgeUses;  // edge -> (quad, direction)
-  for (size_t e = 0; e < q.quads.size(); ++e) {
+  const long quads = static_cast<long>(q.quads.size());
+  #pragma omp parallel for schedule(dynamic, 256)
+  for (long e = 0; e < quads; ++e) {
     const auto& quad = q.quads[e];
     const Vec3 centroid = 0.25 * (q.nodes[quad[0]] + q.nodes[quad[1]] + q.nodes[quad[2]] + q.nodes[quad[3]]);
     const Vec3 n = (q.nodes[quad[2]] - q.nodes[quad[0]]).cross(q.nodes[quad[3]] - q.nodes[quad[1]]);
     facesNormal[e] = n.dot(normalAt(chordal.surface(), chordal.locate(centroid))) >= 0;
+  }
+  std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> edgeUses;  // edge -> (quad, direction)
+  for (long e = 0; e < quads; ++e) {
+    const auto& quad = q.quads[e];
     for (int k = 0; k < 4; ++k) edgeUses[edgeKey(quad[k], quad[(k + 1) % 4])].push_back({static_cast<int>(e), quad[k] < quad[(k + 1) % 4]});
   }
   std::size_t folded = 0;

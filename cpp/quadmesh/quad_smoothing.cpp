@@ -317,6 +317,7 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations) 
   gaussSeidel(q, nq, iterations, [&](int node) {
     if (rim[node][0] != -1) return false;
     const double before = worstAround(q, nq, node, q.nodes[node]);
+    if (before >= kGoodQuad) return false;  // its quads are square already (a structured grid's)
     const Vec3 target = chordal.locate(centroidTarget(q, nq, node)).point;
     if (!(worstAround(q, nq, node, target) >= std::min(before, 0.999)) || target == q.nodes[node]) return false;
     q.nodes[node] = target;

@@ -117,49 +117,39 @@ Eigen::Vector2d boundaryPoint(MapBoundary boundary, int k, double f) {
   return (1 - f) * corner[k] + f * corner[(k + 1) % 4];
 }
 
-// Floater's mean value weight of every edge (i, j) seen from i: (tan(α/2) + tan(β/2)) / |x_j - x_i|
-// with α, β the angles at i of the two triangles on the edge.
-std::vector<std::unordered_map<int, double>> meanValueWeights(const std::vector<std::array<int, 3>>& triangles, const std::vector<Vec3>& x) {
-  std::vector<std::unordered_map<int, double>> w(x.size());
+// Floater's mean value weights, as the matrix of "every point off the rim is the weighted mean of
+// its neighbours" (row i: sum_j w_ij u_i - sum_j w_ij u_j = 0, w_ij = (tan(α/2) + tan(β/2)) / |x_j - x_i|
+// with α, β the angles at i of the two triangles on the edge), and "u_i = its place" on the rim.
+Eigen::SparseMatrix<double> meanValueSystem(const std::vector<std::array<int, 3>>& triangles, const std::vector<Vec3>& x,
+                                            const std::vector<char>& onRim) {
+  std::vector<Eigen::Triplet<double>> entries;  // Eigen sums the duplicates
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k) {
       const int i = t[k], j = t[(k + 1) % 3], l = t[(k + 2) % 3];
+      if (onRim[i]) continue;
       const Vec3 a = x[j] - x[i], b = x[l] - x[i];
       const double la = std::max(a.norm(), 1e-300), lb = std::max(b.norm(), 1e-300);
       const double halfTan = std::tan(0.5 * std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0)));
-      w[i][j] += halfTan / la, w[i][l] += halfTan / lb;
+      entries.emplace_back(i, j, -halfTan / la), entries.emplace_back(i, l, -halfTan / lb);
+      entries.emplace_back(i, i, halfTan / la + halfTan / lb);
     }
-  return w;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (onRim[i]) entries.emplace_back(i, i, 1.0);
+  Eigen::SparseMatrix<double> a(x.size(), x.size());
+  a.setFromTriplets(entries.begin(), entries.end());
+  return a;
 }
 
-// Every point off the rim at the weighted mean of its neighbours, the rim fixed: one sparse solve.
+// The points off the rim placed by the mean value weights, the rim's kept: one sparse solve.
 // False if the solve fails.
-bool solveInside(const std::vector<std::unordered_map<int, double>>& w, const std::vector<char>& onRim, std::vector<Eigen::Vector2d>& uv) {
-  std::vector<int> unknown(uv.size(), -1);
-  int n = 0;
-  for (size_t i = 0; i < uv.size(); ++i)
-    if (!onRim[i]) unknown[i] = n++;
-  if (n == 0) return true;
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(n, 2);
-  for (size_t i = 0; i < uv.size(); ++i) {
-    if (onRim[i]) continue;
-    double sum = 0;
-    for (const auto& [j, wij] : w[i]) {
-      sum += wij;
-      if (onRim[j]) rhs.row(unknown[i]) += wij * uv[j].transpose();
-      else entries.emplace_back(unknown[i], unknown[j], -wij);
-    }
-    entries.emplace_back(unknown[i], unknown[i], sum);
-  }
-  Eigen::SparseMatrix<double> a(n, n);
-  a.setFromTriplets(entries.begin(), entries.end());
+bool solveInside(const Eigen::SparseMatrix<double>& a, std::vector<Eigen::Vector2d>& uv) {
+  Eigen::MatrixX2d rhs(uv.size(), 2);
+  for (std::size_t i = 0; i < uv.size(); ++i) rhs.row(i) = uv[i].transpose();  // zero off the rim
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(a);
   if (lu.info() != Eigen::Success) return false;
   const Eigen::MatrixX2d solution = lu.solve(rhs);
   if (lu.info() != Eigen::Success || !solution.allFinite()) return false;
-  for (size_t i = 0; i < uv.size(); ++i)
-    if (!onRim[i]) uv[i] = solution.row(unknown[i]).transpose();
+  for (std::size_t i = 0; i < uv.size(); ++i) uv[i] = solution.row(i).transpose();
   return true;
 }
 
@@ -216,7 +206,7 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary 
     for (std::size_t i = map.corners[k]; i < end; ++i)
       map.uv[outer[i]] = boundaryPoint(map.boundary, k, (length[i] - from) / (to - from)), onRim[outer[i]] = 1;
   }
-  if (!solveInside(meanValueWeights(map.triangles, map.points), onRim, map.uv)) return {};
+  if (!solveInside(meanValueSystem(map.triangles, map.points, onRim), map.uv)) return {};
   return map;
 }
 
