@@ -174,12 +174,18 @@ ChordalSurface buildChordalSurface(const TetMesh& m) {
   return s;
 }
 
-std::map<std::pair<int, int>, int> facetEdgeUses(const ChordalSurface& s) {
-  std::map<std::pair<int, int>, int> uses;
+std::vector<std::pair<std::pair<int, int>, int>> facetEdgeUses(const ChordalSurface& s) {
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(4 * s.facets.size());
   for (const auto& f : s.facets) {
     const int n = f[3] < 0 ? 3 : 4;
-    for (int k = 0; k < n; ++k) ++uses[std::minmax(f[k], f[(k + 1) % n])];
+    for (int k = 0; k < n; ++k) edges.push_back(std::minmax(f[k], f[(k + 1) % n]));
   }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::pair<std::pair<int, int>, int>> uses;
+  for (const auto& e : edges)
+    if (uses.empty() || uses.back().first != e) uses.push_back({e, 1});
+    else ++uses.back().second;
   return uses;
 }
 

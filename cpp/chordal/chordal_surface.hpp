@@ -28,8 +28,9 @@ struct ChordalSurface {
 // Throws geometryError if the surface is non-manifold (an edge in more than two facets).
 ChordalSurface buildChordalSurface(const TetMesh& tets);
 
-// For every facet edge (lower vertex id first), how many facets use it: 1 on the rim, 2 inside.
-std::map<std::pair<int, int>, int> facetEdgeUses(const ChordalSurface& chordal);
+// For every facet edge (lower vertex id first), how many facets use it: 1 on the rim, 2 inside;
+// sorted by edge.
+std::vector<std::pair<std::pair<int, int>, int>> facetEdgeUses(const ChordalSurface& chordal);
 
 // Unit average normal n̄ at every vertex (Eq. 2), zero where the facet normals around it cancel.
 std::vector<Vec3> vertexNormals(const ChordalSurface& chordal);

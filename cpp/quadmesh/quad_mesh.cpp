@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
-#include <unordered_set>
+#include <tuple>
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
@@ -326,12 +326,32 @@ SurfaceCheck onChordalSurface(const QuadMesh& q, const ChordalLocator& chordal) 
   return c;
 }
 
+// Every use of a quad edge: the edge, the quad, and whether the quad runs it from its lower node.
+struct EdgeUse {
+  std::uint64_t edge;
+  int quad;
+  bool fromLower;
+  bool operator<(const EdgeUse& o) const { return std::tie(edge, quad) < std::tie(o.edge, o.quad); }
+};
+
+// The quads' edge uses, sorted by edge (the uses of one edge side by side).
+std::vector<EdgeUse> quadEdgeUses(const QuadMesh& q) {
+  std::vector<EdgeUse> uses;
+  uses.reserve(4 * q.quads.size());
+  for (std::size_t e = 0; e < q.quads.size(); ++e)
+    for (int k = 0; k < 4; ++k) {
+      const int a = q.quads[e][k], b = q.quads[e][(k + 1) % 4];
+      uses.push_back({edgeKey(a, b), static_cast<int>(e), a < b});
+    }
+  std::sort(uses.begin(), uses.end());
+  return uses;
+}
+
 // Euler characteristic V - E + F of the quad mesh: Gmsh's quads too coarse for a small hole close it.
-long eulerCharacteristic(const QuadMesh& q) {
-  std::unordered_set<std::uint64_t> edges;
-  for (const auto& quad : q.quads)
-    for (int k = 0; k < 4; ++k) edges.insert(edgeKey(quad[k], quad[(k + 1) % 4]));
-  return static_cast<long>(q.nodes.size()) - static_cast<long>(edges.size()) + static_cast<long>(q.quads.size());
+long eulerCharacteristic(const QuadMesh& q, const std::vector<EdgeUse>& uses) {
+  long edges = 0;
+  for (std::size_t i = 0; i < uses.size(); ++i) edges += i == 0 || uses[i].edge != uses[i - 1].edge;
+  return static_cast<long>(q.nodes.size()) - edges + static_cast<long>(q.quads.size());
 }
 
 long eulerCharacteristic(const ChordalSurface& s) {
@@ -352,7 +372,7 @@ struct QuadScore {
 
 // Edges between quads the sweep will turn to face opposite ways: it turns every quad to face the
 // chordal normal, so a quad folded over against its neighbour gives hexes with flipped faces.
-std::size_t foldedEdges(const QuadMesh& q, const ChordalLocator& chordal) {
+std::size_t foldedEdges(const QuadMesh& q, const std::vector<EdgeUse>& uses, const ChordalLocator& chordal) {
   std::vector<char> facesNormal(q.quads.size());
   const long quads = static_cast<long>(q.quads.size());
   #pragma omp parallel for schedule(dynamic, 256)
@@ -362,19 +382,18 @@ std::size_t foldedEdges(const QuadMesh& q, const ChordalLocator& chordal) {
     const Vec3 n = (q.nodes[quad[2]] - q.nodes[quad[0]]).cross(q.nodes[quad[3]] - q.nodes[quad[1]]);
     facesNormal[e] = n.dot(normalAt(chordal.surface(), chordal.locate(centroid))) >= 0;
   }
-  std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> edgeUses;  // edge -> (quad, direction)
-  for (long e = 0; e < quads; ++e) {
-    const auto& quad = q.quads[e];
-    for (int k = 0; k < 4; ++k) edgeUses[edgeKey(quad[k], quad[(k + 1) % 4])].push_back({static_cast<int>(e), quad[k] < quad[(k + 1) % 4]});
-  }
   std::size_t folded = 0;
-  for (const auto& [edge, uses] : edgeUses)  // turned, the two quads must run the edge opposite ways
-    if (uses.size() == 2) folded += (uses[0].second != facesNormal[uses[0].first]) == (uses[1].second != facesNormal[uses[1].first]);
+  for (std::size_t i = 0; i + 1 < uses.size(); ++i) {  // an inside edge: turned, its two quads must run it opposite ways
+    const EdgeUse &a = uses[i], &b = uses[i + 1];
+    const bool inside = a.edge == b.edge && (i == 0 || uses[i - 1].edge != a.edge) && (i + 2 == uses.size() || uses[i + 2].edge != a.edge);
+    if (inside) folded += (a.fromLower != facesNormal[a.quad]) == (b.fromLower != facesNormal[b.quad]);
+  }
   return folded;
 }
 
 QuadScore scoreQuads(const QuadMesh& q, const ChordalLocator& chordal, long chordalEuler, double acceptableQuad) {
-  QuadScore s{eulerCharacteristic(q) != chordalEuler, q.holes, foldedEdges(q, chordal), 0, 1, 0};
+  const std::vector<EdgeUse> uses = quadEdgeUses(q);
+  QuadScore s{eulerCharacteristic(q, uses) != chordalEuler, q.holes, foldedEdges(q, uses, chordal), 0, 1, 0};
   for (const auto& quad : q.quads) {
     const double sj = quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]});
     s.worst = std::min(s.worst, sj), s.mean += sj / q.quads.size();
