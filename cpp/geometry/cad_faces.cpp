@@ -2,18 +2,27 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepClass_FaceClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <OSD_ThreadPool.hxx>
+#include <Precision.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace hexlayer {
 namespace {
+
+const double kEps = Precision::Confusion();  // BRepExtrema_DistShapeShape's default precision
 
 gp_Pnt point(const Vec3& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
@@ -36,32 +45,208 @@ std::vector<std::vector<int>> vertexNeighbours(const CadSolid& cad) {
   return neighbours;
 }
 
-}  // namespace
-
-CadFaces::CadFaces(const CadSolid& cad) : neighbours_(vertexNeighbours(cad)) {
-  for (int f = 1; f <= cad.faces.Extent(); ++f) {
-    faces_.push_back(TopoDS::Face(cad.faces(f)));
-    tolerance_.push_back(BRep_Tool::Tolerance(faces_.back()));
-    Bnd_Box box;
-    BRepBndLib::AddOptimal(faces_.back(), box, false, false);
-    box.Enlarge(tolerance_.back());
-    boxes_.push_back(box);
-  }
+// The box BRepExtrema_DistShapeShape gives a sub-shape (BRepBndLib::Add; a vertex: its point and tolerance).
+Bnd_Box extremaBox(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  return box;
 }
 
-double CadFaces::distance(int face, const Vec3& p) const {
-  BRepExtrema_DistShapeShape nearest(BRepBuilderAPI_MakeVertex(point(p)).Vertex(), faces_[face]);
+// The largest tolerance of the face, its edges and its vertices.
+double largestTolerance(const TopoDS_Face& face) {
+  double tolerance = BRep_Tool::Tolerance(face);
+  TopTools_IndexedMapOfShape edges, vertices;
+  TopExp::MapShapes(face, TopAbs_EDGE, edges);
+  TopExp::MapShapes(face, TopAbs_VERTEX, vertices);
+  for (int e = 1; e <= edges.Extent(); ++e) tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Edge(edges(e))));
+  for (int v = 1; v <= vertices.Extent(); ++v) tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(vertices(v))));
+  return tolerance;
+}
+
+// The face's boundary in its parameter plane; a foot point within max(1e-5 x the part's diagonal,
+// 1000 x its tolerances) of it, in 3D or in (u, v), is classified exactly.
+std::unique_ptr<UvBoundary> uvBoundary(const TopoDS_Face& face, double diagonal) {
+  const double tolerance = largestTolerance(face), margin = std::max(1e-5 * diagonal, 1e3 * tolerance);
+  const BRepAdaptor_Surface surface(face, false);
+  return std::make_unique<UvBoundary>(face, std::max(surface.UResolution(margin), 1e3 * tolerance),
+                                      std::max(surface.VResolution(margin), 1e3 * tolerance));
+}
+
+// Distance from p to the trimmed face as BRepExtrema_DistShapeShape gives it, built for this query.
+double exactDistance(const TopoDS_Face& face, const gp_Pnt& p) {
+  BRepExtrema_DistShapeShape nearest(BRepBuilderAPI_MakeVertex(p).Vertex(), face);
   if (!nearest.IsDone() || nearest.NbSolution() == 0) return std::numeric_limits<double>::infinity();
   return nearest.Value();
 }
 
-bool CadFaces::lies(int face, const Vec3& p) const {
-  return !boxes_[face].IsOut(point(p)) && distance(face, p) < tolerance_[face];
+}  // namespace
+
+// A face with its boxes, vertices, edges (indices into the solid's), parameter bounds and UvBoundary.
+CadFaces::Face CadFaces::makeFace(const CadSolid& cad, int index) {
+  Face f;
+  f.face = TopoDS::Face(cad.faces(index + 1));
+  f.tolerance = BRep_Tool::Tolerance(f.face);
+  BRepBndLib::AddOptimal(f.face, f.box, false, false);
+  f.box.Enlarge(f.tolerance);
+  f.extremaBox = extremaBox(f.face);
+  TopTools_IndexedMapOfShape vertices, edges;
+  TopExp::MapShapes(f.face, TopAbs_VERTEX, vertices);
+  TopExp::MapShapes(f.face, TopAbs_EDGE, edges);
+  for (int v = 1; v <= vertices.Extent(); ++v) f.vertices.push_back(BRep_Tool::Pnt(TopoDS::Vertex(vertices(v))));
+  for (int e = 1; e <= edges.Extent(); ++e) f.edges.push_back(cad.edges.FindIndex(edges(e)) - 1);
+  BRepTools::UVBounds(f.face, f.uvBounds[0], f.uvBounds[1], f.uvBounds[2], f.uvBounds[3]);
+  f.boundary = uvBoundary(f.face, cad.diagonal);
+  return f;
 }
 
-FacesAtPoint CadFaces::facesAt(int face, const Vec3& p) const {
+CadFaces::CadFaces(const CadSolid& cad) : keepsFirstVertex_(OSD_ThreadPool::DefaultPool()->NbThreads() > 1) {
+  for (int e = 1; e <= cad.edges.Extent(); ++e) {
+    const TopoDS_Edge& edge = TopoDS::Edge(cad.edges(e));
+    edges_.push_back({edge, extremaBox(edge), BRep_Tool::Degenerated(edge)});
+  }
+  std::vector<std::vector<int>> neighbours = vertexNeighbours(cad);
+  for (int i = 0; i < cad.faces.Extent(); ++i) {
+    faces_.push_back(makeFace(cad, i));
+    faces_.back().neighbours = std::move(neighbours[i]);
+  }
+}
+
+CadFaceProbe::CadFaceProbe(const CadFaces& faces)
+    : faces_(faces), surfaces_(faces.count()), curves_(faces.edgeCount()) {}
+
+// The face's surface and its extrema tool, set up as BRepExtrema_ExtPF::Initialize does.
+CadFaceProbe::Surface& CadFaceProbe::surface(int face) {
+  if (surfaces_[face]) return *surfaces_[face];
+  const CadFaces::Face& f = faces_.face(face);
+  surfaces_[face] = std::make_unique<Surface>();
+  Surface& s = *surfaces_[face];
+  s.adaptor.Initialize(f.face, false);
+  if (s.adaptor.GetType() == GeomAbs_OtherSurface) return s;
+  const double tolerance = std::min(BRep_Tool::Tolerance(f.face), Precision::Confusion());
+  const double tolU = std::max(s.adaptor.UResolution(tolerance), Precision::PConfusion());
+  const double tolV = std::max(s.adaptor.VResolution(tolerance), Precision::PConfusion());
+  s.extrema.SetFlag(Extrema_ExtFlag_MINMAX);
+  s.extrema.SetAlgo(Extrema_ExtAlgo_Grad);
+  s.extrema.Initialize(s.adaptor, f.uvBounds[0], f.uvBounds[1], f.uvBounds[2], f.uvBounds[3], tolU, tolV);
+  return s;
+}
+
+// The edge's point-curve extrema tool, built at the edge's first query.
+BRepExtrema_ExtPC& CadFaceProbe::curve(int edge) {
+  if (!curves_[edge]) {
+    curves_[edge] = std::make_unique<BRepExtrema_ExtPC>();
+    curves_[edge]->Initialize(faces_.edge(edge).edge);
+  }
+  return *curves_[edge];
+}
+
+// BRepExtrema's state of a foot point (u, v) on the face: from the face's UvBoundary, or near its
+// boundary from BRepClass_FaceClassifier with the face's tolerance, as BRepExtrema_ExtPF classifies.
+TopAbs_State CadFaceProbe::classify(int face, double u, double v) const {
+  const CadFaces::Face& f = faces_.face(face);
+  switch (f.boundary->side(u, v)) {
+    case UvBoundary::Side::Inside: return TopAbs_IN;
+    case UvBoundary::Side::Outside: return TopAbs_OUT;
+    default: return BRepClass_FaceClassifier(f.face, gp_Pnt2d(u, v), f.tolerance).State();
+  }
+}
+
+// The distance BRepExtrema_DistanceSS finds from p to the inside of the face: the nearest extremum of
+// those on the face (IN or ON), if one within kEps of it is IN; nullopt if none is.
+std::optional<double> CadFaceProbe::faceDistance(int face, const gp_Pnt& p) {
+  Surface& s = surface(face);
+  if (s.adaptor.GetType() == GeomAbs_OtherSurface) return std::nullopt;
+  s.extrema.Perform(p);
+  if (!s.extrema.IsDone()) return std::nullopt;
+  std::vector<std::pair<double, TopAbs_State>> onFace;  // square distance, state
+  for (int i = 1; i <= s.extrema.NbExt(); ++i) {
+    double u = 0, v = 0;
+    s.extrema.Point(i).Parameter(u, v);
+    const TopAbs_State state = classify(face, u, v);
+    if (state == TopAbs_IN || state == TopAbs_ON) onFace.emplace_back(s.extrema.SquareDistance(i), state);
+  }
+  if (onFace.empty()) return std::nullopt;
+  double nearest = onFace[0].first;
+  for (const auto& e : onFace) nearest = std::min(nearest, e.first);
+  nearest = std::sqrt(nearest);
+  for (const auto& [square, state] : onFace)
+    if (std::fabs(nearest - std::sqrt(square)) < kEps && state == TopAbs_IN) return nearest;
+  return std::nullopt;
+}
+
+// The distance BRepExtrema_DistanceSS finds from the vertex to the inside of the edge: the nearest
+// extremum, if one within kEps of it is not at an end of the edge; nullopt if none is.
+std::optional<double> CadFaceProbe::edgeDistance(int edge, const TopoDS_Vertex& vertex) {
+  const CadFaces::Edge& e = faces_.edge(edge);
+  if (e.degenerated) return std::nullopt;
+  BRepExtrema_ExtPC& extrema = curve(edge);
+  extrema.Perform(vertex);
+  const int n = extrema.IsDone() ? extrema.NbExt() : 0;
+  if (n == 0) return std::nullopt;
+  double nearest = extrema.SquareDistance(1);
+  for (int i = 2; i <= n; ++i) nearest = std::min(nearest, extrema.SquareDistance(i));
+  nearest = std::sqrt(nearest);
+  double first = 0, last = 0;
+  BRep_Tool::Range(e.edge, first, last);
+  for (int i = 1; i <= n; ++i) {
+    const double t = extrema.Parameter(i);
+    if (std::fabs(nearest - std::sqrt(extrema.SquareDistance(i))) < kEps && std::fabs(t - first) >= Precision::PConfusion() &&
+        std::fabs(t - last) > Precision::PConfusion())
+      return nearest;
+  }
+  return std::nullopt;
+}
+
+// The distance BRepExtrema_DistShapeShape keeps after comparing p with the face's vertices: the nearest,
+// unless it is within kEps of the first vertex's and the vertex pairs were split over threads.
+double CadFaceProbe::vertexDistance(const CadFaces::Face& f, const gp_Pnt& p) const {
+  const double first = p.Distance(f.vertices[0]);
+  double nearest = first;
+  for (const gp_Pnt& v : f.vertices) nearest = std::min(nearest, p.Distance(v));
+  const bool lowered = nearest < first - kEps || (!faces_.keepsFirstVertex() && std::fabs(nearest - first) < kEps);
+  return lowered ? nearest : first;
+}
+
+// The smallest of `nearest` and the distances from p to the inside of those of the face's edges whose
+// box is not farther than it (BRepExtrema's pruning: a farther edge cannot be nearer).
+std::optional<double> CadFaceProbe::edgesDistance(const CadFaces::Face& f, const gp_Pnt& p, const Bnd_Box& pointBox,
+                                                  std::optional<double> nearest) {
+  TopoDS_Vertex vertex;
+  for (int e : f.edges) {
+    const Bnd_Box& box = faces_.edge(e).box;
+    if (box.IsVoid() || (nearest && pointBox.Distance(box) > *nearest + kEps)) continue;
+    if (vertex.IsNull()) vertex = BRepBuilderAPI_MakeVertex(p).Vertex();
+    if (const std::optional<double> d = edgeDistance(e, vertex)) nearest = std::min(nearest.value_or(*d), *d);
+  }
+  return nearest;
+}
+
+// BRepExtrema_DistShapeShape's distance from p to the trimmed face: vertices, inside, edges.
+double CadFaceProbe::distance(int face, const Vec3& at) {
+  const CadFaces::Face& f = faces_.face(face);
+  const gp_Pnt p = point(at);
+  Bnd_Box pointBox;  // as BRepBndLib boxes a vertex made at p
+  pointBox.Add(p);
+  pointBox.Enlarge(Precision::Confusion());
+  std::optional<double> nearest;
+  if (!f.vertices.empty()) nearest = vertexDistance(f, p);
+  // BRepExtrema tries the face only if its box is near enough: the same answer if the box holds the foot point.
+  if (const std::optional<double> inside = f.extremaBox.IsVoid() ? std::nullopt : faceDistance(face, p)) {
+    if (pointBox.Distance(f.extremaBox) > *inside + kEps) return exactDistance(f.face, p);
+    nearest = std::min(nearest.value_or(*inside), *inside);
+  }
+  return edgesDistance(f, p, pointBox, nearest).value_or(std::numeric_limits<double>::infinity());
+}
+
+// True if p is in the face's box and nearer to the face than its tolerance.
+bool CadFaceProbe::lies(int face, const Vec3& p) {
+  return !faces_.face(face).box.IsOut(point(p)) && distance(face, p) < faces_.tolerance(face);
+}
+
+// The face p was put on and the faces around it that p lies on, with p's distance to the first.
+FacesAtPoint CadFaceProbe::facesAt(int face, const Vec3& p) {
   FacesAtPoint at{{face}, distance(face, p)};
-  for (int g : neighbours_[face])
+  for (int g : faces_.face(face).neighbours)
     if (lies(g, p)) at.faces.push_back(g);
   return at;
 }

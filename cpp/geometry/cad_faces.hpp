@@ -1,13 +1,23 @@
 // Which CAD faces a point lies on, and how far it is from one: what FreeCAD's FemMesh.getNodesByFace
 // asks of a mesh node (distance to the trimmed face below the face's tolerance).
 #pragma once
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepExtrema_ExtPC.hxx>
 #include <Bnd_Box.hxx>
+#include <Extrema_ExtPS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopAbs_State.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <gp_Pnt.hxx>
 
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
+#include "geometry/uv_boundary.hpp"
 
 namespace hexlayer {
 
@@ -18,22 +28,77 @@ struct FacesAtPoint {
   double distance = 0;     // from the point to the face it was put on
 };
 
+// The solid's faces with what the distance queries need of each, computed once and read by every thread.
 class CadFaces {
  public:
+  // A face and what BRepExtrema_DistShapeShape would derive from it at every query.
+  struct Face {
+    TopoDS_Face face;
+    double tolerance = 0;
+    Bnd_Box box;                    // optimal, enlarged by the tolerance: the quick test of `lies`
+    Bnd_Box extremaBox;             // BRepBndLib::Add, as BRepExtrema boxes the face
+    std::vector<gp_Pnt> vertices;   // TopExp::MapShapes order
+    std::vector<int> edges;         // into edges()
+    std::vector<int> neighbours;    // faces sharing a vertex, ascending
+    double uvBounds[4] = {0, 0, 0, 0};  // BRepTools::UVBounds: u1, u2, v1, v2
+    std::unique_ptr<UvBoundary> boundary;
+  };
+  // An edge and the box BRepExtrema gives it.
+  struct Edge {
+    TopoDS_Edge edge;
+    Bnd_Box box;
+    bool degenerated = false;
+  };
+
   explicit CadFaces(const CadSolid& cad);
   int count() const { return static_cast<int>(faces_.size()); }
-  // Distance from p to the trimmed face `face` (OpenCASCADE BRepExtrema: inside, edges and vertices).
-  double distance(int face, const Vec3& p) const;
-  // True if p is closer to `face` than the face's tolerance (BRep_Tool::Tolerance, ~1e-7), FreeCAD's test.
-  bool lies(int face, const Vec3& p) const;
-  double tolerance(int face) const { return tolerance_[face]; }
-  FacesAtPoint facesAt(int face, const Vec3& p) const;
+  double tolerance(int face) const { return faces_[face].tolerance; }
+  const Face& face(int face) const { return faces_[face]; }
+  const Edge& edge(int edge) const { return edges_[edge]; }
+  int edgeCount() const { return static_cast<int>(edges_.size()); }
+  // True if BRepExtrema_DistShapeShape keeps the first vertex's distance when another is within
+  // Precision::Confusion() of it (it splits the vertex pairs over its thread pool's threads).
+  bool keepsFirstVertex() const { return keepsFirstVertex_; }
 
  private:
-  std::vector<TopoDS_Face> faces_;
-  std::vector<Bnd_Box> boxes_;               // each enlarged by its face's tolerance
-  std::vector<double> tolerance_;
-  std::vector<std::vector<int>> neighbours_;  // faces sharing a vertex, ascending
+  static Face makeFace(const CadSolid& cad, int index);
+
+  std::vector<Face> faces_;
+  std::vector<Edge> edges_;
+  bool keepsFirstVertex_ = false;
+};
+
+// One thread's distance queries on CadFaces. The distance is OpenCASCADE's BRepExtrema_DistShapeShape
+// from a vertex at the point to the trimmed face, to the last bit: the smallest of the distances to the
+// face's vertices, to its edges (BRepExtrema_ExtPC) and to the face (Extrema_ExtPS, foot points inside
+// it), with the extrema tools built once per face and edge, and the foot points classified by the face's
+// UvBoundary (BRepClass_FaceClassifier, as BRepExtrema does, near the face's boundary).
+class CadFaceProbe {
+ public:
+  explicit CadFaceProbe(const CadFaces& faces);
+  // Distance from p to the trimmed face `face`: inside, edges and vertices.
+  double distance(int face, const Vec3& p);
+  // True if p is closer to `face` than the face's tolerance (BRep_Tool::Tolerance, ~1e-7), FreeCAD's test.
+  bool lies(int face, const Vec3& p);
+  FacesAtPoint facesAt(int face, const Vec3& p);
+
+ private:
+  struct Surface {
+    BRepAdaptor_Surface adaptor;
+    Extrema_ExtPS extrema;  // points to adaptor
+  };
+  Surface& surface(int face);
+  BRepExtrema_ExtPC& curve(int edge);
+  TopAbs_State classify(int face, double u, double v) const;
+  std::optional<double> faceDistance(int face, const gp_Pnt& p);
+  std::optional<double> edgeDistance(int edge, const TopoDS_Vertex& vertex);
+  double vertexDistance(const CadFaces::Face& f, const gp_Pnt& p) const;
+  std::optional<double> edgesDistance(const CadFaces::Face& f, const gp_Pnt& p, const Bnd_Box& pointBox,
+                                      std::optional<double> nearest);
+
+  const CadFaces& faces_;
+  std::vector<std::unique_ptr<Surface>> surfaces_;        // per face, built at its first query
+  std::vector<std::unique_ptr<BRepExtrema_ExtPC>> curves_;  // per edge, built at its first query
 };
 
 }  // namespace hexlayer

@@ -32,7 +32,7 @@ std::vector<double> hexThickness(const HexMesh& mesh) {
 
 // The CAD face of a boundary hex face: the one its corners all lie on, else the nearest to its centre
 // of those several (or, if none is shared, all) of its corners lie on. Counts the faces that share none.
-int faceOfQuad(const HexMesh& mesh, const CadFaces& faces, const BoundaryFace& quad,
+int faceOfQuad(const HexMesh& mesh, CadFaceProbe& probe, const BoundaryFace& quad,
                const std::vector<std::vector<int>>& facesOf, std::size_t& across) {
   std::vector<int> shared = facesOf[quad.nodes[0]], all = shared;
   std::sort(shared.begin(), shared.end());
@@ -51,7 +51,7 @@ int faceOfQuad(const HexMesh& mesh, const CadFaces& faces, const BoundaryFace& q
   int best = candidates[0];
   double nearest = std::numeric_limits<double>::infinity();
   for (int f : candidates)
-    if (const double d = faces.distance(f, centre); d < nearest) nearest = d, best = f;
+    if (const double d = probe.distance(f, centre); d < nearest) nearest = d, best = f;
   return best;
 }
 
@@ -129,15 +129,19 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
   std::vector<double> distance(mesh.nodes.size(), 0);
   for (int i : boundary)
     if (mesh.nodeFace[i] < 0) throw Error(ExitCode::Internal, "boundary node " + std::to_string(i + 1) + " has no CAD face");
-  // The OpenCASCADE distance queries (BRepExtrema_DistShapeShape, built per query on the shared, read-only
-  // faces) in parallel; the groups are filled afterwards in the nodes' order, the same for any thread count.
+  // The distance queries in parallel, each thread with its own probe (OpenCASCADE's extrema tools on the
+  // shared, read-only faces); the groups are filled afterwards in the nodes' order, the same for any thread count.
   const long nBoundary = static_cast<long>(boundary.size());
-  #pragma omp parallel for schedule(dynamic, 64)
-  for (long k = 0; k < nBoundary; ++k) {
-    const int i = boundary[k];
-    FacesAtPoint at = faces.facesAt(mesh.nodeFace[i], mesh.nodes[i]);
-    facesOf[i] = std::move(at.faces);
-    distance[i] = at.distance;
+  #pragma omp parallel
+  {
+    CadFaceProbe probe(faces);
+    #pragma omp for schedule(dynamic, 64)
+    for (long k = 0; k < nBoundary; ++k) {
+      const int i = boundary[k];
+      FacesAtPoint at = probe.facesAt(mesh.nodeFace[i], mesh.nodes[i]);
+      facesOf[i] = std::move(at.faces);
+      distance[i] = at.distance;
+    }
   }
   std::size_t several = 0;
   for (int i : boundary) {  // ascending: the groups' nodes come out sorted
@@ -148,11 +152,15 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
   const long nQuads = static_cast<long>(quads.size());
   std::vector<int> faceOf(quads.size());
   std::vector<char> isAcross(quads.size(), 0);
-  #pragma omp parallel for schedule(dynamic, 64)
-  for (long k = 0; k < nQuads; ++k) {
-    std::size_t a = 0;
-    faceOf[k] = faceOfQuad(mesh, faces, quads[k], facesOf, a);
-    isAcross[k] = a > 0;
+  #pragma omp parallel
+  {
+    CadFaceProbe probe(faces);
+    #pragma omp for schedule(dynamic, 64)
+    for (long k = 0; k < nQuads; ++k) {
+      std::size_t a = 0;
+      faceOf[k] = faceOfQuad(mesh, probe, quads[k], facesOf, a);
+      isAcross[k] = a > 0;
+    }
   }
   std::size_t across = 0;
   for (std::size_t k = 0; k < quads.size(); ++k) {

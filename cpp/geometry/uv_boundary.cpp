@@ -1,0 +1,111 @@
+#include "geometry/uv_boundary.hpp"
+
+#include <BRep_Tool.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <Geom2d_Curve.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hexlayer {
+namespace {
+
+using Sample = UvBoundary::Sample;
+
+constexpr std::size_t kChunk = 16;   // segments per chunk
+constexpr double kSag = 0.25;        // largest distance of a pcurve from its polyline, in margins
+constexpr int kMaxDepth = 16;        // halvings of a pcurve interval at most
+constexpr int kMinDepth = 2;         // halvings of a curved pcurve interval at least
+
+// Distance from (x, y) to the segment a-b, squared.
+double squaredDistance(double x, double y, const Sample& a, const Sample& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+  const double s = length2 > 0 ? std::clamp(((x - a.x) * dx + (y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
+  const double ex = a.x + s * dx - x, ey = a.y + s * dy - y;
+  return ex * ex + ey * ey;
+}
+
+// Samples a pcurve in the scaled plane (u * scaleU, v * scaleV).
+struct PcurveSampler {
+  const Geom2dAdaptor_Curve& curve;
+  double scaleU, scaleV;
+  bool curved;
+
+  Sample at(double t) const {
+    const gp_Pnt2d p = curve.Value(t);
+    return {t, p.X() * scaleU, p.Y() * scaleV};
+  }
+  // Appends the samples after a up to b, halving while the midpoint is more than kSag off the chord;
+  // false if kMaxDepth halvings do not get there.
+  bool refine(const Sample& a, const Sample& b, int depth, std::vector<Sample>& out) const {
+    const Sample m = at(0.5 * (a.t + b.t));
+    const bool far = squaredDistance(m.x, m.y, a, b) > kSag * kSag;
+    if ((curved && depth < kMinDepth) || far) {
+      if (depth >= kMaxDepth) return false;
+      return refine(a, m, depth + 1, out) && refine(m, b, depth + 1, out);
+    }
+    out.push_back(b);
+    return true;
+  }
+};
+
+// The polyline of one pcurve on [first, last], split at its C2 intervals; empty if it cannot be sampled.
+std::vector<Sample> polyline(const Handle(Geom2d_Curve)& pcurve, double first, double last, double scaleU, double scaleV) {
+  const Geom2dAdaptor_Curve curve(pcurve, first, last);
+  const PcurveSampler sampler{curve, scaleU, scaleV, curve.GetType() != GeomAbs_Line};
+  TColStd_Array1OfReal breaks(1, curve.NbIntervals(GeomAbs_C2) + 1);
+  curve.Intervals(breaks, GeomAbs_C2);
+  std::vector<Sample> line{sampler.at(first)};
+  for (int i = breaks.Lower(); i < breaks.Upper(); ++i)
+    if (!sampler.refine(line.back(), sampler.at(std::min(breaks(i + 1), last)), 0, line)) return {};
+  return line;
+}
+
+}  // namespace
+
+UvBoundary::UvBoundary(const TopoDS_Face& face, double marginU, double marginV)
+    : scaleU_(1 / marginU), scaleV_(1 / marginV) {
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More() && sampled_; e.Next()) {
+    double first = 0, last = 0;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face, first, last);
+    const std::vector<Sample> line = pcurve.IsNull() ? std::vector<Sample>{} : polyline(pcurve, first, last, scaleU_, scaleV_);
+    sampled_ = !line.empty();
+    addPolyline(line);
+  }
+}
+
+void UvBoundary::addPolyline(const std::vector<Sample>& line) {
+  for (std::size_t start = 0; start + 1 < line.size(); start += kChunk) {
+    Chunk c{{}, line[start].x, line[start].x, line[start].y, line[start].y};
+    for (std::size_t i = start; i < std::min(line.size(), start + kChunk + 1); ++i) {
+      c.points.push_back(line[i]);
+      c.xMin = std::min(c.xMin, line[i].x), c.xMax = std::max(c.xMax, line[i].x);
+      c.yMin = std::min(c.yMin, line[i].y), c.yMax = std::max(c.yMax, line[i].y);
+    }
+    chunks_.push_back(std::move(c));
+  }
+}
+
+UvBoundary::Side UvBoundary::side(double u, double v) const {
+  if (!sampled_) return Side::Undecided;
+  const double x = u * scaleU_, y = v * scaleV_;
+  int right = 0, left = 0;  // crossings of the line through the point parallel to u, on either side
+  for (const Chunk& c : chunks_) {
+    const double dx = std::max({c.xMin - x, 0.0, x - c.xMax}), dy = std::max({c.yMin - y, 0.0, y - c.yMax});
+    const bool near = dx * dx + dy * dy < 1;
+    if (!near && dy > 0) continue;
+    for (std::size_t i = 0; i + 1 < c.points.size(); ++i) {
+      const Sample& a = c.points[i];
+      const Sample& b = c.points[i + 1];
+      if (near && squaredDistance(x, y, a, b) < 1) return Side::Undecided;
+      if ((a.y > y) != (b.y > y)) ++(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y) > x ? right : left);
+    }
+  }
+  if ((right + left) % 2 != 0) return Side::Undecided;  // the polylines do not close: a gap in a wire
+  return right % 2 ? Side::Inside : Side::Outside;
+}
+
+}  // namespace hexlayer

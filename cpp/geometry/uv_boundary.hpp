@@ -1,0 +1,37 @@
+// A face's boundary in its parameter plane, for a quick inside/outside test of a parameter point:
+// polylines of the edges' pcurves, sampled to a quarter of a margin. A point nearer the boundary
+// than the margin is left undecided (an exact classifier, BRepClass_FaceClassifier, decides it).
+#pragma once
+#include <TopoDS_Face.hxx>
+
+#include <vector>
+
+namespace hexlayer {
+
+class UvBoundary {
+ public:
+  enum class Side { Inside, Outside, Undecided };
+  // A point of a pcurve: its parameter t and (u / marginU, v / marginV), where the margin is 1.
+  struct Sample {
+    double t, x, y;
+  };
+
+  // `marginU`, `marginV`: how far (in u and v) a point must be from every pcurve to be decided.
+  UvBoundary(const TopoDS_Face& face, double marginU, double marginV);
+  // Inside or outside the face's wires; Undecided near a pcurve, or if the boundary could not be sampled.
+  Side side(double u, double v) const;
+
+ private:
+  // A run of at most 16 segments of one pcurve's polyline, with its bounding box.
+  struct Chunk {
+    std::vector<Sample> points;
+    double xMin, xMax, yMin, yMax;
+  };
+  void addPolyline(const std::vector<Sample>& line);
+
+  double scaleU_, scaleV_;
+  bool sampled_ = true;  // false if a pcurve is missing or would need too many segments
+  std::vector<Chunk> chunks_;
+};
+
+}  // namespace hexlayer

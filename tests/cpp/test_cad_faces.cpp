@@ -1,0 +1,144 @@
+// Distances to the CAD faces (geometry/cad_faces, uv_boundary): CadFaceProbe's distance to a trimmed
+// face is BRepExtrema_DistShapeShape's to the last bit, on the faces (inside, at and near their edges
+// and vertices), just off them and far away, on samples with planes, cylinders, spheres and B-splines.
+#include <gtest/gtest.h>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Tool.hxx>
+#include <ElSLib.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax2.hxx>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "geometry/cad_faces.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+Vec3 vec(const gp_Pnt& p) { return Vec3(p.X(), p.Y(), p.Z()); }
+
+// BRepExtrema_DistShapeShape from a vertex at p to the face, as CadFaces used to measure it.
+double reference(const CadFaces& faces, int face, const Vec3& p) {
+  BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(gp_Pnt(p.x(), p.y(), p.z())).Vertex(), faces.face(face).face);
+  return d.IsDone() && d.NbSolution() > 0 ? d.Value() : std::numeric_limits<double>::infinity();
+}
+
+// Points on a grid over the face's parameter range (outside the trimmed face too), moved along the
+// normal by 0, 1e-13, 2e-7 and 0.3, and points on its edges (their ends too) and just off them.
+std::vector<Vec3> probePoints(const CadFaces::Face& f) {
+  std::vector<Vec3> points;
+  const BRepAdaptor_Surface s(f.face);
+  const double* b = f.uvBounds;
+  for (int i = 0; i <= 5; ++i)
+    for (int j = 0; j <= 5; ++j) {
+      gp_Pnt p;
+      gp_Vec du, dv;
+      s.D1(b[0] + (b[1] - b[0]) * i / 5.0, b[2] + (b[3] - b[2]) * j / 5.0, p, du, dv);
+      const gp_Vec n = du.Crossed(dv);
+      const Vec3 normal = n.Magnitude() > 1e-12 ? vec(gp_Pnt(n.XYZ() / n.Magnitude())) : Vec3::UnitZ();
+      for (double offset : {0.0, 1e-13, 2e-7, 0.3}) points.push_back(vec(p) + offset * normal);
+    }
+  for (TopExp_Explorer e(f.face, TopAbs_EDGE); e.More(); e.Next()) {
+    if (BRep_Tool::Degenerated(TopoDS::Edge(e.Current()))) continue;
+    const BRepAdaptor_Curve c(TopoDS::Edge(e.Current()));
+    for (int k = 0; k <= 4; ++k) {
+      const Vec3 p = vec(c.Value(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * k / 4.0));
+      for (const Vec3& off : {Vec3(0, 0, 0), Vec3(1e-9, -1e-9, 1e-9), Vec3(3e-6, 2e-6, -1e-6)}) points.push_back(p + off);
+    }
+  }
+  return points;
+}
+
+// Checks every probe point of every face against its face and the faces around it; returns how many.
+int expectSameAsBRepExtrema(const CadSolid& cad) {
+  const CadFaces faces(cad);
+  CadFaceProbe probe(faces);
+  int checked = 0;
+  for (int f = 0; f < faces.count(); ++f)
+    for (const Vec3& p : probePoints(faces.face(f))) {
+      std::vector<int> around = faces.face(f).neighbours;
+      around.push_back(f);
+      for (int g : around) {
+        const double fast = probe.distance(g, p), exact = reference(faces, g, p);
+        EXPECT_EQ(std::memcmp(&fast, &exact, sizeof fast), 0)
+            << "face " << g << " at (" << p.transpose() << "): " << fast << " against BRepExtrema's " << exact;
+        EXPECT_EQ(probe.lies(g, p), !faces.face(g).box.IsOut(gp_Pnt(p.x(), p.y(), p.z())) && exact < faces.tolerance(g));
+        ++checked;
+      }
+    }
+  return checked;
+}
+
+CadSolid readPart(const std::string& path) {
+  const std::vector<TopoDS_Solid> solids = readSolids(path);
+  EXPECT_FALSE(solids.empty()) << path;
+  return prepareSolid(solids.at(0));
+}
+
+}  // namespace
+
+TEST(CadFaces, DistancesAreBRepExtremasOnTheSamples) {
+  for (const char* name : {"plate_holes", "hat_holes", "spherical_cap", "twisted_strip", "cylinder_shell"})
+    EXPECT_GT(expectSameAsBRepExtrema(readPart(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/" + name + ".step")), 500)
+        << name;
+}
+
+TEST(CadFaces, DistancesAreBRepExtremasOnARealSheetMetalPart) {
+  const std::string path = std::string(HEXLAYER_SHARED_PARTS) + "/analysissitus_sheet_metal_54_SHELLONLY.brep";
+  EXPECT_GT(expectSameAsBRepExtrema(readPart(path)), 500);
+}
+
+// On the axis of a cylinder face, beyond its end, the face's vertices are nearest, two of them as far
+// up to rounding: BRepExtrema keeps the first vertex's distance if the other is nearer by less than
+// 1e-7 (its vertex pairs are split over its thread pool's threads), and so does CadFaceProbe.
+TEST(CadFaces, NearlyEquidistantVerticesAreBRepExtremas) {
+  for (int k = 180; k < 200; ++k) {
+    const gp_Ax2 axis(gp_Pnt(0.1 * k, 0.37, -0.2), gp_Dir(std::sin(0.1 + 0.013 * k), 0.3, std::cos(0.1 + 0.013 * k)));
+    const CadSolid cad = prepareSolid(TopoDS::Solid(BRepPrimAPI_MakeCylinder(axis, 10 + 0.1 * k, 40, 0.9 + 0.01 * k).Shape()));
+    const CadFaces faces(cad);
+    CadFaceProbe probe(faces);
+    const Vec3 p = vec(axis.Location().Translated(gp_Vec(axis.Direction()) * (43.0 + 0.01 * k)));
+    for (int f = 0; f < faces.count(); ++f) {
+      const double fast = probe.distance(f, p), exact = reference(faces, f, p);
+      EXPECT_EQ(std::memcmp(&fast, &exact, sizeof fast), 0) << "k " << k << " face " << f << ": " << fast << " against " << exact;
+    }
+  }
+}
+
+TEST(UvBoundary, PlateWithAHoleDecidesAwayFromItsEdges) {
+  const TopoDS_Shape plate = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(40, 30, 2).Shape(),
+                                             BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 15, -1), gp_Dir(0, 0, 1)), 5, 4).Shape())
+                                 .Shape();
+  for (TopExp_Explorer e(plate, TopAbs_FACE); e.More(); e.Next()) {
+    const TopoDS_Face face = TopoDS::Face(e.Current());
+    BRepAdaptor_Surface s(face);
+    if (s.GetType() != GeomAbs_Plane || std::abs(s.Plane().Location().Z() - 2) > 1e-9) continue;
+    const UvBoundary boundary(face, 1e-3, 1e-3);
+    const gp_Pln plane = s.Plane();
+    auto side = [&](double x, double y) {  // of the point (x, y, 2)
+      double u = 0, v = 0;
+      ElSLib::Parameters(plane, gp_Pnt(x, y, 2), u, v);
+      return boundary.side(u, v);
+    };
+    EXPECT_EQ(side(5, 5), UvBoundary::Side::Inside);
+    EXPECT_EQ(side(20, 15), UvBoundary::Side::Outside) << "the hole";
+    EXPECT_EQ(side(50, 15), UvBoundary::Side::Outside);
+    EXPECT_EQ(side(25 + 2e-4, 15), UvBoundary::Side::Undecided) << "by the hole's edge";
+    EXPECT_EQ(side(5, 1e-4), UvBoundary::Side::Undecided) << "by the rim";
+    EXPECT_EQ(side(25.01, 15), UvBoundary::Side::Inside);
+    return;
+  }
+  FAIL() << "no top face";
+}
