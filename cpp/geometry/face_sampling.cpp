@@ -11,10 +11,12 @@
 namespace hexlayer {
 namespace {
 
-struct Triangle2d {
-  gp_Pnt2d uv[3];
-  gp_Pnt xyz[3];
-};
+double area3d(const Triangle2d& t) {
+  const gp_Vec a(t.xyz[0], t.xyz[1]), b(t.xyz[0], t.xyz[2]);
+  return 0.5 * a.Crossed(b).Magnitude();
+}
+
+}  // namespace
 
 std::vector<Triangle2d> faceTriangles(const TopoDS_Face& face) {
   TopLoc_Location loc;
@@ -34,13 +36,6 @@ std::vector<Triangle2d> faceTriangles(const TopoDS_Face& face) {
   }
   return out;
 }
-
-double area3d(const Triangle2d& t) {
-  const gp_Vec a(t.xyz[0], t.xyz[1]), b(t.xyz[0], t.xyz[2]);
-  return 0.5 * a.Crossed(b).Magnitude();
-}
-
-}  // namespace
 
 double triangulatedArea(const TopoDS_Shape& face) {
   double a = 0;

@@ -10,9 +10,11 @@
 #include <algorithm>
 #include <limits>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/error.hpp"
+#include "geometry/boundary_triangles.hpp"
 
 namespace hexlayer {
 
@@ -36,7 +38,8 @@ bool isCoplanar(const TetMesh& mesh, const std::array<int, 4>& t) {
 
 // Whether the coplanar tet lies in the rim: its centre closer to the solid's boundary than a quarter
 // of its shortest top-bottom edge (about the wall thickness; a bend's coplanar tet is half of it away).
-bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Shape& boundary) {
+// A centre clearly farther than that from the triangulation is not measured on the exact shell.
+bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Shape& boundary, const BoundaryTriangles& triangles) {
   double shortest = std::numeric_limits<double>::infinity();
   Vec3 c = Vec3::Zero();
   for (int a : t) {
@@ -44,8 +47,20 @@ bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Sha
     for (int b : t)
       if (mesh.side[a] == Side::Top && mesh.side[b] == Side::Bottom) shortest = std::min(shortest, (mesh.nodes[a] - mesh.nodes[b]).norm());
   }
+  if (triangles.fartherThan(c, 0.25 * shortest)) return false;
   BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(gp_Pnt(c.x(), c.y(), c.z())).Vertex(), boundary);
   return distance.IsDone() && distance.Value() < 0.25 * shortest;
+}
+
+// Whether p is inside the solid: the triangulation decides where it can, OpenCASCADE's classifier
+// (made on first use: one per thread, as it keeps state) near the boundary.
+bool insideSolid(const Vec3& p, const BoundaryTriangles& triangles, const CadSolid& cad,
+                 std::optional<BRepClass3d_SolidClassifier>& exact) {
+  const Containment quick = triangles.classify(p);
+  if (quick != Containment::kUndecided) return quick == Containment::kInside;
+  if (!exact) exact.emplace(cad.solid);
+  exact->Perform(gp_Pnt(p.x(), p.y(), p.z()), 1e-7 * cad.diagonal);
+  return exact->State() == TopAbs_IN;
 }
 
 }  // namespace
@@ -88,11 +103,11 @@ TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
 TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
   enum Verdict : char { kKept, kKeptCoplanar, kFlat, kOutside };
   std::vector<char> verdict(mesh.tets.size());
-  const double tolerance = 1e-7 * cad.diagonal;
+  const BoundaryTriangles triangles(cad);
   #pragma omp parallel
   {
-    BRepClass3d_SolidClassifier classifier(cad.solid);  // one per thread: OpenCASCADE's keeps state
-    #pragma omp for schedule(static)
+    std::optional<BRepClass3d_SolidClassifier> exact;
+    #pragma omp for schedule(dynamic, 256)
     for (long i = 0; i < static_cast<long>(mesh.tets.size()); ++i) {
       const auto& t = mesh.tets[i];
       int top = 0;
@@ -100,7 +115,7 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
       const Vec3 c = 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
       if (top == 0 || top == 4)
         verdict[i] = kFlat;
-      else if (classifier.Perform(gp_Pnt(c.x(), c.y(), c.z()), tolerance), classifier.State() != TopAbs_IN)
+      else if (!insideSolid(c, triangles, cad, exact))
         verdict[i] = kOutside;
       else
         verdict[i] = isCoplanar(mesh, t) ? kKeptCoplanar : kKept;
@@ -111,7 +126,7 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
   counts.flat = std::count(verdict.begin(), verdict.end(), kFlat);
   const TopoDS_Shell boundary = BRepClass3d::OuterShell(cad.solid);
   for (std::size_t i = 0; i < mesh.tets.size(); ++i)
-    if (verdict[i] == kKeptCoplanar && onTheRim(mesh, mesh.tets[i], boundary)) verdict[i] = kOutside;
+    if (verdict[i] == kKeptCoplanar && onTheRim(mesh, mesh.tets[i], boundary, triangles)) verdict[i] = kOutside;
   counts.coplanar = std::count(verdict.begin(), verdict.end(), kKeptCoplanar);
   counts.outside = std::count(verdict.begin(), verdict.end(), kOutside);
   std::vector<std::array<int, 4>> kept;

@@ -1,0 +1,174 @@
+#include "geometry/boundary_triangles.hpp"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRep_Tool.hxx>
+#include <Extrema_ExtPS.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/face_sampling.hpp"
+
+namespace hexlayer {
+
+namespace {
+
+constexpr double kFineDeflection = 1e-4;  // of the diagonal, for freeform faces (prepareSolid: 2e-3)
+
+Vec3 toVec(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+
+// The points where the face's surface is singular: the vertices of its degenerated edges (a
+// sphere's or a cone's pole), with their tolerances.
+std::vector<std::pair<gp_Pnt, double>> facePoles(const TopoDS_Face& face) {
+  std::vector<std::pair<gp_Pnt, double>> poles;
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
+    if (BRep_Tool::Degenerated(TopoDS::Edge(e.Current()))) {
+      const TopoDS_Vertex v = TopExp::FirstVertex(TopoDS::Edge(e.Current()));
+      poles.emplace_back(BRep_Tool::Pnt(v), BRep_Tool::Tolerance(v));
+    }
+  return poles;
+}
+
+// Whether a corner of the triangle lies on a pole, where a point's parameter u is arbitrary.
+bool touchesPole(const Triangle2d& t, const std::vector<std::pair<gp_Pnt, double>>& poles) {
+  for (const auto& [pole, tolerance] : poles)
+    for (const gp_Pnt& corner : t.xyz)
+      if (corner.Distance(pole) <= tolerance) return true;
+  return false;
+}
+
+// Distance from p to the nearest point of the surface, infinite if none is found.
+double distanceToSurface(const gp_Pnt& p, const BRepAdaptor_Surface& surface) {
+  const Extrema_ExtPS nearest(p, surface, 1e-9, 1e-9, Extrema_ExtFlag_MIN);
+  double d2 = INFINITY;
+  if (nearest.IsDone())
+    for (int i = 1; i <= nearest.NbExt(); ++i) d2 = std::min(d2, nearest.SquareDistance(i));
+  return std::sqrt(d2);
+}
+
+// Largest distance between the face's triangles and the exact surface, at each triangle's corners,
+// edge midpoints and centre: to the surface point at the same parameters, or (next to a pole,
+// where parameters interpolate badly) to the nearest surface point.
+double largestDeviation(const TopoDS_Face& face, const std::vector<Triangle2d>& mesh) {
+  static constexpr double kAt[7][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, 0}, {0, 0.5, 0.5}, {0.5, 0, 0.5},
+                                       {1.0 / 3, 1.0 / 3, 1.0 / 3}};
+  const BRepAdaptor_Surface surface(face);
+  const std::vector<std::pair<gp_Pnt, double>> poles = facePoles(face);
+  double worst = 0;
+  for (const Triangle2d& t : mesh) {
+    const bool pole = touchesPole(t, poles);
+    for (const auto& w : kAt) {
+      const gp_XY uv = w[0] * t.uv[0].XY() + w[1] * t.uv[1].XY() + w[2] * t.uv[2].XY();
+      const gp_XYZ xyz = w[0] * t.xyz[0].XYZ() + w[1] * t.xyz[1].XYZ() + w[2] * t.xyz[2].XYZ();
+      const double atParameters = (surface.Value(uv.X(), uv.Y()).XYZ() - xyz).Modulus();
+      worst = std::max(worst, pole ? std::min(atParameters, distanceToSurface(xyz, surface)) : atParameters);
+    }
+  }
+  return worst;
+}
+
+// Whether every edge of the triangles (corners compared exactly) is shared by an even number of
+// them: a closed surface, across which a ray's crossings alternate inside and outside.
+bool closedSurface(const std::vector<Triangle>& triangles) {
+  const auto before = [](const Vec3& a, const Vec3& b) { return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end()); };
+  std::vector<std::pair<Vec3, Vec3>> edges;
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 &a = t[k], &b = t[(k + 1) % 3];
+      if (a != b) edges.push_back(before(a, b) ? std::make_pair(a, b) : std::make_pair(b, a));
+    }
+  const auto order = [&](const auto& e, const auto& f) { return before(e.first, f.first) || (e.first == f.first && before(e.second, f.second)); };
+  std::sort(edges.begin(), edges.end(), order);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if ((j - i) % 2) return false;
+    i = j;
+  }
+  return true;
+}
+
+// Largest vertex, edge or face tolerance of the solid.
+double largestTolerance(const CadSolid& cad) {
+  return std::max({BRep_Tool::MaxTolerance(cad.solid, TopAbs_VERTEX), BRep_Tool::MaxTolerance(cad.solid, TopAbs_EDGE),
+                   BRep_Tool::MaxTolerance(cad.solid, TopAbs_FACE)});
+}
+
+// Three ray directions, each a coordinate axis tilted off the grid, the axis of the triangles'
+// smallest extent first: rays leave a thin solid soon.
+std::array<Vec3, 3> rayDirections(const std::vector<Triangle>& triangles) {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+  for (const Triangle& t : triangles)
+    for (const Vec3& v : t) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  std::array<int, 3> axes = {0, 1, 2};
+  std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return hi[a] - lo[a] < hi[b] - lo[b]; });
+  std::array<Vec3, 3> rays;
+  for (int k = 0; k < 3; ++k) {
+    Vec3 d = Vec3::Zero();
+    d[axes[k]] = 1, d[axes[(k + 1) % 3]] = 0.0917, d[axes[(k + 2) % 3]] = 0.0533;
+    rays[k] = d.normalized();
+  }
+  return rays;
+}
+
+// Whether a face of the solid is freeform (B-spline, Bezier, offset, swept): not a plane,
+// cylinder, cone, sphere or torus.
+bool hasFreeformFace(const CadSolid& cad) {
+  for (int f = 1; f <= cad.faces.Extent(); ++f)
+    if (BRepAdaptor_Surface(TopoDS::Face(cad.faces(f))).GetType() > GeomAbs_Torus) return true;
+  return false;
+}
+
+// The faces whose triangles are tested: the solid's own (prepareSolid's triangulation), or, if
+// some are freeform, those of a copy triangulated finer. Near freeform faces OpenCASCADE's
+// classifier takes milliseconds a point, far more than the finer mesh that spares it most.
+TopTools_IndexedMapOfShape triangulatedFaces(const CadSolid& cad) {
+  if (!hasFreeformFace(cad)) return cad.faces;
+  const TopoDS_Shape copy = BRepBuilderAPI_Copy(cad.solid, false).Shape();  // without the solid's triangulation
+  BRepMesh_IncrementalMesh(copy, kFineDeflection * cad.diagonal, false, 0.3, false);
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(copy, TopAbs_FACE, faces);
+  return faces;
+}
+
+}  // namespace
+
+BoundaryTriangles::BoundaryTriangles(const CadSolid& cad) {
+  const TopTools_IndexedMapOfShape faces = triangulatedFaces(cad);
+  std::vector<Triangle> triangles;
+  double deviation = 0;
+  for (int f = 1; f <= faces.Extent(); ++f) {
+    const TopoDS_Face face = TopoDS::Face(faces(f));
+    const std::vector<Triangle2d> mesh = faceTriangles(face);
+    if (mesh.empty()) return;
+    deviation = std::max(deviation, largestDeviation(face, mesh));
+    for (const Triangle2d& t : mesh) triangles.push_back({toVec(t.xyz[0].XYZ()), toVec(t.xyz[1].XYZ()), toVec(t.xyz[2].XYZ())});
+  }
+  if (triangles.empty() || !closedSurface(triangles)) return;
+  // A triangle with two corners at one point (at a pole) is a segment along its neighbours' edges.
+  triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
+                                 [](const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }),
+                  triangles.end());
+  margin_ = 2 * deviation + largestTolerance(cad) + 1e-6 * cad.diagonal;
+  rays_ = rayDirections(triangles);
+  tree_.emplace(std::move(triangles));
+}
+
+Containment BoundaryTriangles::classify(const Vec3& p) const {
+  if (!tree_ || tree_->anyWithin(p, margin_)) return Containment::kUndecided;
+  for (const Vec3& dir : rays_)
+    if (const std::optional<int> n = tree_->crossings(p, dir)) return *n % 2 ? Containment::kInside : Containment::kOutside;
+  return Containment::kUndecided;
+}
+
+bool BoundaryTriangles::fartherThan(const Vec3& p, double distance) const {
+  return tree_ && !tree_->anyWithin(p, distance + margin_);
+}
+
+}  // namespace hexlayer
