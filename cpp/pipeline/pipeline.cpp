@@ -298,9 +298,10 @@ std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
 
 // The mesh's boundary on the CAD faces (FreeCAD's FaceN): surface groups and boundary deviation in the report.
 std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, const WallProjector& walls, nlohmann::json& r) {
-  const std::vector<int> boundary = boundaryNodes(mesh);
+  const std::vector<BoundaryFace> quads = boundaryFaces(mesh);  // sorted by hex, then local face
+  const std::vector<int> boundary = boundaryNodes(mesh, quads);
   const std::size_t unplaced = faceUnplacedNodes(mesh, walls, boundary);
-  SurfaceGroups s = surfaceGroups(mesh, CadFaces(cad), boundary);
+  SurfaceGroups s = surfaceGroups(mesh, CadFaces(cad), quads, boundary);
   r["surface_groups"] = std::move(s.surfaceReport);
   r["surface_groups"]["nodes_not_put_on_cad"] = unplaced;
   r["boundary_deviation"] = std::move(s.deviationReport);

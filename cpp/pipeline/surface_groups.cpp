@@ -6,7 +6,6 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "quality/quality.hpp"
 #include "writers/writers.hpp"
 
 namespace hexlayer {
@@ -100,9 +99,9 @@ nlohmann::json deviationReport(const HexMesh& mesh, const CadFaces& faces, const
 
 }  // namespace
 
-std::vector<int> boundaryNodes(const HexMesh& mesh) {
+std::vector<int> boundaryNodes(const HexMesh& mesh, const std::vector<BoundaryFace>& quads) {
   std::vector<char> on(mesh.nodes.size(), 0);
-  for (const BoundaryFace& q : boundaryFaces(mesh))
+  for (const BoundaryFace& q : quads)
     for (int n : boundaryFaceNodes(mesh, q)) on[n] = 1;
   std::vector<int> nodes;
   for (std::size_t i = 0; i < on.size(); ++i)
@@ -122,7 +121,8 @@ std::size_t faceUnplacedNodes(HexMesh& mesh, const WallProjector& walls, const s
   return given;
 }
 
-SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const std::vector<int>& boundary) {
+SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const std::vector<BoundaryFace>& quads,
+                            const std::vector<int>& boundary) {
   SurfaceGroups out;
   for (int f = 0; f < faces.count(); ++f) out.groups.push_back({faceName(f), {}, {}});
   std::vector<std::vector<int>> facesOf(mesh.nodes.size());
@@ -148,7 +148,6 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
     for (int f : facesOf[i]) out.groups[f].nodes.push_back(i);
     several += facesOf[i].size() > 1;
   }
-  const std::vector<BoundaryFace> quads = boundaryFaces(mesh);  // sorted by hex, then local face
   const long nQuads = static_cast<long>(quads.size());
   std::vector<int> faceOf(quads.size());
   std::vector<char> isAcross(quads.size(), 0);

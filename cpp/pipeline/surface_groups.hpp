@@ -7,11 +7,12 @@
 #include "core/types.hpp"
 #include "geometry/cad_faces.hpp"
 #include "geometry/wall_projector.hpp"
+#include "quality/quality.hpp"
 
 namespace hexlayer {
 
-// The boundary nodes of a mesh (corners and mid-edge nodes of its boundary faces), ascending.
-std::vector<int> boundaryNodes(const HexMesh& mesh);
+// The boundary nodes of a mesh (corners and mid-edge nodes of its boundary faces `quads`), ascending.
+std::vector<int> boundaryNodes(const HexMesh& mesh, const std::vector<BoundaryFace>& quads);
 
 // Gives every boundary node that no stage put on the CAD (nodeFace -1: a sweep ray that missed its
 // wall, a rim node kept off its lateral face to save a hex) the nearest face of its side: the
@@ -30,7 +31,9 @@ struct SurfaceGroups {
 // vertices); a boundary hex face is in the group its corners share (the nearest of them to its
 // centre where they share none or several). Deviation: distance of each boundary node to its
 // nodeFace, absolute and relative to the local wall thickness (the hex's sweep edges x layers).
-SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const std::vector<int>& boundary);
+// `quads`: the mesh's boundaryFaces, `boundary`: their boundaryNodes.
+SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const std::vector<BoundaryFace>& quads,
+                            const std::vector<int>& boundary);
 
 // The groups of `part` appended to `all`, for a mesh made of several solids: node and hex ids shifted
 // by the part mesh's offsets, faces renumbered after the groups already there (FreeCAD's numbering
