@@ -111,16 +111,17 @@ class MeshSamples(unittest.TestCase):
             self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.95)
 
     def test_aspect_sets_the_size_from_the_layer_thickness(self):
-        # Measured 2026-11-24 on the plate (2 mm, 2 layers, a structured grid): --aspect 1 and --aspect 5
-        # both hit within 10 % on every hex (the issue asks 80 %). On the plate with holes (unstructured)
-        # 57 % and 22 %: Gmsh's quads vary in size too much.
+        # Measured 2026-11-24 (2 layers, structured grids): on the plate and on the curved cylinder shell
+        # --aspect 1 and --aspect 5 both hit within 10 % on every hex (the issue asks 80 %). Pockets and
+        # O-grids vary the quad size: the plate with holes 85 % and 36 %, the cap 15 % and 0 %.
         with tempfile.TemporaryDirectory() as tmp:
-            for aspect in (1, 5):
-                with self.subTest(aspect=aspect):
-                    r = self.mesh("plate", os.path.join(tmp, f"a{aspect}.vtu"), "--aspect", str(aspect))
-                    self.assertAlmostEqual(r["size"], aspect * r["thickness"] / 2, places=9)
-                    self.assertGreaterEqual(r["aspect_ratio_hit"], 0.8)
-                    self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
+            for part in ("plate", "cylinder_shell"):
+                for aspect in (1, 5):
+                    with self.subTest(part=part, aspect=aspect):
+                        r = self.mesh(part, os.path.join(tmp, f"{part}{aspect}.vtu"), "--aspect", str(aspect))
+                        self.assertAlmostEqual(r["size"], aspect * r["thickness"] / 2, places=9)
+                        self.assertGreaterEqual(r["aspect_ratio_hit"], 0.8)
+                        self.assertGreaterEqual(r["scaled_jacobian"]["min"], 0.3)
 
     def test_bad_usage_and_missing_file(self):
         with tempfile.TemporaryDirectory() as tmp:
