@@ -65,20 +65,24 @@ double curvatureLimit(double curvature, const BubbleOptions& o) {
 struct Packing {
   std::vector<SurfaceNode> nodes;
   std::vector<double> diameter;
+  double largest = 0;  // the largest diameter
   PointGrid grid;
   explicit Packing(double cell) : grid(cell) {}
   void add(const SurfaceNode& n, double d) {
     grid.insert(static_cast<int>(nodes.size()), n.point);
     nodes.push_back(n);
     diameter.push_back(d);
+    largest = std::max(largest, d);
   }
-  // The nodes of one side near p: bubbles on the top and on the bottom wall are packed apart
-  // (§4); across the wall (closer than a bubble diameter) they must not push each other away.
-  template <class F>
-  void forEachNearOnSide(const Vec3& p, double radius, Side side, F&& f) const {
-    grid.forEachNear(p, radius, [&](int j, const Vec3& q) {
-      if (nodes[j].side == side) f(j, q);
-    });
+  // A search radius, at most `cap`, that finds every node j closer than share x (d + diameter[j]) to
+  // a point: the nodes it leaves out are too far for any diameter.
+  double reach(double d, double share, double cap) const { return std::min(cap, share * (d + largest) * (1 + 1e-9)); }
+  // Whether a node of one side near p passes the test: bubbles on the top and on the bottom wall
+  // are packed apart (§4); across the wall (closer than a bubble diameter) they must not push each
+  // other away.
+  template <class Pred>
+  bool anyNearOnSide(const Vec3& p, double radius, Side side, Pred&& pred) const {
+    return grid.anyNear(p, radius, [&](int j, const Vec3& q) { return nodes[j].side == side && pred(j, q); });
   }
 };
 
@@ -149,12 +153,10 @@ std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, doub
   std::vector<FaceBubble> seeds;
   PointGrid own(d);
   for (const FaceSample& c : candidates) {
-    bool free = true;
-    pack.forEachNearOnSide(c.point, 2 * d, side, [&](int j, const Vec3& q) {
-      if ((q - c.point).norm() < 0.85 * 0.5 * (d + pack.diameter[j])) free = false;
-    });
-    own.forEachNear(c.point, 0.85 * d, [&](int, const Vec3&) { free = false; });
-    if (!free) continue;
+    const auto tooClose = [&](int j, const Vec3& q) { return (q - c.point).norm() < 0.85 * 0.5 * (d + pack.diameter[j]); };
+    if (pack.anyNearOnSide(c.point, pack.reach(d, 0.85 * 0.5, 2 * d), side, tooClose) ||
+        own.anyNear(c.point, 0.85 * d, [](int, const Vec3&) { return true; }))
+      continue;
     own.insert(static_cast<int>(seeds.size()), c.point);
     seeds.push_back({c.u, c.v, c.point});
   }
@@ -177,7 +179,9 @@ void relaxFace(const TopoDS_Face& face, double d, Side side, const Packing& pack
       const double len = r.norm();
       if (len > 1e-12) force += bubbleForce(len / stable) * r / len;
     };
-    pack.grid.forEachNear(x, 1.5 * d * 2, [&](int j, const Vec3& q) { push(q, 0.5 * (d + pack.diameter[j])); });
+    // Nodes beyond 1.5 x their stable distance add exactly zero (the sum starts at +0 and is never
+    // -0, so leaving them out changes no bit).
+    pack.grid.forEachNear(x, pack.reach(d, 1.5 * 0.5, 1.5 * d * 2), [&](int j, const Vec3& q) { push(q, 0.5 * (d + pack.diameter[j])); });
     own.forEachNear(x, 1.5 * d, [&](int j, const Vec3& q) { if (j != static_cast<int>(i)) push(q, d); });
     Vec3 step = 0.15 * d * force;
     if (step.norm() > 0.25 * d) step *= 0.25 * d / step.norm();
@@ -217,11 +221,10 @@ void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<do
     // Population control: a bubble that ended too close to another is removed ...
     PointGrid own(d);
     for (size_t i = 0; i < bubbles.size(); ++i) {
-      bool crowded = false;
-      pack.grid.forEachNear(bubbles[i].point, d, [&](int j, const Vec3& q) {
-        if ((q - bubbles[i].point).norm() < 0.5 * 0.5 * (d + pack.diameter[j])) crowded = true;
-      });
-      own.forEachNear(bubbles[i].point, 0.5 * d, [&](int, const Vec3&) { crowded = true; });
+      const Vec3& p = bubbles[i].point;
+      const auto tooClose = [&](int j, const Vec3& q) { return (q - p).norm() < 0.5 * 0.5 * (d + pack.diameter[j]); };
+      const bool crowded = pack.grid.anyNear(p, pack.reach(d, 0.5 * 0.5, d), tooClose) ||
+                           own.anyNear(p, 0.5 * d, [](int, const Vec3&) { return true; });
       if (crowded) continue;
       own.insert(static_cast<int>(i), bubbles[i].point);
       addFaceNode(bubbles[i].point, f, side, d, pack);

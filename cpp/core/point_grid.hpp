@@ -2,6 +2,7 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <unordered_map>
 #include <vector>
 
@@ -13,23 +14,44 @@ class PointGrid {
  public:
   explicit PointGrid(double cellSize) : h_(cellSize > 0 ? cellSize : 1.0) {}
 
-  void insert(int id, const Vec3& p) { cells_[key(cellOf(p))].push_back({id, p}); }
+  void insert(int id, const Vec3& p) {
+    const Eigen::Vector3i c = cellOf(p);
+    cells_[key(c)].push_back({id, p});
+    lo_ = lo_.cwiseMin(c), hi_ = hi_.cwiseMax(c);
+  }
 
-  // Calls f(id, point) for every stored point within `radius` of p, in a deterministic order.
+  // Calls f(id, point) for every stored point within `radius` of p, in a deterministic order: cell
+  // by cell (x, then y, then z), in each cell in the order of insertion.
   template <class F>
   void forEachNear(const Vec3& p, double radius, F&& f) const {
-    const Eigen::Vector3i lo = cellOf(p - Vec3::Constant(radius)), hi = cellOf(p + Vec3::Constant(radius));
+    visitNear(p, radius, [&](int id, const Vec3& q) { return f(id, q), false; });
+  }
+
+  // Whether pred(id, point) holds for a stored point within `radius` of p; stops at the first.
+  template <class Pred>
+  bool anyNear(const Vec3& p, double radius, Pred&& pred) const {
+    return visitNear(p, radius, pred);
+  }
+
+ private:
+  // Calls f(id, point) on the stored points within `radius` of p in forEachNear's order until f
+  // returns true; returns whether it did.
+  template <class F>
+  bool visitNear(const Vec3& p, double radius, F&& f) const {
+    // Cells outside the box of the occupied ones are empty: a thin sheet's query skips most.
+    const Eigen::Vector3i lo = cellOf(p - Vec3::Constant(radius)).cwiseMax(lo_);
+    const Eigen::Vector3i hi = cellOf(p + Vec3::Constant(radius)).cwiseMin(hi_);
     for (int i = lo.x(); i <= hi.x(); ++i)
       for (int j = lo.y(); j <= hi.y(); ++j)
         for (int k = lo.z(); k <= hi.z(); ++k) {
           const auto it = cells_.find(key({i, j, k}));
           if (it == cells_.end()) continue;
           for (const Entry& e : it->second)
-            if ((e.p - p).squaredNorm() <= radius * radius) f(e.id, e.p);
+            if ((e.p - p).squaredNorm() <= radius * radius && f(e.id, e.p)) return true;
         }
+    return false;
   }
 
- private:
   struct Entry {
     int id;
     Vec3 p;
@@ -44,6 +66,8 @@ class PointGrid {
   }
   double h_;
   std::unordered_map<std::int64_t, std::vector<Entry>> cells_;
+  Eigen::Vector3i lo_ = Eigen::Vector3i::Constant(std::numeric_limits<int>::max());  // box of the occupied cells
+  Eigen::Vector3i hi_ = Eigen::Vector3i::Constant(std::numeric_limits<int>::min());
 };
 
 }  // namespace hexlayer

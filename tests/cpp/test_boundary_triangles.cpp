@@ -1,5 +1,5 @@
-// The quick inside/outside test of the tet filter: triangles of the CAD's triangulation in a bounding
-// volume hierarchy.
+// The quick inside/outside test of the tet filter (triangles of the CAD's triangulation in a bounding
+// volume hierarchy) and the point grid's queries the bubble packing relies on.
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <vector>
 
+#include "core/point_grid.hpp"
 #include "core/triangle_tree.hpp"
 #include "geometry/boundary_triangles.hpp"
 #include "geometry/cad_solid.hpp"
@@ -99,4 +101,26 @@ TEST(BoundaryTriangles, CurvedAndFreeformSolidsAreDecidedAsOpenCascadeDecides) {
   const CadSolid freeform = prepareSolid(TopoDS::Solid(nurbs));
   EXPECT_LT(BoundaryTriangles(freeform).margin(), 1e-2);
   EXPECT_GT(decidedAsOpenCascade(freeform, -1, 11, 12), 2000);
+}
+
+TEST(PointGrid, QueriesFindExactlyThePointsWithinTheRadiusInCellOrder) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> along(-5, 5), across(0, 0.5);
+  PointGrid grid(1.0);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 400; ++i) points.push_back(Vec3(along(random), along(random), across(random))), grid.insert(i, points.back());
+  for (int q = 0; q < 50; ++q) {
+    const Vec3 p(along(random), along(random), along(random));
+    std::vector<int> found, expected;
+    grid.forEachNear(p, 1.7, [&](int id, const Vec3&) { found.push_back(id); });
+    for (int i = 0; i < 400; ++i)
+      if ((points[i] - p).squaredNorm() <= 1.7 * 1.7) expected.push_back(i);
+    std::vector<int> sorted = found;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted, expected);
+    EXPECT_EQ(grid.anyNear(p, 1.7, [](int, const Vec3&) { return true; }), !expected.empty());
+    int first = -1;
+    grid.anyNear(p, 1.7, [&](int id, const Vec3&) { return first = id, true; });
+    EXPECT_EQ(first, found.empty() ? -1 : found.front()) << "stops at the first point forEachNear visits";
+  }
 }
