@@ -51,19 +51,25 @@ std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Ve
   return length;
 }
 
+// Arc length along a loop from its point i forward to its point j (positions taken round the loop),
+// from `length`, the arc length from its first point (arcLength).
+double loopSpan(const std::vector<double>& length, int i, int j) {
+  const int n = static_cast<int>(length.size()) - 1;
+  const double total = length.back();
+  return std::fmod(length[(j % n + n) % n] - length[(i % n + n) % n] + 2 * total, total);
+}
+
 // How much the rim turns at each of its points in the surface's tangent plane (the rim's bends
 // with a bent surface do not count): the angle from its direction `window` behind the point to
 // its direction `window` ahead, positive to the left (into the surface).
 std::vector<double> rimTurning(const std::vector<int>& loop, const std::vector<double>& length, const std::vector<Vec3>& x,
                                const std::vector<Vec3>& normals, double window) {
   const int n = static_cast<int>(loop.size());
-  const double total = length.back();
-  auto along = [&](int i, int j) { return std::fmod(length[(j % n + n) % n] - length[(i % n + n) % n] + 2 * total, total); };
   std::vector<double> turn(n, 0);
   for (int i = 0; i < n; ++i) {
     int back = i - 1, ahead = i + 1;
-    while (back > i - n + 1 && along(back, i) < window) --back;
-    while (ahead < i + n - 1 && along(i, ahead) < window) ++ahead;
+    while (back > i - n + 1 && loopSpan(length, back, i) < window) --back;
+    while (ahead < i + n - 1 && loopSpan(length, i, ahead) < window) ++ahead;
     const Vec3& normal = normals[loop[i]];
     auto tangent = [&](const Vec3& d) { return (d - d.dot(normal) * normal).normalized(); };
     const Vec3 in = tangent(x[loop[i]] - x[loop[(back % n + n) % n]]), out = tangent(x[loop[ahead % n]] - x[loop[i]]);
@@ -82,10 +88,8 @@ std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<i
   std::vector<int> peaks;
   for (int i = 0; i < n; ++i) {
     bool peak = turn[i] > kSharpCorner;
-    for (int j = i - 1; peak && j > i - n && std::fmod(length[i] - length[(j % n + n) % n] + length.back(), length.back()) < window; --j)
-      peak = turn[(j % n + n) % n] < turn[i];
-    for (int j = i + 1; peak && j < i + n && std::fmod(length[j % n] - length[i] + length.back(), length.back()) < window; ++j)
-      peak = turn[j % n] <= turn[i];
+    for (int j = i - 1; peak && j > i - n && loopSpan(length, j, i) < window; --j) peak = turn[(j % n + n) % n] < turn[i];
+    for (int j = i + 1; peak && j < i + n && loopSpan(length, i, j) < window; ++j) peak = turn[j % n] <= turn[i];
     if (peak) peaks.push_back(i);
   }
   std::array<int, 4> corners{};
