@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Sparse>
+#include <Eigen/OrderingMethods>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
@@ -144,14 +145,22 @@ Eigen::SparseMatrix<double> meanValueSystem(const std::vector<std::array<int, 3>
   return a;
 }
 
-// The points off the rim placed by the mean value weights, the rim's kept: one sparse solve.
-// False if the solve fails.
+// The points off the rim placed by the mean value weights, the rim's kept: one sparse LU solve.
+// False if the solve fails. Rows and columns are put in one fill-reducing order (approximate
+// minimum degree of the pattern of A + A^T), which keeps the diagonal, where this diagonally
+// dominant matrix has its pivots; SparseLU's own orderings permute only the columns, which moves
+// the diagonal off (COLAMD: 3.5x the time on a 310 000 point surface; AMD or METIS: 100x).
 bool solveInside(const Eigen::SparseMatrix<double>& a, std::vector<Eigen::Vector2d>& uv) {
+  using Sparse = Eigen::SparseMatrix<double>;
+  using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
   Eigen::MatrixX2d rhs(uv.size(), 2);
   for (std::size_t i = 0; i < uv.size(); ++i) rhs.row(i) = uv[i].transpose();  // zero off the rim
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(a);
+  Permutation order;
+  Eigen::AMDOrdering<int>()(Sparse(a + Sparse(a.transpose())), order);
+  const Permutation p = order.inverse();  // row i of P A P^T is row order[i] of A
+  Eigen::SparseLU<Sparse, Eigen::NaturalOrdering<int>> lu(p * a * p.transpose());
   if (lu.info() != Eigen::Success) return false;
-  const Eigen::MatrixX2d solution = lu.solve(rhs);
+  const Eigen::MatrixX2d solution = p.transpose() * lu.solve(p * rhs);
   if (lu.info() != Eigen::Success || !solution.allFinite()) return false;
   for (std::size_t i = 0; i < uv.size(); ++i) uv[i] = solution.row(i).transpose();
   return true;
