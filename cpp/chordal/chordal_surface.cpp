@@ -223,25 +223,40 @@ double chordalArea(const ChordalSurface& c) {
 std::map<std::string, std::size_t> classifyTets(const TetMesh& m) {
   static const int faceOf[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
   static const int edgeOf[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-  auto triKey = [](std::array<int, 3> t) {
+  auto triKey = [&](std::size_t tet, int face) {
+    std::array<int, 3> t{m.tets[tet][faceOf[face][0]], m.tets[tet][faceOf[face][1]], m.tets[tet][faceOf[face][2]]};
     std::sort(t.begin(), t.end());
     return (static_cast<std::uint64_t>(t[0]) << 42) ^ (static_cast<std::uint64_t>(t[1]) << 21) ^ static_cast<std::uint64_t>(t[2]);
   };
-  std::unordered_map<std::uint64_t, int> triUse;
-  for (const auto& t : m.tets)
-    for (const auto& f : faceOf) ++triUse[triKey({t[f[0]], t[f[1]], t[f[2]]})];
-  std::unordered_map<std::uint64_t, bool> exteriorEdge;  // an edge of an exterior triangle
-  for (const auto& t : m.tets)
-    for (const auto& f : faceOf)
-      if (triUse[triKey({t[f[0]], t[f[1]], t[f[2]]})] == 1)
-        for (int k = 0; k < 3; ++k) exteriorEdge[edgeKey(t[f[k]], t[f[(k + 1) % 3]])] = true;
-  std::map<std::string, std::size_t> classes;
-  for (const auto& t : m.tets) {
-    int tris = 0, edges = 0;
-    for (const auto& f : faceOf) tris += triUse[triKey({t[f[0]], t[f[1]], t[f[2]]})] == 1;
-    for (const auto& e : edgeOf) edges += exteriorEdge.count(edgeKey(t[e[0]], t[e[1]]));
-    ++classes[std::to_string(tris) + "/" + std::to_string(edges)];
+  // Every tet face as (key, 4 tet + face), sorted: a key found once is an exterior triangle.
+  std::vector<std::pair<std::uint64_t, std::size_t>> faces;
+  faces.reserve(4 * m.tets.size());
+  for (std::size_t t = 0; t < m.tets.size(); ++t)
+    for (int f = 0; f < 4; ++f) faces.emplace_back(triKey(t, f), 4 * t + f);
+  std::sort(faces.begin(), faces.end());
+  std::vector<char> exterior(faces.size(), 0);
+  std::vector<std::uint64_t> exteriorEdges;  // edges of exterior triangles
+  for (std::size_t i = 0, j; i < faces.size(); i = j) {
+    for (j = i + 1; j < faces.size() && faces[j].first == faces[i].first;) ++j;
+    if (j - i != 1) continue;
+    const std::size_t t = faces[i].second / 4;
+    const int* f = faceOf[faces[i].second % 4];
+    exterior[faces[i].second] = 1;
+    for (int k = 0; k < 3; ++k) exteriorEdges.push_back(edgeKey(m.tets[t][f[k]], m.tets[t][f[(k + 1) % 3]]));
   }
+  std::sort(exteriorEdges.begin(), exteriorEdges.end());
+  exteriorEdges.erase(std::unique(exteriorEdges.begin(), exteriorEdges.end()), exteriorEdges.end());
+  std::array<std::array<std::size_t, 7>, 5> counts{};  // [exterior triangles][exterior edges]
+  for (std::size_t t = 0; t < m.tets.size(); ++t) {
+    int tris = 0, edges = 0;
+    for (int f = 0; f < 4; ++f) tris += exterior[4 * t + f];
+    for (const auto& e : edgeOf) edges += std::binary_search(exteriorEdges.begin(), exteriorEdges.end(), edgeKey(m.tets[t][e[0]], m.tets[t][e[1]]));
+    ++counts[tris][edges];
+  }
+  std::map<std::string, std::size_t> classes;
+  for (int tris = 0; tris < 5; ++tris)
+    for (int edges = 0; edges < 7; ++edges)
+      if (counts[tris][edges] > 0) classes[std::to_string(tris) + "/" + std::to_string(edges)] = counts[tris][edges];
   return classes;
 }
 

@@ -6,7 +6,6 @@
 #include <limits>
 #include <tuple>
 
-#include "core/point_grid.hpp"
 
 namespace hexlayer {
 
@@ -207,21 +206,34 @@ CoincidentNodes findCoincidentNodes(const HexMesh& mesh, double tol) {
   CoincidentNodes found;
   if (!(tol > 0) || mesh.nodes.empty()) return found;
   Vec3 lo = mesh.nodes[0], hi = mesh.nodes[0];
-  for (const Vec3& p : mesh.nodes) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  // Cells no finer than 1e-6 of the extent keep the grid's integer cell indices in range.
-  PointGrid grid(std::max(tol, 1e-6 * (hi - lo).maxCoeff()));
+  for (const Vec3& p : mesh.nodes) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  // Cells at least tol wide, no finer than 1e-6 of the extent: at most 2^20 a side, so a cell's
+  // three indices pack into one sorted key with z last (cells z-1 .. z+1 are one key range).
+  const double cell = std::max(tol, 1e-6 * (hi - lo).maxCoeff());
+  auto index = [&](const Vec3& p) { return ((p - lo) / cell).array().floor().cast<std::int64_t>().eval(); };
+  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) { return static_cast<std::uint64_t>((x << 42) | (y << 21) | z); };
+  std::vector<std::pair<std::uint64_t, int>> byCell(mesh.nodes.size());
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-    const Vec3 p = mesh.nodes[i] - lo;
-    grid.forEachNear(p, tol, [&](int, const Vec3& q) {
-      if ((q - p).squaredNorm() >= tol * tol) return;
-      ++found.pairs;
-      if (found.firstNode < 0) found.firstNode = static_cast<int>(i);
-    });
-    grid.insert(static_cast<int>(i), p);
+    const auto c = index(mesh.nodes[i]);
+    byCell[i] = {key(c.x(), c.y(), c.z()), static_cast<int>(i)};
   }
+  std::sort(byCell.begin(), byCell.end());
+  const long n = static_cast<long>(mesh.nodes.size());
+  std::size_t pairs = 0;
+  long first = n;
+  #pragma omp parallel for schedule(static) reduction(+ : pairs) reduction(min : first)
+  for (long i = 0; i < n; ++i) {  // each pair counted at its higher-numbered node
+    const Vec3& p = mesh.nodes[i];
+    const auto c = index(p);
+    for (std::int64_t x = std::max<std::int64_t>(c.x() - 1, 0); x <= c.x() + 1; ++x)
+      for (std::int64_t y = std::max<std::int64_t>(c.y() - 1, 0); y <= c.y() + 1; ++y) {
+        auto at = std::lower_bound(byCell.begin(), byCell.end(), std::make_pair(key(x, y, std::max<std::int64_t>(c.z() - 1, 0)), 0));
+        for (const std::uint64_t last = key(x, y, c.z() + 1); at != byCell.end() && at->first <= last; ++at)
+          if (at->second < i && (mesh.nodes[at->second] - p).squaredNorm() < tol * tol) ++pairs, first = std::min(first, i);
+      }
+  }
+  found.pairs = pairs;
+  if (first < n) found.firstNode = static_cast<int>(first);
   return found;
 }
 

@@ -69,7 +69,7 @@ struct CoincidentNodes {
   int firstNode = -1;     // the lowest-numbered node that closes such a pair, -1 if none
 };
 
-// Node pairs closer than tol (strictly), found with a hash grid; none if tol <= 0.
+// Node pairs closer than tol (strictly), found in cells sorted by key; none if tol <= 0.
 CoincidentNodes findCoincidentNodes(const HexMesh& mesh, double tol);
 std::size_t countCoincidentNodes(const HexMesh& mesh, double tol);
 

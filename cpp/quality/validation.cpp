@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
-#include <set>
 #include <sstream>
 
 namespace hexlayer {
@@ -25,9 +24,9 @@ ValidationFailure failure(const std::string& check, std::size_t count, const Vec
 }
 
 // A hex whose 8 corners are not 8 distinct nodes of the mesh.
-bool degenerate(const std::array<int, 8>& hex, std::size_t nodes) {
-  std::set<int> distinct(hex.begin(), hex.end());
-  return distinct.size() != 8 || *distinct.begin() < 0 || static_cast<std::size_t>(*distinct.rbegin()) >= nodes;
+bool degenerate(std::array<int, 8> hex, std::size_t nodes) {
+  std::sort(hex.begin(), hex.end());
+  return std::adjacent_find(hex.begin(), hex.end()) != hex.end() || hex.front() < 0 || static_cast<std::size_t>(hex.back()) >= nodes;
 }
 
 std::optional<ValidationFailure> checkHexes(const HexMesh& mesh) {
