@@ -204,18 +204,30 @@ nlohmann::json faceSideCounts(const WallSides& sides) {
 // a little inside the part. A node stays where it is if it is farther than half the wall thickness
 // from them, or if a hex around it would get worse and end below a scaled Jacobian of 0.2.
 std::size_t projectRim(HexMesh& mesh, const WallProjector& walls, double thickness) {
-  std::vector<std::vector<std::size_t>> hexesOf(mesh.nodes.size());
+  const long n = static_cast<long>(mesh.nodes.size());
+  // The projections first, in parallel (each query builds its own OpenCASCADE tools): a rim node's
+  // depends only on where the sweep put it.
+  std::vector<std::optional<FacePoint>> onLateral(mesh.nodes.size());
+  #pragma omp parallel for schedule(dynamic, 16)
+  for (long i = 0; i < n; ++i)
+    if (mesh.nodeOnRim[i]) onLateral[i] = walls.project(Side::Lateral, mesh.nodes[i]);
+  std::vector<std::size_t> start(mesh.nodes.size() + 1, 0), hexes;  // the hexes at rim node i: hexes[start[i] .. start[i + 1])
+  for (const auto& hex : mesh.hexes)
+    for (int v : hex) start[v + 1] += mesh.nodeOnRim[v];
+  for (long i = 0; i < n; ++i) start[i + 1] += start[i];
+  hexes.resize(start.back());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-    for (int v : mesh.hexes[h]) hexesOf[v].push_back(h);
-  auto around = [&](std::size_t i) {
+    for (int v : mesh.hexes[h])
+      if (mesh.nodeOnRim[v]) hexes[fill[v]++] = h;
+  auto around = [&](long i) {
     std::vector<double> sj;
-    for (std::size_t h : hexesOf[i]) sj.push_back(hexScaledJacobian(hexCorners(mesh, h)));
+    for (std::size_t k = start[i]; k < start[i + 1]; ++k) sj.push_back(hexScaledJacobian(hexCorners(mesh, hexes[k])));
     return sj;
   };
   std::size_t moved = 0;
-  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-    if (!mesh.nodeOnRim[i]) continue;
-    const std::optional<FacePoint> p = walls.project(Side::Lateral, mesh.nodes[i]);
+  for (long i = 0; i < n; ++i) {
+    const std::optional<FacePoint>& p = onLateral[i];
     if (!p || (p->point - mesh.nodes[i]).norm() >= 0.5 * thickness) continue;
     const Vec3 at = mesh.nodes[i];
     const std::vector<double> before = around(i);
