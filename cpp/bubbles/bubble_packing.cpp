@@ -16,9 +16,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <optional>
 
 #include "core/error.hpp"
 #include "core/point_grid.hpp"
+#include "core/threads.hpp"
 #include "geometry/face_sampling.hpp"
 
 namespace hexlayer {
@@ -163,39 +166,54 @@ std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, doub
   return seeds;
 }
 
-// One relaxation step: every face bubble moves along the net bubble force, then back onto the
-// face through the surface's first derivatives; bubbles pushed out of the face are dropped.
-void relaxFace(const TopoDS_Face& face, double d, Side side, const Packing& pack, std::vector<FaceBubble>& bubbles,
-               BRepTopAdaptor_FClass2d& inside) {
-  const BRepAdaptor_Surface surface(face);
+// One thread's OpenCASCADE tools on a face (neither is safe to share between threads: a B-spline
+// surface's adaptor caches its last span).
+struct FaceTools {
+  explicit FaceTools(const TopoDS_Face& face) : surface(face), inside(face, 1e-9) {}
+  BRepAdaptor_Surface surface;
+  BRepTopAdaptor_FClass2d inside;
+};
+
+// Bubble i after one relaxation step: moved along the net bubble force of the others where they
+// were, then back onto the face through the surface's first derivatives; none if pushed off the face.
+std::optional<FaceBubble> relaxedBubble(std::size_t i, double d, const Packing& pack, const PointGrid& own,
+                                        const std::vector<FaceBubble>& bubbles, FaceTools& tools) {
+  const Vec3 x = bubbles[i].point;
+  Vec3 force = Vec3::Zero();
+  auto push = [&](const Vec3& q, double stable) {
+    const Vec3 r = x - q;
+    const double len = r.norm();
+    if (len > 1e-12) force += bubbleForce(len / stable) * r / len;
+  };
+  // Nodes beyond 1.5 x their stable distance add exactly zero (the sum starts at +0 and is never
+  // -0, so leaving them out changes no bit).
+  pack.grid.forEachNear(x, pack.reach(d, 1.5 * 0.5, 1.5 * d * 2), [&](int j, const Vec3& q) { push(q, 0.5 * (d + pack.diameter[j])); });
+  own.forEachNear(x, 1.5 * d, [&](int j, const Vec3& q) { if (j != static_cast<int>(i)) push(q, d); });
+  Vec3 step = 0.15 * d * force;
+  if (step.norm() > 0.25 * d) step *= 0.25 * d / step.norm();
+  gp_Pnt p;
+  gp_Vec du, dv;
+  tools.surface.D1(bubbles[i].u, bubbles[i].v, p, du, dv);
+  Eigen::Matrix<double, 3, 2> J;
+  J << du.X(), dv.X(), du.Y(), dv.Y(), du.Z(), dv.Z();
+  const Eigen::Vector2d duv = (J.transpose() * J).ldlt().solve(J.transpose() * step);
+  FaceBubble b{bubbles[i].u + duv.x(), bubbles[i].v + duv.y(), Vec3::Zero()};
+  if (!duv.allFinite() || tools.inside.Perform(gp_Pnt2d(b.u, b.v)) != TopAbs_IN) return std::nullopt;
+  b.point = toVec(tools.surface.Value(b.u, b.v));
+  return b;
+}
+
+// One relaxation step of every face bubble at once (each from where the others were: in parallel,
+// one FaceTools per thread); bubbles pushed out of the face are dropped.
+void relaxFace(double d, const Packing& pack, std::vector<FaceBubble>& bubbles, std::vector<std::unique_ptr<FaceTools>>& tools) {
   PointGrid own(d);
   for (size_t i = 0; i < bubbles.size(); ++i) own.insert(static_cast<int>(i), bubbles[i].point);
+  std::vector<std::optional<FaceBubble>> next(bubbles.size());
+  #pragma omp parallel for schedule(static)
+  for (long i = 0; i < static_cast<long>(bubbles.size()); ++i) next[i] = relaxedBubble(i, d, pack, own, bubbles, *tools[threadIndex()]);
   std::vector<FaceBubble> moved;
-  for (size_t i = 0; i < bubbles.size(); ++i) {
-    const Vec3 x = bubbles[i].point;
-    Vec3 force = Vec3::Zero();
-    auto push = [&](const Vec3& q, double stable) {
-      const Vec3 r = x - q;
-      const double len = r.norm();
-      if (len > 1e-12) force += bubbleForce(len / stable) * r / len;
-    };
-    // Nodes beyond 1.5 x their stable distance add exactly zero (the sum starts at +0 and is never
-    // -0, so leaving them out changes no bit).
-    pack.grid.forEachNear(x, pack.reach(d, 1.5 * 0.5, 1.5 * d * 2), [&](int j, const Vec3& q) { push(q, 0.5 * (d + pack.diameter[j])); });
-    own.forEachNear(x, 1.5 * d, [&](int j, const Vec3& q) { if (j != static_cast<int>(i)) push(q, d); });
-    Vec3 step = 0.15 * d * force;
-    if (step.norm() > 0.25 * d) step *= 0.25 * d / step.norm();
-    gp_Pnt p;
-    gp_Vec du, dv;
-    surface.D1(bubbles[i].u, bubbles[i].v, p, du, dv);
-    Eigen::Matrix<double, 3, 2> J;
-    J << du.X(), dv.X(), du.Y(), dv.Y(), du.Z(), dv.Z();
-    const Eigen::Vector2d duv = (J.transpose() * J).ldlt().solve(J.transpose() * step);
-    FaceBubble b{bubbles[i].u + duv.x(), bubbles[i].v + duv.y(), Vec3::Zero()};
-    if (!duv.allFinite() || inside.Perform(gp_Pnt2d(b.u, b.v)) != TopAbs_IN) continue;
-    b.point = toVec(surface.Value(b.u, b.v));
-    moved.push_back(b);
-  }
+  for (const auto& b : next)
+    if (b) moved.push_back(*b);
   bubbles.swap(moved);
 }
 
@@ -216,8 +234,9 @@ void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<do
     const double d = faceDiameter[f];
     const std::vector<FaceSample> candidates = sampleFace(face, 0.2 * d);
     std::vector<FaceBubble> bubbles = seedFace(candidates, d, side, pack);
-    BRepTopAdaptor_FClass2d inside(face, 1e-9);
-    for (int step = 0; step < o.relaxationSteps; ++step) relaxFace(face, d, side, pack, bubbles, inside);
+    std::vector<std::unique_ptr<FaceTools>> tools;
+    for (int t = 0; t < threadCount(); ++t) tools.push_back(std::make_unique<FaceTools>(face));
+    for (int step = 0; step < o.relaxationSteps; ++step) relaxFace(d, pack, bubbles, tools);
     // Population control: a bubble that ended too close to another is removed ...
     PointGrid own(d);
     for (size_t i = 0; i < bubbles.size(); ++i) {
