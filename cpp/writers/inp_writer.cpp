@@ -13,15 +13,16 @@ constexpr std::size_t kMaxField = 20;   // CalculiX reads a *NODE coordinate fro
 constexpr std::size_t kMaxName = 80;    // CalculiX set names
 
 // Shortest round-trip text if it fits in 20 characters, else scientific with as many digits as fit
-// (at least 13 significant digits).
-std::string inpNumber(double v) {
-  std::string s = formatDouble(v);
-  for (int digits = 16; s.size() > kMaxField && digits > 0; --digits) {
-    char buf[32];
-    s.assign(buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific, digits).ptr);
-  }
-  return s;
+// (at least 13 significant digits), written at `at` (room for 32 characters); returns its end.
+char* inpNumber(double v, char* at) {
+  char* end = std::to_chars(at, at + 32, v).ptr;
+  for (int digits = 16; static_cast<std::size_t>(end - at) > kMaxField && digits > 0; --digits)
+    end = std::to_chars(at, at + 32, v, std::chars_format::scientific, digits).ptr;
+  return end;
 }
+
+// Writes the decimal text of a non-negative integer at `at` (room for 20 characters); returns its end.
+char* inpInteger(std::size_t v, char* at) { return std::to_chars(at, at + 20, v).ptr; }
 
 // Upper case, at most 80 characters, characters other than letters, digits and '_' replaced by '_'.
 std::string inpName(const std::string& name) {
@@ -30,11 +31,15 @@ std::string inpName(const std::string& name) {
   return s;
 }
 
+// Each line composed in a local buffer and written at once (no formatting through the stream).
 void writeNodes(std::ostream& out, const HexMesh& mesh) {
   out << "*NODE, NSET=NALL\n";
+  char line[160];
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-    const Vec3& p = mesh.nodes[i];
-    out << i + 1 << ", " << inpNumber(p.x()) << ", " << inpNumber(p.y()) << ", " << inpNumber(p.z()) << "\n";
+    char* at = inpInteger(i + 1, line);
+    for (int k = 0; k < 3; ++k) *at++ = ',', *at++ = ' ', at = inpNumber(mesh.nodes[i][k], at);
+    *at++ = '\n';
+    out.write(line, at - line);
   }
 }
 
@@ -42,11 +47,17 @@ void writeNodes(std::ostream& out, const HexMesh& mesh) {
 // ones, whose 21 entries continue on a second line after the first 16 (the line ends with a comma).
 void writeElements(std::ostream& out, const HexMesh& mesh) {
   out << "*ELEMENT, TYPE=" << (mesh.quadratic() ? "C3D20R" : "C3D8I") << ", ELSET=EALL\n";
+  char line[512];
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-    out << h + 1;
-    const std::vector<int> nodes = elementNodes(mesh, h);
-    for (std::size_t i = 0; i < nodes.size(); ++i) out << ((i + 1) % kIdsPerLine == 0 ? ",\n" : ", ") << nodes[i] + 1;
-    out << "\n";
+    char* at = inpInteger(h + 1, line);
+    const ElementNodes nodes = elementNodes(mesh, h);
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      *at++ = ',';
+      *at++ = (i + 1) % kIdsPerLine == 0 ? '\n' : ' ';
+      at = inpInteger(static_cast<std::size_t>(nodes[i]) + 1, at);
+    }
+    *at++ = '\n';
+    out.write(line, at - line);
   }
 }
 

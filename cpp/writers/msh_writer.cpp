@@ -23,7 +23,7 @@ const std::array<const char*, 3> kSurfaceNames = {"top", "bottom", "rim"};
 struct Patch {
   std::string cadFace;  // "FaceN", or empty without surface groups
   int surfaceClass = 2;
-  std::vector<std::vector<int>> quads;
+  std::vector<ElementNodes> quads;
 };
 
 int surfaceOf(const HexMesh& mesh, const std::array<int, 4>& quad) {
@@ -151,14 +151,15 @@ void writeNodes(std::ostream& out, const HexMesh& mesh) {
 }
 
 // Node ids of hex h in Gmsh's order: the corners, then the mid-edge nodes in kGmshHexEdges order.
-std::vector<int> gmshHexNodes(const HexMesh& mesh, std::size_t h) {
-  std::vector<int> nodes(mesh.hexes[h].begin(), mesh.hexes[h].end());
+ElementNodes gmshHexNodes(const HexMesh& mesh, std::size_t h) {
+  ElementNodes nodes;
+  for (int n : mesh.hexes[h]) nodes.push_back(n);
   if (mesh.quadratic())
     for (int e : kGmshHexEdges) nodes.push_back(mesh.midEdges[h][e]);
   return nodes;
 }
 
-void writeElement(std::ostream& out, std::size_t tag, const std::vector<int>& nodes) {
+void writeElement(std::ostream& out, std::size_t tag, const ElementNodes& nodes) {
   out << tag;
   for (int n : nodes) out << " " << n + 1;
   out << "\n";

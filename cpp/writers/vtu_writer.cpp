@@ -87,7 +87,7 @@ void writeCells(std::ostream& out, const HexMesh& mesh) {
   out << "<Cells>\n";
   openArray(out, "Int64", "connectivity");
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-    const std::vector<int> nodes = elementNodes(mesh, h);
+    const ElementNodes nodes = elementNodes(mesh, h);
     for (std::size_t i = 0; i < nodes.size(); ++i) out << nodes[i] << (i + 1 == nodes.size() ? "\n" : " ");
   }
   out << "</DataArray>\n";

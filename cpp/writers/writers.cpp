@@ -56,17 +56,20 @@ int hexEdge(int a, int b) {
 
 }  // namespace
 
-std::vector<int> boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& f) {
-  std::vector<int> nodes(f.nodes.begin(), f.nodes.end());
+ElementNodes boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& f) {
+  ElementNodes nodes;
+  for (int n : f.nodes) nodes.push_back(n);
   if (!mesh.quadratic()) return nodes;
   const std::array<int, 4>& local = kHexFaces[f.localFace];
   for (int i = 0; i < 4; ++i) nodes.push_back(mesh.midEdges[f.hex][hexEdge(local[i], local[(i + 1) % 4])]);
   return nodes;
 }
 
-std::vector<int> elementNodes(const HexMesh& mesh, std::size_t h) {
-  std::vector<int> ids(mesh.hexes[h].begin(), mesh.hexes[h].end());
-  if (mesh.quadratic()) ids.insert(ids.end(), mesh.midEdges[h].begin(), mesh.midEdges[h].end());
+ElementNodes elementNodes(const HexMesh& mesh, std::size_t h) {
+  ElementNodes ids;
+  for (int n : mesh.hexes[h]) ids.push_back(n);
+  if (mesh.quadratic())
+    for (int n : mesh.midEdges[h]) ids.push_back(n);
   return ids;
 }
 

@@ -1,5 +1,6 @@
 // Mesh output: CalculiX/Abaqus .inp, VTK XML .vtu and Gmsh 4.1 .msh, all ASCII and deterministic.
 #pragma once
+#include <array>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -46,13 +47,25 @@ void writeVtu(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 // surface physical groups carry the same information.
 void writeMsh(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 
+// The node ids of one element or face, at most 20, held without a heap allocation (the writers
+// make one per element).
+struct ElementNodes {
+  std::array<int, 20> ids{};
+  std::size_t count = 0;
+  void push_back(int id) { ids[count++] = id; }
+  std::size_t size() const { return count; }
+  int operator[](std::size_t i) const { return ids[i]; }
+  const int* begin() const { return ids.data(); }
+  const int* end() const { return ids.data() + count; }
+};
+
 // Node ids of a boundary face: its 4 corners (outward, kHexFaces order), then for 20-node hexes the
 // mid-edge nodes of its edges 0-1, 1-2, 2-3, 3-0 (Gmsh's 8-node quad, type 16).
-std::vector<int> boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& face);
+ElementNodes boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& face);
 
 // Node ids of hex h in CalculiX C3D8/C3D20 order (= VTK's): the 8 corners, then for a 20-node hex
 // its 12 mid-edge nodes (kHexEdges order).
-std::vector<int> elementNodes(const HexMesh& mesh, std::size_t h);
+ElementNodes elementNodes(const HexMesh& mesh, std::size_t h);
 
 // Shortest text that reads back to exactly v (std::to_chars).
 std::string formatDouble(double v);
