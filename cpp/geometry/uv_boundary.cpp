@@ -64,17 +64,38 @@ std::vector<Sample> polyline(const Handle(Geom2d_Curve)& pcurve, double first, d
   return line;
 }
 
+// Two pcurves meet at a vertex, but each end is evaluated on its own curve, a few ulps from the
+// other's: where the line through a point runs exactly through such a joint (a circle's seam on the
+// line through its centre), crossings would be counted on neither side of it or on both. Ends closer
+// than this (in margins, far below the undecided band of 1) are made one point, the first one seen.
+constexpr double kJoint = 1e-6;
+
+void joinEnds(std::vector<std::vector<Sample>>& lines) {
+  std::vector<Sample> joints;
+  for (auto& line : lines)
+    for (Sample* end : {&line.front(), &line.back()}) {
+      const auto same = std::find_if(joints.begin(), joints.end(), [&](const Sample& j) {
+        return std::abs(j.x - end->x) < kJoint && std::abs(j.y - end->y) < kJoint;
+      });
+      if (same == joints.end()) joints.push_back(*end);
+      else end->x = same->x, end->y = same->y;
+    }
+}
+
 }  // namespace
 
 UvBoundary::UvBoundary(const TopoDS_Face& face, double marginU, double marginV)
     : scaleU_(1 / marginU), scaleV_(1 / marginV) {
+  std::vector<std::vector<Sample>> lines;
   for (TopExp_Explorer e(face, TopAbs_EDGE); e.More() && sampled_; e.Next()) {
     double first = 0, last = 0;
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face, first, last);
-    const std::vector<Sample> line = pcurve.IsNull() ? std::vector<Sample>{} : polyline(pcurve, first, last, scaleU_, scaleV_);
-    sampled_ = !line.empty();
-    addPolyline(line);
+    lines.push_back(pcurve.IsNull() ? std::vector<Sample>{} : polyline(pcurve, first, last, scaleU_, scaleV_));
+    sampled_ = !lines.back().empty();
   }
+  if (!sampled_) return;
+  joinEnds(lines);
+  for (const auto& line : lines) addPolyline(line);
 }
 
 void UvBoundary::addPolyline(const std::vector<Sample>& line) {
