@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "quadmesh/quad_smoothing.hpp"
+
 namespace hexlayer {
 namespace {
 
@@ -124,18 +126,6 @@ void addCells(BlockGrid& grid, const MapLocator& locate, const GridLines& lines,
       if (!skip[i * n1 + k]) grid.quads.push_back({lines.node(i, k), lines.node(i + 1, k), lines.node(i + 1, k + 1), lines.node(i, k + 1)});
 }
 
-// Drops the nodes no quad uses (inside the pockets).
-void dropUnused(BlockGrid& grid) {
-  std::vector<int> index(grid.nodes.size(), -1);
-  std::vector<Vec3> kept;
-  for (auto& quad : grid.quads)
-    for (int& v : quad) {
-      if (index[v] < 0) index[v] = static_cast<int>(kept.size()), kept.push_back(grid.nodes[v]);
-      v = index[v];
-    }
-  grid.nodes = std::move(kept);
-}
-
 // n + 1 grid lines along one axis of the plane: where a line from -to to `to` needs equal shares of quads.
 std::vector<double> linesAlong(const MapLocator& locate, const Eigen::Vector2d& to, int n, int axis, const SizeField& size) {
   const PlaneLine line = planeLine(locate, -to, {locate(to), to}, size);
@@ -222,7 +212,7 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
     if (!holeCorners(map, hole, corners)) return {};
     addRing(grid, locate, lines, box, loopPoints(map, hole, corners, box.sides(), size), false, size);
   }
-  dropUnused(grid);
+  dropUnusedNodes(grid.nodes, grid.quads);  // those inside the pockets
   return grid;
 }
 

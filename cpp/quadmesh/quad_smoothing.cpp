@@ -226,19 +226,6 @@ std::vector<Vec3> tangentDirections(const QuadMesh& q, const NodeQuads& nq, int 
   return dirs;
 }
 
-// Drops the nodes no quad uses and renumbers the rest in order.
-void dropUnusedNodes(QuadMesh& q) {
-  std::vector<int> newIndex(q.nodes.size(), -1);
-  std::vector<Vec3> kept;
-  for (const auto& quad : q.quads)
-    for (int v : quad) newIndex[v] = -2;  // used
-  for (size_t i = 0; i < q.nodes.size(); ++i)
-    if (newIndex[i] == -2) newIndex[i] = static_cast<int>(kept.size()), kept.push_back(q.nodes[i]);
-  for (auto& quad : q.quads)
-    for (int& v : quad) v = newIndex[v];
-  q.nodes.swap(kept);
-}
-
 // Index of v in the quad, -1 if absent.
 int cornerOf(const std::array<int, 4>& quad, int v) {
   for (int k = 0; k < 4; ++k)
@@ -306,8 +293,20 @@ int removeDoublets(QuadMesh& q) {
       if (!dead[e]) alive.push_back(q.quads[e]);
     q.quads.swap(alive);
   }
-  dropUnusedNodes(q);
+  dropUnusedNodes(q.nodes, q.quads);
   return removed;
+}
+
+void dropUnusedNodes(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& quads) {
+  std::vector<int> newIndex(nodes.size(), -1);
+  std::vector<Vec3> kept;
+  for (const auto& quad : quads)
+    for (int v : quad) newIndex[v] = -2;  // used
+  for (size_t i = 0; i < nodes.size(); ++i)
+    if (newIndex[i] == -2) newIndex[i] = static_cast<int>(kept.size()), kept.push_back(nodes[i]);
+  for (auto& quad : quads)
+    for (int& v : quad) v = newIndex[v];
+  nodes.swap(kept);
 }
 
 void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations) {

@@ -16,6 +16,9 @@ double quadScaledJacobian(const std::array<Vec3, 4>& corners);
 // thin as that edge; quads up to 4:1 (a structured grid across a tapering wall) are not penalized.
 double quadSmoothingQuality(const std::array<Vec3, 4>& corners);
 
+// Drops the nodes no quad uses and renumbers the rest in their order.
+void dropUnusedNodes(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& quads);
+
 // Removes the doublets: an interior node in just two quads, which share two of its edges, gives
 // two quads with a corner near 180 degrees whatever the smoothing does; they are merged into one
 // and the node dropped. Returns how many were removed.
