@@ -1,5 +1,7 @@
 #include "quadmesh/quad_mesh.hpp"
 
+#include <gmsh.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -13,7 +15,6 @@
 #include "core/child_process.hpp"
 #include "core/error.hpp"
 #include "core/union_find.hpp"
-#include "quadmesh/gmsh_session.hpp"
 #include "quadmesh/block_grids.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
@@ -29,9 +30,19 @@ constexpr int kCurveSamples = 64;  // points along a patch curve to measure it
 constexpr double kStructuredMean = 0.98;  // mean quad scaled Jacobian of a try that needs no other
 constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  // of a structured patch
 
+// Gmsh is one process-wide session: open it for this stage only, and always close it.
+struct GmshSession {
+  GmshSession() {
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.NumThreads", 1);  // deterministic output
+  }
+  ~GmshSession() { gmsh::finalize(); }
+};
+
 // The chordal facets as one discrete Gmsh surface of triangles (each quad split on a diagonal).
-void addChordalTriangles(GmshSession& gmsh, const ChordalSurface& chordal) {
-  const int surface = gmsh.addDiscreteSurface();
+void addChordalTriangles(const ChordalSurface& chordal) {
+  const int surface = gmsh::model::addDiscreteEntity(2);
   std::vector<std::size_t> tags(chordal.vertices.size());
   std::vector<double> coords;
   coords.reserve(3 * chordal.vertices.size());
@@ -39,14 +50,14 @@ void addChordalTriangles(GmshSession& gmsh, const ChordalSurface& chordal) {
     tags[i] = i + 1;
     coords.insert(coords.end(), chordal.vertices[i].data(), chordal.vertices[i].data() + 3);
   }
-  gmsh.addNodes(2, surface, std::move(tags), std::move(coords));
+  gmsh::model::mesh::addNodes(2, surface, tags, coords);
   std::vector<std::size_t> triangles;
   auto add = [&](int a, int b, int c) { triangles.insert(triangles.end(), {std::size_t(a) + 1, std::size_t(b) + 1, std::size_t(c) + 1}); };
   for (const auto& f : chordal.facets) {
     add(f[0], f[1], f[2]);
     if (f[3] >= 0) add(f[0], f[2], f[3]);
   }
-  gmsh.addElementsByType(surface, 2, std::move(triangles));
+  gmsh::model::mesh::addElementsByType(surface, 2, {}, triangles);
 }
 
 double smallestSize(const QuadMeshOptions& o) {
@@ -62,36 +73,25 @@ double sizeAt(const ChordalLocator& chordal, const std::vector<double>& vertexSi
   return h;
 }
 
-// What Gmsh's size callback needs of the §6.1 sizing.
-struct SizeSource {
-  const ChordalLocator& chordal;
-  const std::vector<double>& vertexSize;
-};
-
-double sizeCallback(int, int, double x, double y, double z, void* data) {
-  const SizeSource& s = *static_cast<const SizeSource*>(data);
-  return sizeAt(s.chordal, s.vertexSize, Vec3(x, y, z));
-}
-
-void setQuadOptions(GmshSession& gmsh, const QuadMeshOptions& o, const PatchSplit& split, SizeSource& size) {
+void setQuadOptions(const QuadMeshOptions& o, const PatchSplit& split, const ChordalLocator& chordal) {
   const bool adaptive = !o.vertexSize.empty();
-  gmsh.setNumber("Mesh.MeshSizeMin", smallestSize(o));
-  gmsh.setNumber("Mesh.MeshSizeMax", adaptive ? *std::max_element(o.vertexSize.begin(), o.vertexSize.end()) : o.size);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", smallestSize(o));
+  gmsh::option::setNumber("Mesh.MeshSizeMax", adaptive ? *std::max_element(o.vertexSize.begin(), o.vertexSize.end()) : o.size);
   if (adaptive)  // §6.1: geometry-adaptive quads
-    gmsh.setSizeCallback(sizeCallback, &size);
-  gmsh.setNumber("Mesh.MeshSizeFromPoints", 0);
-  gmsh.setNumber("Mesh.MeshSizeFromCurvature", 0);
-  gmsh.setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+    gmsh::model::mesh::setSizeCallback([&](int, int, double x, double y, double z) { return sizeAt(chordal, o.vertexSize, Vec3(x, y, z)); });
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   // Frontal-Delaunay triangles (Frontal-Delaunay for quads, algorithm 8, crashes in Debian's Gmsh 4.8.4),
   // then Blossom full-quad recombination (a perfect matching, each quad split in four): all quads
   // without the §6.2 templates, and half the irregular nodes of the simple full-quad (algorithm 2),
   // whose leftover triangles become three quads around a 3-valent node.
-  gmsh.setNumber("Mesh.Algorithm", 6);
-  gmsh.setNumber("Mesh.RecombineAll", 1);
-  gmsh.setNumber("Mesh.RecombinationAlgorithm", split.recombination);
-  gmsh.setNumber("Mesh.SubdivisionAlgorithm", 0);
-  gmsh.setNumber("Mesh.Smoothing", 5);
-  gmsh.setNumber("Mesh.RandomFactor", 1e-9);
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+  gmsh::option::setNumber("Mesh.RecombineAll", 1);
+  gmsh::option::setNumber("Mesh.RecombinationAlgorithm", split.recombination);
+  gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
+  gmsh::option::setNumber("Mesh.Smoothing", 5);
+  gmsh::option::setNumber("Mesh.RandomFactor", 1e-9);
 }
 
 // A curve of Gmsh's patches, sampled from its start, with the point tags at its two ends.
@@ -101,17 +101,19 @@ struct SampledCurve {
   std::vector<Vec3> points;
 };
 
-SampledCurve sampleCurve(GmshSession& gmsh, int tag) {
+SampledCurve sampleCurve(int tag) {
   SampledCurve c;
   c.tag = tag;
-  const GmshDimTags ends = gmsh.boundary({{1, tag}}, false, false, false);
+  gmsh::vectorpair ends;
+  gmsh::model::getBoundary({{1, tag}}, ends, false, false, false);
   if (ends.size() != 2 || std::abs(ends[0].second) == std::abs(ends[1].second)) return c;
-  std::vector<double> lo, hi, params;
-  gmsh.parametrizationBounds(1, tag, lo, hi);
+  std::vector<double> lo, hi, params, xyz;
+  gmsh::model::getParametrizationBounds(1, tag, lo, hi);
   for (int i = 0; i <= kCurveSamples; ++i) params.push_back(lo[0] + (hi[0] - lo[0]) * i / kCurveSamples);
-  const std::vector<double> xyz = gmsh.value(1, tag, params);
+  gmsh::model::getValue(1, tag, params, xyz);
   for (size_t i = 0; i + 2 < xyz.size(); i += 3) c.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
-  const std::vector<double> first = gmsh.value(0, std::abs(ends[0].second), {});
+  std::vector<double> first;
+  gmsh::model::getValue(0, std::abs(ends[0].second), {}, first);
   const bool firstIsStart = (Vec3(first[0], first[1], first[2]) - c.points.front()).norm() <= (Vec3(first[0], first[1], first[2]) - c.points.back()).norm();
   c.ends = {std::abs(ends[firstIsStart ? 0 : 1].second), std::abs(ends[firstIsStart ? 1 : 0].second)};
   return c;
@@ -119,12 +121,13 @@ SampledCurve sampleCurve(GmshSession& gmsh, int tag) {
 
 // The four curves of a patch bounded by four curves meeting at four corners of 45 to 135 degrees,
 // ordered around it (curve k is opposite curve k + 2); empty for any other patch.
-std::vector<SampledCurve> fourSides(GmshSession& gmsh, int surface, std::map<int, SampledCurve>& curves) {
-  const GmshDimTags bounds = gmsh.boundary({{2, surface}}, false, false, false);
+std::vector<SampledCurve> fourSides(int surface, std::map<int, SampledCurve>& curves) {
+  gmsh::vectorpair bounds;
+  gmsh::model::getBoundary({{2, surface}}, bounds, false, false, false);
   std::vector<SampledCurve> sides;
   for (const auto& [dim, tag] : bounds) {
     auto it = curves.find(std::abs(tag));
-    if (it == curves.end()) it = curves.emplace(std::abs(tag), sampleCurve(gmsh, std::abs(tag))).first;
+    if (it == curves.end()) it = curves.emplace(std::abs(tag), sampleCurve(std::abs(tag))).first;
     if (it->second.ends[0] < 0) return {};
     sides.push_back(it->second);
   }
@@ -161,13 +164,14 @@ double segmentsNeeded(const SampledCurve& c, const QuadMeshOptions& o, const Cho
 // evenly spaced nodes, the most any of them needs (§6.1 sizing) along a chain of such patches: a
 // structured patch takes the finest size it needs across it. (Spacing graded along the curves is
 // interpolated in Gmsh's parametrization of the patch, which squeezes the rows along the rim.)
-std::size_t structurePatches(GmshSession& gmsh, const QuadMeshOptions& o, const ChordalLocator& chordal) {
-  const GmshDimTags surfaces = gmsh.entities(2);
+std::size_t structurePatches(const QuadMeshOptions& o, const ChordalLocator& chordal) {
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
   std::map<int, SampledCurve> curves;
   std::map<int, int> index;  // curve tag -> union-find element
   std::vector<std::pair<int, std::vector<SampledCurve>>> patches;
   for (const auto& [dim, surface] : surfaces) {
-    std::vector<SampledCurve> sides = fourSides(gmsh, surface, curves);
+    std::vector<SampledCurve> sides = fourSides(surface, curves);
     if (sides.empty()) continue;
     for (const auto& c : sides) index.emplace(c.tag, static_cast<int>(index.size()));
     patches.emplace_back(surface, std::move(sides));
@@ -180,19 +184,19 @@ std::size_t structurePatches(GmshSession& gmsh, const QuadMeshOptions& o, const 
     double& s = segments[opposite.find(at)];
     s = std::max(s, segmentsNeeded(curves[tag], o, chordal));
   }
-  for (const auto& [tag, at] : index) gmsh.setTransfiniteCurve(tag, static_cast<int>(segments[opposite.find(at)]) + 1);
+  for (const auto& [tag, at] : index) gmsh::model::mesh::setTransfiniteCurve(tag, static_cast<int>(segments[opposite.find(at)]) + 1);
   for (const auto& [surface, sides] : patches) {
-    gmsh.setTransfiniteSurface(surface);
-    gmsh.setRecombine(2, surface);
+    gmsh::model::mesh::setTransfiniteSurface(surface);
+    gmsh::model::mesh::setRecombine(2, surface);
   }
   return patches.size();
 }
 
 // Gmsh's elements of one type (3: triangles, 4: quads), as node tags.
 template <int N>
-std::vector<std::array<std::size_t, N>> elementsOfType(GmshSession& gmsh, int type) {
+std::vector<std::array<std::size_t, N>> elementsOfType(int type) {
   std::vector<std::size_t> tags, nodeTags;
-  gmsh.elementsByType(type, tags, nodeTags);
+  gmsh::model::mesh::getElementsByType(type, tags, nodeTags);
   std::vector<std::array<std::size_t, N>> out(tags.size());
   for (std::size_t e = 0; e < tags.size(); ++e)
     for (int k = 0; k < N; ++k) out[e][k] = nodeTags[N * e + k];
@@ -200,12 +204,12 @@ std::vector<std::array<std::size_t, N>> elementsOfType(GmshSession& gmsh, int ty
 }
 
 // Gmsh's quads, and its leftover triangles paired into quads, the rest split (quad_completion).
-QuadMesh collectQuads(GmshSession& gmsh) {
-  const auto quadTags = elementsOfType<4>(gmsh, 3);
-  const auto triangleTags = elementsOfType<3>(gmsh, 2);
+QuadMesh collectQuads() {
+  const auto quadTags = elementsOfType<4>(3);
+  const auto triangleTags = elementsOfType<3>(2);
   std::vector<std::size_t> nodeTags;
-  std::vector<double> coord;
-  gmsh.nodes(nodeTags, coord);
+  std::vector<double> coord, param;
+  gmsh::model::mesh::getNodes(nodeTags, coord, param, -1, -1, true, false);
   std::map<std::size_t, Vec3> position;
   for (size_t i = 0; i < nodeTags.size(); ++i) position[nodeTags[i]] = Vec3(coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]);
   QuadMesh q;
@@ -268,22 +272,29 @@ double gmshTimeout(const ChordalSurface& chordal, double size) {
 QuadMesh gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const PatchSplit& split, std::string& error) {
   const ChordalSurface& chordal = locator.surface();
   const ChildResult run = runInChildProcess([&] {
-    GmshSession gmsh;
-    gmsh.addModel("chordal_surface");
-    addChordalTriangles(gmsh, chordal);
-    const double toRadians = M_PI / 180.0;
-    gmsh.classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
-    gmsh.createGeometry();
-    // Gmsh 4.8 caps every mesh size by the model's size, which is only computed on a synchronize:
-    // without it, the discrete model's default of 1 caps the adaptive sizes (§6.1).
-    gmsh.synchronizeGeo();
-    SizeSource size{locator, o.vertexSize};
-    setQuadOptions(gmsh, o, split, size);
-    const std::size_t structured = split.structured ? structurePatches(gmsh, o, locator) : 0;
-    gmsh.generate(2);
-    QuadMesh q = collectQuads(gmsh);
-    q.structuredPatches = structured;
-    return toBytes(q);
+    GmshSession session;
+    try {
+      gmsh::model::add("chordal_surface");
+      addChordalTriangles(chordal);
+      const double toRadians = M_PI / 180.0;
+      gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
+      gmsh::model::mesh::createGeometry();
+      // Gmsh 4.8 caps every mesh size by the model's size, which is only computed on a synchronize:
+      // without it, the discrete model's default of 1 caps the adaptive sizes (§6.1).
+      gmsh::model::geo::synchronize();
+      setQuadOptions(o, split, locator);
+      const std::size_t structured = split.structured ? structurePatches(o, locator) : 0;
+      gmsh::model::mesh::generate(2);
+      QuadMesh q = collectQuads();
+      q.structuredPatches = structured;
+      return toBytes(q);
+    } catch (const std::exception&) {
+      throw;
+    } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
+      std::string last;
+      gmsh::logger::getLastError(last);
+      throw std::runtime_error(last.empty() ? "unknown Gmsh error" : last);
+    }
   }, o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTimeout(chordal, smallestSize(o)));
   if (!run.ok) {
     error = "Gmsh " + run.failure;
