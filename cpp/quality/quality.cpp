@@ -6,7 +6,6 @@
 #include <limits>
 #include <tuple>
 
-
 namespace hexlayer {
 
 const std::array<std::array<int, 4>, 6> kHexFaces = {{
