@@ -447,11 +447,17 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   const long chordalEuler = eulerCharacteristic(chordal.surface());
   // Structured block grids first: where one has square enough quads, Gmsh is not needed. A grid
   // with an inverted quad (its layout does not fit the surface) is never kept.
-  for (QuadMesh& q : blockGridQuads(chordal, o)) {
-    q.nodes = onChordalSurface(q, chordal).onSurface;
-    const QuadScore score = finishTry(q, chordal, o, chordalEuler);
-    if (!score.topologyChanged && score.inverted == 0 && score < bestScore) best = std::move(q), bestScore = score;
+  // The grid and the O-grid are independent tries: finished side by side, then ranked in order. (A
+  // single try keeps its own parallel loops: an inactive region does not nest them.)
+  std::vector<QuadMesh> blocks = blockGridQuads(chordal, o);
+  std::vector<QuadScore> scores(blocks.size());
+  #pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
+  for (long i = 0; i < static_cast<long>(blocks.size()); ++i) {
+    blocks[i].nodes = onChordalSurface(blocks[i], chordal).onSurface;
+    scores[i] = finishTry(blocks[i], chordal, o, chordalEuler);
   }
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    if (!scores[i].topologyChanged && scores[i].inverted == 0 && scores[i] < bestScore) best = std::move(blocks[i]), bestScore = scores[i];
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;
   for (std::size_t i = 0; i < o.patchSplits.size() && !(bestScore.good() && bestScore.mean >= kStructuredMean); ++i) {
