@@ -102,7 +102,8 @@ def run_hexlayer(args, case, out_dir):
         return result
     with open(report) as f:
         r = json.load(f)
-    result.update(hexes=r["hexes"], timings_s=r["timings_s"], sj_min=r["scaled_jacobian"]["min"],
+    result.update(hexes=r["hexes"], timings_s=r["timings_s"], peak_memory_mib=r.get("peak_memory_mib", {}),
+                  sj_min=r["scaled_jacobian"]["min"],
                   sj_avg=r["scaled_jacobian"]["avg"], inverted=r["inverted_hexes"],
                   volume_error=r["volume"]["relative_error"], hexes_per_s=r["hexes"] / wall)
     if not args.keep_meshes:
@@ -159,8 +160,11 @@ def print_row(case, h, g):
     elif g:
         line += f" | gmsh failed (exit {g['exit_code']})"
     print(line)
-    stages = "  ".join(f"{k} {v:.2f}" for k, v in h["timings_s"].items())
-    print(f"{'':16s} stages (s): {stages}")
+    # Per stage: wall time, hexes per second of that stage, the process's peak memory at its end.
+    memory = h.get("peak_memory_mib", {})
+    stages = "  ".join(f"{k} {v:.2f} s {h['hexes'] / v if v > 0 else 0:.0f} hex/s {memory.get(k, 0):.0f} MiB"
+                       for k, v in h["timings_s"].items())
+    print(f"{'':16s} stages: {stages}")
     sys.stdout.flush()
 
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 #include <unistd.h>
+#include <sys/resource.h>
 
 #include "bubbles/bubble_packing.hpp"
 #include "chordal/chordal_fairing.hpp"
@@ -40,7 +41,15 @@ constexpr double kMaxAutoQuads = 250000;
 constexpr double kMinReach = 0.25, kMaxReach = 4;  // a wall hit counts between these multiples of r
 constexpr double kBytesPerHex = 2000;  // plate.step at size 0.3: 64 312 hexes, 73.5 MB peak (x 2 for safety)
 
-// Runs one stage, records its wall time in report["timings_s"][name] and reports progress.
+// The process's peak resident memory so far, in MiB (Linux's ru_maxrss is in KiB).
+double peakMemoryMiB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// Runs one stage, records its wall time in report["timings_s"][name] and the process's peak memory
+// at its end in report["peak_memory_mib"][name], and reports progress.
 class StageClock {
  public:
   StageClock(nlohmann::json& report, const MeshOptions& options) : report_(report), options_(options) {}
@@ -50,6 +59,7 @@ class StageClock {
     auto result = stage();
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     report_["timings_s"][name] = s;
+    report_["peak_memory_mib"][name] = peakMemoryMiB();
     if (options_.progress) {
       std::ostringstream line;
       line << name << ": " << std::fixed << std::setprecision(2) << s << " s";

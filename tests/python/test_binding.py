@@ -135,6 +135,14 @@ class PlateMesh(unittest.TestCase):
         stages = [line.split(":")[0] for line in self.lines]
         self.assertCountEqual(stages, self.result.report["timings_s"])  # the report sorts its keys
 
+    def test_peak_memory_per_stage_is_a_high_water_mark(self):
+        stages = [line.split(":")[0] for line in self.lines]  # in the order they ran
+        memory = self.result.report["peak_memory_mib"]
+        self.assertCountEqual(stages, memory)
+        peaks = [memory[s] for s in stages]
+        self.assertGreater(peaks[0], 10, "a process with OpenCASCADE loaded holds more than 10 MiB")
+        self.assertEqual(peaks, sorted(peaks), "the peak so far never falls")
+
 
 class TwoSolids(unittest.TestCase):
     def test_stages_of_each_solid_follow_each_other(self):
