@@ -146,33 +146,36 @@ QualityReport measureQuality(const HexMesh& mesh) {
 }
 
 std::vector<BoundaryFace> boundaryFaces(const HexMesh& mesh) {
-  struct KeyedFace {
-    std::array<int, 4> key;  // sorted node ids
-    int id;                  // 6 * hex + local face
+  const std::size_t count = 6 * mesh.hexes.size();  // face f is local face f % 6 of hex f / 6
+  auto corners = [&](std::size_t f) {
+    std::array<int, 4> k;
+    for (int i = 0; i < 4; ++i) k[i] = mesh.hexes[f / 6][kHexFaces[f % 6][i]];
+    return k;
   };
-  std::vector<KeyedFace> all;
-  all.reserve(6 * mesh.hexes.size());
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-    for (int f = 0; f < 6; ++f) {
-      KeyedFace k{{}, static_cast<int>(6 * h) + f};
-      for (int i = 0; i < 4; ++i) k.key[i] = mesh.hexes[h][kHexFaces[f][i]];
-      std::sort(k.key.begin(), k.key.end());
-      all.push_back(k);
-    }
-  std::sort(all.begin(), all.end(), [](const KeyedFace& a, const KeyedFace& b) { return std::tie(a.key, a.id) < std::tie(b.key, b.id); });
-  std::vector<int> ids;
-  for (std::size_t i = 0, j = 0; i < all.size(); i = j) {
-    for (j = i + 1; j < all.size() && all[j].key == all[i].key;) ++j;
-    if (j - i == 1) ids.push_back(all[i].id);
-  }
-  std::sort(ids.begin(), ids.end());  // by hex, then local face
-  std::vector<BoundaryFace> faces;
-  faces.reserve(ids.size());
-  for (int id : ids) {
-    BoundaryFace b{{}, id / 6, id % 6};
-    for (int i = 0; i < 4; ++i) b.nodes[i] = mesh.hexes[b.hex][kHexFaces[b.localFace][i]];
-    faces.push_back(b);
-  }
+  auto key = [&](std::size_t f) {  // its corners sorted: the same for every hex the face is on
+    std::array<int, 4> k = corners(f);
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  // The faces by their lowest node (a counting sort): two hexes share a face only within one bucket,
+  // and a bucket holds the few faces round one node. A face whose key is found twice is interior.
+  // (Node ids outside the mesh, which validation reports, wrap round into some bucket.)
+  const long buckets = std::max<long>(1, static_cast<long>(mesh.nodes.size()));
+  auto bucket = [&](std::size_t f) { return static_cast<long>(static_cast<unsigned>(key(f)[0]) % buckets); };
+  std::vector<std::size_t> start(buckets + 1, 0), byNode(count);
+  for (std::size_t f = 0; f < count; ++f) ++start[bucket(f) + 1];
+  for (long v = 0; v < buckets; ++v) start[v + 1] += start[v];
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t f = 0; f < count; ++f) byNode[fill[bucket(f)]++] = f;
+  std::vector<char> shared(count, 0);  // each face is written by the one bucket it is in
+  #pragma omp parallel for schedule(dynamic, 4096)
+  for (long v = 0; v < buckets; ++v)
+    for (std::size_t a = start[v]; a < start[v + 1]; ++a)
+      for (std::size_t b = a + 1; b < start[v + 1]; ++b)
+        if (key(byNode[a]) == key(byNode[b])) shared[byNode[a]] = shared[byNode[b]] = 1;
+  std::vector<BoundaryFace> faces;  // by hex, then local face
+  for (std::size_t f = 0; f < count; ++f)
+    if (!shared[f]) faces.push_back({corners(f), static_cast<int>(f / 6), static_cast<int>(f % 6)});
   return faces;
 }
 
