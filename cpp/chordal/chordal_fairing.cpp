@@ -2,28 +2,26 @@
 
 #include <algorithm>
 
+#include "core/groups.hpp"
+
 namespace hexlayer {
 namespace {
 
 constexpr double kLambda = 0.5, kMu = -0.53;  // Taubin's pass band: noise goes, the shape stays
 
 struct EdgeGraph {
-  std::vector<std::size_t> start;  // the vertices sharing a facet edge with vertex i: neighbours[start[i] .. start[i + 1])
-  std::vector<int> neighbours;
-  std::vector<char> onRim;         // on an edge of one facet only
+  Groups<int> neighbours;  // the vertices sharing a facet edge with vertex i: items[start[i] .. start[i + 1])
+  std::vector<char> onRim;  // on an edge of one facet only
 };
 
 EdgeGraph edgeGraph(const ChordalSurface& s) {
   const auto uses = facetEdgeUses(s);
-  EdgeGraph g{std::vector<std::size_t>(s.vertices.size() + 1, 0), std::vector<int>(2 * uses.size()), std::vector<char>(s.vertices.size(), 0)};
-  for (const auto& [edge, count] : uses) ++g.start[edge.first + 1], ++g.start[edge.second + 1];
-  for (std::size_t i = 0; i < s.vertices.size(); ++i) g.start[i + 1] += g.start[i];
-  std::vector<std::size_t> fill(g.start.begin(), g.start.end() - 1);
-  for (const auto& [edge, count] : uses) {
-    g.neighbours[fill[edge.first]++] = edge.second;
-    g.neighbours[fill[edge.second]++] = edge.first;
+  EdgeGraph g{groupByKey<int>(s.vertices.size(), [&](auto emit) {
+                for (const auto& [edge, count] : uses) emit(edge.first, edge.second), emit(edge.second, edge.first);
+              }),
+              std::vector<char>(s.vertices.size(), 0)};
+  for (const auto& [edge, count] : uses)
     if (count == 1) g.onRim[edge.first] = g.onRim[edge.second] = 1;
-  }
   return g;
 }
 
@@ -35,10 +33,11 @@ void laplacianStep(ChordalSurface& s, const EdgeGraph& g, double factor) {
   std::vector<Vec3> next = s.vertices;
   #pragma omp parallel for schedule(static)
   for (long i = 0; i < static_cast<long>(next.size()); ++i) {
-    if (g.onRim[i] || g.start[i] == g.start[i + 1]) continue;
+    const int first = g.neighbours.start[i], end = g.neighbours.start[i + 1];
+    if (g.onRim[i] || first == end) continue;
     Vec3 mean = Vec3::Zero();
-    for (std::size_t k = g.start[i]; k < g.start[i + 1]; ++k) mean += s.vertices[g.neighbours[k]];
-    const Vec3 towardMean = mean / static_cast<double>(g.start[i + 1] - g.start[i]) - s.vertices[i];
+    for (int k = first; k < end; ++k) mean += s.vertices[g.neighbours.items[k]];
+    const Vec3 towardMean = mean / static_cast<double>(end - first) - s.vertices[i];
     next[i] += factor * normal[i].dot(towardMean) * normal[i];
   }
   s.vertices.swap(next);

@@ -11,6 +11,7 @@
 #include <sys/resource.h>
 
 #include "bubbles/bubble_packing.hpp"
+#include "core/groups.hpp"
 #include "chordal/chordal_fairing.hpp"
 #include "chordal/chordal_surface.hpp"
 #include "core/error.hpp"
@@ -221,18 +222,14 @@ std::size_t projectRim(HexMesh& mesh, const WallProjector& walls, double thickne
   #pragma omp parallel for schedule(dynamic, 16)
   for (long i = 0; i < n; ++i)
     if (mesh.nodeOnRim[i]) onLateral[i] = walls.project(Side::Lateral, mesh.nodes[i]);
-  std::vector<std::size_t> start(mesh.nodes.size() + 1, 0), hexes;  // the hexes at rim node i: hexes[start[i] .. start[i + 1])
-  for (const auto& hex : mesh.hexes)
-    for (int v : hex) start[v + 1] += mesh.nodeOnRim[v];
-  for (long i = 0; i < n; ++i) start[i + 1] += start[i];
-  hexes.resize(start.back());
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-    for (int v : mesh.hexes[h])
-      if (mesh.nodeOnRim[v]) hexes[fill[v]++] = h;
+  const Groups<std::size_t> hexesAt = groupByKey<std::size_t>(mesh.nodes.size(), [&](auto emit) {  // of the rim nodes
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+      for (int v : mesh.hexes[h])
+        if (mesh.nodeOnRim[v]) emit(v, h);
+  });
   auto around = [&](long i) {
     std::vector<double> sj;
-    for (std::size_t k = start[i]; k < start[i + 1]; ++k) sj.push_back(hexScaledJacobian(hexCorners(mesh, hexes[k])));
+    for (std::size_t k = hexesAt.start[i]; k < hexesAt.start[i + 1]; ++k) sj.push_back(hexScaledJacobian(hexCorners(mesh, hexesAt.items[k])));
     return sj;
   };
   std::size_t moved = 0;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/groups.hpp"
+
 namespace hexlayer {
 
 namespace {
@@ -64,21 +66,13 @@ constexpr double kMinGain = 1e-4;                  // a node moves only for a be
 constexpr double kSmallestStep = 1e-2;             // pattern search stops at this x the longest edge around
 constexpr double kRimCornerAngle = 30 * M_PI / 180;  // a rim node turning more than this stays
 
-struct NodeQuads {
-  std::vector<int> start, quads;  // quads around node i: quads[start[i] .. start[i+1])
-};
+using NodeQuads = Groups<int>;  // the quads around node i: items[start[i] .. start[i + 1])
 
 NodeQuads quadsAroundNodes(const QuadMesh& q) {
-  NodeQuads nq;
-  nq.start.assign(q.nodes.size() + 1, 0);
-  for (const auto& quad : q.quads)
-    for (int v : quad) ++nq.start[v + 1];
-  for (size_t i = 0; i < q.nodes.size(); ++i) nq.start[i + 1] += nq.start[i];
-  nq.quads.resize(nq.start.back());
-  std::vector<int> fill(nq.start.begin(), nq.start.end() - 1);
-  for (size_t e = 0; e < q.quads.size(); ++e)
-    for (int v : q.quads[e]) nq.quads[fill[v]++] = static_cast<int>(e);
-  return nq;
+  return groupByKey<int>(q.nodes.size(), [&](auto emit) {
+    for (std::size_t e = 0; e < q.quads.size(); ++e)
+      for (int v : q.quads[e]) emit(v, static_cast<int>(e));
+  });
 }
 
 // The two rim neighbours of every node on the rim (the boundary of the quad mesh); {-1, -1} for an
@@ -112,7 +106,7 @@ std::array<Vec3, 4> corners(const QuadMesh& q, int e, int moved, const Vec3& at)
 double worstAround(const QuadMesh& q, const NodeQuads& nq, int node, const Vec3& at) {
   double worst = 1;
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
-    worst = std::min(worst, quadSmoothingQuality(corners(q, nq.quads[k], node, at)));
+    worst = std::min(worst, quadSmoothingQuality(corners(q, nq.items[k], node, at)));
   return worst;
 }
 
@@ -121,7 +115,7 @@ Vec3 centroidTarget(const QuadMesh& q, const NodeQuads& nq, int node) {
   Vec3 sum = Vec3::Zero();
   double area = 0;
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k) {
-    const auto p = corners(q, nq.quads[k], -1, Vec3::Zero());
+    const auto p = corners(q, nq.items[k], -1, Vec3::Zero());
     const double a = 0.5 * (p[2] - p[0]).cross(p[3] - p[1]).norm();
     sum += a * 0.25 * (p[0] + p[1] + p[2] + p[3]);
     area += a;
@@ -137,8 +131,8 @@ class MovingNodeScore {
   MovingNodeScore(const QuadMesh& q, const NodeQuads& nq, int node) : q_(q), nq_(nq), node_(node) {
     for (int k = nq.start[node]; k < nq.start[node + 1]; ++k) {
       Quad e;
-      const auto& quad = q.quads[nq.quads[k]];
-      e.p = corners(q, nq.quads[k], -1, Vec3::Zero());
+      const auto& quad = q.quads[nq.items[k]];
+      e.p = corners(q, nq.items[k], -1, Vec3::Zero());
       for (int c = 0; c < 4; ++c) {
         e.edge[c] = e.p[(c + 1) % 4] - e.p[c], e.length[c] = e.edge[c].norm();
         if (quad[c] == node) e.moved = e.moved == -1 ? c : -2;  // -2: the node twice in the quad
@@ -156,7 +150,7 @@ class MovingNodeScore {
     for (const Quad& e : quads_) {
       double quality;
       if (e.moved < 0) {
-        quality = quadSmoothingQuality(corners(q_, nq_.quads[nq_.start[node_] + (&e - quads_.data())], node_, at));
+        quality = quadSmoothingQuality(corners(q_, nq_.items[nq_.start[node_] + (&e - quads_.data())], node_, at));
       } else {
         std::array<Vec3, 4> p = e.p, edge = e.edge;
         std::array<double, 4> length = e.length;
@@ -195,7 +189,7 @@ void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<
   const double before = score(q.nodes[node]);
   double best = before, step = 0;
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
-    for (int c : q.quads[nq.quads[k]]) step = std::max(step, (q.nodes[c] - q.nodes[node]).norm());
+    for (int c : q.quads[nq.items[k]]) step = std::max(step, (q.nodes[c] - q.nodes[node]).norm());
   const double smallest = kSmallestStep * step;
   Vec3 at = q.nodes[node];
   for (step *= 0.2; step > smallest;) {
@@ -216,7 +210,7 @@ void improveWorst(QuadMesh& q, const NodeQuads& nq, int node, const std::vector<
 std::vector<Vec3> tangentDirections(const QuadMesh& q, const NodeQuads& nq, int node) {
   Vec3 n = Vec3::Zero();
   for (int k = nq.start[node]; k < nq.start[node + 1]; ++k) {
-    const auto p = corners(q, nq.quads[k], -1, Vec3::Zero());
+    const auto p = corners(q, nq.items[k], -1, Vec3::Zero());
     n += (p[2] - p[0]).cross(p[3] - p[1]);
   }
   if (n.norm() == 0) return {};
@@ -241,7 +235,7 @@ class MoveClock {
   explicit MoveClock(std::size_t nodes) : movedAt_(nodes, 0), visitedAt_(nodes, -1) {}
   bool unchanged(const QuadMesh& q, const NodeQuads& nq, int node) const {
     for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
-      for (int c : q.quads[nq.quads[k]])
+      for (int c : q.quads[nq.items[k]])
         if (movedAt_[c] > visitedAt_[node]) return false;
     return true;
   }
@@ -277,7 +271,7 @@ int removeDoublets(QuadMesh& q) {
     std::vector<char> dead(q.quads.size(), 0);
     for (size_t n = 0; n < q.nodes.size(); ++n) {
       if (rim[n][0] != -1 || nq.start[n + 1] - nq.start[n] != 2) continue;
-      const int A = nq.quads[nq.start[n]], B = nq.quads[nq.start[n] + 1];
+      const int A = nq.items[nq.start[n]], B = nq.items[nq.start[n] + 1];
       if (dead[A] || dead[B]) continue;
       // A = (n, a, x, b) and B = (n, b, y, a) share the edges n-a and n-b: they become (a, x, b, y).
       const int ka = cornerOf(q.quads[A], static_cast<int>(n)), kb = cornerOf(q.quads[B], static_cast<int>(n));

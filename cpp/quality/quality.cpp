@@ -6,6 +6,8 @@
 #include <limits>
 #include <tuple>
 
+#include "core/groups.hpp"
+
 namespace hexlayer {
 
 const std::array<std::array<int, 4>, 6> kHexFaces = {{
@@ -161,18 +163,15 @@ std::vector<BoundaryFace> boundaryFaces(const HexMesh& mesh) {
   // and a bucket holds the few faces round one node. A face whose key is found twice is interior.
   // (Node ids outside the mesh, which validation reports, wrap round into some bucket.)
   const long buckets = std::max<long>(1, static_cast<long>(mesh.nodes.size()));
-  auto bucket = [&](std::size_t f) { return static_cast<long>(static_cast<unsigned>(key(f)[0]) % buckets); };
-  std::vector<std::size_t> start(buckets + 1, 0), byNode(count);
-  for (std::size_t f = 0; f < count; ++f) ++start[bucket(f) + 1];
-  for (long v = 0; v < buckets; ++v) start[v + 1] += start[v];
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t f = 0; f < count; ++f) byNode[fill[bucket(f)]++] = f;
+  const Groups<std::size_t> byNode = groupByKey<std::size_t>(buckets, [&](auto emit) {
+    for (std::size_t f = 0; f < count; ++f) emit(static_cast<unsigned>(key(f)[0]) % buckets, f);
+  });
   std::vector<char> shared(count, 0);  // each face is written by the one bucket it is in
   #pragma omp parallel for schedule(dynamic, 4096)
   for (long v = 0; v < buckets; ++v)
-    for (std::size_t a = start[v]; a < start[v + 1]; ++a)
-      for (std::size_t b = a + 1; b < start[v + 1]; ++b)
-        if (key(byNode[a]) == key(byNode[b])) shared[byNode[a]] = shared[byNode[b]] = 1;
+    for (std::size_t a = byNode.start[v]; a < byNode.start[v + 1]; ++a)
+      for (std::size_t b = a + 1; b < byNode.start[v + 1]; ++b)
+        if (key(byNode.items[a]) == key(byNode.items[b])) shared[byNode.items[a]] = shared[byNode.items[b]] = 1;
   std::vector<BoundaryFace> faces;  // by hex, then local face
   for (std::size_t f = 0; f < count; ++f)
     if (!shared[f]) faces.push_back({corners(f), static_cast<int>(f / 6), static_cast<int>(f % 6)});
