@@ -17,8 +17,7 @@ Eigen::Vector3d triangleWeights(const Vec3& a, const Vec3& b, const Vec3& c, con
   double bestD2 = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
     const Vec3 &x = corner[k], &y = corner[(k + 1) % 3];
-    const double len2 = (y - x).squaredNorm();
-    const double u = len2 > 0 ? std::clamp((p - x).dot(y - x) / len2, 0.0, 1.0) : 0.0;
+    const double u = nearestOnSegment(x, y, p);
     if (const double d2 = (x + u * (y - x) - p).squaredNorm(); d2 < bestD2) {
       bestD2 = d2;
       best.setZero();

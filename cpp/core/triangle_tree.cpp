@@ -12,10 +12,7 @@ constexpr double kEdgeHair = 1e-9;  // barycentric distance to an edge below whi
 
 // Squared distance from p to the segment ab.
 double squaredDistanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).squaredNorm();
+  return (a + nearestOnSegment(a, b, p) * (b - a) - p).squaredNorm();
 }
 
 // Squared distance from p to the box [lo, hi] (0 inside).

@@ -3,6 +3,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -17,6 +18,13 @@ inline double boxDiagonal(const std::vector<Vec3>& points) {
   Vec3 lo = points[0], hi = points[0];
   for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   return (hi - lo).norm();
+}
+
+// Where along the segment a-b its point nearest to p lies: 0 at a, 1 at b (0 if a = b).
+inline double nearestOnSegment(const Vec3& a, const Vec3& b, const Vec3& p) {
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  return len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
 }
 
 // Which side of the thin wall a surface point belongs to (paper §3: ω_t, ω_b, ω_l).

@@ -94,12 +94,6 @@ bool closedSurface(const std::vector<Triangle>& triangles) {
   return true;
 }
 
-// Largest vertex, edge or face tolerance of the solid.
-double largestTolerance(const CadSolid& cad) {
-  return std::max({BRep_Tool::MaxTolerance(cad.solid, TopAbs_VERTEX), BRep_Tool::MaxTolerance(cad.solid, TopAbs_EDGE),
-                   BRep_Tool::MaxTolerance(cad.solid, TopAbs_FACE)});
-}
-
 // Three ray directions, each a coordinate axis tilted off the grid, the axis of the triangles'
 // smallest extent first: rays leave a thin solid soon.
 std::array<Vec3, 3> rayDirections(const std::vector<Triangle>& triangles) {
@@ -155,7 +149,7 @@ BoundaryTriangles::BoundaryTriangles(const CadSolid& cad) {
   triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
                                  [](const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }),
                   triangles.end());
-  margin_ = 2 * deviation + largestTolerance(cad) + 1e-6 * cad.diagonal;
+  margin_ = 2 * deviation + largestTolerance(cad.solid) + 1e-6 * cad.diagonal;
   rays_ = rayDirections(triangles);
   tree_.emplace(std::move(triangles));
 }

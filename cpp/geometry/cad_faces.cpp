@@ -52,17 +52,6 @@ Bnd_Box extremaBox(const TopoDS_Shape& shape) {
   return box;
 }
 
-// The largest tolerance of the face, its edges and its vertices.
-double largestTolerance(const TopoDS_Face& face) {
-  double tolerance = BRep_Tool::Tolerance(face);
-  TopTools_IndexedMapOfShape edges, vertices;
-  TopExp::MapShapes(face, TopAbs_EDGE, edges);
-  TopExp::MapShapes(face, TopAbs_VERTEX, vertices);
-  for (int e = 1; e <= edges.Extent(); ++e) tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Edge(edges(e))));
-  for (int v = 1; v <= vertices.Extent(); ++v) tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(vertices(v))));
-  return tolerance;
-}
-
 // The face's boundary in its parameter plane; a foot point within max(1e-5 x the part's diagonal,
 // 1000 x its tolerances) of it, in 3D or in (u, v), is classified exactly.
 std::unique_ptr<UvBoundary> uvBoundary(const TopoDS_Face& face, double diagonal) {

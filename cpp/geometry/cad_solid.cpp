@@ -176,6 +176,11 @@ CadSolid prepareSolid(const TopoDS_Solid& input) {
   return cad;
 }
 
+double largestTolerance(const TopoDS_Shape& shape) {
+  return std::max({BRep_Tool::MaxTolerance(shape, TopAbs_VERTEX), BRep_Tool::MaxTolerance(shape, TopAbs_EDGE),
+                   BRep_Tool::MaxTolerance(shape, TopAbs_FACE)});
+}
+
 Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {
   BRepGProp_Face prop(TopoDS::Face(face));  // applies the face orientation
   gp_Pnt p;

@@ -38,4 +38,7 @@ long eulerCharacteristic(const CadSolid& cad);
 // Unit outward normal of face `f` at parameter (u, v), respecting the face orientation.
 Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v);
 
+// The largest tolerance of the shape's vertices, edges and faces.
+double largestTolerance(const TopoDS_Shape& shape);
+
 }  // namespace hexlayer

@@ -90,11 +90,7 @@ std::vector<std::array<int, 2>> rimNeighbours(const QuadMesh& q) {
   return rim;
 }
 
-Vec3 closestOnSegment(const Vec3& a, const Vec3& b, const Vec3& p) {
-  const Vec3 ab = b - a;
-  const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-  return a + t * ab;
-}
+Vec3 closestOnSegment(const Vec3& a, const Vec3& b, const Vec3& p) { return a + nearestOnSegment(a, b, p) * (b - a); }
 
 std::array<Vec3, 4> corners(const QuadMesh& q, int e, int moved, const Vec3& at) {
   std::array<Vec3, 4> p;
