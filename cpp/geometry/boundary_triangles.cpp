@@ -161,6 +161,10 @@ Containment BoundaryTriangles::classify(const Vec3& p) const {
   return Containment::kUndecided;
 }
 
+bool BoundaryTriangles::noTriangleWithin(const Vec3& p, double distance) const {
+  return !tree_ || !tree_->anyWithin(p, distance);
+}
+
 bool BoundaryTriangles::fartherThan(const Vec3& p, double distance) const {
   return tree_ && !tree_->anyWithin(p, distance + margin_);
 }

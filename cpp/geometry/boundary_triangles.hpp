@@ -26,6 +26,10 @@ class BoundaryTriangles {
   // Whether p is surely farther than `distance` from the solid's exact boundary.
   bool fartherThan(const Vec3& p, double distance) const;
 
+  // Whether no triangle comes within `distance` of p (the exact boundary lies within margin() of the
+  // triangles); true when there are no triangles to ask.
+  bool noTriangleWithin(const Vec3& p, double distance) const;
+
   // Twice the largest distance measured between the triangles and the exact faces, plus the
   // shape's largest tolerance and 1e-6 of its diagonal.
   double margin() const { return margin_; }

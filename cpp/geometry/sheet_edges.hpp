@@ -3,14 +3,18 @@
 // a rib, boss or flange stands on the sheet (a T-junction), and the faces there need not be on the
 // same side. OpenCASCADE's offset analysis (BRepOffset_Analyse) tells the edges apart.
 #pragma once
-#include <utility>
 #include <vector>
 
 #include "geometry/cad_solid.hpp"
 
 namespace hexlayer {
 
-// Pairs of distinct faces (0-based, lower first) sharing an edge that is smooth or convex.
-std::vector<std::pair<int, int>> sheetJoins(const CadSolid& cad);
+struct SheetJoin {
+  int a = -1, b = -1;   // 0-based faces, a < b
+  bool smooth = false;  // tangent edge; else a convex sharp edge (a sharp bend, or a tapered wall's knife edge)
+};
+
+// [in] cad: the solid. Returns the pairs of distinct faces sharing an edge that is smooth or convex.
+std::vector<SheetJoin> sheetJoins(const CadSolid& cad);
 
 }  // namespace hexlayer

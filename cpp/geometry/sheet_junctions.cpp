@@ -18,28 +18,31 @@ Vec3 faceCentre(const TopoDS_Shape& face, double area) {
 
 }  // namespace
 
+Sheet sheetOf(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces) {
+  Sheet s;
+  for (int f : faces) {
+    s.faces.push_back(f);
+    s.area += sides.faces[f].area;
+    s.volume += 0.5 * sides.faces[f].area * sides.faces[f].thickness;
+    s.centre += faceCentre(cad.faces(f + 1), sides.faces[f].area);
+  }
+  s.centre /= std::max(s.area, 1e-30);
+  return s;
+}
+
 std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
   const int n = static_cast<int>(sides.faces.size());
   auto isWall = [&](int f) { return f >= 0 && sides.faces[f].side != Side::Lateral; };
   UnionFind uf(n);
-  for (const auto& [a, b] : sides.sheetJoins)
-    if (isWall(a) && isWall(b)) uf.unite(a, b);
+  for (const SheetJoin& j : sides.sheetJoins)
+    if (isWall(j.a) && isWall(j.b)) uf.unite(j.a, j.b);
   for (int f = 0; f < n; ++f)
     if (isWall(f) && isWall(sides.faces[f].opposite)) uf.unite(f, sides.faces[f].opposite);
-  std::map<int, Sheet> byRoot;
+  std::map<int, std::vector<int>> byRoot;
   for (int f = 0; f < n; ++f)
-    if (isWall(f)) {
-      Sheet& s = byRoot[uf.find(f)];
-      s.faces.push_back(f);
-      s.area += sides.faces[f].area;
-      s.volume += 0.5 * sides.faces[f].area * sides.faces[f].thickness;
-      s.centre += faceCentre(cad.faces(f + 1), sides.faces[f].area);
-    }
+    if (isWall(f)) byRoot[uf.find(f)].push_back(f);
   std::vector<Sheet> sheets;
-  for (auto& [root, s] : byRoot) {
-    s.centre /= std::max(s.area, 1e-30);
-    sheets.push_back(std::move(s));
-  }
+  for (const auto& [root, faces] : byRoot) sheets.push_back(sheetOf(cad, sides, faces));
   std::stable_sort(sheets.begin(), sheets.end(), [](const Sheet& a, const Sheet& b) { return a.area > b.area; });
   return sheets;
 }

@@ -24,6 +24,9 @@ struct Sheet {
 // by decreasing area.
 std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides);
 
+// The given wall faces as one sheet (area, estimated volume, centre), e.g. to report them.
+Sheet sheetOf(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces);
+
 // Leaves the faces of every sheet but the first out of the walls (they become lateral faces: no
 // nodes are placed on them, and the first sheet's chordal surface runs on under them).
 void keepFirstSheet(const std::vector<Sheet>& sheets, WallSides& sides);

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "geometry/boundary_triangles.hpp"
 #include "geometry/face_sampling.hpp"
 #include "geometry/sheet_edges.hpp"
 
@@ -27,6 +28,12 @@ constexpr int kRaysPerFace = 150;
 constexpr double kMaxSlenderness = 0.25;  // wall thickness over the part's diagonal
 // Wall faces facing a wall on their own side, as a share of the wall area, above which the sheet branches.
 constexpr double kMaxJunctionAreaShare = 0.02;
+// A ray crosses the wall when its middle is farther than this share of its half-length from every boundary
+// point: 1/1.3 takes walls inclined to each other by up to about 40 degrees (a taper, a wedge) and leaves
+// out rim faces that meet the walls more steeply (a 45 degree chamfer or oblique cut, a plane cutting a shell).
+constexpr double kMiddleClearance = 1 / 1.3;
+// A face is a wall face when the rays crossing the wall stand for at least this share of its area.
+constexpr double kMinWallShare = 0.5;
 
 struct Ray {
   double length;
@@ -61,19 +68,39 @@ double perimeter(const TopoDS_Shape& face) {
   return p;
 }
 
-// Casts rays from the face's samples inward and records how far the opposite wall is.
-std::vector<Ray> castInwardRays(const CadSolid& cad, IntCurvesFace_ShapeIntersector& rays, int f, Vec3& meanNormal) {
+// The inward rays of one face's samples: where each first meets the boundary again.
+struct FaceRays {
+  std::vector<Ray> all;       // every ray that hit
+  std::vector<Ray> crossing;  // the rays that cross the wall (crossesWall)
+  double sampledArea = 0;     // of all samples, hit or not
+  Vec3 meanNormal = Vec3::Zero();  // area-weighted outward normal
+};
+
+// Whether the inward ray from p (unit direction `inward`, first hit at `length`) crosses the wall from
+// one side to the other: the middle of the ray is then about as far from every boundary point as from
+// its two ends, like the centre of the wall's inscribed ball. A ray from a rim runs along the wall and
+// its middle lies near the walls (a flat rim, the outer part of a round rim); a ray from a rim face that
+// meets the walls at more than about 40 degrees (a chamfer, a rim cut obliquely) starts close to the wall
+// it leaves. Decided per sample, so a face that is partly wall and partly rim is measured as it is.
+bool crossesWall(const BoundaryTriangles& boundary, const Vec3& p, const Vec3& inward, double length) {
+  return boundary.noTriangleWithin(p + 0.5 * length * inward, kMiddleClearance * 0.5 * length);
+}
+
+// Casts rays from the face's samples inward and records how far the boundary is and which face it is.
+FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, IntCurvesFace_ShapeIntersector& rays, int f) {
   const TopoDS_Shape& face = cad.faces(f + 1);
   const double spacing = std::sqrt(std::max(triangulatedArea(face), 1e-30) / kRaysPerFace);
   const double skip = 1e-5 * cad.diagonal;
-  std::vector<Ray> out;
-  meanNormal = Vec3::Zero();
+  FaceRays out;
   for (const FaceSample& s : sampleFace(face, spacing)) {
-    meanNormal += s.area * s.normal;
+    out.meanNormal += s.area * s.normal;
+    out.sampledArea += s.area;
     const gp_Lin line(gp_Pnt(s.point.x(), s.point.y(), s.point.z()), gp_Dir(-s.normal.x(), -s.normal.y(), -s.normal.z()));
     rays.PerformNearest(line, skip, 2 * cad.diagonal);
     if (!rays.IsDone() || rays.NbPnt() == 0) continue;
-    out.push_back({rays.WParameter(1), cad.faces.FindIndex(rays.Face(1)) - 1, s.area});
+    const Ray ray{rays.WParameter(1), cad.faces.FindIndex(rays.Face(1)) - 1, s.area};
+    out.all.push_back(ray);
+    if (crossesWall(boundary, s.point, -s.normal, ray.length)) out.crossing.push_back(ray);
   }
   return out;
 }
@@ -156,24 +183,52 @@ Error junctionError(const CadSolid& cad, const WallSides& w, const std::vector<i
   return geometryError(msg.str());
 }
 
+// A relation between two faces' sides: 0 the same side, 1 opposite sides.
+struct SideRelation {
+  int a, b, relation;
+  double weight;       // area of the rays that tie them (joins: 0, decided by their rank)
+  bool smooth = false;  // a smooth edge, which no other relation may undo
+};
+
+// The relations in the order they are trusted: smooth edges (a wall runs on through a bend's tangent edge),
+// then faces facing each other across the wall, most ray area first, then convex sharp edges (a sharp bend;
+// the knife edge of a tapered end, where the two faces face each other instead, gives way).
+std::vector<SideRelation> rankedRelations(const WallSides& w, const std::vector<std::map<int, double>>& across) {
+  auto isWall = [&](int f) { return w.faces[f].side != Side::Lateral; };
+  std::vector<SideRelation> smooth, opposite, convex;
+  for (const SheetJoin& j : w.sheetJoins)  // not across concave edges: a rib's walls are not the sheet's side
+    if (isWall(j.a) && isWall(j.b)) (j.smooth ? smooth : convex).push_back({j.a, j.b, 0, 0, j.smooth});
+  std::map<std::pair<int, int>, double> pairs;
+  for (int f = 0; f < static_cast<int>(across.size()); ++f)
+    for (const auto& [g, area] : across[f])
+      if (g != f && isWall(f) && isWall(g)) pairs[std::minmax(f, g)] += area;
+  for (const auto& [fg, area] : pairs) opposite.push_back({fg.first, fg.second, 1, area});
+  std::stable_sort(opposite.begin(), opposite.end(), [](const SideRelation& x, const SideRelation& y) { return x.weight > y.weight; });
+  std::vector<SideRelation> all = std::move(smooth);
+  all.insert(all.end(), opposite.begin(), opposite.end());
+  all.insert(all.end(), convex.begin(), convex.end());
+  return all;
+}
+
 // Same side across shared edges, opposite sides across the wall; returns (group, parity) per face.
-std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, const WallSides& w) {
+// Walls facing a wall on their own side (the sheet branches) go into w.ownSideFaces.
+std::vector<std::pair<int, int>> solveSides(WallSides& w, const std::vector<std::map<int, double>>& across) {
   const int n = static_cast<int>(w.faces.size());
   ParityUnionFind uf(n);
-  auto isWall = [&](int f) { return w.faces[f].side != Side::Lateral; };
-  for (const auto& [a, b] : w.sheetJoins)  // not across concave edges: a rib's walls are not the sheet's side
-    if (isWall(a) && isWall(b) && !uf.unite(a, b, 0))
-      throw geometryError("top and bottom cannot be told apart: " + faceName(a) + " and " + faceName(b) +
-                          " share an edge but lie on opposite sides of the wall");
-  std::vector<int> junctionFaces;  // faces whose wall is on their own side: the sheet branches (rib, T-junction)
+  std::vector<double> against(n, 0.0);  // per face, the ray area of its relations across the wall that failed
+  for (const SideRelation& r : rankedRelations(w, across)) {
+    if (uf.unite(r.a, r.b, r.relation)) continue;
+    if (r.relation == 1) against[r.a] += r.weight, against[r.b] += r.weight;
+    else if (r.smooth)
+      throw geometryError("top and bottom cannot be told apart: " + faceName(r.a) + " and " + faceName(r.b) +
+                          " share a smooth edge but lie on opposite sides of the wall");
+  }
   double junctionArea = 0, wallArea = 0;
   for (int f = 0; f < n; ++f)
-    if (isWall(f)) {
-      wallArea += w.faces[f].area;
-      const int g = w.faces[f].opposite;
-      if (g >= 0 && isWall(g) && !uf.unite(f, g, 1)) junctionFaces.push_back(f), junctionArea += w.faces[f].area;
-    }
-  if (junctionArea > kMaxJunctionAreaShare * wallArea) throw junctionError(cad, w, junctionFaces);
+    if (w.faces[f].side != Side::Lateral) wallArea += w.faces[f].area, junctionArea += 0.5 * against[f];
+  if (junctionArea > kMaxJunctionAreaShare * wallArea)
+    for (int f = 0; f < n; ++f)
+      if (against[f] > 0) w.ownSideFaces.push_back(f);
   std::vector<std::pair<int, int>> rootParity(n);
   for (int f = 0; f < n; ++f) rootParity[f] = uf.find(f);
   return rootParity;
@@ -181,22 +236,30 @@ std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, const WallSides
 
 }  // namespace
 
+Error ownSideError(const CadSolid& cad, const WallSides& w) { return junctionError(cad, w, w.ownSideFaces); }
+
 WallSides classifyWallSides(const CadSolid& cad) {
   const int n = cad.faces.Extent();
   WallSides w;
   w.faces.resize(n);
   IntCurvesFace_ShapeIntersector rays;
   rays.Load(cad.solid, 1e-7 * cad.diagonal);
+  const BoundaryTriangles boundary(cad);
   std::vector<Vec3> meanNormal(n);
+  std::vector<std::map<int, double>> across(n);  // per face: ray area crossing the wall to each face
   double totalArea = 0;
   for (int f = 0; f < n; ++f) {
     FaceSide& fs = w.faces[f];
-    const std::vector<Ray> hits = castInwardRays(cad, rays, f, meanNormal[f]);
+    const FaceRays hits = castInwardRays(cad, boundary, rays, f);
+    meanNormal[f] = hits.meanNormal;
     fs.area = triangulatedArea(cad.faces(f + 1));
     fs.width = 2 * fs.area / std::max(perimeter(cad.faces(f + 1)), 1e-30);
-    fs.thickness = weightedMedian(hits);
-    fs.opposite = dominantHit(hits);
-    fs.side = (!hits.empty() && fs.thickness < fs.width) ? Side::Top : Side::Lateral;  // Top = "wall" for now
+    double crossingArea = 0;
+    for (const Ray& r : hits.crossing) crossingArea += r.weight, across[f][r.hitFace] += r.weight;
+    fs.wallShare = crossingArea / std::max(hits.sampledArea, 1e-300);
+    fs.thickness = weightedMedian(hits.crossing.empty() ? hits.all : hits.crossing);
+    fs.opposite = dominantHit(hits.crossing);
+    fs.side = fs.wallShare >= kMinWallShare ? Side::Top : Side::Lateral;  // Top = "wall" for now
     totalArea += fs.area;
   }
   std::vector<Ray> wallThickness, everywhere;
@@ -210,7 +273,7 @@ WallSides classifyWallSides(const CadSolid& cad) {
   requireThin(w, cad, weightedMedian(everywhere));
 
   w.sheetJoins = sheetJoins(cad);
-  const std::vector<std::pair<int, int>> rootParity = solveSides(cad, w);
+  const std::vector<std::pair<int, int>> rootParity = solveSides(w, across);
   // In each group of connected wall faces, the parity class that faces +z more is Top.
   std::map<int, double> up;
   for (int f = 0; f < n; ++f)

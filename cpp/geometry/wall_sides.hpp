@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "core/error.hpp"
 #include "geometry/cad_solid.hpp"
+#include "geometry/sheet_edges.hpp"
 
 namespace hexlayer {
 
@@ -14,25 +16,38 @@ struct FaceSide {
   double thickness = 0;  // area-weighted median distance to the opposite wall along the inward normal
   double width = 0;      // 2 * area / perimeter: about the wall thickness for a lateral (rim) face
   double area = 0;
-  int opposite = -1;     // 0-based index of the face most rays hit, -1 if none
+  int opposite = -1;     // 0-based index of the face most rays crossing the wall hit, -1 if none
+  double wallShare = 0;  // share of the face's area whose inward rays cross the wall (a wall face: >= 0.5)
 };
 
 struct WallSides {
   std::vector<FaceSide> faces;  // indexed like CadSolid::faces, 0-based (FreeCAD's Face<i+1>)
   double thickness = 0;         // area-weighted median over top and bottom faces
   double sheetAreaShare = 0;    // area of top + bottom over the whole boundary
-  std::vector<std::pair<int, int>> sheetJoins;  // faces sharing a smooth or convex edge (sheet_edges.hpp)
+  std::vector<SheetJoin> sheetJoins;  // faces sharing a smooth or convex edge (sheet_edges.hpp)
+  std::vector<int> ownSideFaces;      // wall faces facing a wall on their own side: the sheet branches there
 };
 
 // Measures the wall and sorts the faces into top, bottom and lateral.
-//  - A face is a wall face (top or bottom) when rays cast inward along its normal cross the wall
-//    (median length `thickness`) before they could cross the face itself (`width`); a lateral
-//    face is as wide as the wall is thick, while rays from it run along the wall, far.
-//  - Wall faces that share an edge are on the same side; a face and the face its rays hit are on
-//    opposite sides. A parity union-find solves these constraints; the side whose faces look
-//    more towards +z is called Top.
-// Throws geometryError when the part is not a thin section or its sides cannot be told apart.
+//  - Rays are cast inward from samples spread over every face. A ray crosses the wall when its middle
+//    is about as far from all of the boundary as from its ends (the centre of an inscribed ball); rays
+//    from a rim run along the wall or leave it steeply, and their middles lie near a wall. A face is a
+//    wall face (top or bottom) when the rays crossing the wall stand for half its area or more, so a
+//    rim of any shape (flat, round, fillet-flat-fillet, chamfered, cut obliquely) is lateral, and a
+//    wall split into pieces is wall in every piece.
+//  - Wall faces sharing a smooth edge are on the same side; faces whose rays cross the wall to each
+//    other are on opposite sides; faces sharing a convex sharp edge are on the same side unless that
+//    contradicts the rest (the knife edge of a tapered end). A parity union-find takes them in that
+//    order; the side whose faces look more towards +z is called Top.
+//  - Walls whose rays cross to a wall that the relations put on their own side (over 2 % of the wall
+//    area) are where the sheet branches: they are listed in ownSideFaces (see ownSideError).
+// [in] cad: the prepared solid. Throws geometryError when the part is not a thin section or its sides
+// cannot be told apart.
 WallSides classifyWallSides(const CadSolid& cad);
+
+// The error for a sheet that branches (WallSides::ownSideFaces not empty): the faces and where they
+// meet the other walls.
+Error ownSideError(const CadSolid& cad, const WallSides& sides);
 
 // CAD features smaller than the quad size, which the quad mesh may smooth over: edges of the top
 // and bottom walls shorter than `size` (a small hole's rim, a short edge), faces narrower than it

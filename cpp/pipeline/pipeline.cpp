@@ -134,20 +134,29 @@ std::string describeSheet(const Sheet& s) {
   return out.str();
 }
 
+nlohmann::json junctionReport(const Sheet& s) {
+  return {{"at", {s.centre.x(), s.centre.y(), s.centre.z()}}, {"faces", faceNames(s)}, {"area", s.area}, {"volume", s.volume}};
+}
+
 // Ribs, bosses and flanges standing on the sheet (T-junctions, where the chordal surface would be
-// non-manifold): refused, or left out with dropJunctions; they are listed in the report. Returns
-// the estimated volume left out.
+// non-manifold), found two ways: sheets that meet only along concave edges, and walls whose rays cross to
+// a wall on their own side. Refused, or left out with dropJunctions; they are listed in the report.
+// Returns the estimated volume left out.
 double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohmann::json& report) {
-  const std::vector<Sheet> sheets = findSheets(cad, sides);
   report["junctions"] = nlohmann::json::array();
-  for (std::size_t s = 1; s < sheets.size(); ++s)
-    report["junctions"].push_back({{"at", {sheets[s].centre.x(), sheets[s].centre.y(), sheets[s].centre.z()}},
-                                   {"faces", faceNames(sheets[s])}, {"area", sheets[s].area},
-                                   {"volume", sheets[s].volume}});
-  if (sheets.size() < 2) return 0;
+  double leftOut = 0;
+  if (!sides.ownSideFaces.empty()) {
+    if (!drop) throw ownSideError(cad, sides);
+    const Sheet branch = sheetOf(cad, sides, sides.ownSideFaces);
+    report["junctions"].push_back(junctionReport(branch));
+    leftOut += branch.volume;
+    for (int f : sides.ownSideFaces) sides.faces[f].side = Side::Lateral;
+  }
+  const std::vector<Sheet> sheets = findSheets(cad, sides);
+  for (std::size_t s = 1; s < sheets.size(); ++s) report["junctions"].push_back(junctionReport(sheets[s]));
+  if (sheets.size() < 2) return leftOut;
   if (drop) {
     keepFirstSheet(sheets, sides);
-    double leftOut = 0;
     for (std::size_t s = 1; s < sheets.size(); ++s) leftOut += sheets[s].volume;
     return leftOut;
   }
@@ -212,8 +221,8 @@ nlohmann::json faceSideCounts(const WallSides& sides) {
 }
 
 // The rim nodes onto the lateral faces (ω_l of §3): swept from the chordal surface's rim, they sit
-// a little inside the part. A node stays where it is if it is farther than half the wall thickness
-// from them, or if a hex around it would get worse and end below a scaled Jacobian of 0.2.
+// a little inside the part (by up to half the wall on a round rim). A node stays where it is if it is
+// farther than the wall thickness from them, or if a hex around it would get worse and end below a scaled Jacobian of 0.2.
 std::size_t projectRim(HexMesh& mesh, const WallProjector& walls, double thickness) {
   const long n = static_cast<long>(mesh.nodes.size());
   // The projections first, in parallel (each query builds its own OpenCASCADE tools): a rim node's
@@ -235,7 +244,7 @@ std::size_t projectRim(HexMesh& mesh, const WallProjector& walls, double thickne
   std::size_t moved = 0;
   for (long i = 0; i < n; ++i) {
     const std::optional<FacePoint>& p = onLateral[i];
-    if (!p || (p->point - mesh.nodes[i]).norm() >= 0.5 * thickness) continue;
+    if (!p || (p->point - mesh.nodes[i]).norm() > thickness) continue;
     const Vec3 at = mesh.nodes[i];
     const std::vector<double> before = around(i);
     mesh.nodes[i] = p->point;

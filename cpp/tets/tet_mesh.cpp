@@ -63,6 +63,39 @@ bool insideSolid(const Vec3& p, const BoundaryTriangles& triangles, const CadSol
   return exact->State() == TopAbs_IN;
 }
 
+enum Verdict : char { kKept, kKeptCoplanar, kFlat, kOutside };
+
+// Coplanar tets that lie on the hull of the kept tets: two of their faces are shared with no other kept
+// tet, so the sliver stands in the plane where the tets end (a round or filleted rim, whose hull plane runs
+// inside the solid, away from its boundary), instead of between tets on both sides (a sharp bend). Peeled
+// until none is left, as dropping one can lay open another behind it.
+// [in,out] verdict: per tet; peeled slivers become kOutside.
+void peelHullSlivers(const TetMesh& mesh, std::vector<char>& verdict) {
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<std::pair<std::array<int, 3>, std::size_t>> faces;
+    for (std::size_t i = 0; i < mesh.tets.size(); ++i)
+      if (verdict[i] == kKept || verdict[i] == kKeptCoplanar)
+        for (int skip = 0; skip < 4; ++skip) {
+          std::array<int, 3> f{};
+          for (int k = 0, j = 0; k < 4; ++k)
+            if (k != skip) f[j++] = mesh.tets[i][k];
+          std::sort(f.begin(), f.end());
+          faces.emplace_back(f, i);
+        }
+    std::sort(faces.begin(), faces.end());
+    std::vector<int> open(mesh.tets.size(), 0);  // faces shared with no other kept tet
+    for (std::size_t a = 0; a < faces.size();) {
+      std::size_t b = a;
+      while (b < faces.size() && faces[b].first == faces[a].first) ++b;
+      if (b - a == 1) ++open[faces[a].second];
+      a = b;
+    }
+    for (std::size_t i = 0; i < mesh.tets.size(); ++i)
+      if (verdict[i] == kKeptCoplanar && open[i] >= 2) verdict[i] = kOutside, changed = true;
+  }
+}
+
 }  // namespace
 
 bool isCoplanarTet(const std::array<Vec3, 4>& p) {
@@ -101,7 +134,6 @@ TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
 }
 
 TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
-  enum Verdict : char { kKept, kKeptCoplanar, kFlat, kOutside };
   std::vector<char> verdict(mesh.tets.size());
   const BoundaryTriangles triangles(cad);
   #pragma omp parallel
@@ -127,6 +159,7 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
   const TopoDS_Shell boundary = BRepClass3d::OuterShell(cad.solid);
   for (std::size_t i = 0; i < mesh.tets.size(); ++i)
     if (verdict[i] == kKeptCoplanar && onTheRim(mesh, mesh.tets[i], boundary, triangles)) verdict[i] = kOutside;
+  peelHullSlivers(mesh, verdict);
   counts.coplanar = std::count(verdict.begin(), verdict.end(), kKeptCoplanar);
   counts.outside = std::count(verdict.begin(), verdict.end(), kOutside);
   std::vector<std::array<int, 4>> kept;

@@ -18,7 +18,7 @@ struct TetMesh {
 
 struct TetFilterCounts {
   std::size_t delaunay = 0;  // tets of the Delaunay tetrahedralization (the convex hull)
-  std::size_t outside = 0;   // dropped: centroid outside the solid, or a coplanar sliver in a rim face
+  std::size_t outside = 0;   // dropped: centroid outside the solid, or a coplanar sliver in a rim face or on the hull
   std::size_t flat = 0;      // dropped: all four nodes on the same side (§5.4)
   std::size_t coplanar = 0;  // kept although of zero volume: four nodes in one plane (at bends)
 };
