@@ -20,6 +20,10 @@ class WallRays {
   // intersector keeps state).
   std::optional<FacePoint> cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance);
 
+  // Where the line through p along the unit vector dir meets a face of the `side` wall nearest to p, on
+  // either side of p and at most `reach` away; nullopt if it meets none there. Not thread-safe either.
+  std::optional<FacePoint> nearestOnLine(Side side, const Vec3& p, const Vec3& dir, double reach);
+
  private:
   const CadSolid& cad_;
   const WallSides& sides_;

@@ -27,6 +27,7 @@
 #include "quality/quality.hpp"
 #include "quality/validation.hpp"
 #include "sweep/quadratic.hpp"
+#include "sweep/rim_projection.hpp"
 #include "sweep/sweep.hpp"
 #include "tets/tet_mesh.hpp"
 
@@ -220,42 +221,6 @@ nlohmann::json faceSideCounts(const WallSides& sides) {
   return {{"top", top}, {"bottom", bottom}, {"lateral", lateral}};
 }
 
-// The rim nodes onto the lateral faces (ω_l of §3): swept from the chordal surface's rim, they sit
-// a little inside the part (by up to half the wall on a round rim). A node stays where it is if it is
-// farther than the wall thickness from them, or if a hex around it would get worse and end below a scaled Jacobian of 0.2.
-std::size_t projectRim(HexMesh& mesh, const WallProjector& walls, double thickness) {
-  const long n = static_cast<long>(mesh.nodes.size());
-  // The projections first, in parallel (each query builds its own OpenCASCADE tools): a rim node's
-  // depends only on where the sweep put it.
-  std::vector<std::optional<FacePoint>> onLateral(mesh.nodes.size());
-  #pragma omp parallel for schedule(dynamic, 16)
-  for (long i = 0; i < n; ++i)
-    if (mesh.nodeOnRim[i]) onLateral[i] = walls.project(Side::Lateral, mesh.nodes[i]);
-  const Groups<std::size_t> hexesAt = groupByKey<std::size_t>(mesh.nodes.size(), [&](auto emit) {  // of the rim nodes
-    for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-      for (int v : mesh.hexes[h])
-        if (mesh.nodeOnRim[v]) emit(v, h);
-  });
-  auto around = [&](long i) {
-    std::vector<double> sj;
-    for (std::size_t k = hexesAt.start[i]; k < hexesAt.start[i + 1]; ++k) sj.push_back(hexScaledJacobian(hexCorners(mesh, hexesAt.items[k])));
-    return sj;
-  };
-  std::size_t moved = 0;
-  for (long i = 0; i < n; ++i) {
-    const std::optional<FacePoint>& p = onLateral[i];
-    if (!p || (p->point - mesh.nodes[i]).norm() > thickness) continue;
-    const Vec3 at = mesh.nodes[i];
-    const std::vector<double> before = around(i);
-    mesh.nodes[i] = p->point;
-    const std::vector<double> after = around(i);
-    bool spoils = false;
-    for (std::size_t k = 0; k < after.size(); ++k) spoils |= after[k] < 0.2 && after[k] < before[k];
-    if (spoils) mesh.nodes[i] = at; else ++moved, mesh.nodeFace[i] = p->face;
-  }
-  return moved;
-}
-
 // Order 2: 20-node hexes whose wall mid-edge nodes lie on the CAD walls (π_t, π_b of §3).
 nlohmann::json makeQuadratic(HexMesh& mesh, const WallProjector& walls) {
   const QuadraticStats s = addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) { return walls.project(side, p); });
@@ -432,8 +397,10 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
                 {"worst_column_before_untangling", swept.untangled.worstBefore}};
   result.mesh = std::move(swept.mesh);
   const WallProjector walls(cad, sides);
-  r["sweep"]["rim_nodes"] = std::count(result.mesh.nodeOnRim.begin(), result.mesh.nodeOnRim.end(), 1);
-  r["sweep"]["rim_nodes_on_lateral_faces"] = clock.run("rim", [&] { return projectRim(result.mesh, walls, sides.thickness); });
+  const RimProjectionStats rim = clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, sides.thickness); });
+  r["sweep"]["rim_nodes"] = rim.rimNodes;
+  r["sweep"]["rim_nodes_on_lateral_faces"] = rim.onLateralFaces;
+  r["sweep"]["rim_columns_left_unprojected"] = rim.columnsKept;
   if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, cad.volume - leftOut, r); });
   r["volume"]["junctions_left_out"] = leftOut;  // "cad" is the part's volume without them
