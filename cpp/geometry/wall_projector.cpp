@@ -3,6 +3,8 @@
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
 
 #include <algorithm>
@@ -10,17 +12,41 @@
 
 namespace hexlayer {
 
+namespace {
+
+int sideIndex(Side side) { return static_cast<int>(side) + 1; }
+
+}  // namespace
+
 WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides) {
-  for (int f = 0; f < cad.faces.Extent(); ++f) {
-    WallFace w{TopoDS::Face(cad.faces(f + 1)), f, {}};
-    BRepBndLib::AddOptimal(w.face, w.box, false, false);  // exact geometry, not the triangulation
-    faces_[static_cast<int>(sides.faces[f].side) + 1].push_back(w);
+  auto piece = [](const TopoDS_Shape& shape, int face) {
+    Piece w{shape, face, {}};
+    BRepBndLib::AddOptimal(shape, w.box, false, false);  // exact geometry, not the triangulation
+    return w;
+  };
+  for (int f = 0; f < cad.faces.Extent(); ++f) faces_[sideIndex(sides.faces[f].side)].push_back(piece(cad.faces(f + 1), f));
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  for (int e = 1; e <= edgeFaces.Extent(); ++e) {
+    int wall = -1;
+    bool lateral = false;
+    for (const TopoDS_Shape& face : edgeFaces(e)) {
+      const int f = cad.faces.FindIndex(face) - 1;
+      if (sides.faces[f].side == Side::Lateral) lateral = true;
+      else if (wall < 0) wall = f;
+    }
+    if (lateral && wall >= 0) rimEdges_[sideIndex(sides.faces[wall].side)].push_back(piece(edgeFaces.FindKey(e), wall));
   }
 }
 
-// Faces nearest first by their boxes; a face whose box is farther than the best point so far is skipped.
-std::optional<FacePoint> WallProjector::project(Side side, const Vec3& p) const {
-  const std::vector<WallFace>& faces = faces_[static_cast<int>(side) + 1];
+std::optional<FacePoint> WallProjector::project(Side side, const Vec3& p) const { return nearest(faces_[sideIndex(side)], p); }
+
+std::optional<FacePoint> WallProjector::projectOntoRimEdges(Side side, const Vec3& p) const {
+  return nearest(rimEdges_[sideIndex(side)], p);
+}
+
+// Pieces nearest first by their boxes; a piece whose box is farther than the best point so far is skipped.
+std::optional<FacePoint> WallProjector::nearest(const std::vector<Piece>& faces, const Vec3& p) {
   const gp_Pnt point(p.x(), p.y(), p.z());
   Bnd_Box at;
   at.Add(point);
@@ -32,11 +58,11 @@ std::optional<FacePoint> WallProjector::project(Side side, const Vec3& p) const 
   double bestDistance = std::numeric_limits<double>::infinity();
   for (const auto& [boxDistance, i] : order) {
     if (boxDistance > bestDistance) break;
-    BRepExtrema_DistShapeShape nearest(vertex, faces[i].face);
-    if (!nearest.IsDone() || nearest.NbSolution() == 0 || nearest.Value() >= bestDistance) continue;
-    bestDistance = nearest.Value();
-    const gp_Pnt q = nearest.PointOnShape2(1);
-    best = FacePoint{Vec3(q.X(), q.Y(), q.Z()), faces[i].index};
+    BRepExtrema_DistShapeShape distance(vertex, faces[i].shape);
+    if (!distance.IsDone() || distance.NbSolution() == 0 || distance.Value() >= bestDistance) continue;
+    bestDistance = distance.Value();
+    const gp_Pnt q = distance.PointOnShape2(1);
+    best = FacePoint{Vec3(q.X(), q.Y(), q.Z()), faces[i].face};
   }
   return best;
 }

@@ -23,13 +23,19 @@ class WallProjector {
   // edge: one of the faces there); nullopt for a side without faces.
   std::optional<FacePoint> project(Side side, const Vec3& p) const;
 
+  // The point nearest to p on the edges where the `side` wall (Top or Bottom) meets the lateral faces,
+  // with the wall face of that edge; nullopt if the wall meets no lateral face.
+  std::optional<FacePoint> projectOntoRimEdges(Side side, const Vec3& p) const;
+
  private:
-  struct WallFace {
-    TopoDS_Face face;
-    int index;   // in CadSolid::faces, 0-based
-    Bnd_Box box;  // contains the face: its distance to p bounds the face's from below
+  struct Piece {
+    TopoDS_Shape shape;  // a face, or an edge of a face
+    int face;            // in CadSolid::faces, 0-based
+    Bnd_Box box;         // contains the shape: its distance to p bounds the shape's from below
   };
-  std::array<std::vector<WallFace>, 3> faces_;  // by side: bottom, lateral, top (Side + 1)
+  static std::optional<FacePoint> nearest(const std::vector<Piece>& pieces, const Vec3& p);
+  std::array<std::vector<Piece>, 3> faces_;      // by side: bottom, lateral, top (Side + 1)
+  std::array<std::vector<Piece>, 3> rimEdges_;   // by side (bottom and top): the walls' edges on lateral faces
 };
 
 }  // namespace hexlayer

@@ -52,60 +52,54 @@ std::optional<FacePoint> ontoRim(WallRays& rays, const WallProjector& walls, con
   return std::nullopt;
 }
 
-// Where the nodes of one rim column go (nullopt: where they are): the ends onto the lateral faces, the
-// nodes between them evenly spaced on the line joining the moved ends, then onto the lateral faces.
+// The point of the `side` wall's edges on the lateral faces nearest to p, if within reach, else ontoRim's.
+std::optional<FacePoint> ontoWallEdge(Side side, WallRays& rays, const WallProjector& walls, const Vec3& p,
+                                      const Vec3& outward, double reach) {
+  std::optional<FacePoint> edge = walls.projectOntoRimEdges(side, p);
+  if (edge && (edge->point - p).norm() <= reach) return edge;
+  return ontoRim(rays, walls, p, outward, reach);
+}
+
+// Where the nodes of one rim column go (nullopt: where they are): the ends onto the edges where the walls
+// meet the lateral faces, the nodes between them evenly spaced on the line joining the moved ends, then
+// along the rim's outward line onto the lateral faces.
 std::vector<std::optional<FacePoint>> layColumn(const HexMesh& mesh, const std::vector<int>& column, const Vec3& outward,
                                                 WallRays& rays, const WallProjector& walls, double reach) {
   const std::size_t m = column.size() - 1;
   std::vector<std::optional<FacePoint>> to(column.size());
-  to[0] = ontoRim(rays, walls, mesh.nodes[column[0]], outward, reach);
-  to[m] = ontoRim(rays, walls, mesh.nodes[column[m]], outward, reach);
+  to[0] = ontoWallEdge(Side::Bottom, rays, walls, mesh.nodes[column[0]], outward, reach);
+  to[m] = ontoWallEdge(Side::Top, rays, walls, mesh.nodes[column[m]], outward, reach);
   const Vec3 bottom = to[0] ? to[0]->point : mesh.nodes[column[0]], top = to[m] ? to[m]->point : mesh.nodes[column[m]];
   for (std::size_t k = 1; k < m; ++k)
     to[k] = ontoRim(rays, walls, bottom + (static_cast<double>(k) / m) * (top - bottom), outward, reach);
   return to;
 }
 
-// Scaled Jacobians of the hexes around the given nodes (a hex once per node it has among them).
-class HexesAround {
- public:
-  explicit HexesAround(const HexMesh& mesh) : mesh_(mesh) {
-    at_ = groupByKey<std::size_t>(mesh.nodes.size(), [&](auto emit) {
-      for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-        for (int v : mesh.hexes[h])
-          if (mesh.nodeOnRim[v]) emit(v, h);
-    });
-  }
-  std::vector<double> scaledJacobians(const std::vector<int>& nodes) const {
-    std::vector<double> sj;
-    for (int v : nodes)
-      for (std::size_t k = at_.start[v]; k < at_.start[v + 1]; ++k) sj.push_back(hexScaledJacobian(hexCorners(mesh_, at_.items[k])));
-    return sj;
-  }
-
- private:
-  const HexMesh& mesh_;
-  Groups<std::size_t> at_;
+// The hexes that have a rim node, each once, and per rim column the hexes around its nodes.
+struct RimHexes {
+  std::vector<std::size_t> hexes;
+  std::vector<std::vector<std::size_t>> ofColumn;
 };
 
-bool spoils(const std::vector<double>& before, const std::vector<double>& after) {
-  for (std::size_t k = 0; k < after.size(); ++k)
-    if (after[k] < kSpoiled && after[k] < before[k]) return true;
-  return false;
-}
-
-// Moves the nodes to their new places if no hex around them is spoiled; returns whether it did.
-bool moveUnlessSpoiled(HexMesh& mesh, const HexesAround& around, const std::vector<int>& nodes,
-                       const std::vector<FacePoint>& to) {
-  const std::vector<double> before = around.scaledJacobians(nodes);
-  std::vector<Vec3> was;
-  for (std::size_t k = 0; k < nodes.size(); ++k) was.push_back(mesh.nodes[nodes[k]]), mesh.nodes[nodes[k]] = to[k].point;
-  if (!spoils(before, around.scaledJacobians(nodes))) {
-    for (std::size_t k = 0; k < nodes.size(); ++k) mesh.nodeFace[nodes[k]] = to[k].face;
-    return true;
+RimHexes rimHexes(const HexMesh& mesh, const std::vector<std::vector<int>>& columns) {
+  const Groups<std::size_t> at = groupByKey<std::size_t>(mesh.nodes.size(), [&](auto emit) {
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+      for (int v : mesh.hexes[h])
+        if (mesh.nodeOnRim[v]) emit(v, h);
+  });
+  RimHexes r;
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+    for (int v : mesh.hexes[h])
+      if (mesh.nodeOnRim[v]) {
+        r.hexes.push_back(h);
+        break;
+      }
+  for (const std::vector<int>& column : columns) {
+    std::vector<std::size_t> around;
+    for (int v : column) around.insert(around.end(), at.items.begin() + at.start[v], at.items.begin() + at.start[v + 1]);
+    r.ofColumn.push_back(std::move(around));
   }
-  for (std::size_t k = 0; k < nodes.size(); ++k) mesh.nodes[nodes[k]] = was[k];
-  return false;
+  return r;
 }
 
 }  // namespace
@@ -126,23 +120,39 @@ RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSide
     if (outward.norm() > 0) outward.normalize();
     to[c] = layColumn(mesh, columns[c], outward, rays[threadIndex()], walls, reach);
   }
-  // Then one column at a time, as a column's hexes share nodes with its neighbours'.
+  // Then all columns at once, and back where the sweep put them those that spoil a hex (below a scaled
+  // Jacobian of 0.2 and worse than before), until none does: the result does not depend on the order.
   RimProjectionStats stats;
-  const HexesAround around(mesh);
+  const RimHexes around = rimHexes(mesh, columns);
+  std::vector<double> before(mesh.hexes.size(), 1.0);
+  for (std::size_t h : around.hexes) before[h] = hexScaledJacobian(hexCorners(mesh, h));
+  const std::vector<Vec3> swept = mesh.nodes;
+  std::vector<char> moved(columns.size(), 0);
   for (std::size_t c = 0; c < columns.size(); ++c) {
     stats.rimNodes += columns[c].size();
-    std::vector<int> nodes;
-    std::vector<FacePoint> places;
     for (std::size_t k = 0; k < columns[c].size(); ++k)
-      if (to[c][k]) nodes.push_back(columns[c][k]), places.push_back(*to[c][k]);
-    if (nodes.empty()) continue;
-    if (moveUnlessSpoiled(mesh, around, nodes, places)) {
-      stats.onLateralFaces += nodes.size();
-      continue;
-    }
-    ++stats.columnsKept;
-    for (std::size_t k = 0; k < nodes.size(); ++k) stats.onLateralFaces += moveUnlessSpoiled(mesh, around, {nodes[k]}, {places[k]});
+      if (to[c][k]) mesh.nodes[columns[c][k]] = to[c][k]->point, moved[c] = 1;
   }
+  auto spoiled = [&](std::size_t c) {
+    for (std::size_t h : around.ofColumn[c]) {
+      const double sj = hexScaledJacobian(hexCorners(mesh, h));
+      if (sj < kSpoiled && sj < before[h]) return true;
+    }
+    return false;
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<std::size_t> back;
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      if (moved[c] && spoiled(c)) back.push_back(c);
+    for (std::size_t c : back) {
+      for (int v : columns[c]) mesh.nodes[v] = swept[v];
+      moved[c] = 0, changed = true, ++stats.columnsKept;
+    }
+  }
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    for (std::size_t k = 0; k < columns[c].size(); ++k)
+      if (moved[c] && to[c][k]) mesh.nodeFace[columns[c][k]] = to[c][k]->face, ++stats.onLateralFaces;
   return stats;
 }
 

@@ -23,7 +23,7 @@ struct RimProjectionStats {
 // [in] cad, sides: the solid and its faces' sides; [in] walls: the nearest-point projector on them.
 // [in] reach: how far a node may move (the wall thickness: half of it on a round rim).
 // A column stays where the sweep put it if a hex around it would end below a scaled Jacobian of 0.2
-// and be worse than before; then its nodes are tried one by one.
+// and be worse than before, with all other columns moved (whatever the order of the columns).
 RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, const WallProjector& walls,
                               double reach);
 
