@@ -189,6 +189,44 @@ std::vector<std::pair<std::pair<int, int>, int>> facetEdgeUses(const ChordalSurf
   return uses;
 }
 
+std::size_t trimKnifeEdges(ChordalSurface& s, double minRadius) {
+  const std::size_t before = s.facets.size();
+  for (bool dropped = true; dropped;) {
+    std::vector<char> thinRim(s.vertices.size(), 0);
+    for (const auto& [edge, uses] : facetEdgeUses(s))
+      if (uses == 1)
+        for (int v : {edge.first, edge.second}) thinRim[v] |= s.radius[v] < minRadius;
+    const auto thin = [&](const std::array<int, 4>& f) {
+      for (int v : f)
+        if (v >= 0 && thinRim[v]) return true;
+      return false;
+    };
+    const std::size_t n = s.facets.size();
+    s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), thin), s.facets.end());
+    dropped = s.facets.size() < n;
+  }
+  if (s.facets.size() == before) return 0;
+  std::vector<int> renumber(s.vertices.size(), -1);
+  for (const auto& f : s.facets)
+    for (int v : f)
+      if (v >= 0) renumber[v] = 0;
+  ChordalSurface kept;
+  for (std::size_t v = 0; v < s.vertices.size(); ++v)
+    if (renumber[v] == 0) {
+      renumber[v] = static_cast<int>(kept.vertices.size());
+      kept.vertices.push_back(s.vertices[v]), kept.tetEdge.push_back(s.tetEdge[v]);
+      kept.normals.push_back(s.normals[v]), kept.radius.push_back(s.radius[v]);
+    }
+  for (auto f : s.facets) {
+    for (int& v : f) v = v >= 0 ? renumber[v] : -1;
+    kept.facets.push_back(f);
+    ++(f[3] < 0 ? kept.triangles : kept.quads);
+  }
+  const std::size_t dropped = before - kept.facets.size();
+  s = std::move(kept);
+  return dropped;
+}
+
 std::vector<Vec3> vertexNormals(const ChordalSurface& s) {
   std::vector<Vec3> sum(s.vertices.size(), Vec3::Zero());
   for (const auto& f : s.facets) {

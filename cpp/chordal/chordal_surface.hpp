@@ -42,6 +42,13 @@ void computeNormalsAndRadius(ChordalSurface& chordal, const TetMesh& tets);
 // diagonals e1 = v4 - v2, e2 = v3 - v1 for a quad.
 Vec3 facetNormal(const ChordalSurface& chordal, const std::array<int, 4>& facet);
 
+// Where a tapered wall runs out to a knife edge (a rim cut very obliquely, a wedge's tip), the radius
+// function goes to zero at the rim and sweep lines there converge into the tip. Facets at the rim with
+// a vertex of radius below minRadius are dropped, again at the new rim until none is left, and the
+// unused vertices with them, so the mesh ends where the wall is still 2 x minRadius thick.
+// [in,out] chordal: with normals and radius computed. Returns the number of facets dropped.
+std::size_t trimKnifeEdges(ChordalSurface& chordal, double minRadius);
+
 // Area of the chordal surface (a quad facet as the two triangles (0,1,2) and (0,2,3)).
 double chordalArea(const ChordalSurface& chordal);
 

@@ -219,7 +219,8 @@ std::vector<std::pair<int, int>> solveSides(WallSides& w, const std::vector<std:
   for (const SideRelation& r : rankedRelations(w, across)) {
     if (uf.unite(r.a, r.b, r.relation)) continue;
     if (r.relation == 1) against[r.a] += r.weight, against[r.b] += r.weight;
-    else if (r.smooth)
+    else if (!r.smooth) ++w.knifeEdges;
+    else
       throw geometryError("top and bottom cannot be told apart: " + faceName(r.a) + " and " + faceName(r.b) +
                           " share a smooth edge but lie on opposite sides of the wall");
   }

@@ -26,6 +26,7 @@ struct WallSides {
   double sheetAreaShare = 0;    // area of top + bottom over the whole boundary
   std::vector<SheetJoin> sheetJoins;  // faces sharing a smooth or convex edge (sheet_edges.hpp)
   std::vector<int> ownSideFaces;      // wall faces facing a wall on their own side: the sheet branches there
+  int knifeEdges = 0;                 // convex edges between faces on opposite sides: a tapered end's tip
 };
 
 // Measures the wall and sorts the faces into top, bottom and lateral.

@@ -41,6 +41,9 @@ constexpr int kFairingIterations[] = {10, 3, 0};
 constexpr double kDefaultSizeOverThickness = 1.0;
 constexpr double kMaxAutoQuads = 250000;
 constexpr double kMinReach = 0.25, kMaxReach = 4;  // a wall hit counts between these multiples of r
+// Where top and bottom walls meet at a knife edge, the chordal surface ends where the wall is thinner than
+// this share of its median thickness.
+constexpr double kKnifeRadius = 0.3;
 constexpr double kBytesPerHex = 2000;  // plate.step at size 0.3: 64 312 hexes, 73.5 MB peak (x 2 for safety)
 
 // The process's peak resident memory so far, in MiB (Linux's ru_maxrss is in KiB).
@@ -175,9 +178,18 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohman
 struct QuadStage {
   ChordalSurface chordal;
   QuadMesh quads;
+  std::size_t knifeFacets = 0;  // dropped where the wall runs out to a knife edge
 };
 
-QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const MeshOptions& o, double size, nlohmann::json& r) {
+double medianRadius(const ChordalSurface& chordal) {
+  std::vector<double> r = chordal.radius;
+  if (r.empty()) return 0;
+  std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
+  return r[r.size() / 2];
+}
+
+QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const WallSides& sides, const MeshOptions& o,
+                        double size, nlohmann::json& r) {
   QuadMeshOptions qo;
   qo.size = size;
   QuadStage stage;
@@ -185,6 +197,7 @@ QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const Me
     stage.chordal = cut;
     fairChordalSurface(stage.chordal, fairing);
     computeNormalsAndRadius(stage.chordal, tets);
+    if (sides.knifeEdges > 0) stage.knifeFacets = trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal));
     const ChordalLocator locator(stage.chordal);
     if (o.sizing == "adaptive") qo.vertexSize = adaptiveSizes(stage.chordal, {size, o.minSize, o.maxSize});
     try {
@@ -195,6 +208,7 @@ QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const Me
       continue;
     }
     r["chordal_surface"]["fairing_iterations"] = fairing;
+    r["chordal_surface"]["knife_edge_facets_dropped"] = stage.knifeFacets;
     r["quad_mesh"]["triangles_paired"] = stage.quads.pairedTriangles;
     r["quad_mesh"]["triangles_split"] = stage.quads.splitTriangles;
     r["quad_mesh"]["unpaired_triangles"] = stage.quads.holes;
@@ -387,7 +401,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   const SmallFeatures small = findSmallFeatures(cad, sides, size);
   r["small_features"] = {{"edges_shorter_than_size", small.shortEdges}, {"narrow_faces", small.narrowFaces},
                          {"first_at", {small.firstAt.x(), small.firstAt.y(), small.firstAt.z()}}};
-  QuadStage stage = clock.run("quad_mesh", [&] { return quadMeshStage(cut, tets, o, size, r); });
+  QuadStage stage = clock.run("quad_mesh", [&] { return quadMeshStage(cut, tets, sides, o, size, r); });
   const QuadMesh& quads = stage.quads;
   r["quad_mesh"]["quads"] = quads.quads.size();
   r["quad_mesh"]["nodes"] = quads.nodes.size();

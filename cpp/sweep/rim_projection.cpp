@@ -13,6 +13,7 @@ namespace hexlayer {
 namespace {
 
 constexpr double kSpoiled = 0.2;  // a hex below this scaled Jacobian that got worse is spoiled
+constexpr double kMaxAlongRim = 0.5;  // share of a rim node's move that may run along the rim
 
 // The columns of rim nodes, bottom (layer 0) to top: nodes above one another in the hexes (corners k, k + 4).
 std::vector<std::vector<int>> rimColumns(const HexMesh& mesh) {
@@ -42,36 +43,61 @@ std::vector<Vec3> sideFaceNormals(const HexMesh& mesh) {
   return normal;
 }
 
+// The rim's directions at a column: outward (from the mesh's side faces) and along the rim (tangent).
+struct RimFrame {
+  Vec3 outward, tangent;
+};
+
+RimFrame rimFrame(const HexMesh& mesh, const std::vector<int>& column, const std::vector<Vec3>& sideNormals) {
+  RimFrame frame{Vec3::Zero(), Vec3::Zero()};
+  for (int v : column) frame.outward += sideNormals[v];
+  const Vec3 sweep = mesh.nodes[column.back()] - mesh.nodes[column.front()];
+  frame.outward -= frame.outward.dot(sweep) / std::max(sweep.squaredNorm(), 1e-300) * sweep;  // across the sweep line
+  if (frame.outward.norm() > 0) frame.outward.normalize();
+  frame.tangent = sweep.cross(frame.outward);
+  if (frame.tangent.norm() > 0) frame.tangent.normalize();
+  return frame;
+}
+
+// A move of a rim node to `to` stays in the rim's cross-section: it may go outward and up or down the
+// rim's profile, but not much along the rim (to the side faces of a part whose rim has no lateral face).
+bool acrossRim(const RimFrame& frame, const Vec3& from, const std::optional<FacePoint>& to) {
+  if (!to) return false;
+  const Vec3 move = to->point - from;
+  return std::abs(move.dot(frame.tangent)) <= kMaxAlongRim * move.norm() + 1e-12;
+}
+
 // The point of the lateral faces for p: along the rim's outward line through p if it meets one within
-// reach, else the nearest one within reach.
-std::optional<FacePoint> ontoRim(WallRays& rays, const WallProjector& walls, const Vec3& p, const Vec3& outward, double reach) {
-  if (outward.squaredNorm() > 0)
-    if (std::optional<FacePoint> hit = rays.nearestOnLine(Side::Lateral, p, outward, reach)) return hit;
+// reach, else the nearest one within reach if that lies across the rim.
+std::optional<FacePoint> ontoRim(WallRays& rays, const WallProjector& walls, const Vec3& p, const RimFrame& frame, double reach) {
+  if (frame.outward.squaredNorm() > 0)
+    if (std::optional<FacePoint> hit = rays.nearestOnLine(Side::Lateral, p, frame.outward, reach)) return hit;
   std::optional<FacePoint> nearest = walls.project(Side::Lateral, p);
-  if (nearest && (nearest->point - p).norm() <= reach) return nearest;
+  if (nearest && (nearest->point - p).norm() <= reach && acrossRim(frame, p, nearest)) return nearest;
   return std::nullopt;
 }
 
-// The point of the `side` wall's edges on the lateral faces nearest to p, if within reach, else ontoRim's.
+// The point of the `side` wall's edges on the lateral faces nearest to p, if within reach and across the
+// rim, else ontoRim's.
 std::optional<FacePoint> ontoWallEdge(Side side, WallRays& rays, const WallProjector& walls, const Vec3& p,
-                                      const Vec3& outward, double reach) {
+                                      const RimFrame& frame, double reach) {
   std::optional<FacePoint> edge = walls.projectOntoRimEdges(side, p);
-  if (edge && (edge->point - p).norm() <= reach) return edge;
-  return ontoRim(rays, walls, p, outward, reach);
+  if (edge && (edge->point - p).norm() <= reach && acrossRim(frame, p, edge)) return edge;
+  return ontoRim(rays, walls, p, frame, reach);
 }
 
 // Where the nodes of one rim column go (nullopt: where they are): the ends onto the edges where the walls
 // meet the lateral faces, the nodes between them evenly spaced on the line joining the moved ends, then
 // along the rim's outward line onto the lateral faces.
-std::vector<std::optional<FacePoint>> layColumn(const HexMesh& mesh, const std::vector<int>& column, const Vec3& outward,
+std::vector<std::optional<FacePoint>> layColumn(const HexMesh& mesh, const std::vector<int>& column, const RimFrame& frame,
                                                 WallRays& rays, const WallProjector& walls, double reach) {
   const std::size_t m = column.size() - 1;
   std::vector<std::optional<FacePoint>> to(column.size());
-  to[0] = ontoWallEdge(Side::Bottom, rays, walls, mesh.nodes[column[0]], outward, reach);
-  to[m] = ontoWallEdge(Side::Top, rays, walls, mesh.nodes[column[m]], outward, reach);
+  to[0] = ontoWallEdge(Side::Bottom, rays, walls, mesh.nodes[column[0]], frame, reach);
+  to[m] = ontoWallEdge(Side::Top, rays, walls, mesh.nodes[column[m]], frame, reach);
   const Vec3 bottom = to[0] ? to[0]->point : mesh.nodes[column[0]], top = to[m] ? to[m]->point : mesh.nodes[column[m]];
   for (std::size_t k = 1; k < m; ++k)
-    to[k] = ontoRim(rays, walls, bottom + (static_cast<double>(k) / m) * (top - bottom), outward, reach);
+    to[k] = ontoRim(rays, walls, bottom + (static_cast<double>(k) / m) * (top - bottom), frame, reach);
   return to;
 }
 
@@ -115,10 +141,7 @@ RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSide
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
   #pragma omp parallel for schedule(dynamic, 8)
   for (long c = 0; c < static_cast<long>(columns.size()); ++c) {
-    Vec3 outward = Vec3::Zero();
-    for (int v : columns[c]) outward += normal[v];
-    if (outward.norm() > 0) outward.normalize();
-    to[c] = layColumn(mesh, columns[c], outward, rays[threadIndex()], walls, reach);
+    to[c] = layColumn(mesh, columns[c], rimFrame(mesh, columns[c], normal), rays[threadIndex()], walls, reach);
   }
   // Then all columns at once, and back where the sweep put them those that spoil a hex (below a scaled
   // Jacobian of 0.2 and worse than before), until none does: the result does not depend on the order.
