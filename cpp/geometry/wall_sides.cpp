@@ -147,7 +147,7 @@ void requireThin(const WallSides& w, const CadSolid& cad, double thicknessEveryw
   msg << "not a thin section: measured thickness " << thickness << " over part size (diagonal) " << cad.diagonal
       << " = " << slenderness << " (a thin section has at most " << kMaxSlenderness << ")";
   if (w.thickness > 0) msg << ", top+bottom area share " << w.sheetAreaShare << " (at least 0.5)";
-  else msg << ", and no face has an opposite wall closer than its own width";
+  else msg << ", and no face's inward rays cross a wall (their middles are nearer another face than their ends)";
   throw geometryError(msg.str());
 }
 

@@ -13,7 +13,8 @@ namespace hexlayer {
 namespace {
 
 constexpr double kSpoiled = 0.2;  // a hex below this scaled Jacobian that got worse is spoiled
-constexpr double kMaxAlongRim = 0.5;  // share of a rim node's move that may run along the rim
+constexpr double kMaxAlongRim = 0.5;  // share of a rim node's move that may run along the rim ...
+constexpr double kFreeMove = 0.1;     // ... unless the move is shorter than this share of the reach
 
 // The columns of rim nodes, bottom (layer 0) to top: nodes above one another in the hexes (corners k, k + 4).
 std::vector<std::vector<int>> rimColumns(const HexMesh& mesh) {
@@ -59,12 +60,14 @@ RimFrame rimFrame(const HexMesh& mesh, const std::vector<int>& column, const std
   return frame;
 }
 
-// A move of a rim node to `to` stays in the rim's cross-section: it may go outward and up or down the
-// rim's profile, but not much along the rim (to the side faces of a part whose rim has no lateral face).
-bool acrossRim(const RimFrame& frame, const Vec3& from, const std::optional<FacePoint>& to) {
+// A move of a rim node to `to` within reach stays in the rim's cross-section: it may go outward and up or
+// down the rim's profile, but not far along the rim (to the side faces of a part whose rim has no lateral
+// face); a short move may go anywhere (onto a rim that twists, into a corner).
+bool acrossRim(const RimFrame& frame, const Vec3& from, const std::optional<FacePoint>& to, double reach) {
   if (!to) return false;
   const Vec3 move = to->point - from;
-  return std::abs(move.dot(frame.tangent)) <= kMaxAlongRim * move.norm() + 1e-12;
+  if (move.norm() > reach) return false;
+  return move.norm() <= kFreeMove * reach || std::abs(move.dot(frame.tangent)) <= kMaxAlongRim * move.norm();
 }
 
 // The point of the lateral faces for p: along the rim's outward line through p if it meets one within
@@ -73,7 +76,7 @@ std::optional<FacePoint> ontoRim(WallRays& rays, const WallProjector& walls, con
   if (frame.outward.squaredNorm() > 0)
     if (std::optional<FacePoint> hit = rays.nearestOnLine(Side::Lateral, p, frame.outward, reach)) return hit;
   std::optional<FacePoint> nearest = walls.project(Side::Lateral, p);
-  if (nearest && (nearest->point - p).norm() <= reach && acrossRim(frame, p, nearest)) return nearest;
+  if (acrossRim(frame, p, nearest, reach)) return nearest;
   return std::nullopt;
 }
 
@@ -82,7 +85,7 @@ std::optional<FacePoint> ontoRim(WallRays& rays, const WallProjector& walls, con
 std::optional<FacePoint> ontoWallEdge(Side side, WallRays& rays, const WallProjector& walls, const Vec3& p,
                                       const RimFrame& frame, double reach) {
   std::optional<FacePoint> edge = walls.projectOntoRimEdges(side, p);
-  if (edge && (edge->point - p).norm() <= reach && acrossRim(frame, p, edge)) return edge;
+  if (acrossRim(frame, p, edge, reach)) return edge;
   return ontoRim(rays, walls, p, frame, reach);
 }
 
@@ -173,9 +176,20 @@ RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSide
       moved[c] = 0, changed = true, ++stats.columnsKept;
     }
   }
+  // The columns put back get their nodes moved one at a time where that spoils no hex.
   for (std::size_t c = 0; c < columns.size(); ++c)
-    for (std::size_t k = 0; k < columns[c].size(); ++k)
-      if (moved[c] && to[c][k]) mesh.nodeFace[columns[c][k]] = to[c][k]->face, ++stats.onLateralFaces;
+    for (std::size_t k = 0; k < columns[c].size(); ++k) {
+      const int v = columns[c][k];
+      if (!to[c][k]) continue;
+      if (!moved[c]) {
+        mesh.nodes[v] = to[c][k]->point;
+        if (spoiled(c)) {
+          mesh.nodes[v] = swept[v];
+          continue;
+        }
+      }
+      mesh.nodeFace[v] = to[c][k]->face, ++stats.onLateralFaces;
+    }
   return stats;
 }
 
