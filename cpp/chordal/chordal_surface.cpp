@@ -117,7 +117,7 @@ void collapseDegenerateFacets(ChordalSurface& s, double tolerance) {
   }
 }
 
-void requireManifold(const ChordalSurface& s) {
+void requireManifold(const ChordalSurface& s, double unit) {
   std::vector<Vec3> junctions;
   for (const auto& [edge, uses] : facetEdgeUses(s))
     if (uses > 2) junctions.push_back(0.5 * (s.vertices[edge.first] + s.vertices[edge.second]));
@@ -126,8 +126,9 @@ void requireManifold(const ChordalSurface& s) {
     return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
   });
   std::ostringstream msg;
+  const Vec3 at = junctions[0] / unit;
   msg << "non-manifold chordal surface: " << junctions.size() << " edges shared by more than two facets, e.g. at ("
-      << junctions[0].x() << ", " << junctions[0].y() << ", " << junctions[0].z() << ") (a rib or T-junction?)";
+      << at.x() << ", " << at.y() << ", " << at.z() << ") (a rib or T-junction?)";
   throw geometryError(msg.str());
 }
 
@@ -143,7 +144,7 @@ Vec3 facetNormal(const ChordalSurface& s, const std::array<int, 4>& f) {
   return len > 0 ? Vec3(n / len) : Vec3(Vec3::Zero());
 }
 
-ChordalSurface buildChordalSurface(const TetMesh& m) {
+ChordalSurface buildChordalSurface(const TetMesh& m, double unit) {
   ChordalSurface s;
   std::unordered_map<std::uint64_t, int> index;
   for (const auto& t : m.tets) {
@@ -170,7 +171,7 @@ ChordalSurface buildChordalSurface(const TetMesh& m) {
   }
   if (s.facets.empty()) throw geometryError("empty chordal surface: no tet spans the top and bottom walls");
   collapseDegenerateFacets(s, 1e-9 * boxDiagonal(m.nodes));
-  requireManifold(s);
+  requireManifold(s, unit);
   return s;
 }
 

@@ -25,8 +25,9 @@ struct ChordalSurface {
 // (§5, Figure 3). A chordal vertex belongs to its tet edge, so neighbouring tets share it and the
 // facets form one connected surface. The side labels of the nodes (from the CAD faces) decide the
 // cut, so every tet is "simple" here: no incremental processing of complex tets (§5.4) is needed.
-// Throws geometryError if the surface is non-manifold (an edge in more than two facets).
-ChordalSurface buildChordalSurface(const TetMesh& tets);
+// Throws geometryError if the surface is non-manifold (an edge in more than two facets), naming where in
+// the input's units: the tets' lengths are `unit` per input length (CadSolid::unit).
+ChordalSurface buildChordalSurface(const TetMesh& tets, double unit = 1);
 
 // For every facet edge (lower vertex id first), how many facets use it: 1 on the rim, 2 inside;
 // sorted by edge.

@@ -2,6 +2,7 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepGProp_Face.hxx>
@@ -19,6 +20,7 @@
 #include <TopoDS_Shell.hxx>
 #include <Standard_Failure.hxx>
 #include <XSControl_Reader.hxx>
+#include <gp_Trsf.hxx>
 #include <gp_Vec.hxx>
 
 #include <algorithm>
@@ -31,7 +33,11 @@
 #include "core/error.hpp"
 
 namespace hexlayer {
+
 namespace {
+
+constexpr double kPipelineDiagonal = 100;  // normalizingUnit
+
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -149,9 +155,24 @@ std::vector<TopoDS_Solid> readSolids(const std::string& path) {
   return solids;
 }
 
-CadSolid prepareSolid(const TopoDS_Solid& input) {
+double normalizingUnit(const TopoDS_Solid& solid) {
+  Bnd_Box box;
+  BRepBndLib::Add(solid, box, false);
+  const double diagonal = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
+  return diagonal > 0 && std::isfinite(diagonal) ? kPipelineDiagonal / diagonal : 1;
+}
+
+CadSolid prepareSolid(const TopoDS_Solid& input, double unit) {
   CadSolid cad;
   cad.solid = input;
+  cad.unit = unit;
+  if (unit != 1) {
+    gp_Trsf scale;
+    scale.SetScale(gp_Pnt(0, 0, 0), unit);
+    const TopoDS_Shape scaled = BRepBuilderAPI_Transform(input, scale, true).Shape();
+    if (scaled.ShapeType() != TopAbs_SOLID) throw inputError("the solid could not be scaled to the pipeline's size");
+    cad.solid = TopoDS::Solid(scaled);
+  }
   BRepCheck_Analyzer check(cad.solid);
   if (!check.IsValid()) {
     ShapeFix_Solid fix(cad.solid);  // heal small tolerance defects before giving up

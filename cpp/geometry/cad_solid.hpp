@@ -14,8 +14,9 @@ namespace hexlayer {
 struct CadSolid {
   TopoDS_Solid solid;
   TopTools_IndexedMapOfShape faces, edges, vertices;
-  double volume = 0;   // CAD volume (mm^3 in STEP units)
+  double volume = 0;   // CAD volume, in the units of `solid`
   double diagonal = 0; // length of the bounding box diagonal
+  double unit = 1;     // lengths of `solid` per length of the input: the input scaled by `unit` (normalizingUnit)
 };
 
 // Reads STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep/.brp) and returns every solid in it.
@@ -27,9 +28,15 @@ std::vector<TopoDS_Solid> readSolids(const std::string& path);
 // a reader can hang or crash on a damaged file). Throws inputError for an unknown or invalid file.
 TopoDS_Shape readShapeInProcess(const std::string& path);
 
-// Checks the solid (BRepCheck, closed shell, positive volume), numbers its topology and
-// triangulates its faces for the later stages. Throws inputError naming what is wrong.
-CadSolid prepareSolid(const TopoDS_Solid& solid);
+// Checks the solid (BRepCheck, closed shell, positive volume), scales it by `unit` (a copy; 1: as it
+// is), numbers its topology and triangulates its faces for the later stages. Throws inputError naming
+// what is wrong.
+CadSolid prepareSolid(const TopoDS_Solid& solid, double unit = 1);
+
+// The scale that brings the solid's bounding-box diagonal to 100. OpenCASCADE's, TetGen's and Gmsh's
+// tolerances are partly absolute; the pipeline meets every part at this one size, so a part drawn in
+// metres and the same part in millimetres give the same mesh, scaled.
+double normalizingUnit(const TopoDS_Solid& solid);
 
 // Euler characteristic of the solid's boundary, V - E + F - (W - F) (Euler-Poincaré with W wires):
 // 2 - 2 x (number of holes) for one shell; a mesh of the solid must have the same.

@@ -144,7 +144,8 @@ void requireThin(const WallSides& w, const CadSolid& cad, double thicknessEveryw
   const double thickness = w.thickness > 0 ? w.thickness : thicknessEverywhere;
   const double slenderness = thickness / cad.diagonal;
   if (w.thickness > 0 && w.sheetAreaShare >= 0.5 && slenderness <= kMaxSlenderness) return;
-  msg << "not a thin section: measured thickness " << thickness << " over part size (diagonal) " << cad.diagonal
+  msg << "not a thin section: measured thickness " << thickness / cad.unit << " over part size (diagonal) "
+      << cad.diagonal / cad.unit
       << " = " << slenderness << " (a thin section has at most " << kMaxSlenderness << ")";
   if (w.thickness > 0) msg << ", top+bottom area share " << w.sheetAreaShare << " (at least 0.5)";
   else msg << ", and no face's inward rays cross a wall (their middles are nearer another face than their ends)";
@@ -177,8 +178,10 @@ Error junctionError(const CadSolid& cad, const WallSides& w, const std::vector<i
   for (std::size_t k = 0; k < faces.size() && k < 4; ++k) msg << (k ? ", " : "") << faceName(faces[k]);
   msg << (faces.size() == 1 ? " faces" : " face") << " a wall on its own side";
   if (!at.empty()) msg << "; junction" << (at.size() > 1 ? "s" : "") << " at";
-  for (std::size_t k = 0; k < at.size() && k < 4; ++k)
-    msg << (k ? "," : "") << " (" << at[k].x() << ", " << at[k].y() << ", " << at[k].z() << ")";
+  for (std::size_t k = 0; k < at.size() && k < 4; ++k) {
+    const Vec3 p = at[k] / cad.unit;  // in the input's units
+    msg << (k ? "," : "") << " (" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  }
   if (at.size() > 4) msg << " and " << at.size() - 4 << " more";
   return geometryError(msg.str());
 }

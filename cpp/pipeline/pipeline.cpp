@@ -97,7 +97,8 @@ double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalAr
 
 // Refuses, before meshing, a size that would need more memory than the machine has: quads from the
 // top wall's area, hexes = quads x layers, kBytesPerHex measured as the peak memory per hex on plate.step.
-void requireMemory(const MeshOptions& o, const WallSides& sides, nlohmann::json& r) {
+// unit: pipeline lengths per input length (CadSolid::unit), for the message.
+void requireMemory(const MeshOptions& o, const WallSides& sides, double unit, nlohmann::json& r) {
   double topArea = 0;
   for (const FaceSide& f : sides.faces) topArea += f.side == Side::Top ? f.area : 0;
   const double size = plannedSize(o, sides), quads = topArea / (size * size), hexes = quads * o.layers;
@@ -106,7 +107,7 @@ void requireMemory(const MeshOptions& o, const WallSides& sides, nlohmann::json&
   r["memory_estimate"] = {{"quads", quads}, {"hexes", hexes}, {"bytes", bytes}, {"machine_bytes", machine}};
   if (bytes <= machine) return;
   std::ostringstream msg;
-  msg << std::setprecision(3) << "quad size " << size << " would need about " << quads << " quads, " << hexes
+  msg << std::setprecision(3) << "quad size " << size / unit << " would need about " << quads << " quads, " << hexes
       << " hexes and " << bytes / 1e9 << " GB of memory (estimated), more than this machine's " << machine / 1e9
       << " GB: choose a larger --size (or --aspect) or fewer --layers";
   throw usageError(msg.str());
@@ -129,9 +130,11 @@ std::vector<std::string> faceNames(const Sheet& s) {
   return names;
 }
 
-std::string describeSheet(const Sheet& s) {
+// unit: pipeline lengths per input length (CadSolid::unit); the centre is given in the input's units.
+std::string describeSheet(const Sheet& s, double unit) {
   std::ostringstream out;
-  out << "(" << s.centre.x() << ", " << s.centre.y() << ", " << s.centre.z() << ") [";
+  const Vec3 c = s.centre / unit;
+  out << "(" << c.x() << ", " << c.y() << ", " << c.z() << ") [";
   const std::vector<std::string> names = faceNames(s);
   for (std::size_t k = 0; k < names.size(); ++k) out << (k ? " " : "") << names[k];
   out << "]";
@@ -166,8 +169,8 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohman
   }
   std::ostringstream msg;
   msg << "T-junction: " << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
-      << "chordal surface would be non-manifold, which this method does not mesh: " << describeSheet(sheets[1]);
-  for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s) msg << ", " << describeSheet(sheets[s]);
+      << "chordal surface would be non-manifold, which this method does not mesh: " << describeSheet(sheets[1], cad.unit);
+  for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s) msg << ", " << describeSheet(sheets[s], cad.unit);
   if (sheets.size() > 4) msg << ", ...";
   msg << "; --drop-junctions meshes the main sheet without them";
   throw geometryError(msg.str());
@@ -361,6 +364,33 @@ nlohmann::json validationOfSolids(const nlohmann::json& solids) {
   return v;
 }
 
+// The options' lengths in the pipeline's units (CadSolid::unit per input length).
+MeshOptions inPipelineUnits(MeshOptions o, double unit) {
+  o.size *= unit, o.minSize *= unit, o.maxSize *= unit;
+  return o;
+}
+
+// The mesh, the chordal surface, the quad mesh and the report's lengths so far back in the input's units.
+void toInputUnits(MeshResult& result, nlohmann::json& r, double unit) {
+  if (unit == 1) return;
+  for (Vec3& p : result.mesh.nodes) p /= unit;
+  for (Vec3& p : result.chordalSurface.vertices) p /= unit;
+  for (double& radius : result.chordalSurface.radius) radius /= unit;
+  for (Vec3& p : result.quadMesh.nodes) p /= unit;
+  auto length = [&](nlohmann::json& j, double power) {
+    if (j.is_number()) j = j.get<double>() / std::pow(unit, power);
+    else if (j.is_array()) for (auto& x : j) x = x.get<double>() / unit;  // a point
+  };
+  length(r["thickness"], 1);
+  length(r["size"], 1);
+  length(r["small_features"]["first_at"], 1);
+  for (auto& j : r["junctions"]) length(j["at"], 1), length(j["area"], 2), length(j["volume"], 3);
+  nlohmann::json& deviation = r["boundary_deviation"];
+  for (const char* key : {"max", "mean", "worst_at"})
+    if (deviation.contains(key)) length(deviation[key], 1);
+  if (r.contains("quadratic")) length(r["quadratic"]["max_projection_move"], 1);
+}
+
 }  // namespace
 
 void validateOptions(const MeshOptions& o) {
@@ -376,23 +406,25 @@ void validateOptions(const MeshOptions& o) {
     throw usageError("--min-size and --max-size must be lengths with --min-size <= --max-size");
 }
 
-MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
-  validateOptions(o);
+MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
+  validateOptions(given);
   MeshResult result;
   nlohmann::json& r = result.report;
-  StageClock clock(r, o);
-  const CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid); });
+  StageClock clock(r, given);
+  // Every stage up to the surface groups works on the part scaled to one size (normalizingUnit).
+  const CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid, normalizingUnit(solid)); });
+  const MeshOptions o = inPipelineUnits(given, cad.unit);
   WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
   const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r);
   r["thickness"] = sides.thickness;
   r["faces"] = faceSideCounts(sides);
-  requireMemory(o, sides, r);
+  requireMemory(o, sides, cad.unit, r);
   const auto nodes = clock.run("bubbles", [&] { return packBubbles(cad, sides, BubbleOptions{}); });
   r["bubbles"] = nodes.size();
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
   const TetFilterCounts dropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
   r["tets"] = {{"delaunay", dropped.delaunay}, {"outside", dropped.outside}, {"flat", dropped.flat}, {"coplanar_kept", dropped.coplanar}, {"kept", tets.tets.size()}};
-  const ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets); });
+  const ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets, cad.unit); });
   r["tet_classes"] = classifyTets(tets);
   r["chordal_surface"] = {{"triangles", cut.triangles}, {"quads", cut.quads}, {"vertices", cut.vertices.size()}};
   const double size = chooseSize(o, sides, chordalArea(cut), r);
@@ -416,14 +448,17 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& o) {
   r["sweep"]["rim_nodes_on_lateral_faces"] = rim.onLateralFaces;
   r["sweep"]["rim_columns_left_unprojected"] = rim.columnsKept;
   if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
-  result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, cad.volume - leftOut, r); });
-  r["volume"]["junctions_left_out"] = leftOut;  // "cad" is the part's volume without them
-  compareTopology(r, eulerCharacteristic(cad));
-  if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);
-  result.nodeSets = surfaceNodeSets(result.mesh);
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   result.chordalSurface = std::move(stage.chordal);
   result.quadMesh = std::move(stage.quads);
+  // From here on, the input's units.
+  toInputUnits(result, r, cad.unit);
+  const double unit3 = cad.unit * cad.unit * cad.unit;
+  result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, (cad.volume - leftOut) / unit3, r); });
+  r["volume"]["junctions_left_out"] = leftOut / unit3;  // "cad" is the part's volume without them
+  compareTopology(r, eulerCharacteristic(cad));
+  if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);
+  result.nodeSets = surfaceNodeSets(result.mesh);
   enforceValidation(r, o);
   return result;
 }

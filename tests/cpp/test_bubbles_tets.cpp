@@ -147,20 +147,48 @@ TEST(Tets, KeepSpanningTetsInsideDropsFlatAndOutsideTetsAndKeepsCoplanarOnes) {
   add({13, 2, 0}, Side::Bottom);     // 11
   add({1, 1, 0}, Side::Bottom);      // 12: with 0 1 13 four nodes in the plane y = 1
   add({4, 1, 0}, Side::Bottom);      // 13
+  add({2, 0.3, 2}, Side::Top);       // 14, 15: behind that plane (y < 1)
+  add({3, 0.3, 0}, Side::Bottom);    // 15
   const std::array<int, 4> spanning31{0, 1, 2, 3}, flatTop{0, 1, 2, 5}, outside{8, 9, 10, 11}, coplanar{0, 1, 12, 13},
       flatBottom{3, 4, 6, 7}, spanning22{0, 1, 3, 4};
-  m.tets = {spanning31, flatTop, outside, coplanar, flatBottom, spanning22};
+  // The coplanar tet between tets on its two sides: in front (y > 1) on its faces 0 1 12 and 1 13 12, behind
+  // (y < 1) on its faces 0 1 13 and 0 13 12, as at a sharp bend.
+  const std::array<int, 4> front1{0, 1, 12, 2}, front2{1, 13, 12, 4}, back1{0, 1, 13, 15}, back2{0, 13, 12, 14};
+  m.tets = {spanning31, flatTop, outside, coplanar, flatBottom, spanning22, front1, front2, back1, back2};
 
   const TetFilterCounts counts = keepSpanningTetsInside(m, cad);
-  EXPECT_EQ(counts.delaunay, 6u);
+  EXPECT_EQ(counts.delaunay, 10u);
   EXPECT_EQ(counts.flat, 2u);
   EXPECT_EQ(counts.outside, 1u);
   EXPECT_EQ(counts.coplanar, 1u);
-  ASSERT_EQ(m.tets.size(), 3u) << "the coplanar tet inside is kept: it joins the tets on its two sides";
+  ASSERT_EQ(m.tets.size(), 7u) << "the coplanar tet inside is kept: it joins the tets on its two sides";
   EXPECT_EQ(m.tets[0], spanning31);
   EXPECT_EQ(m.tets[1], coplanar);
   EXPECT_EQ(m.tets[2], spanning22);
-  EXPECT_EQ(m.nodes.size(), 14u) << "nodes are kept";
+  EXPECT_EQ(m.nodes.size(), 16u) << "nodes are kept";
+}
+
+// The same coplanar tet with tets on one side only (in front): it stands on the hull of the tets, in the
+// plane where they end, as at a round rim (the hull plane runs inside the solid, far from its boundary).
+TEST(Tets, CoplanarTetOnTheHullIsDropped) {
+  const CadSolid cad = box(10, 10, 2);
+  TetMesh m;
+  auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
+  add({1, 5, 2}, Side::Top);      // 0
+  add({4, 5, 2}, Side::Top);      // 1
+  add({1, 5, 0}, Side::Bottom);   // 2
+  add({4, 5, 0}, Side::Bottom);   // 3
+  add({1, 8, 2}, Side::Top);      // 4
+  add({3, 8, 0}, Side::Bottom);   // 5
+  const std::array<int, 4> coplanar{0, 1, 2, 3}, front1{0, 1, 2, 4}, front2{1, 3, 2, 5};
+  m.tets = {coplanar, front1, front2};
+
+  const TetFilterCounts counts = keepSpanningTetsInside(m, cad);
+  EXPECT_EQ(counts.outside, 1u);
+  EXPECT_EQ(counts.coplanar, 0u);
+  ASSERT_EQ(m.tets.size(), 2u);
+  EXPECT_EQ(m.tets[0], front1);
+  EXPECT_EQ(m.tets[1], front2);
 }
 
 // Two top and two bottom bubbles on the rim edges of a rounded corner, a little off the rim face (as
