@@ -16,6 +16,9 @@ shared by exactly two face uses, i.e. a closed shell; a sphere's pole, a
 degenerate edge of length 0, by one). The STEP header
 timestamp is replaced with a fixed one so that re-running the script produces
 byte-identical files. A README.md with a table of the parts is written too.
+The rim parts (RIM_PARTS: full-round ends, fillets, chamfers, oblique and
+plane cuts, split faces) go to OUTPUT_DIR/rims with a README.md of their own;
+they are written after the others (see the note on PARTS).
 """
 
 import math
@@ -63,24 +66,62 @@ def extrude_profile(segments, length):
     """Build a closed planar profile in the XZ plane (y = 0) and extrude it by
     `length` along +Y. Returns the tag of the resulting volume.
 
-    `segments` is a closed chain of ("line", (x1, z1), (x2, z2)) and
-    ("arc", (x1, z1), (xc, zc), (x2, z2)) items; consecutive items share
-    their end / start points exactly.
+    `segments` is a closed chain of ("line", (x1, z1), (x2, z2)),
+    ("arc", (x1, z1), (xc, zc), (x2, z2)) and ("semi", (x1, z1), (xt, zt),
+    (x2, z2)) items; consecutive items share their end / start points
+    exactly. A "semi" is a half circle (one edge) from (x1, z1) to (x2, z2)
+    through its midpoint (xt, zt); its centre is the midpoint of the ends.
     """
     points = {}
 
+    def key(p):
+        return (round(p[0], 12), round(p[1], 12))
+
     def pt(p):
-        key = (round(p[0], 12), round(p[1], 12))
-        if key not in points:
-            points[key] = occ.addPoint(p[0], 0.0, p[1])
-        return points[key]
+        if key(p) not in points:
+            points[key(p)] = occ.addPoint(p[0], 0.0, p[1])
+        return points[key(p)]
+
+    # Half circles first (profiles without them make the same calls as
+    # before): addCircleArc cannot make a 180° arc (start, centre and end are
+    # collinear), so each is a circle arc made with angle limits in the XY
+    # plane, turned into the XZ plane; its two end vertices then become the
+    # profile's points there, so that the neighbouring lines share them.
+    semis = {}
+    for i, seg in enumerate(segments):
+        if seg[0] != "semi":
+            continue
+        (x1, z1), (xt, zt), (x2, z2) = seg[1], seg[2], seg[3]
+        xc, zc = (x1 + x2) / 2, (z1 + z2) / 2
+        r = math.hypot(x1 - xc, z1 - zc)
+        assert abs(math.hypot(xt - xc, zt - zc) - r) < 1e-12, f"semi {i}: tip not on the circle"
+        assert abs((xt - xc) * (x1 - xc) + (zt - zc) * (z1 - zc)) < 1e-12, \
+            f"semi {i}: tip not halfway"
+        at = math.atan2(zt - zc, xt - xc)
+        before = set(occ.getEntities(0))
+        c = occ.addCircle(0.0, 0.0, 0.0, r, angle1=at - PI / 2, angle2=at + PI / 2)
+        occ.rotate([(1, c)], 0, 0, 0, 1, 0, 0, PI / 2)     # (x, y, 0) -> (x, 0, y)
+        occ.translate([(1, c)], xc, 0.0, zc)
+        ends = sorted(set(occ.getEntities(0)) - before)
+        assert len(ends) == 2, ends
+        for p in (seg[1], seg[3]):
+            near = []
+            for _, v in ends:
+                b = occ.getBoundingBox(0, v)
+                if math.hypot((b[0] + b[3]) / 2 - p[0], (b[2] + b[5]) / 2 - p[1]) < 1e-9:
+                    near.append(v)
+            assert len(near) == 1 and key(p) not in points, (i, p, near)
+            points[key(p)] = near[0]
+        semis[i] = c
 
     curves = []
     centres = set()
     for i, seg in enumerate(segments):
         nxt = segments[(i + 1) % len(segments)]
         assert seg[-1] == nxt[1], f"profile not closed between items {i} and {i + 1}"
-        if seg[0] == "line":
+        if seg[0] == "semi":
+            curves.append(semis[i])
+        elif seg[0] == "line":
             curves.append(occ.addLine(pt(seg[1]), pt(seg[2])))
         elif seg[0] == "arc":
             (x1, z1), (xc, zc), (x2, z2) = seg[1], seg[2], seg[3]
@@ -412,6 +453,490 @@ PARTS = [
 
 
 # ---------------------------------------------------------------------------
+# Rim parts (written to the subfolder rims/): thin parts whose rims -- the
+# faces across the wall at its free edges -- are not plain flat faces normal
+# to the wall, or whose faces are split into several faces where one would do.
+# ---------------------------------------------------------------------------
+
+def solid_curves(vol):
+    """Tags of the edges of volume `vol` (synchronizes the model)."""
+    occ.synchronize()
+    return sorted({abs(c) for _, f in gmsh.model.getBoundary([(3, vol)], combined=False,
+                                                             oriented=False)
+                   for _, c in gmsh.model.getBoundary([(2, f)], combined=False,
+                                                      oriented=False)})
+
+
+def horizontal_curves(vol, z):
+    """Edges of `vol` lying in the plane z = const (bounding boxes are padded
+    by the tolerance: compare with 1e-3)."""
+    out = []
+    for c in solid_curves(vol):
+        _, _, zmin, _, _, zmax = gmsh.model.getBoundingBox(1, c)
+        if zmax - zmin < 1e-3 and abs((zmin + zmax) / 2 - z) < 1e-3:
+            out.append(c)
+    return out
+
+
+def horizontal_face(vol, z):
+    """The one face of `vol` lying in the plane z = const."""
+    occ.synchronize()
+    found = []
+    for _, f in gmsh.model.getBoundary([(3, vol)], combined=False, oriented=False):
+        _, _, zmin, _, _, zmax = gmsh.model.getBoundingBox(2, abs(f))
+        if zmax - zmin < 1e-3 and abs((zmin + zmax) / 2 - z) < 1e-3:
+            found.append(abs(f))
+    assert len(found) == 1, found
+    return found[0]
+
+
+def one_volume(out):
+    vols = [tag for dim, tag in out if dim == 3]
+    assert len(vols) == 1, out
+    return vols[0]
+
+
+def extrude_polygon_xy(pts, h):
+    """Closed polygon in the plane z = 0 (one line per pair of consecutive
+    points, collinear points kept), extruded by h along +Z."""
+    p = [occ.addPoint(x, y, 0.0) for x, y in pts]
+    lines = [occ.addLine(p[i], p[(i + 1) % len(p)]) for i in range(len(p))]
+    surf = occ.addPlaneSurface([occ.addCurveLoop(lines)])
+    return one_volume(occ.extrude([(2, surf)], 0.0, 0.0, h))
+
+
+def half_space_y_tilt(z0, deg, above):
+    """A box standing for the half-space above (or below) the plane through
+    (0, 0, z0) whose normal is +Z turned by `deg` degrees about the Y axis,
+    i.e. (sin deg, 0, cos deg); 100 mm across, enough for the tubes."""
+    box = occ.addBox(-50.0, -50.0, z0 if above else z0 - 100.0, 100.0, 100.0, 100.0)
+    occ.rotate([(3, box)], 0.0, 0.0, z0, 0.0, 1.0, 0.0, math.radians(deg))
+    return box
+
+
+def semicircle_area(t):
+    return PI * (t / 2) ** 2 / 2
+
+
+def lbracket_round_ends():
+    # As lbracket (outer corner at the origin, legs to the outer faces x = 0
+    # and z = 0), t = 2, bend R2 / R4. Each free end is a half circle of
+    # radius t/2 centred on the mid-surface, tangent to both walls; its tip
+    # is at x = H (horizontal leg) and z = V (vertical leg).
+    t, ri, H, V, W = 2.0, 2.0, 40.0, 30.0, 20.0
+    ro, h = ri + t, t / 2
+    c = (ro, ro)
+    segs = [
+        ("line", (H - h, 0.0), (ro, 0.0)),           # outer face of horizontal leg
+        ("arc", (ro, 0.0), c, (0.0, ro)),            # outer bend, R = ro
+        ("line", (0.0, ro), (0.0, V - h)),           # outer face of vertical leg
+        ("semi", (0.0, V - h), (h, V), (t, V - h)),  # top end, full round
+        ("line", (t, V - h), (t, ro)),               # inner face of vertical leg
+        ("arc", (t, ro), c, (ro, t)),                # inner bend, R = ri
+        ("line", (ro, t), (H - h, t)),               # inner face of horizontal leg
+        ("semi", (H - h, t), (H, h), (H - h, 0.0)),  # free end, full round
+    ]
+    extrude_profile(segs, W)
+    area = ((H - h - ro) * t + (V - h - ro) * t + quarter_annulus(ri, ro)
+            + 2 * semicircle_area(t))
+    return area * W, dict(dims="L-bracket, legs 40 (horizontal) × 30 (vertical) to "
+                               "outer faces / end tips, width 20, bend R2 inner / R4 "
+                               "outer; both free ends full round (half circle R1)",
+                          wall="2")
+
+
+def uchannel_round_ends():
+    # As uchannel (web z in [0, t], x in [0, B]; flange tips at z = Hf), length
+    # 40; each flange end is a half circle of radius t/2 with its tip at z = Hf.
+    t, ri, B, Hf, L = 2.0, 2.0, 30.0, 20.0, 40.0
+    ro, h = ri + t, t / 2
+    cl, cr = (ro, ro), (B - ro, ro)
+    segs = [
+        ("line", (0.0, Hf - h), (0.0, ro)),                 # left flange, outside
+        ("arc", (0.0, ro), cl, (ro, 0.0)),                  # left bend, outer
+        ("line", (ro, 0.0), (B - ro, 0.0)),                 # web, outside
+        ("arc", (B - ro, 0.0), cr, (B, ro)),                # right bend, outer
+        ("line", (B, ro), (B, Hf - h)),                     # right flange, outside
+        ("semi", (B, Hf - h), (B - h, Hf), (B - t, Hf - h)),  # right flange end
+        ("line", (B - t, Hf - h), (B - t, ro)),             # right flange, inside
+        ("arc", (B - t, ro), cr, (B - ro, t)),              # right bend, inner
+        ("line", (B - ro, t), (ro, t)),                     # web, inside
+        ("arc", (ro, t), cl, (t, ro)),                      # left bend, inner
+        ("line", (t, ro), (t, Hf - h)),                     # left flange, inside
+        ("semi", (t, Hf - h), (h, Hf), (0.0, Hf - h)),      # left flange end
+    ]
+    extrude_profile(segs, L)
+    area = ((B - 2 * ro) * t + 2 * (Hf - h - ro) * t + 2 * quarter_annulus(ri, ro)
+            + 2 * semicircle_area(t))
+    return area * L, dict(dims="U-channel, web 30 wide × flanges 20 high (outside, "
+                               "to the tips), length 40, bends R2 inner / R4 outer; "
+                               "flange ends full round (half circle R1)", wall="2")
+
+
+def hat_round_ends():
+    # hat_holes' profile (overall 60 × 20, bends R2 / R3.5) without the holes,
+    # length 40; each flange end is a half circle of radius t/2 with its tip
+    # at x = 0 / x = 60.
+    t, ri, F, Hh, T, L = 1.5, 2.0, 15.0, 20.0, 30.0, 40.0
+    ro, h = ri + t, t / 2
+    Wt = 2 * F + T
+    xl, xr = F, F + T
+    cbl = (xl - ri, t + ri)
+    ctl = (xl + ro, Hh - ro)
+    ctr = (xr - ro, Hh - ro)
+    cbr = (xr + ri, t + ri)
+    segs = [
+        ("line", (h, 0.0), (cbl[0], 0.0)),                   # left flange bottom
+        ("arc", (cbl[0], 0.0), cbl, (xl + t, cbl[1])),       # bottom-left bend, R = ro
+        ("line", (xl + t, cbl[1]), (xl + t, ctl[1])),        # left wall, inside
+        ("arc", (xl + t, ctl[1]), ctl, (ctl[0], Hh - t)),    # top-left bend, R = ri
+        ("line", (ctl[0], Hh - t), (ctr[0], Hh - t)),        # top, underside
+        ("arc", (ctr[0], Hh - t), ctr, (xr - t, ctr[1])),    # top-right bend, R = ri
+        ("line", (xr - t, ctr[1]), (xr - t, cbr[1])),        # right wall, inside
+        ("arc", (xr - t, cbr[1]), cbr, (cbr[0], 0.0)),       # bottom-right bend, R = ro
+        ("line", (cbr[0], 0.0), (Wt - h, 0.0)),              # right flange bottom
+        ("semi", (Wt - h, 0.0), (Wt, h), (Wt - h, t)),       # right flange end
+        ("line", (Wt - h, t), (cbr[0], t)),                  # right flange top
+        ("arc", (cbr[0], t), cbr, (xr, cbr[1])),             # bottom-right bend, R = ri
+        ("line", (xr, cbr[1]), (xr, ctr[1])),                # right wall, outside
+        ("arc", (xr, ctr[1]), ctr, (ctr[0], Hh)),            # top-right bend, R = ro
+        ("line", (ctr[0], Hh), (ctl[0], Hh)),                # top, outside
+        ("arc", (ctl[0], Hh), ctl, (xl, ctl[1])),            # top-left bend, R = ro
+        ("line", (xl, ctl[1]), (xl, cbl[1])),                # left wall, outside
+        ("arc", (xl, cbl[1]), cbl, (cbl[0], t)),             # bottom-left bend, R = ri
+        ("line", (cbl[0], t), (h, t)),                       # left flange top
+        ("semi", (h, t), (0.0, h), (h, 0.0)),                # left flange end
+    ]
+    extrude_profile(segs, L)
+    area = (2 * (cbl[0] - h) * t                  # flanges (straight part)
+            + 2 * (ctl[1] - cbl[1]) * t           # walls
+            + (ctr[0] - ctl[0]) * t               # top
+            + 4 * quarter_annulus(ri, ro)         # bends
+            + 2 * semicircle_area(t))             # round ends
+    return area * L, dict(
+        dims="hat section as hat_holes without holes (flanges 15, walls 20 high, "
+             "top 30 wide outside; overall 60 × 20), length 40, bends R2 inner / "
+             "R3.5 outer; flange ends full round (half circle R0.75)",
+        wall="1.5")
+
+
+def rounded_corner_plate(L, W, t, R):
+    """Box [0,L]x[0,W]x[0,t] with its 4 vertical edges rounded R."""
+    box = occ.addBox(0, 0, 0, L, W, t)
+    vertical = []
+    for c in solid_curves(box):
+        _, _, zmin, _, _, zmax = gmsh.model.getBoundingBox(1, c)
+        if zmax - zmin > 1e-3:
+            vertical.append(c)
+    assert len(vertical) == 4, vertical
+    return one_volume(occ.fillet([box], vertical, [R]))
+
+
+def plate_rim_fillets(r):
+    """Plate 50 x 30 x 2, vertical corners R5, then all 16 top and bottom
+    perimeter edges (4 lines + 4 corner arcs each side) filleted with r < t/2.
+
+    Volume: the rounded-corner plate, (L W - (4 - pi) R^2) t, minus, for each
+    of the two sides, the material the fillet takes off: the cross-section
+    A = r^2 (1 - pi/4) (square r x r minus a quarter disc) swept along the 4
+    straight edges (total length Ls = 2 (L - 2R) + 2 (W - 2R)) and, by Pappus,
+    turned by a quarter turn about each vertical corner axis at the distance
+    of its centroid, rc = (R - r) + 2 r / (3 (4 - pi)) (centroid of the
+    spandrel from the quarter disc's centre, 2 r / (3 (4 - pi)) along each
+    axis, since (r^2 r/2 - pi r^2/4 4r/(3 pi)) / A = 2 r / (3 (4 - pi))):
+        V = (L W - (4 - pi) R^2) t - 2 A (Ls + 4 (pi/2) rc).
+    """
+    L, W, t, R = 50.0, 30.0, 2.0, 5.0
+    assert 2 * r < t
+    vol = rounded_corner_plate(L, W, t, R)
+    edges = horizontal_curves(vol, 0.0) + horizontal_curves(vol, t)
+    assert len(edges) == 16, edges
+    one_volume(occ.fillet([vol], edges, [r]))
+    A = r * r * (1 - PI / 4)
+    Ls = 2 * (L - 2 * R) + 2 * (W - 2 * R)
+    rc = (R - r) + 2 * r / (3 * (4 - PI))
+    return (L * W - (4 - PI) * R * R) * t - 2 * A * (Ls + 2 * PI * rc)
+
+
+def plate_full_round():
+    # r = 0.49 t works in OpenCASCADE 7.6 (0.04 mm of flat rim left between
+    # the top and the bottom fillet).
+    r = 0.49 * 2.0
+    return plate_rim_fillets(r), dict(
+        dims="50 × 30 × 2 plate, vertical corners R5, top and bottom perimeter "
+             "edges filleted r = 0.98 (= 0.49 t: near-full-round rim, 0.04 flat)",
+        wall="2")
+
+
+def plate_fillet_flat_fillet():
+    r = 0.3 * 2.0
+    return plate_rim_fillets(r), dict(
+        dims="50 × 30 × 2 plate, vertical corners R5, top and bottom perimeter "
+             "edges filleted r = 0.6 (= 0.3 t; 0.8 flat rim strip between)",
+        wall="2")
+
+
+def chamfered_plate(d, zs):
+    """Box 50 x 30 x 2 with the perimeter edges in the planes z in `zs`
+    chamfered d x d (45°). Each chamfered side takes off a layer of height d
+    that is a prismatoid with ends L x W and (L - 2d) x (W - 2d) and mid
+    section (L - d) x (W - d), of volume d/6 (A0 + 4 Am + A1) (exact for a
+    prismatoid)."""
+    L, W, t = 50.0, 30.0, 2.0
+    box = occ.addBox(0, 0, 0, L, W, t)
+    edges, faces = [], []
+    for z in zs:
+        es = horizontal_curves(box, z)
+        assert len(es) == 4, es
+        edges += es
+        faces += [horizontal_face(box, z)] * len(es)
+    one_volume(occ.chamfer([box], edges, faces, [d]))
+    layer = d / 6 * (L * W + 4 * (L - d) * (W - d) + (L - 2 * d) * (W - 2 * d))
+    return L * W * (t - len(zs) * d) + len(zs) * layer
+
+
+def plate_chamfer_one_side():
+    return chamfered_plate(1.0, [2.0]), dict(
+        dims="50 × 30 × 2 plate, top perimeter edges chamfered 1 × 1 (45°, 0.5 t), "
+             "bottom edges and vertical corners sharp", wall="2")
+
+
+def plate_chamfer_both_sides():
+    return chamfered_plate(0.8, [0.0, 2.0]), dict(
+        dims="50 × 30 × 2 plate, top and bottom perimeter edges chamfered 0.8 × 0.8 "
+             "(45°, 0.4 t; 0.4 flat rim strip between), vertical corners sharp",
+        wall="2")
+
+
+def oblique_strip(s):
+    """Strip 60 x 20 x 2: profile in XZ a parallelogram, bottom x in [0, 60],
+    top x in [s, 60 + s] (both ends slanted the same way, parallel end
+    planes), extruded 20 along +Y. Area = base x height = 60 t."""
+    L, W, t = 60.0, 20.0, 2.0
+    extrude_profile([
+        ("line", (0.0, 0.0), (L, 0.0)),
+        ("line", (L, 0.0), (L + s, t)),
+        ("line", (L + s, t), (s, t)),
+        ("line", (s, t), (0.0, 0.0)),
+    ], W)
+    return L * W * t
+
+
+def strip_oblique_45():
+    t = 2.0
+    return oblique_strip(t), dict(
+        dims="60 × 20 × 2 strip, both short ends cut by parallel planes tilted "
+             "45° about Y (end faces 2√2 = 2.83 wide, meeting top / bottom at "
+             "45° / 135°); bottom x 0…60, top x 2…62", wall="2")
+
+
+def strip_oblique_3x():
+    t = 2.0
+    s = math.sqrt((3 * t) ** 2 - t ** 2)    # end face 3 t wide: offset 2√2 t
+    return oblique_strip(s), dict(
+        dims="60 × 20 × 2 strip, both short ends cut by parallel planes tilted "
+             "acos(1/3) = 70.5° about Y (end faces 6 = 3 t wide, sharp 19.5° "
+             "edges); bottom x 0…60, top x 5.66…65.66", wall="2")
+
+
+def plate_split_rim():
+    # Each side of the 50 x 30 outline has two extra (collinear) points, at
+    # different places on opposite sides, so each side face is 3 faces.
+    L, W, t = 50.0, 30.0, 2.0
+    extrude_polygon_xy([
+        (0.0, 0.0), (15.0, 0.0), (35.0, 0.0),
+        (L, 0.0), (L, 8.0), (L, 20.0),
+        (L, W), (40.0, W), (20.0, W),
+        (0.0, W), (0.0, 22.0), (0.0, 10.0),
+    ], t)
+    return L * W * t, dict(dims="50 × 30 × 2 plate, each of the 4 side (rim) faces "
+                                "split into 3 coplanar faces (at x = 15, 35 / 20, 40 "
+                                "and y = 8, 20 / 10, 22)", wall="2")
+
+
+def plate_split_walls():
+    # Three boxes side by side (x in [0, 20], [20, 32], [32, 50]) fused with
+    # Geometry.OCCUnionUnify off, so the coplanar faces stay split along the
+    # seams x = 20 and x = 32: top, bottom and the two long sides 3 faces each.
+    L, W, t = 50.0, 30.0, 2.0
+    xs = [0.0, 20.0, 32.0, L]
+    boxes = [occ.addBox(xs[i], 0.0, 0.0, xs[i + 1] - xs[i], W, t) for i in range(3)]
+    unify = gmsh.option.getNumber("Geometry.OCCUnionUnify")
+    gmsh.option.setNumber("Geometry.OCCUnionUnify", 0)
+    try:
+        out, _ = occ.fuse([(3, boxes[0])], [(3, b) for b in boxes[1:]])
+    finally:
+        gmsh.option.setNumber("Geometry.OCCUnionUnify", unify)
+    one_volume(out)
+    return L * W * t, dict(dims="50 × 30 × 2 plate fused from 3 boxes (x 0…20, "
+                                "20…32, 32…50), not unified: top, bottom and long "
+                                "sides split into 3 coplanar faces at x = 20, 32",
+                           wall="2")
+
+
+def lbracket_split_bend():
+    # lbracket's profile with t = 2, bend R2 / R4, width 20; each bend arc is
+    # given as two arcs (outer split at 45°, inner at 30° from the vertical
+    # leg: the splits are not radially aligned), and the outer face of the
+    # horizontal leg as two collinear lines (split at x = 20).
+    t, ri, H, V, W = 2.0, 2.0, 40.0, 30.0, 20.0
+    ro = ri + t
+    c = (ro, ro)
+
+    def on(r, deg):
+        a = math.radians(deg)
+        return (c[0] + r * math.cos(a), c[1] + r * math.sin(a))
+
+    mo, mi = on(ro, 225.0), on(ri, 210.0)
+    segs = [
+        ("line", (H, 0.0), (20.0, 0.0)),        # outer face of horizontal leg, part 1
+        ("line", (20.0, 0.0), (ro, 0.0)),       # outer face of horizontal leg, part 2
+        ("arc", (ro, 0.0), c, mo),              # outer bend, R = ro, 45°
+        ("arc", mo, c, (0.0, ro)),              # outer bend, R = ro, 45°
+        ("line", (0.0, ro), (0.0, V)),          # outer face of vertical leg
+        ("line", (0.0, V), (t, V)),             # top end
+        ("line", (t, V), (t, ro)),              # inner face of vertical leg
+        ("arc", (t, ro), c, mi),                # inner bend, R = ri, 30°
+        ("arc", mi, c, (ro, t)),                # inner bend, R = ri, 60°
+        ("line", (ro, t), (H, t)),              # inner face of horizontal leg
+        ("line", (H, t), (H, 0.0)),             # free end
+    ]
+    extrude_profile(segs, W)
+    area = (H - ro) * t + (V - ro) * t + quarter_annulus(ri, ro)
+    return area * W, dict(dims="L-bracket, legs 40 × 30 to outer faces, width 20, "
+                               "bend R2 / R4 with each bend face split in two "
+                               "(outer at 45°, inner at 30° from the vertical leg), "
+                               "outer face of the horizontal leg split at x = 20",
+                          wall="2")
+
+
+def cap_cut_by_plane():
+    # Spherical shell, centre at the origin, R50 outer / R47.5 inner, keep
+    # z >= 30: the rim is the flat annulus r in [sqrt(47.5^2 - 30^2), 40].
+    # Cap of a ball of radius R above z = h: pi (R - h)^2 (2 R + h) / 3.
+    ro, t, zc = 50.0, 2.5, 30.0
+    ri = ro - t
+    outer = occ.addSphere(0, 0, 0, ro)
+    inner = occ.addSphere(0, 0, 0, ri)
+    box = occ.addBox(-ro - 5, -ro - 5, zc, 2 * ro + 10, 2 * ro + 10, ro)
+    cap, _ = occ.intersect([(3, outer)], [(3, box)])
+    one_volume(occ.cut(cap, [(3, inner)])[0])
+
+    def cap_vol(R):
+        return PI * (R - zc) ** 2 * (2 * R + zc) / 3
+
+    rim = ro * math.sqrt(1 - (zc / ro) ** 2) - math.sqrt(ri ** 2 - zc ** 2)
+    return cap_vol(ro) - cap_vol(ri), dict(
+        dims="spherical shell R50 outer / R47.5 inner (centre at the origin) cut "
+             f"by the plane z = 30, upper part: Ø80 × 20, flat annular rim "
+             f"{rim:.2f} wide", wall="2.5")
+
+
+def tube(ro, t, z0, z1):
+    """Tube along Z, outer radius ro, wall t, from z0 to z1 (straight ends)."""
+    outer = occ.addCylinder(0, 0, z0, 0, 0, z1 - z0, ro)
+    inner = occ.addCylinder(0, 0, z0 - 1.0, 0, 0, z1 - z0 + 2.0, ro - t)
+    return one_volume(occ.cut([(3, outer)], [(3, inner)])[0])
+
+
+def tube_cut_45():
+    # Tube R15 / R13 along Z from z = 0 to the plane z - x = 50 (normal
+    # (-1, 0, 1)/√2, 45° to the axis): z from 35 to 65 on the outside. By
+    # symmetry V = ∫∫ (50 + x) dA over the annulus = 50 A.
+    ro, t, Lm = 15.0, 2.0, 50.0
+    vol = tube(ro, t, 0.0, 80.0)
+    vol = one_volume(occ.cut([(3, vol)], [(3, half_space_y_tilt(Lm, -45.0, True))])[0])
+    area = PI * (ro ** 2 - (ro - t) ** 2)
+    return Lm * area, dict(dims="tube R15 outer / R13 inner along Z, end z = 0 "
+                                "square, other end cut by the plane z = 50 + x (45° "
+                                "to the axis; elliptic rim), 35…65 long", wall="2")
+
+
+def tube_cut_45_both():
+    # Same tube, ends on the parallel planes z - x = 15 and z - x = 60 (45° to
+    # the axis): V = 45 A as above; z from 0 to 75 overall.
+    ro, t, z0, z1 = 15.0, 2.0, 15.0, 60.0
+    vol = tube(ro, t, -5.0, 80.0)
+    vol = one_volume(occ.cut([(3, vol)], [(3, half_space_y_tilt(z1, -45.0, True)),
+                                          (3, half_space_y_tilt(z0, -45.0, False))])[0])
+    area = PI * (ro ** 2 - (ro - t) ** 2)
+    return (z1 - z0) * area, dict(dims="tube R15 outer / R13 inner along Z, both ends "
+                                       "cut by parallel planes at 45° to the axis, "
+                                       "z = 15 + x and z = 60 + x (45 long on the axis)",
+                                  wall="2")
+
+
+def taper_plate():
+    # Thickness 3 at x = 0 to 1 at x = 60, symmetric about z = 0 (both walls
+    # inclined), 30 along Y; the ends x = 0, 60 are planes normal to X.
+    L, W, t0, t1 = 60.0, 30.0, 3.0, 1.0
+    extrude_profile([
+        ("line", (0.0, -t0 / 2), (L, -t1 / 2)),
+        ("line", (L, -t1 / 2), (L, t1 / 2)),
+        ("line", (L, t1 / 2), (0.0, t0 / 2)),
+        ("line", (0.0, t0 / 2), (0.0, -t0 / 2)),
+    ], W)
+    return L * W * (t0 + t1) / 2, dict(dims="60 × 30 plate, symmetric taper (both walls "
+                                            "inclined): thickness 3 at x = 0 to 1 at "
+                                            "x = 60, square ends", wall="3 → 1 (linear in x)")
+
+
+# Written after PARTS, in the same session (see the note on PARTS).
+RIM_PARTS = [
+    ("lbracket_round_ends", lbracket_round_ends),
+    ("uchannel_round_ends", uchannel_round_ends),
+    ("hat_round_ends", hat_round_ends),
+    ("plate_full_round", plate_full_round),
+    ("plate_fillet_flat_fillet", plate_fillet_flat_fillet),
+    ("plate_chamfer_one_side", plate_chamfer_one_side),
+    ("plate_chamfer_both_sides", plate_chamfer_both_sides),
+    ("strip_oblique_45", strip_oblique_45),
+    ("strip_oblique_3x", strip_oblique_3x),
+    ("plate_split_rim", plate_split_rim),
+    ("plate_split_walls", plate_split_walls),
+    ("lbracket_split_bend", lbracket_split_bend),
+    ("cap_cut_by_plane", cap_cut_by_plane),
+    ("tube_cut_45", tube_cut_45),
+    ("tube_cut_45_both", tube_cut_45_both),
+    ("taper_plate", taper_plate),
+]
+
+RIM_README_HEAD = [
+    "# HexLayer sample parts: rims and split faces",
+    "",
+    "Small single-solid STEP files (AP214, units mm), all thin-walled, whose rims",
+    "(the faces across the wall at its free edges) are not flat faces normal to",
+    "the wall -- full-round ends, fillets, chamfers, oblique cuts, a wide planar",
+    "rim on a curved shell, a taper -- or whose faces are split into several",
+    "faces where one would do.",
+]
+
+RIM_README_NOTES = [
+    "Profiled parts (`lbracket_round_ends`, `uchannel_round_ends`,",
+    "`hat_round_ends`, `lbracket_split_bend`, `strip_oblique_*`, `taper_plate`)",
+    "are extrusions along +Y of a closed profile in the XZ plane, like the",
+    "profiled parts in `..`. A full-round end is one half circle of radius t/2",
+    "centred on the mid-surface, tangent to both walls (one cylindrical face, as",
+    "FreeCAD's Part Offset2D of an open line makes). The plates with fillets and",
+    "chamfers are OpenCASCADE fillets / chamfers of a box (after rounding its",
+    "vertical corners R5 for the fillets); their volumes are checked against",
+    "closed formulas (Pappus for the fillets, prismatoid for the chamfers, see",
+    "`scripts/make_samples.py`). `plate_split_rim` extrudes a 12-point outline",
+    "(collinear points kept); `plate_split_walls` is a fuse of three boxes with",
+    "OpenCASCADE's face unification turned off. `cap_cut_by_plane`, `tube_cut_45`",
+    "and `tube_cut_45_both` are spheres / cylinders cut by planes; their",
+    "spherical and cylindrical faces have a seam edge on the +X side, and the",
+    "spherical faces hold the pole (+Z) as a degenerate edge.",
+    "",
+    "Made by `scripts/make_samples.py` after the parts in `..` (run it with",
+    "`/usr/bin/python3`, which needs the Debian package `python3-gmsh`); licence",
+    "AGPL-3.0-or-later like the project. The STEP header timestamp is fixed, so",
+    "regenerating the files gives byte-identical output.",
+    "",
+]
+
+
+# ---------------------------------------------------------------------------
 # Checks and output
 # ---------------------------------------------------------------------------
 
@@ -498,20 +1023,25 @@ def make_part(name, builder, outdir):
     return dict(name=name, volume=mass, faces=nfaces, size=size, **info)
 
 
-def write_readme(outdir, rows):
-    lines = [
-        "# HexLayer sample parts",
-        "",
-        "Small single-solid STEP files (AP214, units mm) for tests and examples.",
-        "All parts except `thick_block.step` are thin-walled parts.",
+def write_readme(outdir, rows, head=None, notes=None):
+    """README.md with a table of the parts, between `head` and `notes` (lists
+    of lines; the defaults are those of Resources/samples)."""
+    if head is None:
+        head = [
+            "# HexLayer sample parts",
+            "",
+            "Small single-solid STEP files (AP214, units mm) for tests and examples.",
+            "All parts except `thick_block.step` are thin-walled parts.",
+        ]
+    lines = head + [
         "",
         "| File | Part / dimensions (mm) | Wall thickness (mm) | CAD volume (mm³) |",
         "|---|---|---|---|",
     ]
     for r in rows:
         lines.append(f"| `{r['name']}.step` | {r['dims']} | {r['wall']} | {r['volume']:.3f} |")
-    lines += [
-        "",
+    lines.append("")
+    lines += notes if notes is not None else [
         "Profiled parts (`lbracket`, `uchannel`, `hat_holes`) are extrusions of a",
         "closed 2D profile (lines and concentric, tangent arcs), so each bend is a",
         "true cylindrical surface with inner radius r and outer radius r + t.",
@@ -556,6 +1086,15 @@ def main(argv):
             rows.append(make_part(name, builder, outdir))
         write_readme(outdir, rows)
         print(f"wrote {len(rows)} STEP files and README.md to {outdir}")
+        # The rim parts last: see the note on PARTS.
+        rimdir = os.path.join(outdir, "rims")
+        os.makedirs(rimdir, exist_ok=True)
+        rows = []
+        for name, builder in RIM_PARTS:
+            print("rims/" + name)
+            rows.append(make_part(name, builder, rimdir))
+        write_readme(rimdir, rows, RIM_README_HEAD, RIM_README_NOTES)
+        print(f"wrote {len(rows)} STEP files and README.md to {rimdir}")
     finally:
         gmsh.finalize()
     return 0

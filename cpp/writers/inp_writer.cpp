@@ -77,12 +77,13 @@ void writeNodeSet(std::ostream& out, const NodeSet& set) {
 // A CAD face's nodes as *NSET FACEN and its boundary hex faces as the element-face *SURFACE FACEN_S:
 // HexMesh's local face f is CalculiX's (and Abaqus') S(f + 1) of C3D8 and C3D20 (S1 = nodes 1-2-3-4,
 // S2 = 5-8-7-6, S3 = 1-5-6-2, S4 = 2-6-7-3, S5 = 3-7-8-4, S6 = 4-8-5-1).
+// A face narrower than the hexes (a rim's flat strip between two fillets) has nodes but no mesh face.
 void writeSurfaceGroup(std::ostream& out, const SurfaceGroup& g) {
+  writeNodeSet(out, {g.name, g.nodes});
   if (g.hexFaces.empty()) {
     out << "** CAD face " << g.name << " has no mesh faces\n";
     return;
   }
-  writeNodeSet(out, {g.name, g.nodes});
   out << "*SURFACE, NAME=" << inpName(g.name + "_S") << ", TYPE=ELEMENT\n";
   for (const HexFace& f : g.hexFaces) out << f.hex + 1 << ", S" << f.localFace + 1 << "\n";
 }

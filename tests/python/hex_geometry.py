@@ -12,3 +12,20 @@ def hex_volumes(nodes, hexes):
     for a, b, c, d in HEX_TETS:
         volume += np.einsum("ij,ij->i", x[:, b] - x[:, a], np.cross(x[:, c] - x[:, a], x[:, d] - x[:, a])) / 6.0
     return volume
+
+
+# Each corner's three edge neighbours, in the order that makes the corner's Jacobian positive for a
+# well-shaped hex (corners 0-3 the bottom quad, counter-clockwise seen from above, 4-7 the quad above).
+CORNER_EDGES = ((1, 3, 4), (2, 0, 5), (3, 1, 6), (0, 2, 7), (7, 5, 0), (4, 6, 1), (5, 7, 2), (6, 4, 3))
+
+
+def hex_scaled_jacobians(nodes, hexes):
+    """Scaled Jacobian of each hex: the smallest, over its 8 corners, determinant of the corner's three unit
+    edge vectors (1 for a brick, <= 0 for an inverted corner)."""
+    x = np.asarray(nodes)[np.asarray(hexes)]
+    worst = np.full(len(hexes), np.inf)
+    for corner, (a, b, c) in enumerate(CORNER_EDGES):
+        e = [x[:, k] - x[:, corner] for k in (a, b, c)]
+        e = [v / np.linalg.norm(v, axis=1)[:, None] for v in e]
+        worst = np.minimum(worst, np.einsum("ij,ij->i", e[0], np.cross(e[1], e[2])))
+    return worst
