@@ -36,7 +36,10 @@ namespace hexlayer {
 
 namespace {
 
-constexpr double kPipelineDiagonal = 100;  // normalizingUnit
+// normalizingUnit: parts whose diagonal is outside [kSmallestDiagonal, kLargestDiagonal] (in metres or
+// microns, if drawn in millimetres) are scaled to kPipelineDiagonal. Parts within are left as they are:
+// Gmsh took 3x longer on the scaled copy of a B-spline part (the AnalysisSitus ski part) whatever the size.
+constexpr double kPipelineDiagonal = 100, kSmallestDiagonal = 10, kLargestDiagonal = 10000;
 
 
 std::string lowerExtension(const std::string& path) {
@@ -159,7 +162,8 @@ double normalizingUnit(const TopoDS_Solid& solid) {
   Bnd_Box box;
   BRepBndLib::Add(solid, box, false);
   const double diagonal = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
-  return diagonal > 0 && std::isfinite(diagonal) ? kPipelineDiagonal / diagonal : 1;
+  if (!(diagonal > 0) || !std::isfinite(diagonal)) return 1;
+  return diagonal < kSmallestDiagonal || diagonal > kLargestDiagonal ? kPipelineDiagonal / diagonal : 1;
 }
 
 CadSolid prepareSolid(const TopoDS_Solid& input, double unit) {

@@ -33,9 +33,9 @@ TopoDS_Shape readShapeInProcess(const std::string& path);
 // what is wrong.
 CadSolid prepareSolid(const TopoDS_Solid& solid, double unit = 1);
 
-// The scale that brings the solid's bounding-box diagonal to 100. OpenCASCADE's, TetGen's and Gmsh's
-// tolerances are partly absolute; the pipeline meets every part at this one size, so a part drawn in
-// metres and the same part in millimetres give the same mesh, scaled.
+// The scale that brings a solid whose bounding-box diagonal is below 10 or above 10 000 to a diagonal of
+// 100, else 1. OpenCASCADE's, TetGen's and Gmsh's tolerances are partly absolute: a part drawn in metres
+// (or in microns) is met at a millimetre size, and gives the mesh of the same part in millimetres, scaled.
 double normalizingUnit(const TopoDS_Solid& solid);
 
 // Euler characteristic of the solid's boundary, V - E + F - (W - F) (Euler-Poincaré with W wires):

@@ -184,6 +184,15 @@ struct QuadStage {
   std::size_t knifeFacets = 0;  // dropped where the wall runs out to a knife edge
 };
 
+const char* layoutName(QuadLayout layout) {
+  switch (layout) {
+    case QuadLayout::Grid: return "grid";
+    case QuadLayout::OGrid: return "o-grid";
+    case QuadLayout::Ring: return "ring";
+    default: return "gmsh";
+  }
+}
+
 double medianRadius(const ChordalSurface& chordal) {
   std::vector<double> r = chordal.radius;
   if (r.empty()) return 0;
@@ -217,7 +226,7 @@ QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const Wa
     r["quad_mesh"]["unpaired_triangles"] = stage.quads.holes;
     r["quad_mesh"]["doublets_removed"] = stage.quads.doubletsRemoved;
     r["quad_mesh"]["structured_patches"] = stage.quads.structuredPatches;
-    r["quad_mesh"]["layout"] = stage.quads.layout == QuadLayout::Gmsh ? "gmsh" : stage.quads.layout == QuadLayout::Grid ? "grid" : "o-grid";
+    r["quad_mesh"]["layout"] = layoutName(stage.quads.layout);
     break;
   }
   return stage;

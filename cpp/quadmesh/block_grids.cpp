@@ -136,6 +136,8 @@ std::vector<double> linesAlong(const MapLocator& locate, const Eigen::Vector2d& 
 
 int count(double quads) { return std::max(1, static_cast<int>(std::round(quads))); }
 
+constexpr int kMinAround = 8;  // quads round a ring grid, at the least
+
 // The pocket of grid cells around a hole: its box of cells one cell beyond the hole's extent in the
 // plane; false if that leaves the grid.
 bool pocketBox(const SurfaceMap& map, const std::vector<int>& hole, const GridLines& lines, Box& box) {
@@ -213,6 +215,31 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
     addRing(grid, locate, lines, box, loopPoints(map, hole, corners, box.sides(), size), false, size);
   }
   dropUnusedNodes(grid.nodes, grid.quads);  // those inside the pockets
+  return grid;
+}
+
+BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size) {
+  if (map.empty() || map.boundary != MapBoundary::Annulus || map.holes.size() != 1) return {};
+  const MapLocator locate(map);
+  const std::vector<int>& inner = map.holes[0];
+  const std::vector<double> outerLength = arcLength(map.rim, map.points), innerLength = arcLength(inner, map.points);
+  const double outerQuads = quadsAlongLoop(map, map.rim, size).back(), innerQuads = quadsAlongLoop(map, inner, size).back();
+  const int around = std::max(kMinAround, count(std::max(outerQuads, innerQuads)));
+  // Rows as square as the columns: the map's rectangle is -log(inner radius) tall and 2 pi wide.
+  const double height = -std::log(map.innerRadius);
+  const int across = count(height / (2 * M_PI) * around);
+  BlockGrid grid;
+  for (int j = 0; j <= across; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double f = static_cast<double>(i) / around;
+      if (j == 0) grid.nodes.push_back(loopPoint(map, inner, innerLength, f * innerLength.back()).x);
+      else if (j == across) grid.nodes.push_back(loopPoint(map, map.rim, outerLength, f * outerLength.back()).x);
+      else grid.nodes.push_back(locate({2 * M_PI * f, -height * (1 - static_cast<double>(j) / across)}));
+    }
+  auto node = [&](int i, int j) { return j * around + (i % around); };
+  for (int j = 0; j < across; ++j)
+    for (int i = 0; i < around; ++i) grid.quads.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)});
+  grid.blocks = 1;
   return grid;
 }
 

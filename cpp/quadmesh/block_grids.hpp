@@ -28,4 +28,9 @@ BlockGrid oGrid(const SurfaceMap& map, const SizeField& size);
 // map, or if two pockets meet or one reaches the rim.
 BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size);
 
+// Ring grid of a surface mapped onto the annulus's rectangle (a tube, a ring): `around` x `across`
+// quads evenly spaced in it (square where the map is conformal), the rim rows on the rims by arc
+// length, periodic round the ring: every node is regular. Empty for any other map.
+BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size);
+
 }  // namespace hexlayer

@@ -410,7 +410,8 @@ QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOp
 }
 
 // The structured block grids of the chordal surface (block_grids.hpp): a grid with a pocket round
-// each hole, and if its rim has no four sharp corners, an O-grid too (if it is a disc).
+// each hole, and if its rim has no four sharp corners, an O-grid too (if it is a disc), and a ring grid
+// if it has two rims (a tube, a ring).
 std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   const SizeField size = [&](const Vec3& p) { return o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, p); };
   std::vector<QuadMesh> tries;
@@ -424,6 +425,8 @@ std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const QuadMe
   add(holedGrid(square, size), QuadLayout::Grid);
   if (!square.empty() && !square.sharpCorners && square.holes.empty())
     add(oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
+  if (!square.empty() && square.holes.size() == 1)
+    add(ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size), QuadLayout::Ring);
   return tries;
 }
 
@@ -447,7 +450,7 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   const long chordalEuler = eulerCharacteristic(chordal.surface());
   // Structured block grids first: where one has square enough quads, Gmsh is not needed. A grid
   // with an inverted quad (its layout does not fit the surface) is never kept.
-  // The grid and the O-grid are independent tries: finished side by side, then ranked in order. (A
+  // The block grids are independent tries: finished side by side, then ranked in order. (A
   // single try keeps its own parallel loops: an inactive region does not nest them.)
   std::vector<QuadMesh> blocks = blockGridQuads(chordal, o);
   std::vector<QuadScore> scores(blocks.size());

@@ -13,7 +13,7 @@ namespace hexlayer {
 
 // How the quads were laid out: by Gmsh on its patches (some of them structured, the rest
 // unstructured), or as structured block grids in a map of the surface (block_grids.hpp).
-enum class QuadLayout { Gmsh, Grid, OGrid };
+enum class QuadLayout { Gmsh, Grid, OGrid, Ring };
 
 struct QuadMesh {
   std::vector<Vec3> nodes;                 // on the chordal surface

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <queue>
 #include <unordered_map>
 
 #include "chordal/chordal_locator.hpp"
@@ -16,6 +17,12 @@ namespace hexlayer {
 namespace {
 
 constexpr double kSharpCorner = 50 * M_PI / 180;  // a rim turning more is a corner
+// An annulus longer than this (2 pi x length / circumference) is left to the other layouts: a tube more
+// than 4 diameters long (its map's rectangle would be very tall, the rows many).
+constexpr double kMaxAnnulusModulus = 8;
+// A ring's rims: the shorter at least this share of the longer (a tube, a washer); a small hole in a plate
+// is left to the grid's pocket.
+constexpr double kMinRingRims = 0.4;
 
 // The rim loops, each along its directed edges (the facets' own direction: the surface on the left),
 // or none if the surface is not a connected sphere with holes whose rims do not touch.
@@ -43,13 +50,6 @@ std::vector<std::vector<int>> rimLoops(const std::vector<std::array<int, 3>>& tr
   const long euler = static_cast<long>(points) - static_cast<long>(uses.size()) + static_cast<long>(triangles.size());
   if (loops.empty() || euler != 2 - static_cast<long>(loops.size())) return {};
   return loops;
-}
-
-// 3D arc length along a loop from its first point: up to point i at [i], the whole loop at [size].
-std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Vec3>& x) {
-  std::vector<double> length{0};
-  for (std::size_t i = 0; i < loop.size(); ++i) length.push_back(length.back() + (x[loop[(i + 1) % loop.size()]] - x[loop[i]]).norm());
-  return length;
 }
 
 // Arc length along a loop from its point i forward to its point j (positions taken round the loop),
@@ -166,7 +166,133 @@ bool solveInside(const Eigen::SparseMatrix<double>& a, std::vector<Eigen::Vector
   return true;
 }
 
+// The shortest path along the triangles' edges from `from` to `to` (points), through no other rim point.
+std::vector<int> shortestPath(const SurfaceMap& map, const std::vector<char>& onRim, int from, int to) {
+  std::vector<std::vector<int>> next(map.points.size());
+  for (const auto& t : map.triangles)
+    for (int k = 0; k < 3; ++k) next[t[k]].push_back(t[(k + 1) % 3]), next[t[(k + 1) % 3]].push_back(t[k]);
+  std::vector<double> distance(map.points.size(), std::numeric_limits<double>::infinity());
+  std::vector<int> previous(map.points.size(), -1);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  distance[from] = 0, queue.push({0, from});
+  while (!queue.empty()) {
+    const auto [d, p] = queue.top();
+    queue.pop();
+    if (p == to) break;
+    if (d > distance[p] || (p != from && onRim[p])) continue;
+    for (int q : next[p])
+      if (const double e = d + (map.points[q] - map.points[p]).norm(); e < distance[q]) distance[q] = e, previous[q] = p, queue.push({e, q});
+  }
+  if (previous[to] < 0) return {};
+  std::vector<int> path{to};
+  while (path.back() != from) path.push_back(previous[path.back()]);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+// Opens the surface along the path (a cut from rim to rim): the triangles on the right of it get a
+// copy of each of its points. Returns the copies, in the path's order.
+std::vector<int> cutOpen(SurfaceMap& map, const std::vector<int>& path) {
+  std::unordered_map<std::uint64_t, int> cutEdge;  // directed edge of the path -> 1
+  for (std::size_t k = 0; k + 1 < path.size(); ++k) cutEdge[edgeKey(path[k], path[k + 1])] = 1, cutEdge[edgeKey(path[k + 1], path[k])] = 1;
+  std::vector<int> copy;
+  for (int p : path) copy.push_back(static_cast<int>(map.points.size())), map.points.push_back(map.points[p]);
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const int v = path[k];
+    std::vector<int> fan;  // the triangles round v
+    for (std::size_t t = 0; t < map.triangles.size(); ++t)
+      if (std::find(map.triangles[t].begin(), map.triangles[t].end(), v) != map.triangles[t].end()) fan.push_back(static_cast<int>(t));
+    std::vector<int> side(fan.size(), 0);  // +1 left of the path, -1 right
+    for (std::size_t f = 0; f < fan.size(); ++f) {
+      const auto& t = map.triangles[fan[f]];
+      for (int e = 0; e < 3; ++e) {
+        const int a = t[e], b = t[(e + 1) % 3];
+        if (k + 1 < path.size() && a == v && b == path[k + 1]) side[f] = 1;
+        if (k + 1 < path.size() && a == path[k + 1] && b == v) side[f] = -1;
+        if (k > 0 && a == path[k - 1] && b == v) side[f] = 1;
+        if (k > 0 && a == v && b == path[k - 1]) side[f] = -1;
+      }
+    }
+    for (bool spread = true; spread;) {  // round v across the edges that are not the cut
+      spread = false;
+      for (std::size_t f = 0; f < fan.size(); ++f)
+        for (std::size_t g = 0; g < fan.size(); ++g) {
+          if (side[f] == 0 || side[g] != 0) continue;
+          for (int w : map.triangles[fan[f]])
+            if (w != v && !cutEdge.count(edgeKey(v, w)) &&
+                std::find(map.triangles[fan[g]].begin(), map.triangles[fan[g]].end(), w) != map.triangles[fan[g]].end())
+              side[g] = side[f], spread = true;
+        }
+    }
+    for (std::size_t f = 0; f < fan.size(); ++f)
+      if (side[f] < 0)
+        for (int& w : map.triangles[fan[f]]) w = w == v ? copy[k] : w;
+  }
+  return copy;
+}
+
+// The annulus map of a surface with two rims (loops, longer first; map.points and map.triangles set).
+SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
+  if (loops.size() != 2 || loops[0].size() < 8 || loops[1].size() < 8) return {};
+  if (arcLength(loops[1], map.points).back() < kMinRingRims * arcLength(loops[0], map.points).back()) return {};  // a hole
+  std::vector<int>& outer = loops[0];
+  std::vector<int>& inner = loops[1];
+  std::reverse(inner.begin(), inner.end());  // round the hole the way the outer rim goes
+  double apart = 0;  // mean distance from the outer rim's points to the inner rim
+  int facing = 0;
+  for (std::size_t i = 0; i < outer.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < inner.size(); ++j)
+      if (const double d = (map.points[outer[i]] - map.points[inner[j]]).norm(); d < nearest) {
+        nearest = d;
+        if (i == 0) facing = static_cast<int>(j);
+      }
+    apart += nearest / outer.size();
+  }
+  std::rotate(inner.begin(), inner.begin() + facing, inner.end());
+  const std::vector<double> outerLength = arcLength(outer, map.points), innerLength = arcLength(inner, map.points);
+  const double modulus = 2 * M_PI * apart / (0.5 * (outerLength.back() + innerLength.back()));
+  if (!(modulus < kMaxAnnulusModulus)) return {};
+  map.innerRadius = std::exp(-modulus);
+  map.boundary = MapBoundary::Annulus;
+  // The height between the rims: harmonic, 0 on the inner rim and 1 on the outer.
+  std::vector<char> onRim(map.points.size(), 0);
+  std::vector<Eigen::Vector2d> height(map.points.size(), Eigen::Vector2d::Zero());
+  for (int p : inner) onRim[p] = 1;
+  for (int p : outer) onRim[p] = 1, height[p].x() = 1;
+  if (!solveInside(meanValueSystem(map.triangles, map.points, onRim), height)) return {};
+  const std::vector<int> path = shortestPath(map, onRim, inner[0], outer[0]);
+  if (path.size() < 2) return {};
+  const std::vector<int> copy = cutOpen(map, path);
+  // The rectangle: angle by arc length along the rims, 0 on the cut's left side and 2 pi on its copies.
+  const double bottom = -modulus;
+  map.uv.assign(map.points.size(), Eigen::Vector2d::Zero());
+  onRim.resize(map.points.size(), 0);
+  auto place = [&](const std::vector<int>& loop, const std::vector<double>& length, double y) {
+    for (std::size_t i = 0; i < loop.size(); ++i) map.uv[loop[i]] = {2 * M_PI * length[i] / length.back(), y}, onRim[loop[i]] = 1;
+  };
+  place(inner, innerLength, bottom);
+  place(outer, outerLength, 0);
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const double y = k == 0 ? bottom : k + 1 == path.size() ? 0 : bottom * (1 - height[path[k]].x());
+    map.uv[path[k]] = {0, y}, map.uv[copy[k]] = {2 * M_PI, y}, onRim[path[k]] = onRim[copy[k]] = 1;
+  }
+  if (!solveInside(meanValueSystem(map.triangles, map.points, onRim), map.uv)) return {};
+  map.rim = outer;
+  map.holes = {inner};
+  const int n = static_cast<int>(outer.size());
+  map.corners = {0, n / 4, n / 2, 3 * n / 4};
+  return map;
+}
+
 }  // namespace
+
+std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Vec3>& x) {
+  std::vector<double> length{0};
+  for (std::size_t i = 0; i < loop.size(); ++i) length.push_back(length.back() + (x[loop[(i + 1) % loop.size()]] - x[loop[i]]).norm());
+  return length;
+}
 
 std::array<int, 4> diagonalExtremes(const std::vector<Vec3>& loop, const Vec3& centre, const Vec3& e1, const Vec3& e2) {
   double a = 0, b = 0;
@@ -193,6 +319,7 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary 
   if (loops.empty()) return {};
   auto lengthOf = [&](const std::vector<int>& loop) { return arcLength(loop, map.points).back(); };
   std::stable_sort(loops.begin(), loops.end(), [&](const auto& a, const auto& b) { return lengthOf(a) > lengthOf(b); });
+  if (boundary == MapBoundary::Annulus) return mapAnnulus(std::move(map), std::move(loops));
   for (std::size_t h = 1; h < loops.size(); ++h) {  // fill each hole, then walk it counter-clockwise
     Vec3 centre = Vec3::Zero();
     for (int p : loops[h]) centre += map.points[p] / loops[h].size();

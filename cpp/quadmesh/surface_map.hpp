@@ -14,7 +14,10 @@ namespace hexlayer {
 
 // What the outer rim is mapped onto: the square [-1, 1]^2 or the unit circle. Its four corners go
 // to 45, 135, 225 and 315 degrees (the square's corners), the rim between them by arc length.
-enum class MapBoundary { Circle, Square };
+// Annulus: a surface with two rims (a tube, a ring) is cut open from rim to rim and mapped onto the
+// rectangle [0, 2 pi] x [log(inner radius), 0] of the logarithmic polar plane: the angle round the
+// ring by arc length along both rims, the two sides of the cut at 0 and 2 pi.
+enum class MapBoundary { Circle, Square, Annulus };
 
 // The chordal surface with each hole filled by a fan of triangles around one added point (its
 // rim's centroid), mapped by Floater's mean value weights: each point inside is the weighted mean
@@ -29,14 +32,22 @@ struct SurfaceMap {
   std::vector<std::vector<int>> holes;        // the other rim loops
   MapBoundary boundary = MapBoundary::Circle;
   bool sharpCorners = false;                  // the four corners are the rim's sharpest, all sharp
+  double innerRadius = 0;                     // Annulus: the rectangle runs from log(innerRadius) to 0
   bool empty() const { return triangles.empty(); }
 };
 
 // Empty unless the chordal surface is a sphere with holes (connected, V - E + F = 2 - loops, rims
-// that do not touch). The four corners are the rim's four sharpest (turning more than 50 degrees
+// that do not touch); for the Annulus, unless it has exactly two rims. The annulus's inner radius is
+// exp(-2 pi H / C), H the mean distance between the rims and C their mean length (the conformal
+// modulus of a tube); the cut is the shortest path between two points of the rims facing each other,
+// its points placed at the height a harmonic function between the rims gives them. The rectangle is
+// convex, so the mean value map has no fold, and a grid evenly spaced in it has near-square quads. The four corners are the rim's four sharpest (turning more than 50 degrees
 // in the surface), or if it has fewer, its points farthest out along the diagonals of its
 // principal axes; the rim's turning is measured over `window` (about a quad) on either side.
 SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary boundary);
+
+// 3D arc length along a loop from its first point: up to point i at [i], the whole loop at [size].
+std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Vec3>& x);
 
 // The four points of a loop farthest out along the diagonals (+,+), (-,+), (-,-), (+,-) of the axes
 // e1, e2 around `centre`, as positions in the loop.
