@@ -113,14 +113,15 @@ void requireMemory(const MeshOptions& o, const WallSides& sides, double unit, nl
   throw usageError(msg.str());
 }
 
-// π_b, π_t (§3): the sweep line cast onto the CAD walls; the radius function's ends (§7.2) where a ray misses.
+// π_b, π_t (§3): the sweep line cast onto the CAD walls, or onto a rim face where it leaves through one (an
+// oblique or rounded rim overhanging the wall); the radius function's ends (§7.2) where a ray misses.
 SweepLine castSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r) {
   SweepLine line = radiusSweepLine(q, n, r);
   auto keep = [&](const std::optional<FacePoint>& hit, Vec3& end, int& face) {
     if (hit && (hit->point - q).norm() > kMinReach * r) end = hit->point, face = hit->face;
   };
-  keep(rays.cast(Side::Top, q, n, kMaxReach * r), line.top, line.topFace);
-  keep(rays.cast(Side::Bottom, q, -n, kMaxReach * r), line.bottom, line.bottomFace);
+  keep(rays.cast(Side::Top, q, n, kMaxReach * r, true), line.top, line.topFace);
+  keep(rays.cast(Side::Bottom, q, -n, kMaxReach * r, true), line.bottom, line.bottomFace);
   return line;
 }
 
