@@ -1,0 +1,112 @@
+// Top, bottom and lateral faces (geometry/wall_sides.hpp) on rims of every shape: a ray crosses the wall
+// when its middle is as far from the whole boundary as from its ends, decided per sample.
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <TopoDS.hxx>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "geometry/cad_solid.hpp"
+#include "geometry/sheet_junctions.hpp"
+#include "geometry/wall_sides.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+CadSolid readSample(const std::string& path) {
+  return prepareSolid(readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/" + path).at(0));
+}
+
+BRepAdaptor_Surface surfaceOf(const CadSolid& cad, int f) { return BRepAdaptor_Surface(TopoDS::Face(cad.faces(f + 1))); }
+
+int count(const WallSides& w, Side side) {
+  int n = 0;
+  for (const FaceSide& f : w.faces) n += f.side == side;
+  return n;
+}
+
+}  // namespace
+
+// A sample of the top crosses the wall unless the middle of its ray (1 below it) is nearer a side than
+// 1 / 1.3: the share of the 40 x 30 top farther than 0.77 from its sides. No ray of a side crosses it.
+TEST(WallSides, ThinBoxTopCrossesTheWallButNearItsSidesAndTheSidesNowhere) {
+  const CadSolid cad = prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40, 30, 2).Solid());
+  const WallSides w = classifyWallSides(cad);
+  const double d = 1 / 1.3, share = (40 - 2 * d) * (30 - 2 * d) / (40 * 30);
+  for (const FaceSide& f : w.faces) {
+    if (f.side == Side::Lateral) EXPECT_EQ(f.wallShare, 0.0);
+    else EXPECT_NEAR(f.wallShare, share, 0.04) << "the samples stand for about 3 x 3 each";
+  }
+}
+
+// The half-cylinder ends (radius t/2) of a bent sheet: their rays hit the ends themselves or run along the
+// wall; they are rims, and the sheet's walls are one top and one bottom side, with no branching.
+TEST(WallSides, FullRoundEndsAreLateral) {
+  const CadSolid cad = readSample("Resources/samples/rims/lbracket_round_ends.step");
+  const WallSides w = classifyWallSides(cad);
+  int ends = 0;
+  for (int f = 0; f < cad.faces.Extent(); ++f) {
+    const BRepAdaptor_Surface s = surfaceOf(cad, f);
+    if (s.GetType() == GeomAbs_Cylinder && std::abs(s.Cylinder().Radius() - 1.0) < 1e-9) {
+      ++ends;
+      EXPECT_EQ(w.faces[f].side, Side::Lateral) << "Face" << f + 1;
+      EXPECT_LT(w.faces[f].wallShare, 0.5);
+    }
+  }
+  EXPECT_EQ(ends, 2);
+  EXPECT_EQ(count(w, Side::Top), 3);
+  EXPECT_EQ(count(w, Side::Bottom), 3);
+  EXPECT_TRUE(w.ownSideFaces.empty());
+  EXPECT_EQ(findSheets(cad, w).size(), 1u);
+  EXPECT_NEAR(w.thickness, 2.0, 1e-3);
+}
+
+// Chamfers at 45 degrees and a rim cut at 45 degrees are rim faces however wide; only the faces parallel to
+// the walls' plane are walls.
+TEST(WallSides, ChamferedAndObliqueRimsAreLateral) {
+  for (const char* part : {"plate_chamfer_both_sides", "plate_chamfer_one_side", "strip_oblique_45", "plate_split_rim"}) {
+    const CadSolid cad = readSample(std::string("Resources/samples/rims/") + part + ".step");
+    const WallSides w = classifyWallSides(cad);
+    for (int f = 0; f < cad.faces.Extent(); ++f) {
+      const BRepAdaptor_Surface s = surfaceOf(cad, f);
+      ASSERT_EQ(s.GetType(), GeomAbs_Plane);
+      const bool horizontal = std::abs(std::abs(s.Plane().Axis().Direction().Z()) - 1) < 1e-9;
+      EXPECT_EQ(w.faces[f].side != Side::Lateral, horizontal) << part << " Face" << f + 1;
+    }
+    EXPECT_EQ(w.knifeEdges, 0) << part;
+  }
+}
+
+// A rim cut at 70.5 degrees (3 walls wide) makes a knife edge: the oblique face faces the opposite wall
+// across the taper, so it is a wall, and the convex edge where it meets that wall gives way.
+TEST(WallSides, KnifeEdgeTapersTheWall) {
+  const CadSolid cad = readSample("Resources/samples/rims/strip_oblique_3x.step");
+  const WallSides w = classifyWallSides(cad);
+  EXPECT_EQ(count(w, Side::Top), 2);
+  EXPECT_EQ(count(w, Side::Bottom), 2);
+  EXPECT_EQ(w.knifeEdges, 2);
+  EXPECT_TRUE(w.ownSideFaces.empty());
+}
+
+// A wall split into coplanar faces is wall in every piece; a bend split into tangent faces too.
+TEST(WallSides, SplitWallsAreWallsInEveryPiece) {
+  const CadSolid walls = readSample("Resources/samples/rims/plate_split_walls.step");
+  const WallSides w = classifyWallSides(walls);
+  EXPECT_EQ(count(w, Side::Top), 3);
+  EXPECT_EQ(count(w, Side::Bottom), 3);
+  const CadSolid bend = readSample("Resources/samples/rims/lbracket_split_bend.step");
+  const WallSides b = classifyWallSides(bend);
+  EXPECT_EQ(count(b, Side::Top) + count(b, Side::Bottom), 9);
+  EXPECT_EQ(findSheets(bend, b).size(), 1u);
+}
+
+// A rib standing on a plate still branches the sheet: it is found (here as a second sheet), where it is.
+TEST(WallSides, RibOnAPlateIsStillAJunction) {
+  const CadSolid cad = readSample("tests/data/robustness/t_junction.step");
+  const WallSides w = classifyWallSides(cad);
+  const std::vector<Sheet> sheets = findSheets(cad, w);
+  EXPECT_TRUE(sheets.size() >= 2 || !w.ownSideFaces.empty());
+}
