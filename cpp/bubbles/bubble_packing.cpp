@@ -33,6 +33,8 @@ double bubbleForce(double w) {
 
 namespace {
 
+constexpr double kSmallestFaceThickness = 0.1;  // a face's thickness for its bubbles, at least, of the part's
+
 Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // Largest principal curvature of the face over a few samples.
@@ -263,8 +265,11 @@ std::vector<SurfaceNode> packBubbles(const CadSolid& cad, const WallSides& sides
     if (sides.faces[f].side == Side::Lateral) continue;
     const TopoDS_Shape& face = cad.faces(f + 1);
     const double curvature = maxFaceCurvature(face, sampleFace(face, 0.1 * cad.diagonal));
-    // Bubble diameter above the wall thickness (§4), small enough to follow the face's curvature.
-    faceDiameter[f] = std::min(o.diameterOverThickness * sides.faces[f].thickness, curvatureLimit(curvature, o));
+    // Bubble diameter above the wall thickness (§4), small enough to follow the face's curvature, and not
+    // below kSmallestFaceThickness x the part's wall: a face whose rays cross a sliver of the solid (the 0.002 mm
+    // tunnels of a zero-radius bend) would ask for millions of bubbles.
+    const double thickness = std::max(sides.faces[f].thickness, kSmallestFaceThickness * sides.thickness);
+    faceDiameter[f] = std::min(o.diameterOverThickness * thickness, curvatureLimit(curvature, o));
   }
   Packing pack(o.diameterOverThickness * sides.thickness);
   packVertices(cad, sides, faceDiameter, pack);

@@ -32,8 +32,9 @@ constexpr double kMaxJunctionAreaShare = 0.02;
 // point: 1/1.3 takes walls inclined to each other by up to about 40 degrees (a taper, a wedge) and leaves
 // out rim faces that meet the walls more steeply (a 45 degree chamfer or oblique cut, a plane cutting a shell).
 constexpr double kMiddleClearance = 1 / 1.3;
-// A face is a wall face when the rays crossing the wall stand for at least this share of its area.
-constexpr double kMinWallShare = 0.5;
+// A face is a wall face when the rays crossing the wall stand for at least this share of its area, and it
+// is at least this share of the wall wide (2 x area / perimeter).
+constexpr double kMinWallShare = 0.5, kMinWallWidth = 0.25;
 
 struct Ray {
   double length;
@@ -263,7 +264,8 @@ WallSides classifyWallSides(const CadSolid& cad) {
     fs.wallShare = crossingArea / std::max(hits.sampledArea, 1e-300);
     fs.thickness = weightedMedian(hits.crossing.empty() ? hits.all : hits.crossing);
     fs.opposite = dominantHit(hits.crossing);
-    fs.side = fs.wallShare >= kMinWallShare ? Side::Top : Side::Lateral;  // Top = "wall" for now
+    // Top = "wall" for now; a face narrower than a quarter of the wall (a sliver along a bend) carries no bubble.
+    fs.side = fs.wallShare >= kMinWallShare && fs.width >= kMinWallWidth * fs.thickness ? Side::Top : Side::Lateral;
     totalArea += fs.area;
   }
   std::vector<Ray> wallThickness, everywhere;

@@ -35,7 +35,8 @@ struct WallSides {
 //    from a rim run along the wall or leave it steeply, and their middles lie near a wall. A face is a
 //    wall face (top or bottom) when the rays crossing the wall stand for half its area or more, so a
 //    rim of any shape (flat, round, fillet-flat-fillet, chamfered, cut obliquely) is lateral, and a
-//    wall split into pieces is wall in every piece.
+//    wall split into pieces is wall in every piece, unless the piece is narrower than a quarter of the
+//    wall (a sliver along a bend, no room for a bubble).
 //  - Wall faces sharing a smooth edge are on the same side; faces whose rays cross the wall to each
 //    other are on opposite sides; faces sharing a convex sharp edge are on the same side unless that
 //    contradicts the rest (the knife edge of a tapered end). A parity union-find takes them in that
