@@ -119,8 +119,10 @@ class BadAndHardInputs(unittest.TestCase):
         with tempfile.TemporaryDirectory() as tmp:
             done = self.run_row("sample/hat_holes.step", ["--size", "12", "--sizing", "uniform"], tmp)
             self.assertEqual(done.returncode, 6, done.stderr[-2000:])
+            # Quads this coarse (8 walls) also fold hexes at the rim once its columns are laid on the rim faces
+            # (two columns onto one point of the hat's end face): the volume failure is one of several.
             self.assertRegex(done.stderr, r"hexlayer: error: the mesh failed validation, nothing written \(--force writes "
-                                          r"it anyway\): volume: the mesh's [\d.]+ differs from the CAD's [\d.]+ by -[\d.]+ %")
+                                          r"it anyway\): (.*; )?volume: the mesh's [\d.]+ differs from the CAD's [\d.]+ by -[\d.]+ %")
             self.assertFalse(os.path.exists(os.path.join(tmp, "out.inp")))
             done = self.run_row("sample/hat_holes.step", ["--size", "12", "--sizing", "uniform", "--force"], tmp)
             self.assertEqual(done.returncode, 0, done.stderr[-2000:])
