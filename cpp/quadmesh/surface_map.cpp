@@ -198,7 +198,8 @@ std::vector<int> cutOpen(SurfaceMap& map, const std::vector<int>& path) {
   for (std::size_t k = 0; k + 1 < path.size(); ++k) cutEdge[edgeKey(path[k], path[k + 1])] = 1, cutEdge[edgeKey(path[k + 1], path[k])] = 1;
   std::vector<int> copy;
   for (int p : path) copy.push_back(static_cast<int>(map.points.size())), map.points.push_back(map.points[p]);
-  for (std::size_t k = 0; k < path.size(); ++k) {
+  std::vector<std::pair<int, std::size_t>> moves;  // (triangle, path position): the triangle takes the copy
+  for (std::size_t k = 0; k < path.size(); ++k) {  // every side decided on the uncut triangles first
     const int v = path[k];
     std::vector<int> fan;  // the triangles round v
     for (std::size_t t = 0; t < map.triangles.size(); ++t)
@@ -226,9 +227,10 @@ std::vector<int> cutOpen(SurfaceMap& map, const std::vector<int>& path) {
         }
     }
     for (std::size_t f = 0; f < fan.size(); ++f)
-      if (side[f] < 0)
-        for (int& w : map.triangles[fan[f]]) w = w == v ? copy[k] : w;
+      if (side[f] < 0) moves.emplace_back(fan[f], k);
   }
+  for (const auto& [t, k] : moves)
+    for (int& w : map.triangles[t]) w = w == path[k] ? copy[k] : w;
   return copy;
 }
 
