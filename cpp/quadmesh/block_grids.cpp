@@ -222,7 +222,11 @@ BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size) {
   if (map.empty() || map.boundary != MapBoundary::Annulus || map.holes.size() != 1) return {};
   const MapLocator locate(map);
   const std::vector<int>& inner = map.holes[0];
-  const std::vector<double> outerLength = arcLength(map.rim, map.points), innerLength = arcLength(inner, map.points);
+  const std::vector<double> outerLength = arcLength(map.rim, map.points);
+  std::vector<double> innerAngle;  // the inner rim's angles in the map, ascending from its first point (at 0)
+  for (int p : inner) innerAngle.push_back(map.uv[p].x());
+  innerAngle.push_back(2 * M_PI);
+  if (!std::is_sorted(innerAngle.begin(), innerAngle.end())) return {};
   const double outerQuads = quadsAlongLoop(map, map.rim, size).back(), innerQuads = quadsAlongLoop(map, inner, size).back();
   const int around = std::max(kMinAround, count(std::max(outerQuads, innerQuads)));
   // Rows as square as the columns: the map's rectangle is -log(inner radius) tall and 2 pi wide.
@@ -232,7 +236,7 @@ BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size) {
   for (int j = 0; j <= across; ++j)
     for (int i = 0; i < around; ++i) {
       const double f = static_cast<double>(i) / around;
-      if (j == 0) grid.nodes.push_back(loopPoint(map, inner, innerLength, f * innerLength.back()).x);
+      if (j == 0) grid.nodes.push_back(loopPoint(map, inner, innerAngle, 2 * M_PI * f).x);
       else if (j == across) grid.nodes.push_back(loopPoint(map, map.rim, outerLength, f * outerLength.back()).x);
       else grid.nodes.push_back(locate({2 * M_PI * f, -height * (1 - static_cast<double>(j) / across)}));
     }

@@ -267,20 +267,28 @@ SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
   const std::vector<int> path = shortestPath(map, onRim, inner[0], outer[0]);
   if (path.size() < 2) return {};
   const std::vector<int> copy = cutOpen(map, path);
-  // The rectangle: angle by arc length along the rims, 0 on the cut's left side and 2 pi on its copies.
+  // The rectangle: the height between the rims as solved; the angle by arc length along the outer rim, 0 on
+  // the cut's left side and 2 pi on its copies, and free along the inner rim, where the mean value weights
+  // place it (fixing it by arc length there too twists the map between rims that are not alike).
   const double bottom = -modulus;
   map.uv.assign(map.points.size(), Eigen::Vector2d::Zero());
-  onRim.resize(map.points.size(), 0);
-  auto place = [&](const std::vector<int>& loop, const std::vector<double>& length, double y) {
-    for (std::size_t i = 0; i < loop.size(); ++i) map.uv[loop[i]] = {2 * M_PI * length[i] / length.back(), y}, onRim[loop[i]] = 1;
-  };
-  place(inner, innerLength, bottom);
-  place(outer, outerLength, 0);
+  std::vector<char> angleFixed(map.points.size(), 0), heightFixed(map.points.size(), 0);
+  std::vector<Eigen::Vector2d> angle(map.points.size(), Eigen::Vector2d::Zero());
+  for (std::size_t i = 0; i < outer.size(); ++i)
+    angle[outer[i]].x() = 2 * M_PI * outerLength[i] / outerLength.back(), angleFixed[outer[i]] = 1;
   for (std::size_t k = 0; k < path.size(); ++k) {
-    const double y = k == 0 ? bottom : k + 1 == path.size() ? 0 : bottom * (1 - height[path[k]].x());
-    map.uv[path[k]] = {0, y}, map.uv[copy[k]] = {2 * M_PI, y}, onRim[path[k]] = onRim[copy[k]] = 1;
+    angle[copy[k]].x() = 2 * M_PI, angleFixed[path[k]] = angleFixed[copy[k]] = 1;
+    map.uv[path[k]].y() = map.uv[copy[k]].y() = k == 0 ? bottom : bottom * (1 - height[path[k]].x());
+    heightFixed[path[k]] = heightFixed[copy[k]] = 1;
   }
-  if (!solveInside(meanValueSystem(map.triangles, map.points, onRim), map.uv)) return {};
+  for (int p : inner) map.uv[p].y() = bottom, heightFixed[p] = 1;
+  for (int p : outer) map.uv[p].y() = 0, heightFixed[p] = 1;
+  std::vector<Eigen::Vector2d> level(map.points.size(), Eigen::Vector2d::Zero());
+  for (std::size_t i = 0; i < map.points.size(); ++i) level[i].x() = map.uv[i].y();
+  if (!solveInside(meanValueSystem(map.triangles, map.points, angleFixed), angle) ||
+      !solveInside(meanValueSystem(map.triangles, map.points, heightFixed), level))
+    return {};
+  for (std::size_t i = 0; i < map.points.size(); ++i) map.uv[i] = {angle[i].x(), level[i].x()};
   map.rim = outer;
   map.holes = {inner};
   const int n = static_cast<int>(outer.size());
