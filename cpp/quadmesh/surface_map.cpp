@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "chordal/chordal_locator.hpp"
+#include "core/groups.hpp"
 #include "core/union_find.hpp"
 
 namespace hexlayer {
@@ -196,14 +197,16 @@ std::vector<int> shortestPath(const SurfaceMap& map, const std::vector<char>& on
 std::vector<int> cutOpen(SurfaceMap& map, const std::vector<int>& path) {
   std::unordered_map<std::uint64_t, int> cutEdge;  // directed edge of the path -> 1
   for (std::size_t k = 0; k + 1 < path.size(); ++k) cutEdge[edgeKey(path[k], path[k + 1])] = 1, cutEdge[edgeKey(path[k + 1], path[k])] = 1;
+  const Groups<int> around = groupByKey<int>(map.points.size(), [&](auto emit) {  // the triangles round each point
+    for (std::size_t t = 0; t < map.triangles.size(); ++t)
+      for (int p : map.triangles[t]) emit(p, static_cast<int>(t));
+  });
   std::vector<int> copy;
   for (int p : path) copy.push_back(static_cast<int>(map.points.size())), map.points.push_back(map.points[p]);
   std::vector<std::pair<int, std::size_t>> moves;  // (triangle, path position): the triangle takes the copy
   for (std::size_t k = 0; k < path.size(); ++k) {  // every side decided on the uncut triangles first
     const int v = path[k];
-    std::vector<int> fan;  // the triangles round v
-    for (std::size_t t = 0; t < map.triangles.size(); ++t)
-      if (std::find(map.triangles[t].begin(), map.triangles[t].end(), v) != map.triangles[t].end()) fan.push_back(static_cast<int>(t));
+    const std::vector<int> fan(around.items.begin() + around.start[v], around.items.begin() + around.start[v + 1]);
     std::vector<int> side(fan.size(), 0);  // +1 left of the path, -1 right
     for (std::size_t f = 0; f < fan.size(); ++f) {
       const auto& t = map.triangles[fan[f]];
@@ -266,29 +269,23 @@ SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
   if (!solveInside(meanValueSystem(map.triangles, map.points, onRim), height)) return {};
   const std::vector<int> path = shortestPath(map, onRim, inner[0], outer[0]);
   if (path.size() < 2) return {};
+  const std::size_t uncut = map.points.size();
   const std::vector<int> copy = cutOpen(map, path);
-  // The rectangle: the height between the rims as solved; the angle by arc length along the outer rim, 0 on
-  // the cut's left side and 2 pi on its copies, and free along the inner rim, where the mean value weights
-  // place it (fixing it by arc length there too twists the map between rims that are not alike).
-  const double bottom = -modulus;
+  // The rectangle: the height between the rims as solved (a copy at its point's); the angle by arc length
+  // along the outer rim, 0 on the cut's left side and 2 pi on its copies, and free along the inner rim, where
+  // the mean value weights place it (fixing it by arc length there too twists the map between rims that are
+  // not alike).
   map.uv.assign(map.points.size(), Eigen::Vector2d::Zero());
-  std::vector<char> angleFixed(map.points.size(), 0), heightFixed(map.points.size(), 0);
+  std::vector<char> angleFixed(map.points.size(), 0);
   std::vector<Eigen::Vector2d> angle(map.points.size(), Eigen::Vector2d::Zero());
   for (std::size_t i = 0; i < outer.size(); ++i)
     angle[outer[i]].x() = 2 * M_PI * outerLength[i] / outerLength.back(), angleFixed[outer[i]] = 1;
-  for (std::size_t k = 0; k < path.size(); ++k) {
-    angle[copy[k]].x() = 2 * M_PI, angleFixed[path[k]] = angleFixed[copy[k]] = 1;
-    map.uv[path[k]].y() = map.uv[copy[k]].y() = k == 0 ? bottom : bottom * (1 - height[path[k]].x());
-    heightFixed[path[k]] = heightFixed[copy[k]] = 1;
+  for (std::size_t k = 0; k < path.size(); ++k) angle[copy[k]].x() = 2 * M_PI, angleFixed[path[k]] = angleFixed[copy[k]] = 1;
+  if (!solveInside(meanValueSystem(map.triangles, map.points, angleFixed), angle)) return {};
+  for (std::size_t i = 0; i < map.points.size(); ++i) {
+    const int at = i < uncut ? static_cast<int>(i) : path[i - uncut];
+    map.uv[i] = {angle[i].x(), -modulus * (1 - height[at].x())};
   }
-  for (int p : inner) map.uv[p].y() = bottom, heightFixed[p] = 1;
-  for (int p : outer) map.uv[p].y() = 0, heightFixed[p] = 1;
-  std::vector<Eigen::Vector2d> level(map.points.size(), Eigen::Vector2d::Zero());
-  for (std::size_t i = 0; i < map.points.size(); ++i) level[i].x() = map.uv[i].y();
-  if (!solveInside(meanValueSystem(map.triangles, map.points, angleFixed), angle) ||
-      !solveInside(meanValueSystem(map.triangles, map.points, heightFixed), level))
-    return {};
-  for (std::size_t i = 0; i < map.points.size(); ++i) map.uv[i] = {angle[i].x(), level[i].x()};
   map.rim = outer;
   map.holes = {inner};
   const int n = static_cast<int>(outer.size());
