@@ -35,17 +35,22 @@ enum class Side : signed char { Bottom = -1, Lateral = 0, Top = 1 };
 inline constexpr std::array<std::array<int, 2>, 12> kHexEdges = {{
     {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
 
+// HexMesh::nodeOnRim values other than 0.
+constexpr char kRimSwept = 1, kRimCap = 2;
+
 // A layered all-hex mesh (paper §7). Node order of each hex follows CalculiX/VTK/Gmsh:
 // corners 0-3 form the quad on the bottom side (counter-clockwise seen from the top side),
 // corners 4-7 the quad above them, so edges i -> i+4 (i = 0..3) run along the sweep direction.
 // Quadratic (20-node) hexes keep their 8 corners in `hexes` and add one node per edge in
 // `midEdges`, in kHexEdges order; a mid-edge node is shared by all hexes around its edge.
+// A rim cap (rim_cap.hpp) adds one more column of hexes per layer beyond the rim, layered the same way.
 struct HexMesh {
   std::vector<Vec3> nodes;
   std::vector<std::array<int, 8>> hexes;
   std::vector<std::array<int, 12>> midEdges;  // empty for linear (8-node) hexes, else one per hex
   std::vector<int> nodeLayer;    // 0 = bottom surface ... layers = top surface; -1 = mid-edge node between two layers
-  std::vector<char> nodeOnRim;   // swept from a node on the chordal surface's boundary (or mid-edge node of a rim edge)
+  std::vector<char> nodeOnRim;   // kRimSwept: swept from a node on the chordal surface's boundary (or mid-edge node of a
+                                 // rim edge); kRimCap: on a rim cap column (rim_cap.hpp), beyond the sweep; else 0
   std::vector<int> nodeFace;     // CAD face (0-based, FreeCAD's Face1 = 0) the node was put on; -1 if none, or not sized
   int layers = 0;
   bool quadratic() const { return !midEdges.empty(); }

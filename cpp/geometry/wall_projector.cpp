@@ -41,6 +41,13 @@ WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides) {
 
 std::optional<FacePoint> WallProjector::project(Side side, const Vec3& p) const { return nearest(faces_[sideIndex(side)], p); }
 
+std::optional<FacePoint> WallProjector::projectOntoFace(int face, const Vec3& p) const {
+  for (const std::vector<Piece>& side : faces_)
+    for (const Piece& piece : side)
+      if (piece.face == face) return nearest({piece}, p);
+  return std::nullopt;
+}
+
 std::optional<FacePoint> WallProjector::projectOntoRimEdges(Side side, const Vec3& p) const {
   return nearest(rimEdges_[sideIndex(side)], p);
 }

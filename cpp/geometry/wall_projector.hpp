@@ -23,6 +23,9 @@ class WallProjector {
   // edge: one of the faces there); nullopt for a side without faces.
   std::optional<FacePoint> project(Side side, const Vec3& p) const;
 
+  // The point nearest to p on the one face `face` (0-based in CadSolid::faces); nullopt if it has no side.
+  std::optional<FacePoint> projectOntoFace(int face, const Vec3& p) const;
+
   // The point nearest to p on the edges where the `side` wall (Top or Bottom) meets the lateral faces,
   // with the wall face of that edge; nullopt if the wall meets no lateral face.
   std::optional<FacePoint> projectOntoRimEdges(Side side, const Vec3& p) const;

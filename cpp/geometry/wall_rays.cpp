@@ -8,8 +8,10 @@ WallRays::WallRays(const CadSolid& cad, const WallSides& sides) : cad_(cad), sid
   rays_.Load(cad.solid, 1e-7 * cad.diagonal);
 }
 
-std::optional<FacePoint> WallRays::cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance, bool orRim) {
-  rays_.PerformNearest(gp_Lin(gp_Pnt(from.x(), from.y(), from.z()), gp_Dir(dir.x(), dir.y(), dir.z())), 0, maxDistance);
+std::optional<FacePoint> WallRays::cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance, bool orRim,
+                                        double minDistance) {
+  rays_.PerformNearest(gp_Lin(gp_Pnt(from.x(), from.y(), from.z()), gp_Dir(dir.x(), dir.y(), dir.z())), minDistance,
+                       maxDistance);
   if (!rays_.IsDone() || rays_.NbPnt() == 0) return std::nullopt;
   const int face = cad_.faces.FindIndex(rays_.Face(1)) - 1;
   if (face < 0 || (sides_.faces[face].side != side && !(orRim && sides_.faces[face].side == Side::Lateral))) return std::nullopt;

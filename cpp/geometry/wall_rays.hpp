@@ -16,9 +16,11 @@ class WallRays {
   WallRays(const CadSolid& cad, const WallSides& sides);
   // Where the ray from `from` along the unit vector `dir` first leaves the solid, if that is on
   // the `side` wall (or, with orRim, on a lateral face) and closer than maxDistance (a ray that leaves
-  // through a lateral face, or a gap between faces, reaches no wall), with the face it hit. Not
-  // thread-safe (OpenCASCADE's intersector keeps state).
-  std::optional<FacePoint> cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance, bool orRim = false);
+  // through a lateral face, or a gap between faces, reaches no wall), with the face it hit; hits closer than
+  // minDistance are passed by (a ray along a face it starts on). Not thread-safe (OpenCASCADE's intersector
+  // keeps state).
+  std::optional<FacePoint> cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance, bool orRim = false,
+                                double minDistance = 0);
 
   // Where the line through p along the unit vector dir meets a face of the `side` wall nearest to p, on
   // either side of p and at most `reach` away; nullopt if it meets none there. Not thread-safe either.

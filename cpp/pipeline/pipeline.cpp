@@ -27,7 +27,9 @@
 #include "quality/quality.hpp"
 #include "quality/validation.hpp"
 #include "sweep/quadratic.hpp"
+#include "sweep/rim_cap.hpp"
 #include "sweep/rim_projection.hpp"
+#include "sweep/smoothing.hpp"
 #include "sweep/sweep.hpp"
 #include "tets/tet_mesh.hpp"
 
@@ -309,8 +311,9 @@ void compareTopology(nlohmann::json& r, long cadEuler) {
 std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
   std::vector<NodeSet> sets{{"TOP", {}}, {"BOTTOM", {}}, {"RIM", {}}};
   for (size_t i = 0; i < mesh.nodes.size(); ++i) {
-    if (mesh.nodeLayer[i] == mesh.layers) sets[0].nodes.push_back(static_cast<int>(i));
-    if (mesh.nodeLayer[i] == 0) sets[1].nodes.push_back(static_cast<int>(i));
+    const bool wall = mesh.nodeOnRim[i] != kRimCap;  // a cap's nodes lie on the rim in every layer
+    if (wall && mesh.nodeLayer[i] == mesh.layers) sets[0].nodes.push_back(static_cast<int>(i));
+    if (wall && mesh.nodeLayer[i] == 0) sets[1].nodes.push_back(static_cast<int>(i));
     if (mesh.nodeOnRim[i]) sets[2].nodes.push_back(static_cast<int>(i));
   }
   return sets;
@@ -457,6 +460,12 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   r["sweep"]["rim_nodes"] = rim.rimNodes;
   r["sweep"]["rim_nodes_on_lateral_faces"] = rim.onLateralFaces;
   r["sweep"]["rim_columns_left_unprojected"] = rim.columnsKept;
+  const RimCapStats cap = clock.run("rim_cap", [&] { return capRims(result.mesh, cad, sides, walls); });
+  r["rim_cap"] = {{"rim_edges", cap.rimEdges}, {"capped_edges", cap.cappedEdges}, {"columns", cap.capColumns},
+                  {"hexes", cap.capHexes}};
+  const SmoothingStats smooth = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
+  r["smoothing"] = {{"poor_hexes", smooth.poorHexes}, {"moves", smooth.nodesMoved}, {"worst_before", smooth.worstBefore},
+                    {"worst_after", smooth.worstAfter}};
   if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   result.chordalSurface = std::move(stage.chordal);

@@ -68,11 +68,14 @@ SweepColumns sweepColumns(const HexMesh& mesh) {
   return s;
 }
 
-// Edges of the lateral boundary faces (hex sides 2..5 used by one hex): their mid-edge nodes lie on the rim.
+bool onCap(const HexMesh& mesh, int node) { return mesh.nodeOnRim[node] == kRimCap; }
+
+// Edges of the lateral boundary faces (hex sides 2..5 used by one hex, and every boundary face of a rim cap):
+// their mid-edge nodes lie on the rim.
 std::vector<char> rimEdges(const HexMesh& mesh, const EdgeTable& t) {
   std::vector<char> rim(t.edges.size(), 0);
   for (const BoundaryFace& f : boundaryFaces(mesh))
-    if (f.localFace >= 2)
+    if (f.localFace >= 2 || std::any_of(f.nodes.begin(), f.nodes.end(), [&](int v) { return onCap(mesh, v); }))
       for (int i = 0; i < 4; ++i) rim[t.index.at(edgeKey(f.nodes[i], f.nodes[(i + 1) % 4]))] = 1;
   return rim;
 }
@@ -112,8 +115,9 @@ MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const st
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [a, b] = t.edges[e];
     const int ka = mesh.nodeLayer[a], kb = mesh.nodeLayer[b];
-    mid.layer[e] = ka == kb ? ka : -1;
-    if (ka != kb) mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
+    const bool cap = onCap(mesh, a) || onCap(mesh, b);  // on a rim cap: neither a wall nor a layer
+    mid.layer[e] = ka == kb && !cap ? ka : -1;
+    if (mid.layer[e] < 0) mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
     else if (isWall(ka)) {
       const FacePoint p = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
       mid.position[e] = p.point, mid.face[e] = p.face;

@@ -16,21 +16,6 @@ constexpr double kSpoiled = 0.2;  // a hex below this scaled Jacobian that got w
 constexpr double kMaxAlongRim = 0.5;  // share of a rim node's move that may run along the rim ...
 constexpr double kFreeMove = 0.1;     // ... unless the move is shorter than this share of the reach
 
-// The columns of rim nodes, bottom (layer 0) to top: nodes above one another in the hexes (corners k, k + 4).
-std::vector<std::vector<int>> rimColumns(const HexMesh& mesh) {
-  std::vector<int> above(mesh.nodes.size(), -1);
-  for (const auto& h : mesh.hexes)
-    for (int k = 0; k < 4; ++k) above[h[k]] = h[k + 4];
-  std::vector<std::vector<int>> columns;
-  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
-    if (mesh.nodeOnRim[i] && mesh.nodeLayer[i] == 0) {
-      std::vector<int> column{static_cast<int>(i)};
-      while (above[column.back()] >= 0) column.push_back(above[column.back()]);
-      columns.push_back(std::move(column));
-    }
-  return columns;
-}
-
 // Per node, the sum of the outward normals (scaled by area) of the mesh's boundary side faces around it:
 // at a rim node, the direction in which the rim faces outward.
 std::vector<Vec3> sideFaceNormals(const HexMesh& mesh) {
@@ -132,6 +117,20 @@ RimHexes rimHexes(const HexMesh& mesh, const std::vector<std::vector<int>>& colu
 }
 
 }  // namespace
+
+std::vector<std::vector<int>> rimColumns(const HexMesh& mesh) {
+  std::vector<int> above(mesh.nodes.size(), -1);
+  for (const auto& h : mesh.hexes)
+    for (int k = 0; k < 4; ++k) above[h[k]] = h[k + 4];
+  std::vector<std::vector<int>> columns;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    if (mesh.nodeOnRim[i] && mesh.nodeLayer[i] == 0) {
+      std::vector<int> column{static_cast<int>(i)};
+      while (above[column.back()] >= 0) column.push_back(above[column.back()]);
+      columns.push_back(std::move(column));
+    }
+  return columns;
+}
 
 RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, const WallProjector& walls,
                               double reach) {

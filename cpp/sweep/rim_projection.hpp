@@ -5,6 +5,7 @@
 // inner nodes evenly between them, then each along the rim's outward direction onto the lateral faces.
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
@@ -12,6 +13,10 @@
 #include "geometry/wall_sides.hpp"
 
 namespace hexlayer {
+
+// The columns of nodes swept from the chordal surface's rim, each from the bottom (layer 0) to the top: the
+// nodes above one another in the hexes (corners k, k + 4), in the order of their bottom nodes.
+std::vector<std::vector<int>> rimColumns(const HexMesh& mesh);
 
 struct RimProjectionStats {
   std::size_t rimNodes = 0;        // nodes swept from the chordal surface's rim

@@ -28,9 +28,9 @@ struct Patch {
 
 int surfaceOf(const HexMesh& mesh, const std::array<int, 4>& quad) {
   if (mesh.nodeLayer.size() != mesh.nodes.size()) return 2;
-  auto all = [&](int layer) {
+  auto all = [&](int layer) {  // a rim cap's faces lie on the rim in every layer
     for (int n : quad)
-      if (mesh.nodeLayer[n] != layer) return false;
+      if (mesh.nodeLayer[n] != layer || (n < static_cast<int>(mesh.nodeOnRim.size()) && mesh.nodeOnRim[n] == kRimCap)) return false;
     return true;
   };
   return all(mesh.layers) ? 0 : all(0) ? 1 : 2;

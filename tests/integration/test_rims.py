@@ -11,11 +11,13 @@ Gmsh's OpenCASCADE computes; the scaled Jacobian of every hex (at its corners, c
 boundary node within 1e-6 mm of the CAD face it is grouped on (Gmsh's closest point); every rim node on a
 rim face (a face none of whose nodes is a wall node off the rim).
 
-A layered mesh has layers + 1 nodes across a rounded rim's profile: linear hexes cut the profile with
-straight chords. On round rims the volume is therefore checked against that polygon's deficit (computed
-here from the profile), plus 1 % of the part; on every other rim within 1 %. The knife-edged strip ends
-its mesh where the wall is 0.3 of its thickness (the tip is left out, its end nodes inside the part), so
-its boundary and rim checks skip that end.
+Every rim within 1 % of the CAD volume, with one exception: on a round rim, linear hexes cut the profile
+with straight chords. The rim cap (cpp/sweep/rim_cap.hpp) adds a column beyond the sweep's, so layers + 2
+chords cut it (layers + 4 with one layer); with 2 layers that leaves out 0.16 r^2 per length of rim, 0.8 %
+of the small near-full-round plate, whose rim is long for its area. That part, at 2 layers, is checked
+against that chord deficit (computed here from the profile) plus 0.5 %. The knife-edged strip ends its mesh
+where the wall is 0.3 of its thickness (the tip is left out, its end nodes inside the part), so its volume
+is allowed 2 % and its boundary and rim checks skip that end.
 
 Run by CTest as: /usr/bin/python3 test_rims.py --hexlayer PATH --source DIR
 """
@@ -35,33 +37,30 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from hex_geometry import hex_scaled_jacobians, hex_volumes  # noqa: E402
 
 
-def round_profile(radius, wall):
-    """A rim profile of two fillets of `radius` with a flat between them: how far it bulges past the line
-    joining the walls' edges, as a function of the height y in [0, wall] (y = 0 at the bottom wall)."""
+def round_profile(radius, wall, steps=2000):
+    """A rim profile of two fillets of `radius` with a flat between them, as points (bulge past the line joining
+    the walls' edges, height) from the bottom wall's edge (0, 0) to the top wall's (0, wall)."""
     def bulge(y):
         below = radius - y if y < radius else (y - (wall - radius) if y > wall - radius else 0.0)
         return math.sqrt(max(radius * radius - below * below, 0.0))
-    return bulge
+    return np.array([(bulge(wall * k / steps), wall * k / steps) for k in range(steps + 1)])
 
 
-def polygon_deficit(bulge, wall, layers, steps=2000):
-    """Area (per length of rim) between the profile and the layered mesh's polygon through it: its layers + 1
-    nodes at evenly spaced heights, on the profile."""
-    exact = sum(bulge((k + 0.5) * wall / steps) for k in range(steps)) * wall / steps
-    nodes = [bulge(k * wall / layers) for k in range(layers + 1)]
-    chords = sum(0.5 * (nodes[k] + nodes[k + 1]) * wall / layers for k in range(layers))
-    return exact - chords
+def chord_deficit(profile, chords):
+    """Area (per length of rim) between the profile and the polygon of `chords` chords through it, their ends at
+    even arc lengths: a rim cap's nodes (rim_cap.cpp)."""
+    arc = np.concatenate([[0], np.cumsum(np.linalg.norm(np.diff(profile, axis=0), axis=1))])
+    nodes = np.array([np.interp(np.linspace(0, arc[-1], chords + 1), arc, profile[:, i]) for i in (0, 1)]).T
+
+    def area(polyline):  # between the polyline and the line x = 0 (the chord joining the walls' edges)
+        x, y = polyline[:, 0], polyline[:, 1]
+        return float(np.sum(0.5 * (x[1:] + x[:-1]) * np.diff(y)))
+    return area(profile) - area(nodes)
 
 
-# Round rims: (rim length, fillet radius, wall). Lengths from the parts' drawings (rims/README.md): the two
-# ends of the width of a bent sheet; the plates' perimeter 2 x (50 + 30) with four R5 corners.
-ROUND_RIMS = {
-    "lbracket_round_ends": (2 * 20, 1.0, 2.0),
-    "uchannel_round_ends": (2 * 40, 1.0, 2.0),
-    "hat_round_ends": (2 * 40, 0.75, 1.5),
-    "plate_full_round": (2 * (50 + 30) - 8 * 5 + 2 * math.pi * 5, 0.98, 2.0),
-    "plate_fillet_flat_fillet": (2 * (50 + 30) - 8 * 5 + 2 * math.pi * 5, 0.6, 2.0),
-}
+# Round rims measured against their chord deficit: (rim length, fillet radius, wall, chords). Lengths from the
+# parts' drawings (rims/README.md): the plate's perimeter 2 x (50 + 30) with four R5 corners.
+CHORD_LIMITED = {("plate_full_round", 2): (2 * (50 + 30) - 8 * 5 + 2 * math.pi * 5, 0.98, 2.0, 4)}
 KNIFE = {"strip_oblique_3x"}
 # Rims whose columns are not all laid on the rim face: where a tube's 45 degree rim overhangs inwards, moving a
 # rim column onto the rim face would shear the hex beside it below a scaled Jacobian of 0.2, so the column
@@ -69,13 +68,12 @@ KNIFE = {"strip_oblique_3x"}
 # nodes not.
 RIM_OFF_FACE = {"tube_cut_45", "tube_cut_45_both"}
 # Quality met by the parts (scaled Jacobian, every hex): min >= 0.3, avg >= 0.95, but for
-#  - the near-full-round plate: 0.33 / 0.93 measured; a round rim's hexes have 45/135 degree corners (chords of
-#    the profile), a quarter of this small plate's hexes;
-#  - the tubes cut at 45 degrees: a ring grid on the one cut at one end (0.66 / 0.970 measured at 2 layers,
-#    0.20 at 3: the worst hexes beside the rim where it overhangs inwards), Gmsh's unstructured quads on the one cut at both ends (0.40 /
-#    0.933: its ring grid's mean quad is 0.92, its rims' angles are fixed by arc length along an ellipse);
+#  - the near-full-round plate: 0.56 / 0.939 measured; its rim cap's hexes have a 135 degree corner where two
+#    chords of the profile meet (0.71), and a fifth of this small plate's hexes are cap hexes;
+#  - the tube cut at 45 degrees at both ends: Gmsh's unstructured quads (0.40 / 0.933: its ring grid's mean quad
+#    is 0.92, its rims' angles are fixed by arc length along an ellipse);
 #  - the knife-edged strip: its last hexes taper to 0.3 of the wall, 0.17 / 0.94 measured.
-QUALITY = {"plate_full_round": (0.3, 0.92), "tube_cut_45": (0.15, 0.95), "tube_cut_45_both": (0.3, 0.92),
+QUALITY = {"plate_full_round": (0.5, 0.935), "tube_cut_45_both": (0.3, 0.92),
            "strip_oblique_3x": (0.15, 0.93)}
 PARTS = ["lbracket_round_ends", "uchannel_round_ends", "hat_round_ends", "plate_full_round",
          "plate_fillet_flat_fillet", "plate_chamfer_one_side", "plate_chamfer_both_sides", "strip_oblique_45",
@@ -134,9 +132,9 @@ class Rims(unittest.TestCase):
         try:
             error = (volumes.sum() - cad_volume) / cad_volume
             allowed = 0.01
-            if part in ROUND_RIMS:
-                length, radius, wall = ROUND_RIMS[part]
-                allowed += length * polygon_deficit(round_profile(radius, wall), wall, layers) / cad_volume
+            if (part, layers) in CHORD_LIMITED:
+                length, radius, wall, chords = CHORD_LIMITED[(part, layers)]
+                allowed = 0.005 + length * chord_deficit(round_profile(radius, wall), chords) / cad_volume
             if part in KNIFE:
                 allowed = 0.02
             self.assertLessEqual(abs(error), allowed, f"volume {100 * error:+.2f} %, allowed {100 * allowed:.2f} %")

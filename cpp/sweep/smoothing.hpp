@@ -1,0 +1,27 @@
+// Smoothing of the poor hexes the rim leaves (after §7's sweep, the rim projection and the rim caps): where a
+// rim is oblique, overhangs the wall or turns a corner, the hexes beside it are sheared more than the rim's
+// own angle asks. Each node of a hex below kPoorHex is moved towards the mean of its neighbours along the
+// hex edges, kept on its CAD face: a wall node slides on the walls of its side, a rim node on the lateral
+// faces, an inner node is free; the nodes on the CAD edges where walls meet the rim, and the caps' nodes, stay.
+// A move is kept only if it raises the scaled Jacobian of the worst hex around the node, so no hex gets worse
+// than the worst it was beside.
+#pragma once
+#include <cstddef>
+
+#include "core/types.hpp"
+#include "geometry/wall_projector.hpp"
+#include "geometry/wall_sides.hpp"
+
+namespace hexlayer {
+
+struct SmoothingStats {
+  std::size_t poorHexes = 0;  // hexes below kPoorHex before
+  std::size_t nodesMoved = 0;  // moves kept (a node may move in several rounds)
+  double worstBefore = 1, worstAfter = 1;  // scaled Jacobian of the worst hex
+};
+
+// [in,out] mesh: a linear layered mesh (nodeFace, nodeOnRim and nodeLayer sized); nodes moved, nodeFace of the
+// nodes moved onto the CAD updated. [in] walls, sides: the nearest-point projector and the faces' sides.
+SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const WallSides& sides);
+
+}  // namespace hexlayer
