@@ -218,27 +218,37 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
   return grid;
 }
 
+// A rim loop's angles in the map, from its first point on, ascending: 0 at its first point, 2 pi at the end.
+std::vector<double> loopAngles(const SurfaceMap& map, const std::vector<int>& loop) {
+  std::vector<double> angle;
+  for (int p : loop) angle.push_back(map.uv[p].x() - map.uv[loop.front()].x());
+  angle.push_back(2 * M_PI);
+  return angle;
+}
+
 BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size) {
   if (map.empty() || map.boundary != MapBoundary::Annulus || map.holes.size() != 1) return {};
   const MapLocator locate(map);
   const std::vector<int>& inner = map.holes[0];
-  const std::vector<double> outerLength = arcLength(map.rim, map.points);
-  std::vector<double> innerAngle;  // the inner rim's angles in the map, ascending from its first point (at 0)
-  for (int p : inner) innerAngle.push_back(map.uv[p].x());
-  innerAngle.push_back(2 * M_PI);
-  if (!std::is_sorted(innerAngle.begin(), innerAngle.end())) return {};
+  const std::vector<double> innerAngle = loopAngles(map, inner), outerAngle = loopAngles(map, map.rim);
+  if (!std::is_sorted(innerAngle.begin(), innerAngle.end()) || !std::is_sorted(outerAngle.begin(), outerAngle.end())) return {};
   const double outerQuads = quadsAlongLoop(map, map.rim, size).back(), innerQuads = quadsAlongLoop(map, inner, size).back();
   const int around = std::max(kMinAround, count(std::max(outerQuads, innerQuads)));
   // Rows as square as the columns: the map's rectangle is -log(inner radius) tall and 2 pi wide.
   const double height = -std::log(map.innerRadius);
   const int across = count(height / (2 * M_PI) * around);
+  // Column i at angle 2 pi i / around on every row: on a rim, that angle from the rim's first point.
+  auto onRim = [&](const std::vector<int>& loop, const std::vector<double>& angle, double u) {
+    const double fromFirst = std::fmod(u - map.uv[loop.front()].x() + 4 * M_PI, 2 * M_PI);
+    return loopPoint(map, loop, angle, fromFirst).x;
+  };
   BlockGrid grid;
   for (int j = 0; j <= across; ++j)
     for (int i = 0; i < around; ++i) {
-      const double f = static_cast<double>(i) / around;
-      if (j == 0) grid.nodes.push_back(loopPoint(map, inner, innerAngle, 2 * M_PI * f).x);
-      else if (j == across) grid.nodes.push_back(loopPoint(map, map.rim, outerLength, f * outerLength.back()).x);
-      else grid.nodes.push_back(locate({2 * M_PI * f, -height * (1 - static_cast<double>(j) / across)}));
+      const double u = 2 * M_PI * i / around;
+      if (j == 0) grid.nodes.push_back(onRim(inner, innerAngle, u));
+      else if (j == across) grid.nodes.push_back(onRim(map.rim, outerAngle, u));
+      else grid.nodes.push_back(locate.periodic({u, -height * (1 - static_cast<double>(j) / across)}, 2 * M_PI));
     }
   auto node = [&](int i, int j) { return j * around + (i % around); };
   for (int j = 0; j < across; ++j)

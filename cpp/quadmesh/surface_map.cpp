@@ -237,6 +237,57 @@ std::vector<int> cutOpen(SurfaceMap& map, const std::vector<int>& path) {
   return copy;
 }
 
+// The mean value system of a surface cut open along `path` (copy[k]: the copy of path[k]) for a function that
+// is harmonic across the cut and on the rims (free there) and jumps by the right-hand side's values on the copies:
+// a copy's row says value(copy) - value(path point); a path point's row holds the weights of both sides; the
+// first path point's row fixes its value (to the right-hand side's, 0).
+Eigen::SparseMatrix<double> periodicSystem(const std::vector<std::array<int, 3>>& triangles, const std::vector<Vec3>& x,
+                                           const std::vector<int>& path, const std::vector<int>& copy) {
+  std::vector<int> rowOf(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) rowOf[i] = static_cast<int>(i);
+  for (std::size_t k = 0; k < path.size(); ++k) rowOf[copy[k]] = path[k];
+  std::vector<Eigen::Triplet<double>> entries;  // Eigen sums the duplicates
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int i = t[k], j = t[(k + 1) % 3], l = t[(k + 2) % 3], row = rowOf[i];
+      if (row == path.front()) continue;
+      const Vec3 a = x[j] - x[i], b = x[l] - x[i];
+      const double la = std::max(a.norm(), 1e-300), lb = std::max(b.norm(), 1e-300);
+      const double halfTan = std::tan(0.5 * std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0)));
+      entries.emplace_back(row, j, -halfTan / la), entries.emplace_back(row, l, -halfTan / lb);
+      entries.emplace_back(row, i, halfTan / la + halfTan / lb);
+    }
+  entries.emplace_back(path.front(), path.front(), 1.0);
+  for (std::size_t k = 0; k < path.size(); ++k) entries.emplace_back(copy[k], copy[k], 1.0), entries.emplace_back(copy[k], path[k], -1.0);
+  Eigen::SparseMatrix<double> a(x.size(), x.size());
+  a.setFromTriplets(entries.begin(), entries.end());
+  return a;
+}
+
+// An annulus's conformal modulus from its height function h (0 on one rim, 1 on the other): 2 pi over the
+// Dirichlet energy of h (conformally invariant: 2 pi / M on the rectangle of height M), on the map's triangles.
+template <class Height>
+double conformalModulus(const SurfaceMap& map, Height&& h) {
+  double energy = 0;
+  for (const auto& t : map.triangles) {
+    const Vec3 &a = map.points[t[0]], &b = map.points[t[1]], &c = map.points[t[2]];
+    const Vec3 n = (b - a).cross(c - a);
+    const double doubleArea = n.norm();
+    if (doubleArea <= 0) continue;
+    // grad h = sum of h_i (n x e_i) / (2 area), e_i the edge opposite corner i
+    const Vec3 grad = (h(t[0]) * n.cross(c - b) + h(t[1]) * n.cross(a - c) + h(t[2]) * n.cross(b - a)) / (doubleArea * doubleArea);
+    energy += 0.5 * doubleArea * grad.squaredNorm();
+  }
+  return energy > 0 ? 2 * M_PI / energy : 0;
+}
+
+// Whether the angle increases along the rim loop (by less than a turn): the map does not fold at the rim.
+bool anglesIncrease(const std::vector<int>& loop, const std::vector<Eigen::Vector2d>& uv) {
+  for (std::size_t i = 1; i < loop.size(); ++i)
+    if (!(uv[loop[i]].x() > uv[loop[i - 1]].x())) return false;
+  return uv[loop.back()].x() < uv[loop.front()].x() + 2 * M_PI;
+}
+
 // The annulus map of a surface with two rims (loops, longer first; map.points and map.triangles set).
 SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
   if (loops.size() != 2 || loops[0].size() < 8 || loops[1].size() < 8) return {};
@@ -259,7 +310,6 @@ SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
   const std::vector<double> outerLength = arcLength(outer, map.points), innerLength = arcLength(inner, map.points);
   const double modulus = 2 * M_PI * apart / (0.5 * (outerLength.back() + innerLength.back()));
   if (!(modulus < kMaxAnnulusModulus)) return {};
-  map.innerRadius = std::exp(-modulus);
   map.boundary = MapBoundary::Annulus;
   // The height between the rims: harmonic, 0 on the inner rim and 1 on the outer.
   std::vector<char> onRim(map.points.size(), 0);
@@ -271,21 +321,19 @@ SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
   if (path.size() < 2) return {};
   const std::size_t uncut = map.points.size();
   const std::vector<int> copy = cutOpen(map, path);
-  // The rectangle: the height between the rims as solved (a copy at its point's); the angle by arc length
-  // along the outer rim, 0 on the cut's left side and 2 pi on its copies, and free along the inner rim, where
-  // the mean value weights place it (fixing it by arc length there too twists the map between rims that are
-  // not alike).
+  // The rectangle: the height between the rims as solved (a copy at its point's), scaled by the annulus's
+  // conformal modulus; the angle its harmonic conjugate: harmonic everywhere, free on both rims (its lines
+  // meet them square) and 2 pi more on the cut's copies than on the cut.
   map.uv.assign(map.points.size(), Eigen::Vector2d::Zero());
-  std::vector<char> angleFixed(map.points.size(), 0);
   std::vector<Eigen::Vector2d> angle(map.points.size(), Eigen::Vector2d::Zero());
-  for (std::size_t i = 0; i < outer.size(); ++i)
-    angle[outer[i]].x() = 2 * M_PI * outerLength[i] / outerLength.back(), angleFixed[outer[i]] = 1;
-  for (std::size_t k = 0; k < path.size(); ++k) angle[copy[k]].x() = 2 * M_PI, angleFixed[path[k]] = angleFixed[copy[k]] = 1;
-  if (!solveInside(meanValueSystem(map.triangles, map.points, angleFixed), angle)) return {};
-  for (std::size_t i = 0; i < map.points.size(); ++i) {
-    const int at = i < uncut ? static_cast<int>(i) : path[i - uncut];
-    map.uv[i] = {angle[i].x(), -modulus * (1 - height[at].x())};
-  }
+  for (std::size_t k = 0; k < path.size(); ++k) angle[copy[k]].x() = 2 * M_PI;
+  if (!solveInside(periodicSystem(map.triangles, map.points, path, copy), angle)) return {};
+  auto uncutOf = [&](std::size_t i) { return i < uncut ? static_cast<int>(i) : path[i - uncut]; };
+  const double conformal = conformalModulus(map, [&](std::size_t i) { return height[uncutOf(i)].x(); });
+  if (!(conformal > 0 && conformal < kMaxAnnulusModulus)) return {};
+  map.innerRadius = std::exp(-conformal);
+  for (std::size_t i = 0; i < map.points.size(); ++i) map.uv[i] = {angle[i].x(), -conformal * (1 - height[uncutOf(i)].x())};
+  if (!anglesIncrease(outer, map.uv)) return {};
   map.rim = outer;
   map.holes = {inner};
   const int n = static_cast<int>(outer.size());
@@ -374,20 +422,31 @@ MapLocator::MapLocator(const SurfaceMap& map) : map_(map), triangles_(2.0 / std:
   }
 }
 
-Vec3 MapLocator::operator()(const Eigen::Vector2d& uv) const {
+MapLocator::Found MapLocator::find(const Eigen::Vector2d& uv) const {
   const Vec3 p(uv.x(), uv.y(), 0);
   auto weights = [&](int t) {
     const auto& tri = map_.triangles[t];
     return triangleWeights(at(tri[0]), at(tri[1]), at(tri[2]), p);
   };
-  const int t = triangles_.nearest(p, [&](int id, double) {
-    const Eigen::Vector3d w = weights(id);
-    const auto& tri = map_.triangles[id];
+  auto miss = [&](int t) {
+    const Eigen::Vector3d w = weights(t);
+    const auto& tri = map_.triangles[t];
     return (w[0] * at(tri[0]) + w[1] * at(tri[1]) + w[2] * at(tri[2]) - p).squaredNorm();
-  });
+  };
+  const int t = triangles_.nearest(p, [&](int id, double) { return miss(id); });
   const Eigen::Vector3d w = weights(t);
   const auto& tri = map_.triangles[t];
-  return w[0] * map_.points[tri[0]] + w[1] * map_.points[tri[1]] + w[2] * map_.points[tri[2]];
+  return {w[0] * map_.points[tri[0]] + w[1] * map_.points[tri[1]] + w[2] * map_.points[tri[2]], miss(t)};
+}
+
+Vec3 MapLocator::operator()(const Eigen::Vector2d& uv) const { return find(uv).point; }
+
+Vec3 MapLocator::periodic(const Eigen::Vector2d& uv, double period) const {
+  Found best = find(uv);
+  for (const double shift : {-period, period})
+    if (best.miss > 0)
+      if (const Found other = find(uv + Eigen::Vector2d(shift, 0)); other.miss < best.miss) best = other;
+  return best.point;
 }
 
 }  // namespace hexlayer

@@ -66,8 +66,16 @@ class MapLocator {
  public:
   explicit MapLocator(const SurfaceMap& map);
   Vec3 operator()(const Eigen::Vector2d& uv) const;
+  // The same for a map periodic in u (an annulus cut open): uv, or uv shifted by one period either way,
+  // whichever lies in the map.
+  Vec3 periodic(const Eigen::Vector2d& uv, double period) const;
 
  private:
+  struct Found {
+    Vec3 point;
+    double miss;  // squared distance in the plane from uv to the triangle it was found in (0: inside)
+  };
+  Found find(const Eigen::Vector2d& uv) const;
   Vec3 at(int point) const { return Vec3(map_.uv[point].x(), map_.uv[point].y(), 0); }
   const SurfaceMap& map_;
   BoxGrid triangles_;  // by their bounding boxes in the plane

@@ -62,19 +62,20 @@ def chord_deficit(profile, chords):
 # parts' drawings (rims/README.md): the plate's perimeter 2 x (50 + 30) with four R5 corners.
 CHORD_LIMITED = {("plate_full_round", 2): (2 * (50 + 30) - 8 * 5 + 2 * math.pi * 5, 0.98, 2.0, 4)}
 KNIFE = {"strip_oblique_3x"}
-# Rims whose columns are not all laid on the rim face: where a tube's 45 degree rim overhangs inwards, moving a
+# Rims whose columns are not all laid on the rim face: where the tube's 45 degree rim overhangs inwards, moving a
 # rim column onto the rim face would shear the hex beside it below a scaled Jacobian of 0.2, so the column
-# stays where the sweep put it (up to 0.7 mm off, 1/3 of the wall). Their wall nodes are checked, their rim
-# nodes not.
-RIM_OFF_FACE = {"tube_cut_45", "tube_cut_45_both"}
+# stays where the sweep put it (8 of 318 rim nodes, up to 0.7 mm off, 1/3 of the wall). Its wall nodes are
+# checked, its rim nodes not.
+RIM_OFF_FACE = {"tube_cut_45"}
 # Quality met by the parts (scaled Jacobian, every hex): min >= 0.3, avg >= 0.95, but for
 #  - the near-full-round plate: 0.56 / 0.939 measured; its rim cap's hexes have a 135 degree corner where two
 #    chords of the profile meet (0.71), and a fifth of this small plate's hexes are cap hexes;
-#  - the tube cut at 45 degrees at both ends: Gmsh's unstructured quads (0.40 / 0.933: its ring grid's mean quad
-#    is 0.92, its rims' angles are fixed by arc length along an ellipse);
-#  - the knife-edged strip: its last hexes taper to 0.3 of the wall, 0.17 / 0.94 measured.
-QUALITY = {"plate_full_round": (0.5, 0.935), "tube_cut_45_both": (0.3, 0.92),
-           "strip_oblique_3x": (0.15, 0.93)}
+#  - the knife-edged strip: its last hexes taper to 0.3 of the wall, 0.17 / 0.94 measured;
+# and the issue's higher bar for the parts whose chordal surface is one structured grid: the tubes cut at 45
+# degrees (a ring grid from the conformal map of the annulus, 0.51 / 0.991 and 0.57 / 0.980 measured) and the
+# cap cut by a plane (an O-grid, 0.76 / 0.980).
+QUALITY = {"plate_full_round": (0.5, 0.935), "strip_oblique_3x": (0.15, 0.93), "tube_cut_45": (0.5, 0.97),
+           "tube_cut_45_both": (0.5, 0.97), "cap_cut_by_plane": (0.5, 0.97)}
 PARTS = ["lbracket_round_ends", "uchannel_round_ends", "hat_round_ends", "plate_full_round",
          "plate_fillet_flat_fillet", "plate_chamfer_one_side", "plate_chamfer_both_sides", "strip_oblique_45",
          "strip_oblique_3x", "plate_split_rim", "plate_split_walls", "lbracket_split_bend", "cap_cut_by_plane",
