@@ -74,6 +74,7 @@ struct FaceRays {
   std::vector<Ray> all;       // every ray that hit
   std::vector<Ray> crossing;  // the rays that cross the wall (crossesWall)
   double sampledArea = 0;     // of all samples, hit or not
+  std::vector<RayMark> marks;  // every sample
   Vec3 meanNormal = Vec3::Zero();  // area-weighted outward normal
 };
 
@@ -98,10 +99,11 @@ FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, 
     out.sampledArea += s.area;
     const gp_Lin line(gp_Pnt(s.point.x(), s.point.y(), s.point.z()), gp_Dir(-s.normal.x(), -s.normal.y(), -s.normal.z()));
     rays.PerformNearest(line, skip, 2 * cad.diagonal);
+    out.marks.push_back({s.u, s.v, s.area, s.normal, false});
     if (!rays.IsDone() || rays.NbPnt() == 0) continue;
     const Ray ray{rays.WParameter(1), cad.faces.FindIndex(rays.Face(1)) - 1, s.area};
     out.all.push_back(ray);
-    if (crossesWall(boundary, s.point, -s.normal, ray.length)) out.crossing.push_back(ray);
+    if (crossesWall(boundary, s.point, -s.normal, ray.length)) out.crossing.push_back(ray), out.marks.back().crossing = true;
   }
   return out;
 }
@@ -136,7 +138,6 @@ struct ParityUnionFind {
   }
 };
 
-std::string faceName(int f) { return "Face" + std::to_string(f + 1); }
 
 // thicknessEverywhere: the area-weighted median ray length over all faces, the part's thickness
 // where no face is a wall face.
@@ -176,7 +177,7 @@ Error junctionError(const CadSolid& cad, const WallSides& w, const std::vector<i
   const std::vector<Vec3> at = junctionPoints(cad, w, faces);
   std::ostringstream msg;
   msg << "non-manifold chordal surface: the wall branches (a rib, T-junction or boss): ";
-  for (std::size_t k = 0; k < faces.size() && k < 4; ++k) msg << (k ? ", " : "") << faceName(faces[k]);
+  for (std::size_t k = 0; k < faces.size() && k < 4; ++k) msg << (k ? ", " : "") << inputFaceName(cad, faces[k]);
   msg << (faces.size() == 1 ? " faces" : " face") << " a wall on its own side";
   if (!at.empty()) msg << "; junction" << (at.size() > 1 ? "s" : "") << " at";
   for (std::size_t k = 0; k < at.size() && k < 4; ++k) {
@@ -216,7 +217,7 @@ std::vector<SideRelation> rankedRelations(const WallSides& w, const std::vector<
 
 // Same side across shared edges, opposite sides across the wall; returns (group, parity) per face.
 // Walls facing a wall on their own side (the sheet branches) go into w.ownSideFaces.
-std::vector<std::pair<int, int>> solveSides(WallSides& w, const std::vector<std::map<int, double>>& across) {
+std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, WallSides& w, const std::vector<std::map<int, double>>& across) {
   const int n = static_cast<int>(w.faces.size());
   ParityUnionFind uf(n);
   std::vector<double> against(n, 0.0);  // per face, the ray area of its relations across the wall that failed
@@ -225,7 +226,7 @@ std::vector<std::pair<int, int>> solveSides(WallSides& w, const std::vector<std:
     if (r.relation == 1) against[r.a] += r.weight, against[r.b] += r.weight;
     else if (!r.smooth) ++w.knifeEdges;
     else
-      throw geometryError("top and bottom cannot be told apart: " + faceName(r.a) + " and " + faceName(r.b) +
+      throw geometryError("top and bottom cannot be told apart: " + inputFaceName(cad, r.a) + " and " + inputFaceName(cad, r.b) +
                           " share a smooth edge but lie on opposite sides of the wall");
   }
   double junctionArea = 0, wallArea = 0;
@@ -255,7 +256,7 @@ WallSides classifyWallSides(const CadSolid& cad) {
   double totalArea = 0;
   for (int f = 0; f < n; ++f) {
     FaceSide& fs = w.faces[f];
-    const FaceRays hits = castInwardRays(cad, boundary, rays, f);
+    FaceRays hits = castInwardRays(cad, boundary, rays, f);
     meanNormal[f] = hits.meanNormal;
     fs.area = triangulatedArea(cad.faces(f + 1));
     fs.width = 2 * fs.area / std::max(perimeter(cad.faces(f + 1)), 1e-30);
@@ -266,6 +267,7 @@ WallSides classifyWallSides(const CadSolid& cad) {
     fs.opposite = dominantHit(hits.crossing);
     // Top = "wall" for now; a face narrower than a quarter of the wall (a sliver along a bend) carries no bubble.
     fs.side = fs.wallShare >= kMinWallShare && fs.width >= kMinWallWidth * fs.thickness ? Side::Top : Side::Lateral;
+    fs.marks = std::move(hits.marks);
     totalArea += fs.area;
   }
   std::vector<Ray> wallThickness, everywhere;
@@ -279,7 +281,7 @@ WallSides classifyWallSides(const CadSolid& cad) {
   requireThin(w, cad, weightedMedian(everywhere));
 
   w.sheetJoins = sheetJoins(cad);
-  const std::vector<std::pair<int, int>> rootParity = solveSides(w, across);
+  const std::vector<std::pair<int, int>> rootParity = solveSides(cad, w, across);
   // In each group of connected wall faces, the parity class that faces +z more is Top.
   std::map<int, double> up;
   for (int f = 0; f < n; ++f)

@@ -11,6 +11,14 @@
 
 namespace hexlayer {
 
+// One sample of a face with its inward ray: where it is on the face, its share of the face's area, its
+// outward normal, and whether the ray crosses the wall (classifyWallSides).
+struct RayMark {
+  double u = 0, v = 0, area = 0;
+  Vec3 normal = Vec3::Zero();
+  bool crossing = false;
+};
+
 struct FaceSide {
   Side side = Side::Lateral;
   double thickness = 0;  // area-weighted median distance to the opposite wall along the inward normal
@@ -18,6 +26,7 @@ struct FaceSide {
   double area = 0;
   int opposite = -1;     // 0-based index of the face most rays crossing the wall hit, -1 if none
   double wallShare = 0;  // share of the face's area whose inward rays cross the wall (a wall face: >= 0.5)
+  std::vector<RayMark> marks;  // its samples (mixed_faces.hpp splits a face that is partly wall, partly rim)
 };
 
 struct WallSides {

@@ -16,6 +16,7 @@
 #include "chordal/chordal_surface.hpp"
 #include "core/error.hpp"
 #include "geometry/cad_faces.hpp"
+#include "geometry/mixed_faces.hpp"
 #include "core/threads.hpp"
 #include "geometry/wall_projector.hpp"
 #include "geometry/wall_rays.hpp"
@@ -37,6 +38,7 @@ namespace hexlayer {
 namespace {
 
 constexpr int kMaxLayers = 64;
+constexpr int kMaxSplitRounds = 3;  // rounds of splitting faces that are partly wall, partly rim
 // Fairing of the chordal surface, strongest first: a faired surface gives Gmsh fewer, cleaner
 // patches, but Gmsh's reparametrization can fail on one surface and not on another.
 constexpr int kFairingIterations[] = {10, 3, 0};
@@ -127,25 +129,44 @@ SweepLine castSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r) 
   return line;
 }
 
-std::vector<std::string> faceNames(const Sheet& s) {
-  std::vector<std::string> names;
-  for (int f : s.faces) names.push_back("Face" + std::to_string(f + 1));
+// Faces that are partly wall and partly rim split into pieces that are one or the other (mixed_faces.hpp), the
+// sides measured again; returns how many were split.
+std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides) {
+  std::size_t split = 0;
+  for (int round = 0; round < kMaxSplitRounds; ++round) {  // a skin over a wall, its rim and the other wall: twice
+    const std::vector<FaceSplit> splits = findMixedFaces(cad, sides);
+    if (splits.empty()) break;
+    CadSolid pieces = splitFaces(cad, splits);
+    if (pieces.faces.Extent() == 0) break;
+    cad = std::move(pieces);
+    sides = classifyWallSides(cad);
+    split += splits.size();
+  }
+  return split;
+}
+
+std::vector<std::string> faceNames(const CadSolid& cad, const Sheet& s) {
+  std::vector<std::string> names;  // a split face's pieces once
+  for (int f : s.faces)
+    if (const std::string name = inputFaceName(cad, f); std::find(names.begin(), names.end(), name) == names.end())
+      names.push_back(name);
   return names;
 }
 
 // unit: pipeline lengths per input length (CadSolid::unit); the centre is given in the input's units.
-std::string describeSheet(const Sheet& s, double unit) {
+std::string describeSheet(const CadSolid& cad, const Sheet& s) {
+  const double unit = cad.unit;
   std::ostringstream out;
   const Vec3 c = s.centre / unit;
   out << "(" << c.x() << ", " << c.y() << ", " << c.z() << ") [";
-  const std::vector<std::string> names = faceNames(s);
+  const std::vector<std::string> names = faceNames(cad, s);
   for (std::size_t k = 0; k < names.size(); ++k) out << (k ? " " : "") << names[k];
   out << "]";
   return out.str();
 }
 
-nlohmann::json junctionReport(const Sheet& s) {
-  return {{"at", {s.centre.x(), s.centre.y(), s.centre.z()}}, {"faces", faceNames(s)}, {"area", s.area}, {"volume", s.volume}};
+nlohmann::json junctionReport(const CadSolid& cad, const Sheet& s) {
+  return {{"at", {s.centre.x(), s.centre.y(), s.centre.z()}}, {"faces", faceNames(cad, s)}, {"area", s.area}, {"volume", s.volume}};
 }
 
 // Ribs, bosses and flanges standing on the sheet (T-junctions, where the chordal surface would be
@@ -158,12 +179,12 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohman
   if (!sides.ownSideFaces.empty()) {
     if (!drop) throw ownSideError(cad, sides);
     const Sheet branch = sheetOf(cad, sides, sides.ownSideFaces);
-    report["junctions"].push_back(junctionReport(branch));
+    report["junctions"].push_back(junctionReport(cad, branch));
     leftOut += branch.volume;
     for (int f : sides.ownSideFaces) sides.faces[f].side = Side::Lateral;
   }
   const std::vector<Sheet> sheets = findSheets(cad, sides);
-  for (std::size_t s = 1; s < sheets.size(); ++s) report["junctions"].push_back(junctionReport(sheets[s]));
+  for (std::size_t s = 1; s < sheets.size(); ++s) report["junctions"].push_back(junctionReport(cad, sheets[s]));
   if (sheets.size() < 2) return leftOut;
   if (drop) {
     keepFirstSheet(sheets, sides);
@@ -172,8 +193,8 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohman
   }
   std::ostringstream msg;
   msg << "T-junction: " << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
-      << "chordal surface would be non-manifold, which this method does not mesh: " << describeSheet(sheets[1], cad.unit);
-  for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s) msg << ", " << describeSheet(sheets[s], cad.unit);
+      << "chordal surface would be non-manifold, which this method does not mesh: " << describeSheet(cad, sheets[1]);
+  for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s) msg << ", " << describeSheet(cad, sheets[s]);
   if (sheets.size() > 4) msg << ", ...";
   msg << "; --drop-junctions meshes the main sheet without them";
   throw geometryError(msg.str());
@@ -319,6 +340,24 @@ std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
   return sets;
 }
 
+// The groups of the pieces of a split face merged into the input face's, one group per input face in order.
+std::vector<SurfaceGroup> groupsOfInputFaces(std::vector<SurfaceGroup> pieces, const CadSolid& cad) {
+  std::vector<SurfaceGroup> merged(*std::max_element(cad.inputFace.begin(), cad.inputFace.end()) + 1);
+  for (std::size_t f = 0; f < merged.size(); ++f) merged[f].name = "Face" + std::to_string(f + 1);
+  for (std::size_t f = 0; f < pieces.size(); ++f) {
+    SurfaceGroup& to = merged[cad.inputFace[f]];
+    to.nodes.insert(to.nodes.end(), pieces[f].nodes.begin(), pieces[f].nodes.end());
+    to.hexFaces.insert(to.hexFaces.end(), pieces[f].hexFaces.begin(), pieces[f].hexFaces.end());
+  }
+  for (SurfaceGroup& g : merged) {
+    std::sort(g.nodes.begin(), g.nodes.end());
+    g.nodes.erase(std::unique(g.nodes.begin(), g.nodes.end()), g.nodes.end());
+    std::sort(g.hexFaces.begin(), g.hexFaces.end(),
+              [](const HexFace& a, const HexFace& b) { return std::make_pair(a.hex, a.localFace) < std::make_pair(b.hex, b.localFace); });
+  }
+  return merged;
+}
+
 // The mesh's boundary on the CAD faces (FreeCAD's FaceN): surface groups and boundary deviation in the report.
 std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, const WallProjector& walls, nlohmann::json& r) {
   const std::vector<BoundaryFace> quads = boundaryFaces(mesh);  // sorted by hex, then local face
@@ -328,7 +367,12 @@ std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, con
   r["surface_groups"] = std::move(s.surfaceReport);
   r["surface_groups"]["nodes_not_put_on_cad"] = unplaced;
   r["boundary_deviation"] = std::move(s.deviationReport);
-  return std::move(s.groups);
+  if (cad.inputFace.empty()) return std::move(s.groups);
+  // Faces split into pieces (mixed_faces.hpp): the input's faces, as the user's part has them.
+  nlohmann::json& worst = r["boundary_deviation"]["worst_face"];
+  if (worst.is_string()) worst = inputFaceName(cad, std::stoi(worst.get<std::string>().substr(4)) - 1);
+  for (int& f : mesh.nodeFace) f = inputFaceOf(cad, f);
+  return groupsOfInputFaces(std::move(s.groups), cad);
 }
 
 void append(HexMesh& all, const HexMesh& part) {
@@ -425,9 +469,10 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   nlohmann::json& r = result.report;
   StageClock clock(r, given);
   // Every stage up to the surface groups works on the part scaled to one size (normalizingUnit).
-  const CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid, normalizingUnit(solid)); });
+  CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid, normalizingUnit(solid)); });
   const MeshOptions o = inPipelineUnits(given, cad.unit);
   WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
+  r["faces_split"] = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r);
   r["thickness"] = sides.thickness;
   r["faces"] = faceSideCounts(sides);

@@ -1,0 +1,160 @@
+#include "geometry/mixed_faces.hpp"
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepFeat_SplitShape.hxx>
+#include <BRepLib.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SurfaceOfLinearExtrusion.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace hexlayer {
+namespace {
+
+constexpr double kWallPiece = 0.7;  // the wall piece: at least this share of its sample area crosses the wall
+constexpr double kRimPiece = 0.5;   // the rim piece: less than this share (a rim face's bound, wall_sides.cpp)
+constexpr double kRimTurn = 45;     // degrees between the two pieces' mean normals
+constexpr double kMinRimArea = 0.1;  // the rim piece at least this many squared wall thicknesses
+constexpr double kOneWay = 0.5;      // a piece's mean normal at least this long per area (a half-round: 2 / pi)
+constexpr std::size_t kMinMarks = 8;  // samples a face needs to be split
+constexpr int kLines = 64;          // parameter lines tried per direction, besides the surface's knots
+constexpr double kKnotSlack = 0.05;  // a knot is taken if it misplaces at most this share more of the area
+
+// The knots of the face's surface along u (alongV lines sit on them) or v: where a B-spline skin joins a flat
+// to a round, its curvature jumps at a knot.
+std::vector<double> knots(const TopoDS_Face& face, bool u) {
+  Handle(Geom_Surface) s = BRep_Tool::Surface(face);
+  if (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(s)) s = trimmed->BasisSurface();
+  std::vector<double> out;
+  if (auto b = Handle(Geom_BSplineSurface)::DownCast(s)) {
+    const int n = u ? b->NbUKnots() : b->NbVKnots();
+    for (int i = 1; i <= n; ++i) out.push_back(u ? b->UKnot(i) : b->VKnot(i));
+  } else if (auto e = Handle(Geom_SurfaceOfLinearExtrusion)::DownCast(s)) {
+    if (auto c = Handle(Geom_BSplineCurve)::DownCast(e->BasisCurve()); c && u)
+      for (int i = 1; i <= c->NbKnots(); ++i) out.push_back(c->Knot(i));
+  }
+  return out;
+}
+
+struct Piece {
+  double area = 0, crossing = 0;
+  Vec3 normal = Vec3::Zero();
+  double share() const { return area > 0 ? crossing / area : 0; }
+};
+
+struct Candidate {
+  double misplaced;  // sample area on the wrong side of the line (non-crossing in the wall piece, crossing in the rim piece)
+  FaceSplit split;
+};
+
+double angleDegrees(const Vec3& a, const Vec3& b) {
+  const double c = a.normalized().dot(b.normalized());
+  return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / M_PI;
+}
+
+// The line at `at` across the face's samples, if it parts them into a wall piece and a rim piece. The rim must
+// turn away from the wall next to it: the wall piece's normal is taken over a band beside the line as wide (in
+// the parameter) as the rim piece, so a curved wall's band along a flat rim is not taken for a rim.
+std::optional<Candidate> tryLine(const std::vector<RayMark>& marks, bool alongV, double at, double thickness, int face) {
+  auto coord = [&](const RayMark& m) { return alongV ? m.u : m.v; };
+  for (int rimBelow = 0; rimBelow < 2; ++rimBelow) {
+    auto inRim = [&](const RayMark& m) { return (coord(m) < at) == (rimBelow == 1); };
+    Piece wall, rim, beside;
+    double width = 0;  // of the rim piece, in the parameter
+    for (const RayMark& m : marks) {
+      Piece& p = inRim(m) ? rim : wall;
+      p.area += m.area, p.crossing += m.crossing ? m.area : 0, p.normal += m.area * m.normal;
+      if (inRim(m)) width = std::max(width, std::abs(coord(m) - at));
+    }
+    if (wall.share() < kWallPiece || rim.share() >= kRimPiece || rim.area < kMinRimArea * thickness * thickness) continue;
+    for (const RayMark& m : marks)
+      if (!inRim(m) && std::abs(coord(m) - at) <= width) beside.area += m.area, beside.normal += m.area * m.normal;
+    // Each piece must face one way (a band round a tube faces every way), and the two ways differ.
+    if (beside.normal.norm() < kOneWay * beside.area || rim.normal.norm() < kOneWay * rim.area) continue;
+    if (beside.area <= 0 || angleDegrees(beside.normal, rim.normal) < kRimTurn) continue;
+    return Candidate{(wall.area - wall.crossing) + rim.crossing, {face, alongV, at}};
+  }
+  return std::nullopt;
+}
+
+std::optional<FaceSplit> bestSplit(const CadSolid& cad, const FaceSide& fs, double thickness, int f) {
+  const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  std::optional<Candidate> best, bestKnot;
+  for (const bool alongV : {true, false}) {
+    const double lo = alongV ? u0 : v0, hi = alongV ? u1 : v1;
+    for (int i = 1; i < kLines; ++i)
+      if (auto c = tryLine(fs.marks, alongV, lo + (hi - lo) * i / kLines, thickness, f); c && (!best || c->misplaced < best->misplaced))
+        best = c;
+    for (double k : knots(face, alongV))
+      if (k > lo && k < hi)
+        if (auto c = tryLine(fs.marks, alongV, k, thickness, f); c && (!bestKnot || c->misplaced < bestKnot->misplaced))
+          bestKnot = c;
+  }
+  if (bestKnot && best && bestKnot->misplaced <= best->misplaced + kKnotSlack * fs.area) return bestKnot->split;
+  if (best) return best->split;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& sides) {
+  std::vector<FaceSplit> splits;
+  for (int f = 0; f < static_cast<int>(sides.faces.size()); ++f) {
+    const FaceSide& fs = sides.faces[f];
+    if (fs.marks.size() < kMinMarks || fs.wallShare < kRimPiece) continue;  // a rim face
+    if (std::optional<FaceSplit> s = bestSplit(cad, fs, sides.thickness, f)) splits.push_back(*s);
+  }
+  return splits;
+}
+
+CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
+  try {
+    BRepFeat_SplitShape split(cad.solid);
+    for (const FaceSplit& s : splits) {
+      const TopoDS_Face face = TopoDS::Face(cad.faces(s.face + 1));
+      double u0, u1, v0, v1;
+      BRepTools::UVBounds(face, u0, u1, v0, v1);
+      const Handle(Geom2d_Line) line = s.alongV ? new Geom2d_Line(gp_Pnt2d(s.at, 0), gp_Dir2d(0, 1))
+                                               : new Geom2d_Line(gp_Pnt2d(0, s.at), gp_Dir2d(1, 0));
+      BRepBuilderAPI_MakeEdge edge(line, BRep_Tool::Surface(face), s.alongV ? v0 : u0, s.alongV ? v1 : u1);
+      if (!edge.IsDone()) return {};
+      TopoDS_Edge e = edge.Edge();
+      BRepLib::BuildCurves3d(e);
+      split.Add(e, face);
+    }
+    split.Build();
+    if (!split.IsDone()) return {};
+    TopExp_Explorer solids(split.Shape(), TopAbs_SOLID);
+    if (!solids.More()) return {};
+    CadSolid out = prepareSolid(TopoDS::Solid(solids.Current()), 1);
+    out.unit = cad.unit;
+    out.inputFace.assign(out.faces.Extent(), -1);
+    for (int f = 1; f <= cad.faces.Extent(); ++f) {
+      const int kept = out.faces.FindIndex(cad.faces(f));
+      if (kept > 0) out.inputFace[kept - 1] = inputFaceOf(cad, f - 1);
+      for (const TopoDS_Shape& piece : split.Modified(cad.faces(f)))
+        if (const int i = out.faces.FindIndex(piece); i > 0) out.inputFace[i - 1] = inputFaceOf(cad, f - 1);
+    }
+    if (std::find(out.inputFace.begin(), out.inputFace.end(), -1) != out.inputFace.end()) return {};
+    return out;
+  } catch (const Standard_Failure&) {
+    return {};
+  }
+}
+
+}  // namespace hexlayer

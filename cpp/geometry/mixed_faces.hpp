@@ -1,0 +1,32 @@
+// CAD faces that are partly wall and partly rim: one B-spline skin that runs over a wall and wraps round its
+// edge (as other CAD systems write a rounded rim), which the sides of §3 cannot take whole. Such a face is
+// split along a parameter line between the samples whose rays cross the wall and those whose rays do not, so
+// that every face is wall or rim; the pieces keep the input face's name (Face<N>) in everything the user sees.
+#pragma once
+#include <vector>
+
+#include "geometry/cad_solid.hpp"
+#include "geometry/wall_sides.hpp"
+
+namespace hexlayer {
+
+// Where one face is split: the parameter line u = at (alongV: the line runs along v) or v = at.
+struct FaceSplit {
+  int face = -1;  // 0-based in CadSolid::faces
+  bool alongV = true;
+  double at = 0;
+};
+
+// [in] cad, sides (classifyWallSides, with its ray marks). The faces to split: a parameter line parts the
+// face's samples into a wall piece (at least kWallPiece of its area crossing the wall) and a rim piece (at
+// most kRimPiece), each facing one way, whose mean normals differ by at least kRimTurn (the rim turns away from
+// the wall: a band of a flat wall along its rim, whose rays also miss the middle of the wall, does not); the line that
+// misplaces the least sample area, on a knot of the surface where one is as good.
+std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& sides);
+
+// [in] cad, splits. The solid with those faces split, prepared (prepareSolid) at the same unit, its
+// inputFace naming the input face of every face; an empty solid (faces.Extent() == 0) if OpenCASCADE could
+// not split them.
+CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits);
+
+}  // namespace hexlayer
