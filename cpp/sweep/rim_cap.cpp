@@ -25,6 +25,7 @@ constexpr double kMinLoss = 0.02;    // cap a rim whose hexes leave out more tha
 constexpr double kGain = 0.5;        // ... if the cap leaves out at most this share of it
 constexpr double kMinQuality = 0.3;  // every cap hex at least this scaled Jacobian
 constexpr int kMinChords = 4;       // a cap's columns cut a half-round profile with at least this many chords
+constexpr double kOnFace = 1e-3;     // a column this many half-heights from a lateral face lies on it
 constexpr double kNudge = 1e-3;      // a side face's profile is cast this many half-heights inside it
 constexpr int kEdgeProjections = 8;  // alternate projections onto two faces that put a node on their edge
 constexpr double kMaxSnap = 0.1;     // a point is moved onto the lateral faces by at most this share of h
@@ -144,6 +145,12 @@ Column nudged(Column c, const Vec3& towardsCapped) {
   if (towardsCapped.norm() < 0.5) return c;  // capped on both sides
   const Vec3 shift = kNudge * 0.5 * (c.top - c.bottom).norm() * towardsCapped.normalized();
   return {c.bottom + shift, c.top + shift};
+}
+
+// Whether a column's straight line lies on a lateral face (its middle within kOnFace half-heights of one).
+bool onLateralFace(const WallProjector& walls, const Column& c) {
+  const std::optional<FacePoint> on = walls.project(Side::Lateral, middle(c));
+  return on && (on->point - middle(c)).norm() <= kOnFace * 0.5 * (c.top - c.bottom).norm();
 }
 
 // The rim's edges, each with its outward normal: normal to the edge and to its columns' straight lines (the
@@ -293,6 +300,12 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
     for (RimEdge& e : edges)
       if (e.capped && (caps[e.a].empty() || caps[e.b].empty() || worstCapHex(mesh, columns, caps, e, layers) < kMinQuality))
         e.capped = false, dropped = true;
+    // A cap may end only where its side face lies on the CAD (a round end meeting a flat side face).
+    std::vector<int> rimAt(columns.size(), 0), cappedAt(columns.size(), 0);
+    for (const RimEdge& e : edges) ++rimAt[e.a], ++rimAt[e.b], cappedAt[e.a] += e.capped, cappedAt[e.b] += e.capped;
+    for (RimEdge& e : edges)
+      for (const int c : {e.a, e.b})
+        if (e.capped && cappedAt[c] < rimAt[c] && !onLateralFace(walls, ends(mesh, columns[c]))) e.capped = false, dropped = true;
   }
   // The capped columns: inner nodes back on the straight line, then the caps' nodes and hexes. Inner nodes are
   // inside the part, unless the column has an edge without a cap: then its cap's side face is on the boundary.
