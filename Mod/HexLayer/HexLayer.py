@@ -2,7 +2,8 @@
 
     import HexLayer
     mesh = HexLayer.makeMesh(doc, part, Layers=2, Size=2.0)
-    doc.recompute()   # meshes; mesh.Status says how it went, mesh.FemMesh holds the hexa8 (Order 1) or hexa20 (Order 2) volumes
+    doc.recompute()   # meshes; mesh.Status says how it went, mesh.FemMesh holds the hexa20 (Order 2, the default)
+                      # or hexa8 (Order 1) volumes
 
 The method's stages as objects to look at (from the mesh's last meshing; meshes if needed):
     views = HexLayer.makeStageViews(mesh)   # {"ChordalSurface": ..., "QuadMesh": ..., "ExplodedLayers": ..., "Quality": ...}
@@ -12,9 +13,10 @@ Works in freecadcmd (no GUI) and in the GUI, where the mesh gets its view provid
 """
 import FreeCAD
 
-from hexlayer_fem import mesh_object, stage_views
+from hexlayer_fem import meshing, mesh_object, stage_views
 
-__all__ = ["makeMesh", "makeStageViews", "makeChordalSurface", "makeQuadMesh", "makeExplodedLayers", "makeQualityView"]
+__all__ = ["makeMesh", "makeStageViews", "makeChordalSurface", "makeQuadMesh", "makeExplodedLayers", "makeQualityView",
+           "writeCalculixMesh"]
 
 makeStageViews = stage_views.make_stage_views
 makeChordalSurface = stage_views.make_chordal_surface
@@ -39,3 +41,9 @@ def makeMesh(doc, part=None, name="HexLayerMesh", **properties):
         from hexlayer_fem import view_provider
         view_provider.VPMeshHexLayer(obj.ViewObject)
     return obj
+
+
+def writeCalculixMesh(mesh, path):
+    """Writes the mesh's FemMesh to `path` for CalculiX, its hexa8 (Order 1) as C3D8I (incompatible modes, accurate in
+    bending) instead of FreeCAD's C3D8: where FreeCAD's FemMesh.writeABAQUS can (FreeCAD 1.x), else RuntimeError."""
+    meshing.write_calculix_mesh(mesh.FemMesh, path)

@@ -48,12 +48,13 @@ def add_plate(doc, name="Plate"):
     return box
 
 
-def mesh_plate(test, layers=2):
-    """The plate in a new document, meshed by HexLayer.makeMesh with `layers` layers: (document, plate, mesh)."""
+def mesh_plate(test, layers=2, order=1):
+    """The plate in a new document, meshed by HexLayer.makeMesh with `layers` layers, hexa8 unless order 2 (the
+    default of the mesh object is 2; these tests look at the corners): (document, plate, mesh)."""
     import HexLayer
     doc = new_document(test)
     plate = add_plate(doc)
-    mesh = HexLayer.makeMesh(doc, plate, Layers=layers)
+    mesh = HexLayer.makeMesh(doc, plate, Layers=layers, Order=order)
     doc.recompute()
     test.assertTrue(mesh.isValid(), mesh.Status)
     return doc, plate, mesh

@@ -66,6 +66,33 @@ class PlateMesh(unittest.TestCase):
         self.assertEqual(mesh.FemMesh.VolumeCount * 2, hexes)
 
 
+class Defaults(unittest.TestCase):
+    """Accurate by default: the mesh object meshes hexa20 (FreeCAD writes C3D20); with Order 1, Status says that
+    FreeCAD's C3D8 will be too stiff in bending and what to do, and offers C3D8I where this FreeCAD writes it."""
+
+    def test_order_2_by_default_and_a_warning_with_order_1(self):
+        from hexlayer_fem import meshing
+        doc = t.new_document(self)
+        plate = t.add_plate(doc)
+        mesh = HexLayer.makeMesh(doc, plate)
+        doc.recompute()
+        self.assertTrue(mesh.isValid(), mesh.Status)
+        self.assertEqual(mesh.Order, 2)
+        written = os.path.join(tempfile.mkdtemp(), "mesh.inp")
+        mesh.FemMesh.writeABAQUS(written, 1, False)
+        with open(written) as f:
+            self.assertIn("C3D20", f.read())
+        self.assertNotIn("Order 1", mesh.Status)
+        mesh.Order = 1
+        doc.recompute()
+        self.assertIn("C3D8, which are too stiff in bending", mesh.Status)
+        self.assertIn("Set Order 2", mesh.Status)
+        self.assertEqual("C3D8I" in mesh.Status, meshing.can_write_c3d8i())
+        if not meshing.can_write_c3d8i():  # FreeCAD 0.20: writeABAQUS takes no volVariant
+            with self.assertRaisesRegex(RuntimeError, "cannot write C3D8I"):
+                HexLayer.writeCalculixMesh(mesh, written)
+
+
 class QuadraticPlateMesh(unittest.TestCase):
     """Order 2: hexa20 volumes whose C3D20, as FreeCAD's writeABAQUS writes them for CalculiX, have positive
     corners and each mid node at the midpoint of its own C3D20 edge (all edges of the plate are straight)."""

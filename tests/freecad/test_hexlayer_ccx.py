@@ -142,7 +142,7 @@ def plate_reference():
     constraints, the .inp FreeCAD writes."""
     work = tempfile.mkdtemp(prefix="hexlayer_ccx_reference_")
     try:
-        doc, plate, analysis, solver, mesh = build("Reference", Layers=4, Size=1.0)
+        doc, plate, analysis, solver, mesh = build("Reference", Layers=4, Size=1.0, Order=1)
         fea = write_inp(analysis, solver, work)
         deflection = tip_deflection(solve_as(fea.inp_file_name, "C3D8I"), mesh.FemMesh.getNodesByFace(plate.Shape.Face2))
         FreeCAD.closeDocument(doc.Name)
@@ -155,7 +155,7 @@ class CantileverPlate(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.work = tempfile.mkdtemp(prefix="hexlayer_ccx_")
-        cls.doc, cls.plate, analysis, solver, cls.mesh = build("CantileverPlate", Layers=2)
+        cls.doc, cls.plate, analysis, solver, cls.mesh = build("CantileverPlate", Layers=2, Order=1)
         cls.force = cls.doc.getObject("Force")
         cls.tip = cls.mesh.FemMesh.getNodesByFace(cls.plate.Shape.Face2)
         cls.inp, cls.result = write_and_solve(analysis, solver, os.path.join(cls.work, "coarse"))
@@ -203,12 +203,16 @@ class CantileverPlate(unittest.TestCase):
 
 
 class QuadraticCantileverPlate(unittest.TestCase):
-    """Order 2, 2 layers, default size (2 mm quads): FreeCAD writes C3D20, CalculiX solves it."""
+    """The mesh object's defaults (Order 2, 2 layers, quads of the wall thickness): FreeCAD writes C3D20, CalculiX
+    solves it."""
 
     def test_tip_deflection_within_1_percent_of_the_converged_reference(self):
         work = tempfile.mkdtemp(prefix="hexlayer_ccx_order2_")
         self.addCleanup(shutil.rmtree, work)
-        deflection, doc = solved_tip_deflection("QuadraticPlate", work, Layers=2, Order=2)
+        deflection, doc = solved_tip_deflection("QuadraticPlate", work)
+        mesh = [o for o in doc.Objects if getattr(o, "Proxy", None).__class__.__name__ == "MeshHexLayer"][0]
+        self.assertEqual((mesh.Order, mesh.Layers), (2, 2), "the defaults")
+        self.assertEqual(mesh.FemMesh.NodeCount > 2 * mesh.FemMesh.VolumeCount, True, "hexa20: mid-edge nodes")
         FreeCAD.closeDocument(doc.Name)
         reference = plate_reference()
         print("\ntip deflection C3D20 (order 2, 2 layers) {:.4f} mm, reference {:.4f} mm: ratio {:.4f}".format(

@@ -29,7 +29,10 @@ class MeshHexLayer(Stateless):
         add("App::PropertyEnumeration", "Sizing", "Element sizing: uniform, or adaptive to the wall thickness and curvature",
             list(meshing.SIZINGS))
         add("App::PropertyFloat", "Aspect", "In-plane size / layer thickness instead of Size (Size must then be 0); 0 = off", 0.0)
-        add("App::PropertyInteger", "Order", "Element order: 1 = hexa8, 2 = hexa20 (wall mid-edge nodes on the CAD walls)", 1)
+        # Order 2 by default: FreeCAD writes hexa8 as fully integrated C3D8, which is too stiff in bending
+        # (meshing.ORDER1_WARNING); FreeCAD's own Gmsh and Netgen meshers default to second order too.
+        add("App::PropertyInteger", "Order", "Element order: 2 = hexa20 (wall mid-edge nodes on the CAD walls), "
+            "1 = hexa8 (written as C3D8: too stiff in bending, see Status)", 2)
         add("App::PropertyBool", "DropJunctions",
             "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (else meshing refuses them)", False)
         add("App::PropertyBool", "Force", "Keep a mesh that fails its validation (an inverted hex, a crack, the volume), "

@@ -1,7 +1,11 @@
 """A FreeCAD part meshed with pyhexlayer, and the result as a FemMesh. No GUI: usable from freecadcmd."""
+import functools
+import os
 import re
+import tempfile
 
 import Fem
+import numpy
 import pyhexlayer
 
 # SMESH orders a hexa8's bottom quad the other way round from CalculiX and HexLayer; FreeCAD's
@@ -13,6 +17,10 @@ SMESH_HEXA8 = (0, 3, 2, 1, 4, 7, 6, 5)
 # 0-4, 1-5, 2-6, 3-7): s0-s1 is 0-3 (column 11), s1-s2 is 3-2 (10), ... Checked by the tests through
 # writeABAQUS: each mid node of the C3D20 it writes lies at the midpoint of its C3D20 edge.
 SMESH_HEXA20 = SMESH_HEXA8 + (11, 10, 9, 8, 15, 14, 13, 12, 16, 19, 18, 17)
+
+# One unit hex, for trying what FreeCAD's writer can write.
+_UNIT_CUBE = numpy.array([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], dtype=float)
+_UNIT_HEX = numpy.arange(8).reshape(1, 8)
 
 # The values the mesh object's Sizing property offers; pyhexlayer.check_options says which are supported today.
 SIZINGS = ("adaptive", "uniform")  # the first is the default
@@ -84,12 +92,54 @@ def hexa_femmesh(nodes, hexes):
     return fem
 
 
+# Order 1 in FreeCAD: its CalculiX writer writes hexa8 as C3D8, fully integrated, which locks in bending (a 2-layer
+# cantilever bends 78 % of the converged tip deflection, tests/freecad/test_hexlayer_ccx.py).
+ORDER1_WARNING = ("Order 1: FreeCAD's CalculiX writes these hexa8 as C3D8, which are too stiff in bending (2 layers: "
+                  "78 % of the converged deflection). Set Order 2 (hexa20) for bending, or use 4 or more layers.")
+C3D8I_OFFER = (" This FreeCAD can also write them as C3D8I (incompatible modes, accurate in bending): "
+               "HexLayer.writeCalculixMesh(mesh, path).")
+
+
+@functools.lru_cache(maxsize=None)
+def can_write_c3d8i():
+    """Whether this FreeCAD's FemMesh.writeABAQUS writes hexa8 as C3D8I (volVariant="incompatible", FreeCAD 1.x):
+    tried on one hex, not guessed from the version."""
+    fem = hexa_femmesh(_UNIT_CUBE, _UNIT_HEX)
+    handle, path = tempfile.mkstemp(suffix=".inp")
+    os.close(handle)
+    try:
+        fem.writeABAQUS(path, 1, False, volVariant="incompatible")
+        with open(path) as f:
+            return "C3D8I" in f.read().upper()
+    except (TypeError, ValueError, RuntimeError):  # 0.20: no keyword arguments; an unknown variant
+        return False
+    finally:
+        os.remove(path)
+
+
+def write_calculix_mesh(fem, path):
+    """Writes the FemMesh for CalculiX as FreeCAD does, but its hexa8 as C3D8I (where can_write_c3d8i)."""
+    if not can_write_c3d8i():
+        raise RuntimeError("this FreeCAD's FemMesh.writeABAQUS cannot write C3D8I (FreeCAD 1.0 and later can); "
+                           "use Order 2 (hexa20) instead")
+    fem.writeABAQUS(path, 1, False, volVariant="incompatible")
+
+
+def order_warning(order):
+    """What Status and the task panel say about the element order: nothing for Order 2."""
+    if order != 1:
+        return ""
+    return ORDER1_WARNING + (C3D8I_OFFER if can_write_c3d8i() else "")
+
+
 def summary(report, seconds):
-    """One line for people: hexes, scaled Jacobian min/avg, volume error, time, and the failed validation checks."""
+    """One line for people: hexes, scaled Jacobian min/avg, volume error, time, the failed validation checks, and
+    the warning about Order 1."""
     sj, volume = report["scaled_jacobian"], report["volume"]
     text = "{} hexes, {} nodes, {} layers. Scaled Jacobian min {:.3f}, avg {:.3f}. Volume {:+.2f} % vs CAD. {:.1f} s.".format(
         report["hexes"], report["nodes"], report["layers"], sj["min"], sj["avg"], 100 * volume["relative_error"], seconds)
     failures = [f["message"] for f in report["validation"]["failures"]]  # only with Force
     if failures:
         text += " Validation failed, kept as Force is on: {}. Not fit for a solver there.".format("; ".join(failures))
-    return text
+    warning = order_warning(report["order"])
+    return text + (" " + warning if warning else "")

@@ -5,6 +5,7 @@ from PySide import QtCore, QtGui  # FreeCAD 0.20's PySide shim: the widgets are 
 from . import icon, meshing
 
 ERROR_STYLE = "color: #c00000;"
+WARNING_STYLE = "color: #a05a00;"
 
 
 def meshable_parts(doc, current):
@@ -24,6 +25,8 @@ class TaskPanel:
         layout.addLayout(self.make_fields())
         self.problem = self.label("problem", ERROR_STYLE)
         layout.addWidget(self.problem)
+        self.warning = self.label("order_warning", WARNING_STYLE)
+        layout.addWidget(self.warning)
         self.mesh_button = self.named(QtGui.QPushButton("Mesh"), "mesh")
         self.mesh_button.clicked.connect(self.mesh)
         layout.addWidget(self.mesh_button)
@@ -114,6 +117,9 @@ class TaskPanel:
         self.problem.setText(problem or "")
         self.problem.setVisible(bool(problem))
         self.mesh_button.setEnabled(not problem)
+        warning = meshing.order_warning(self.order.value())
+        self.warning.setText(warning)
+        self.warning.setVisible(bool(warning))
 
     def show_progress(self, line):
         self.progress.appendPlainText(line)
@@ -144,7 +150,8 @@ class TaskPanel:
     # ---- task dialog ---------------------------------------------------------------------------------
 
     def getStandardButtons(self):
-        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
+        # The flags themselves: FreeCAD 1.1 (PySide6) wants the enum, 0.20 (PySide2) takes it as an int.
+        return QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel
 
     def accept(self):
         """OK: keeps the options; the mesh follows them at the next recompute."""
