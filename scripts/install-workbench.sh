@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the FreeCAD workbench Hex-Layer: Mod/HexLayer and the Python module pyhexlayer (built for
-# /usr/bin/python3, FreeCAD 0.20's interpreter) copied into FreeCAD's user Mod folder.
+# Installs the FreeCAD workbench Hex-Layer: Mod/HexLayer, the hexlayer executable it runs as a child process
+# (into Mod/HexLayer/bin) and, for macros in a matching Python, the module pyhexlayer (built for /usr/bin/python3,
+# FreeCAD 0.20's interpreter; the workbench itself does not import it), copied into FreeCAD's user Mod folder.
 # Usage: scripts/install-workbench.sh            installs the Debian packages (FreeCAD too), builds, installs
 #        scripts/install-workbench.sh BUILD_DIR  installs from a build folder that already holds the module
 # The Mod folder is $FREECAD_MOD_DIR, else ${XDG_DATA_HOME:-~/.local/share}/FreeCAD/Mod (FreeCAD 0.20 on Debian).
@@ -11,7 +12,11 @@ if [ -z "$build" ]; then
   build=build
   scripts/install-deps.sh
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$build" -j"$(nproc)" --target pyhexlayer
+  cmake --build "$build" -j"$(nproc)" --target hexlayer pyhexlayer
+fi
+if [ ! -x "$build/hexlayer" ]; then
+  echo "install-workbench: no hexlayer executable in $build (build first)" >&2
+  exit 1
 fi
 modules=("$build"/python/pyhexlayer*.so)
 if [ ! -f "${modules[0]}" ]; then
@@ -24,4 +29,6 @@ mkdir -p "$target"
 cp -r Mod/HexLayer/. "$target/"
 find "$target" -name __pycache__ -prune -exec rm -rf {} +
 cp "${modules[0]}" "$target/"
+mkdir -p "$target/bin"
+cp "$build/hexlayer" "$target/bin/hexlayer"
 echo "Hex-Layer workbench installed in $target: (re)start FreeCAD and choose the Hex-Layer workbench."

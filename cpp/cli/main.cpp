@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "pipeline/pipeline.hpp"
+#include "pipeline/result_json.hpp"
 #include "writers/writers.hpp"
 
 namespace {
@@ -16,8 +17,9 @@ namespace {
 using hexlayer::ExitCode;
 
 struct MeshCommand {
-  std::string input, output, report;
+  std::string input, output, report, result;
   bool quiet = false;
+  bool machine = false;  // progress as "@progress <line>" lines on stderr, for a program that runs this one
   hexlayer::MeshOptions options;
 };
 
@@ -47,18 +49,38 @@ std::string summary(const nlohmann::json& r, const std::string& output) {
   return s.str();
 }
 
+void writeJson(const std::string& path, const nlohmann::json& j, int indent, const char* what) {
+  std::ofstream out(path);
+  if (!out) throw hexlayer::inputError(std::string("cannot write the ") + what + " '" + path + "'");
+  out << std::setw(indent) << j << "\n";
+}
+
+// The meshing options, the same for `mesh` and `check`.
+void addMeshOptions(CLI::App* command, MeshCommand& c) {
+  command->add_option("--layers", c.options.layers, "Hex layers through the thickness (default 2)");
+  command->add_option("--size", c.options.size, "Quad edge length on the chordal surface (default: the wall thickness)");
+  command->add_option("--sizing", c.options.sizing,
+                      "Quad sizing: uniform or adaptive (radius function and curvature, §6.1) (default adaptive)");
+  command->add_flag("--drop-junctions", c.options.dropJunctions,
+                    "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (default: refuse, exit 4)");
+  command->add_option("--aspect", c.options.aspect, "In-plane quad size / layer thickness, instead of --size (default off)");
+  command->add_option("--min-size", c.options.minSize, "Smallest adaptive quad size (default: a quarter of the size)");
+  command->add_option("--max-size", c.options.maxSize, "Largest adaptive quad size (default: 4 x the size)");
+  command->add_option("--order", c.options.order,
+                      "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
+  command->add_flag("--force", c.options.force, "Write the mesh even if it fails validation (with a warning per failed check)");
+}
+
 int runMesh(MeshCommand& c) {
-  if (!c.quiet) c.options.progress = [](const std::string& line) { std::cerr << "hexlayer: " << line << std::endl; };
+  if (c.machine) c.options.progress = [](const std::string& line) { std::cerr << "@progress " << line << std::endl; };
+  else if (!c.quiet) c.options.progress = [](const std::string& line) { std::cerr << "hexlayer: " << line << std::endl; };
   hexlayer::MeshResult result = hexlayer::meshFile(c.input, c.options);
+  if (!c.result.empty()) writeJson(c.result, hexlayer::resultJson(result), -1, "result");
   std::vector<hexlayer::CellField> fields;
   if (!result.mesh.hexes.empty()) fields.push_back({"scaled_jacobian", result.scaledJacobian});
   hexlayer::writeMesh(c.output, result.mesh, {result.nodeSets, result.surfaceGroups, fields});
-  if (!c.report.empty()) {
-    std::ofstream out(c.report);
-    if (!out) throw hexlayer::inputError("cannot write the report '" + c.report + "'");
-    out << std::setw(2) << result.report << "\n";
-  }
-  if (!c.quiet) std::cout << summary(result.report, c.output) << std::endl;
+  if (!c.report.empty()) writeJson(c.report, result.report, 2, "report");
+  if (!c.quiet && !c.machine) std::cout << summary(result.report, c.output) << std::endl;
   for (const auto& f : result.report["validation"]["failures"])  // only with --force: else meshFile threw
     std::cerr << "hexlayer: warning: validation failed (written because of --force): " << f["message"].get<std::string>()
               << std::endl;
@@ -78,18 +100,15 @@ int main(int argc, char** argv) {
   CLI::App* mesh = app.add_subcommand("mesh", "Mesh a thin solid into layered hexahedra");
   mesh->add_option("input", c.input, "CAD file: .step/.stp, .iges/.igs or .brep")->required();
   mesh->add_option("-o,--output", c.output, "Output mesh: .inp (CalculiX), .vtu (VTK) or .msh (Gmsh 4.1)")->required();
-  mesh->add_option("--layers", c.options.layers, "Hex layers through the thickness (default 2)");
-  mesh->add_option("--size", c.options.size, "Quad edge length on the chordal surface (default: the wall thickness)");
-  mesh->add_option("--sizing", c.options.sizing, "Quad sizing: uniform or adaptive (radius function and curvature, §6.1) (default adaptive)");
-  mesh->add_flag("--drop-junctions", c.options.dropJunctions,
-                 "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (default: refuse, exit 4)");
-  mesh->add_option("--aspect", c.options.aspect, "In-plane quad size / layer thickness, instead of --size (default off)");
-  mesh->add_option("--min-size", c.options.minSize, "Smallest adaptive quad size (default: a quarter of the size)");
-  mesh->add_option("--max-size", c.options.maxSize, "Largest adaptive quad size (default: 4 x the size)");
-  mesh->add_option("--order", c.options.order, "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
+  addMeshOptions(mesh, c);
   mesh->add_option("--report", c.report, "Write a JSON report of every stage");
-  mesh->add_flag("--force", c.options.force, "Write the mesh even if it fails validation (with a warning per failed check)");
+  mesh->add_option("--result", c.result,
+                   "Write the whole result as JSON: mesh, node sets, face groups, report, chordal surface and quad mesh "
+                   "(what the FreeCAD workbench reads)");
+  mesh->add_flag("--machine", c.machine, "Progress as '@progress <line>' lines on stderr, one per stage, and no summary");
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
+  CLI::App* check = app.add_subcommand("check", "Check mesh options without meshing: exit 0, or 2 with the reason");
+  addMeshOptions(check, c);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -100,8 +119,13 @@ int main(int argc, char** argv) {
     return static_cast<int>(ExitCode::BadUsage);
   }
   try {
-    if (mesh->count("--size") > 0 && !(c.options.size > 0))  // 0 is the default's "from the part", not a size
+    CLI::App* used = mesh->parsed() ? mesh : check;
+    if (used->count("--size") > 0 && !(c.options.size > 0))  // 0 is the default's "from the part", not a size
       throw hexlayer::usageError("--size must be a positive length");
+    if (check->parsed()) {
+      hexlayer::validateOptions(c.options);
+      return 0;
+    }
     return runMesh(c);
   } catch (const hexlayer::Error& e) {
     std::cerr << "hexlayer: error: " << e.what() << std::endl;

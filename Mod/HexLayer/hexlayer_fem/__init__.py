@@ -1,7 +1,7 @@
 """FreeCAD side of Hex-Layer: the mesh object, its view provider, task panel and command.
 
-The meshing itself is the compiled module pyhexlayer (cpp/python/), installed beside this package by
-scripts/install-workbench.sh.
+The meshing itself is the hexlayer executable, run as a child process (mesher.py), installed in bin/ beside this
+package by scripts/install-workbench.sh; the workbench imports no compiled module of its own.
 """
 import os
 

@@ -57,7 +57,7 @@ class MeshHexLayer(Stateless):
         obj.FemMesh = meshing.femmesh(result)
         obj.Status = meshing.summary(result.report, time.perf_counter() - start)
 
-    result = None  # pyhexlayer.MeshResult of the last meshing in this session
+    result = None  # meshing result (mesher.read_result) of the last meshing in this session
     listener = None  # a task panel sets a callable here while it meshes, to show the progress lines
 
     def progress(self, line):

@@ -1,4 +1,5 @@
-"""A FreeCAD part meshed with pyhexlayer, and the result as a FemMesh. No GUI: usable from freecadcmd."""
+"""A FreeCAD part meshed by the hexlayer executable (mesher.py), and the result as a FemMesh. No GUI: usable from
+freecadcmd."""
 import functools
 import os
 import re
@@ -6,7 +7,8 @@ import tempfile
 
 import Fem
 import numpy
-import pyhexlayer
+
+from . import mesher
 
 # SMESH orders a hexa8's bottom quad the other way round from CalculiX and HexLayer; FreeCAD's
 # writeABAQUS maps it back, so this order gives the C3D8 elements it writes positive volumes.
@@ -22,12 +24,12 @@ SMESH_HEXA20 = SMESH_HEXA8 + (11, 10, 9, 8, 15, 14, 13, 12, 16, 19, 18, 17)
 _UNIT_CUBE = numpy.array([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], dtype=float)
 _UNIT_HEX = numpy.arange(8).reshape(1, 8)
 
-# The values the mesh object's Sizing property offers; pyhexlayer.check_options says which are supported today.
+# The values the mesh object's Sizing property offers; mesher.check_options says which are supported today.
 SIZINGS = ("adaptive", "uniform")  # the first is the default
 
 
 def options(obj):
-    """pyhexlayer's keyword options from the mesh object's properties."""
+    """The mesher's options (mesher.option_arguments, pyhexlayer's keywords) from the mesh object's properties."""
     return dict(layers=obj.Layers, size=obj.Size.Value, sizing=obj.Sizing, aspect=obj.Aspect, order=obj.Order,
                 drop_junctions=obj.DropJunctions)
 
@@ -51,21 +53,22 @@ def part_problem(part):
 
 
 def option_problem(opts):
-    """Why pyhexlayer refuses these options, in the property editor's words, or None."""
+    """Why the mesher refuses these options (`hexlayer check`), in the property editor's words, or None."""
     try:
-        pyhexlayer.check_options(**opts)
-    except pyhexlayer.UsageError as error:
+        mesher.check_options(**opts)
+    except mesher.UsageError as error:
         return for_people(str(error))
     return None
 
 
 def mesh(part, opts, progress=None, force=False):
-    """pyhexlayer.MeshResult of the part's shape; the BREP text keeps FreeCAD's face numbering. A mesh that fails
-    its validation raises pyhexlayer.ValidationError, unless force."""
+    """The meshing result of the part's shape (mesher.read_result: pyhexlayer.MeshResult's arrays), meshed by the
+    hexlayer executable out of FreeCAD's process; the BREP text keeps FreeCAD's face numbering. A mesh that fails
+    its validation raises mesher.ValidationError, unless force."""
     problem = part_problem(part)
     if problem:
-        raise pyhexlayer.InputError(problem)
-    return pyhexlayer.mesh_brep(part.Shape.exportBrepToString(), progress=progress, force=force, **opts)
+        raise mesher.InputError(problem)
+    return mesher.mesh_brep(part.Shape.exportBrepToString(), progress=progress, force=force, **opts)
 
 
 def femmesh(result):

@@ -1,7 +1,7 @@
 """The method's stages as document objects to look at (paper §5-7, Figure 12): the chordal surface, its quad
 mesh, the hex layers pulled apart along the sweep direction, and the hexes coloured by scaled Jacobian.
 
-Each view is made from the pyhexlayer result of the mesh object's last meshing (meshing again if it has none,
+Each view is made from the result of the mesh object's last meshing (meshing again if it has none,
 e.g. after the document was reopened) and put in a group "<mesh> stages"; making a view again replaces it.
 The views show the hexes' corners (hexa8), also for an Order 2 mesh. No GUI needed; in the GUI the views get
 their colours."""
@@ -26,7 +26,7 @@ def is_hexlayer_mesh(obj):
 
 
 def last_result(mesh_obj):
-    """The pyhexlayer.MeshResult of the mesh object's last meshing: recomputes the object if it is out of date,
+    """The meshing result (mesher.read_result) of the mesh object's last meshing: recomputes the object if it is out of date,
     meshes its Part again if this session has not meshed it. Raises the mesher's error if meshing fails."""
     if not is_hexlayer_mesh(mesh_obj):
         raise TypeError("'{}' is not a Hex-Layer mesh: make one with HexLayer.makeMesh".format(mesh_obj.Label))

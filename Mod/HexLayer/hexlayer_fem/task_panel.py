@@ -55,7 +55,7 @@ class TaskPanel:
         fields = QtGui.QFormLayout()
         self.part = self.named(QtGui.QComboBox(), "part")
         self.layers = self.named(QtGui.QSpinBox(), "layers")
-        self.layers.setRange(0, 999)  # pyhexlayer says which counts it takes
+        self.layers.setRange(0, 999)  # the mesher says which counts it takes
         self.size = self.named(QtGui.QDoubleSpinBox(), "size")
         self.size.setRange(0.0, 1e6)
         self.size.setDecimals(3)
