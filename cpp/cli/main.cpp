@@ -9,7 +9,7 @@
 
 #include "core/error.hpp"
 #include "pipeline/pipeline.hpp"
-#include "pipeline/result_json.hpp"
+#include "pipeline/result_file.hpp"
 #include "writers/writers.hpp"
 
 namespace {
@@ -49,10 +49,10 @@ std::string summary(const nlohmann::json& r, const std::string& output) {
   return s.str();
 }
 
-void writeJson(const std::string& path, const nlohmann::json& j, int indent, const char* what) {
+void writeReport(const std::string& path, const nlohmann::json& report) {
   std::ofstream out(path);
-  if (!out) throw hexlayer::inputError(std::string("cannot write the ") + what + " '" + path + "'");
-  out << std::setw(indent) << j << "\n";
+  if (!out) throw hexlayer::inputError("cannot write the report '" + path + "'");
+  out << std::setw(2) << report << "\n";
 }
 
 // The meshing options, the same for `mesh` and `check`.
@@ -75,11 +75,11 @@ int runMesh(MeshCommand& c) {
   if (c.machine) c.options.progress = [](const std::string& line) { std::cerr << "@progress " << line << std::endl; };
   else if (!c.quiet) c.options.progress = [](const std::string& line) { std::cerr << "hexlayer: " << line << std::endl; };
   hexlayer::MeshResult result = hexlayer::meshFile(c.input, c.options);
-  if (!c.result.empty()) writeJson(c.result, hexlayer::resultJson(result), -1, "result");
+  if (!c.result.empty()) hexlayer::writeResult(c.result, result);
   std::vector<hexlayer::CellField> fields;
   if (!result.mesh.hexes.empty()) fields.push_back({"scaled_jacobian", result.scaledJacobian});
   hexlayer::writeMesh(c.output, result.mesh, {result.nodeSets, result.surfaceGroups, fields});
-  if (!c.report.empty()) writeJson(c.report, result.report, 2, "report");
+  if (!c.report.empty()) writeReport(c.report, result.report);
   if (!c.quiet && !c.machine) std::cout << summary(result.report, c.output) << std::endl;
   for (const auto& f : result.report["validation"]["failures"])  // only with --force: else meshFile threw
     std::cerr << "hexlayer: warning: validation failed (written because of --force): " << f["message"].get<std::string>()
@@ -103,8 +103,8 @@ int main(int argc, char** argv) {
   addMeshOptions(mesh, c);
   mesh->add_option("--report", c.report, "Write a JSON report of every stage");
   mesh->add_option("--result", c.result,
-                   "Write the whole result as JSON: mesh, node sets, face groups, report, chordal surface and quad mesh "
-                   "(what the FreeCAD workbench reads)");
+                   "Write the whole result (mesh, node sets, face groups, report, chordal surface and quad mesh) as a JSON "
+                   "index and its arrays in FILE.bin: what the FreeCAD workbench reads");
   mesh->add_flag("--machine", c.machine, "Progress as '@progress <line>' lines on stderr, one per stage, and no summary");
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
   CLI::App* check = app.add_subcommand("check", "Check mesh options without meshing: exit 0, or 2 with the reason");

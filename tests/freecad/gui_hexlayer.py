@@ -9,8 +9,10 @@ HEXLAYER_SCREENSHOTS: folder for freecad_panel.png, freecad_mesh.png and freecad
 made with docs/).
 """
 import os
+import signal
 import sys
 import tempfile
+import time
 import traceback
 import unittest
 
@@ -30,6 +32,21 @@ def panel():
     """The open Hex-Layer task panel's form, or None."""
     form = Gui.getMainWindow().findChild(QtGui.QWidget, "HexLayerTaskPanel")
     return form if form is not None and form.isVisible() else None
+
+
+def task_panel():
+    """The TaskPanel object of the mesh in edit."""
+    return Gui.ActiveDocument.getInEdit().Proxy.panel
+
+
+def wait_until(condition, timeout):
+    """Runs the event loop until condition() holds; AssertionError after `timeout` seconds."""
+    end = time.monotonic() + timeout
+    while not condition():
+        if time.monotonic() > end:
+            raise AssertionError("still waiting after {} s".format(timeout))
+        QtGui.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
+        time.sleep(0.005)
 
 
 def widget(name, kind=QtGui.QWidget):
@@ -81,8 +98,10 @@ class GuiTest(unittest.TestCase):
         self.assertIsNotNone(panel(), "the task panel opened")
         return self.doc.ActiveObject
 
-    def press_mesh(self):
+    def press_mesh(self, timeout=300):
+        """Clicks Mesh and waits (the event loop running) until the mesher's child process has ended."""
         widget("mesh", QtGui.QPushButton).click()
+        wait_until(lambda: not task_panel().running(), timeout)
         settle()
 
     def problem(self):
@@ -158,6 +177,80 @@ class BadSelections(GuiTest):
         self.press_mesh()
         self.assertTrue(mesh.isValid(), mesh.Status)
         self.assertIn("hexes", widget("summary", QtGui.QLabel).text())
+
+
+class LongRun(GuiTest):
+    """A part that meshes for seconds (the 100 x 20 x 2 plate at 0.25 mm quads, hexa20): FreeCAD answers while the
+    mesher runs in its child process, the progress bar follows the stages, Cancel ends the run within a second and
+    leaves the mesh and the document as they were, and a mesher killed from outside is a message in Status."""
+
+    SIZE = 0.25
+
+    def start(self, mesh_first=False):
+        plate = t.add_plate(self.doc)
+        mesh = self.run_command(plate)
+        if mesh_first:  # a mesh to keep: the default size, quickly
+            self.press_mesh()
+            self.assertTrue(mesh.isValid(), mesh.Status)
+        widget("size", QtGui.QDoubleSpinBox).setValue(self.SIZE)
+        # the 3D view redrawn first (software rendering under Xvfb takes 0.2 s a frame): the trips measure the run
+        quiet_until = time.monotonic() + 1.0
+        wait_until(lambda: time.monotonic() > quiet_until, 5)
+        widget("mesh", QtGui.QPushButton).click()
+        self.assertTrue(task_panel().running())
+        return mesh
+
+    def round_trip(self):
+        """Seconds from posting a zero-delay timer to its firing: how long FreeCAD's event loop takes to answer."""
+        fired = []
+        posted = time.monotonic()
+        QtCore.QTimer.singleShot(0, lambda: fired.append(time.monotonic()))
+        wait_until(lambda: fired, 10)
+        return fired[0] - posted
+
+    def test_freecad_answers_while_a_large_part_meshes(self):
+        mesh = self.start()
+        pressed, trips = time.monotonic(), []
+        while task_panel().running():
+            started = time.monotonic()
+            trip = self.round_trip()
+            # the child still meshing (not the FemMesh being built from its answer), past FreeCAD's own redraw of the
+            # panel and the property view after Mesh was pressed (up to 0.3 s a frame in software GL under Xvfb)
+            if task_panel().running() and started > pressed + 0.5:
+                trips.append(trip)
+            time.sleep(0.05)
+        self.assertGreater(len(trips), 10, "the run lasted long enough to measure")
+        print("event round trips while meshing: {} samples, longest {:.0f} ms, in ms: {}".format(
+            len(trips), 1000 * max(trips), [round(1000 * x) for x in trips]), file=sys.stderr)
+        self.assertLess(max(trips), 0.2)
+        wait_until(lambda: widget("summary", QtGui.QLabel).text(), 60)
+        self.assertTrue(mesh.isValid(), mesh.Status)
+        bar = widget("progress_bar", QtGui.QProgressBar)
+        self.assertEqual(bar.value(), bar.maximum(), "every stage reported")
+
+    def test_cancel_ends_the_run_and_keeps_the_previous_mesh(self):
+        mesh = self.start(mesh_first=True)
+        hexes, status = mesh.FemMesh.VolumeCount, mesh.Status
+        wait_until(lambda: widget("progress", QtGui.QPlainTextEdit).toPlainText().count("\n") >= 2, 60)  # under way
+        pressed = time.monotonic()
+        widget("cancel", QtGui.QPushButton).click()
+        wait_until(lambda: not task_panel().running(), 1)
+        self.assertLess(time.monotonic() - pressed, 1.0)
+        settle()
+        self.assertEqual((mesh.FemMesh.VolumeCount, mesh.Status), (hexes, status), "the previous mesh, as it was")
+        self.assertTrue(mesh.isValid())
+        self.assertIn("Cancelled", widget("summary", QtGui.QLabel).text())
+
+    def test_mesher_killed_from_outside_is_a_message(self):
+        mesh = self.start()
+        wait_until(lambda: widget("progress", QtGui.QPlainTextEdit).toPlainText().count("\n") >= 2, 60)
+        os.kill(task_panel().process.processId(), signal.SIGKILL)
+        wait_until(lambda: not task_panel().running(), 10)
+        settle()
+        self.assertFalse(mesh.isValid())
+        self.assertIn("the mesher stopped", mesh.Status)
+        self.assertIn("the mesher stopped", widget("summary", QtGui.QLabel).text())
+        self.assertTrue(Gui.getMainWindow().isVisible(), "FreeCAD goes on")
 
 
 class MeshSamplePart(GuiTest):

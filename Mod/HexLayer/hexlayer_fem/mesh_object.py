@@ -44,10 +44,14 @@ class MeshHexLayer(Stateless):
         self.add_properties(obj)
 
     def execute(self, obj):
-        """Meshes the Part; on failure the FemMesh is emptied (no stale mesh reaches a solver) and the error raised."""
+        """Meshes the Part (or takes the answer the task panel's run got for it); on failure the FemMesh is emptied
+        (no stale mesh reaches a solver) and the error raised."""
         start = time.perf_counter()
         try:
-            result = meshing.mesh(obj.Part, meshing.options(obj), progress=self.progress, force=obj.Force)
+            answer, self.answer = self.answer, None
+            if isinstance(answer, Exception):
+                raise answer
+            result = answer or meshing.mesh(obj.Part, meshing.options(obj), progress=self.progress, force=obj.Force)
         except Exception as error:
             self.result = None
             obj.FemMesh = Fem.FemMesh()
@@ -57,10 +61,9 @@ class MeshHexLayer(Stateless):
         obj.FemMesh = meshing.femmesh(result)
         obj.Status = meshing.summary(result.report, time.perf_counter() - start)
 
+    answer = None  # a result or error the task panel's run got for the object as it is, for the next execute
     result = None  # meshing result (mesher.read_result) of the last meshing in this session
-    listener = None  # a task panel sets a callable here while it meshes, to show the progress lines
 
-    def progress(self, line):
+    @staticmethod
+    def progress(line):
         FreeCAD.Console.PrintLog("Hex-Layer: {}\n".format(line))
-        if self.listener is not None:
-            self.listener(line)

@@ -3,8 +3,8 @@ OpenCASCADE, TetGen or Gmsh is a message, not a lost session, and the workbench 
 own (it loads in any FreeCAD, whatever its Python, Qt or OpenCASCADE).
 
 The part goes to the child as a BREP file (FreeCAD's face numbering kept); the child writes its progress as
-"@progress <stage>: <seconds> s" lines on stderr (`--machine`) and its whole result as JSON (`--result`), read
-back here into arrays named as pyhexlayer.MeshResult's. Its exit code becomes the error class pyhexlayer raises.
+"@progress <stage>: <seconds> s" lines on stderr (`--machine`) and its whole result as a JSON index and a binary
+file of arrays (`--result`), read back here into arrays named as pyhexlayer.MeshResult's. Its exit code becomes the error class pyhexlayer raises.
 No GUI and no FreeCAD needed: the task panel runs the same command line with QProcess (task_panel.py).
 """
 import functools
@@ -113,16 +113,23 @@ class Run:
     def command(self):
         return [executable()] + self.arguments
 
-    def answer(self, returncode, stderr):
-        """The result (arrays named as pyhexlayer.MeshResult's), or the error the exit code stands for."""
+    def answer(self, returncode, stderr, crashed=False):
+        """The result (arrays named as pyhexlayer.MeshResult's), or the error the exit code stands for: a negative
+        code is the signal that ended the child; `crashed` without one (QProcess does not say which)."""
         try:
+            if crashed:
+                raise MesherStopped("the mesher stopped: it crashed or was killed (nothing was changed)")
             if returncode == 0 and os.path.isfile(self.result_file):
                 return read_result(self.result_file)
             if returncode is not None and returncode < 0:
                 raise MesherStopped("the mesher stopped: killed by signal {} (nothing was changed)".format(signal_name(-returncode)))
             raise ERRORS.get(returncode, HexLayerError)(error_message(stderr, self.part))
         finally:
-            shutil.rmtree(self.folder, ignore_errors=True)
+            self.discard()
+
+    def discard(self):
+        """Removes the run's folder (the part, the result)."""
+        shutil.rmtree(self.folder, ignore_errors=True)
 
 
 def signal_name(number):
@@ -133,24 +140,23 @@ def signal_name(number):
 
 
 def read_result(path):
-    """The --result JSON as an object with NumPy arrays (pyhexlayer.MeshResult's names and shapes)."""
+    """The --result files (a JSON index and the arrays' binary file beside it) as an object with NumPy arrays, under
+    pyhexlayer.MeshResult's names and shapes."""
     with open(path) as f:
-        j = json.load(f)
+        index = json.load(f)
+    raw = np.fromfile(os.path.join(os.path.dirname(path), index["binary"]), dtype=np.uint8)
 
-    def ids(values, width=None):
-        a = np.array(values, dtype=np.int64)
-        return a.reshape(-1, width) if width else a
+    def array(name):
+        a = index["arrays"][name]
+        count = int(np.prod(a["shape"])) if a["shape"] else 0
+        return np.frombuffer(raw, dtype=np.dtype(a["dtype"]), count=count, offset=a["offset"]).reshape(a["shape"]).copy()
 
-    def points(values):
-        return np.array(values, dtype=float).reshape(-1, 3)
+    def group(prefix):
+        return {name[len(prefix):]: array(name) for name in index["arrays"] if name.startswith(prefix)}
 
-    width = len(j["hexes"][0]) if j["hexes"] else 8
-    return types.SimpleNamespace(
-        nodes=points(j["nodes"]), hexes=ids(j["hexes"], width), scaled_jacobian=np.array(j["scaled_jacobian"], dtype=float),
-        node_sets={k: ids(v) for k, v in j["node_sets"].items()}, face_nodes={k: ids(v) for k, v in j["face_nodes"].items()},
-        face_elements={k: ids(v, 2) for k, v in j["face_elements"].items()}, report=j["report"],
-        chordal_vertices=points(j["chordal_vertices"]), chordal_facets=ids(j["chordal_facets"], 4),
-        quad_nodes=points(j["quad_nodes"]), quads=ids(j["quads"], 4), node_layer=ids(j["node_layer"]))
+    names = ("nodes", "hexes", "scaled_jacobian", "chordal_vertices", "chordal_facets", "quad_nodes", "quads", "node_layer")
+    return types.SimpleNamespace(report=index["report"], node_sets=group("node_sets/"), face_nodes=group("face_nodes/"),
+                                 face_elements=group("face_elements/"), **{name: array(name) for name in names})
 
 
 def mesh_brep(brep_text, progress=None, force=False, **opts):

@@ -1,8 +1,9 @@
-"""Task panel of the Hex-Layer mesh: the part and options, a Mesh button, progress lines, summary or error."""
+"""Task panel of the Hex-Layer mesh: the part and options, a Mesh button that runs the mesher as a child process
+(QProcess: FreeCAD stays responsive), a progress bar and the stages' lines, Cancel, summary or error."""
 import FreeCADGui
 from PySide import QtCore, QtGui  # FreeCAD 0.20's PySide shim: the widgets are in QtGui
 
-from . import icon, meshing
+from . import icon, mesher, meshing
 
 ERROR_STYLE = "color: #c00000;"
 WARNING_STYLE = "color: #a05a00;"
@@ -27,9 +28,17 @@ class TaskPanel:
         layout.addWidget(self.problem)
         self.warning = self.label("order_warning", WARNING_STYLE)
         layout.addWidget(self.warning)
+        buttons = QtGui.QHBoxLayout()
         self.mesh_button = self.named(QtGui.QPushButton("Mesh"), "mesh")
         self.mesh_button.clicked.connect(self.mesh)
-        layout.addWidget(self.mesh_button)
+        self.cancel_button = self.named(QtGui.QPushButton("Cancel meshing"), "cancel")
+        self.cancel_button.clicked.connect(self.cancel)
+        self.cancel_button.setEnabled(False)
+        buttons.addWidget(self.mesh_button)
+        buttons.addWidget(self.cancel_button)
+        layout.addLayout(buttons)
+        self.bar = self.named(QtGui.QProgressBar(), "progress_bar")
+        layout.addWidget(self.bar)
         layout.addWidget(QtGui.QLabel("Progress:"))
         self.progress = self.named(QtGui.QPlainTextEdit(), "progress")
         self.progress.setReadOnly(True)
@@ -37,6 +46,7 @@ class TaskPanel:
         layout.addWidget(self.progress)
         self.summary = self.label("summary", "")
         layout.addWidget(self.summary)
+        self.process = None  # the running mesher
         self.load()
         self.show_status()
 
@@ -121,27 +131,79 @@ class TaskPanel:
         self.warning.setText(warning)
         self.warning.setVisible(bool(warning))
 
-    def show_progress(self, line):
-        self.progress.appendPlainText(line)
-        QtGui.QApplication.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
-
     def mesh(self):
-        """Applies the options and meshes now, showing each stage as it finishes."""
+        """Applies the options and starts the mesher as a child process; its stages fill the progress bar as they
+        come, and when it ends the mesh object takes its answer (finished)."""
         self.apply()
         self.progress.clear()
         self.summary.clear()
-        self.obj.Proxy.listener = self.show_progress
-        QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+        self.run = mesher.Run(self.obj.Part.Shape.exportBrepToString(), meshing.options(self.obj), self.obj.Force)
+        self.stderr, self.partial, self.cancelled = [], "", False
+        self.bar.setRange(0, len(mesher.STAGES) + (self.obj.Order == 2))
+        self.bar.setValue(0)
+        self.process = QtCore.QProcess(self.form)
+        self.process.readyReadStandardError.connect(self.read_progress)
+        self.process.finished.connect(self.finished)
+        command = self.run.command()
+        self.set_running(True)
+        self.process.start(command[0], command[1:])
+        if not self.process.waitForStarted(10000):
+            self.process = None
+            self.set_running(False)
+            self.run.discard()
+            self.summary.setText("Failed: the mesher {} could not be started".format(command[0]))
+            self.summary.setStyleSheet(ERROR_STYLE)
+
+    def read_progress(self):
+        text = self.partial + bytes(self.process.readAllStandardError()).decode(errors="replace")
+        lines = text.split("\n")
+        self.partial = lines.pop()
+        for line in lines:
+            if line.startswith(mesher.PROGRESS):
+                self.progress.appendPlainText(line[len(mesher.PROGRESS):])
+                self.bar.setValue(min(self.bar.value() + 1, self.bar.maximum()))
+            else:
+                self.stderr.append(line)
+
+    def finished(self, code, status):
+        """The child ended: cancelled (nothing changes), or its mesh or error goes to the object by a recompute."""
+        self.read_progress()
+        self.stderr.append(self.partial)
+        self.process, run = None, self.run
+        self.set_running(False)
+        if self.cancelled:
+            run.discard()
+            self.summary.setText("Cancelled: the mesh and the document are as they were.")
+            self.summary.setStyleSheet("")
+            return
         try:
-            self.obj.touch()
-            self.obj.Document.recompute()
-        finally:
-            self.obj.Proxy.listener = None
-            QtGui.QApplication.restoreOverrideCursor()
+            self.obj.Proxy.answer = run.answer(code, "\n".join(self.stderr), crashed=status == QtCore.QProcess.CrashExit)
+        except Exception as error:  # the object's execute raises it, as a recompute that meshed would
+            self.obj.Proxy.answer = error
+        self.obj.touch()
+        self.obj.Document.recompute()
         self.show_status()
         if self.obj.isValid():
             self.obj.ViewObject.show()
             self.obj.Part.ViewObject.hide()
+
+    def cancel(self):
+        """Ends the running mesher (within a second: it is killed); the mesh and the document stay as they were."""
+        if self.process is not None:
+            self.cancelled = True
+            self.process.kill()
+            self.process.waitForFinished(1000)
+
+    def running(self):
+        return self.process is not None
+
+    def set_running(self, running):
+        for widget in (self.mesh_button, self.part, self.layers, self.size, self.sizing, self.aspect, self.order,
+                       self.drop_junctions):
+            widget.setEnabled(not running)
+        self.cancel_button.setEnabled(running)
+        if not running:
+            self.check()
 
     def show_status(self):
         self.summary.setText(self.obj.Status)
@@ -155,12 +217,14 @@ class TaskPanel:
 
     def accept(self):
         """OK: keeps the options; the mesh follows them at the next recompute."""
+        self.cancel()
         self.apply()
         self.close()
         self.obj.Document.recompute()
         return True
 
     def reject(self):
+        self.cancel()
         self.close()
         return True
 

@@ -19,12 +19,18 @@ class VPMeshHexLayer(Stateless):
         if mode != 0:
             return None  # other edit modes (transform) as for any object
         from .task_panel import TaskPanel
-        FreeCADGui.Control.showDialog(TaskPanel(vobj.Object))
+        self.panel = TaskPanel(vobj.Object)
+        FreeCADGui.Control.showDialog(self.panel)
         return True
 
     def unsetEdit(self, vobj, mode=0):
+        if self.panel is not None:
+            self.panel.cancel()  # a run still going ends with its panel
+            self.panel = None
         FreeCADGui.Control.closeDialog()
         return True
+
+    panel = None  # the open task panel (not saved)
 
     def doubleClicked(self, vobj):
         guidoc = FreeCADGui.getDocument(vobj.Object.Document)
