@@ -55,14 +55,18 @@ PLATE_FACES = Faces("Face1", "Face2", "Face6", True)  # Face6 the top: +z revers
 def add_analysis(doc, part, faces):
     """Analysis with CalculiX solver, steel, Fixed on faces.fixed and Force 10 N on faces.loaded."""
     analysis = ObjectsFem.makeAnalysis(doc, "Analysis")
-    solver = ObjectsFem.makeSolverCalculixCcxTools(doc, "CalculiX")
+    # FreeCAD 1.x spells it CalculiX (0.20: Calculix); the feature, not the version number, decides
+    make_solver = getattr(ObjectsFem, "makeSolverCalculiXCcxTools", None) or ObjectsFem.makeSolverCalculixCcxTools
+    solver = make_solver(doc, "CalculiX")
     material = ObjectsFem.makeMaterialSolid(doc, "Steel")
     material.Material = dict(material.Material, Name="Steel", YoungsModulus="{} MPa".format(E), PoissonRatio=str(NU))
     fixed = ObjectsFem.makeConstraintFixed(doc, "Fixed")
     fixed.References = [(part, faces.fixed)]
     force = ObjectsFem.makeConstraintForce(doc, "Force")
     force.References = [(part, faces.loaded)]
-    force.Force = FORCE
+    # FreeCAD 1.x: a force quantity (a bare number would be read in its base unit, mN); 0.20: a float in N
+    quantity = force.getTypeIdOfProperty("Force") == "App::PropertyForce"
+    force.Force = FreeCAD.Units.Quantity("{} N".format(FORCE)) if quantity else FORCE
     force.Direction = (part, [faces.direction])
     force.Reversed = faces.reversed
     for obj in (solver, material, fixed, force):

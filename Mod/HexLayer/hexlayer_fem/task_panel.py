@@ -6,6 +6,8 @@ from PySide import QtCore, QtGui  # FreeCAD 0.20's PySide shim: the widgets are 
 from . import icon, mesher, meshing
 
 ERROR_STYLE = "color: #c00000;"
+# QProcess's crash status: PySide2 (FreeCAD 0.20) has it on the class, PySide6 (1.1) on its ExitStatus enum too.
+CRASH_EXIT = getattr(QtCore.QProcess, "CrashExit", None) or QtCore.QProcess.ExitStatus.CrashExit
 WARNING_STYLE = "color: #a05a00;"
 
 
@@ -177,7 +179,7 @@ class TaskPanel:
             self.summary.setStyleSheet("")
             return
         try:
-            self.obj.Proxy.answer = run.answer(code, "\n".join(self.stderr), crashed=status == QtCore.QProcess.CrashExit)
+            self.obj.Proxy.answer = run.answer(code, "\n".join(self.stderr), crashed=status == CRASH_EXIT)
         except Exception as error:  # the object's execute raises it, as a recompute that meshed would
             self.obj.Proxy.answer = error
         self.obj.touch()
