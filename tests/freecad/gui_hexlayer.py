@@ -253,6 +253,30 @@ class LongRun(GuiTest):
         self.assertTrue(Gui.getMainWindow().isVisible(), "FreeCAD goes on")
 
 
+class OkButton(GuiTest):
+    """OK after changing an option meshes in the child process (FreeCAD responsive) and closes the panel when the
+    run ends; OK with nothing changed closes at once."""
+
+    def test_ok_meshes_then_closes(self):
+        mesh = self.run_command(t.add_plate(self.doc))
+        self.press_mesh()
+        self.assertTrue(mesh.isValid(), mesh.Status)
+        hexes = mesh.FemMesh.VolumeCount
+        widget("layers", QtGui.QSpinBox).setValue(3)
+        panel_object = task_panel()
+        self.assertFalse(panel_object.accept(), "not closed yet: meshing")
+        self.assertTrue(panel_object.running())
+        wait_until(lambda: not panel_object.running(), 300)
+        settle()
+        self.assertIsNone(panel(), "closed when the run ended")
+        self.assertEqual((mesh.Layers, mesh.FemMesh.VolumeCount * 2), (3, hexes * 3))
+        Gui.ActiveDocument.setEdit(mesh.Name)
+        settle()
+        self.assertTrue(task_panel().accept(), "nothing changed: closes at once")
+        settle()
+        self.assertIsNone(panel())
+
+
 class MeshSamplePart(GuiTest):
     """The hat section with holes, meshed through the panel inside an analysis; screenshots for the README."""
 

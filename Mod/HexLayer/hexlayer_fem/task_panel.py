@@ -157,7 +157,11 @@ class TaskPanel:
             self.summary.setStyleSheet(ERROR_STYLE)
 
     def read_progress(self):
-        text = self.partial + bytes(self.process.readAllStandardError()).decode(errors="replace")
+        try:
+            data = bytes(self.process.readAllStandardError()) if self.process is not None else b""
+        except RuntimeError:  # the panel, and its QProcess with it, was deleted while the run ended
+            data = b""
+        text = self.partial + data.decode(errors="replace")
         lines = text.split("\n")
         self.partial = lines.pop()
         for line in lines:
@@ -175,6 +179,7 @@ class TaskPanel:
         self.set_running(False)
         if self.cancelled:
             run.discard()
+            self.close_when_done = False
             self.summary.setText("Cancelled: the mesh and the document are as they were.")
             self.summary.setStyleSheet("")
             return
@@ -188,6 +193,10 @@ class TaskPanel:
         if self.obj.isValid():
             self.obj.ViewObject.show()
             self.obj.Part.ViewObject.hide()
+        if self.close_when_done:  # OK was pressed: close as it would have
+            self.close()
+
+    close_when_done = False  # OK started (or waits for) the run: the panel closes when it ends
 
     def cancel(self):
         """Ends the running mesher (within a second: it is killed); the mesh and the document stay as they were."""
@@ -218,9 +227,18 @@ class TaskPanel:
         return QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel
 
     def accept(self):
-        """OK: keeps the options; the mesh follows them at the next recompute."""
-        self.cancel()
+        """OK: keeps the options. If they (or the part) changed since the last meshing, meshes first in the child
+        process, as Mesh does (FreeCAD stays responsive), and closes when that ends; else closes now."""
+        if self.running():
+            self.close_when_done = True
+            return False
+        changed = (self.options() != meshing.options(self.obj) or self.selected_part() != self.obj.Part
+                   or bool({"Touched", "Invalid"} & set(self.obj.State)))
         self.apply()
+        if changed and not self.problem.text():
+            self.close_when_done = True
+            self.mesh()
+            return False
         self.close()
         self.obj.Document.recompute()
         return True
