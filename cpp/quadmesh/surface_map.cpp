@@ -237,25 +237,30 @@ std::vector<int> cutOpen(SurfaceMap& map, const std::vector<int>& path) {
   return copy;
 }
 
-// The mean value system of a surface cut open along `path` (copy[k]: the copy of path[k]) for a function that
-// is harmonic across the cut and on the rims (free there) and jumps by the right-hand side's values on the copies:
-// a copy's row says value(copy) - value(path point); a path point's row holds the weights of both sides; the
-// first path point's row fixes its value (to the right-hand side's, 0).
+// The cotangent (linear finite element) system of a surface cut open along `path` (copy[k]: the copy of path[k])
+// for a function that is harmonic across the cut and free on the rims (its normal derivative 0 there: the
+// stiffness rows of the rim points, which the mean value weights would tilt along the rim and so twist the
+// map) and jumps by the right-hand side's values on the copies: a copy's row says value(copy) - value(path
+// point); a path point's row holds the edges of both sides; the first path point's row fixes its value (to the
+// right-hand side's, 0).
 Eigen::SparseMatrix<double> periodicSystem(const std::vector<std::array<int, 3>>& triangles, const std::vector<Vec3>& x,
                                            const std::vector<int>& path, const std::vector<int>& copy) {
   std::vector<int> rowOf(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) rowOf[i] = static_cast<int>(i);
   for (std::size_t k = 0; k < path.size(); ++k) rowOf[copy[k]] = path[k];
   std::vector<Eigen::Triplet<double>> entries;  // Eigen sums the duplicates
+  auto edge = [&](int a, int b, double w) {  // w (value(b) - value(a)) in a's row, and the other way round
+    for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+      if (rowOf[from] == path.front()) continue;
+      entries.emplace_back(rowOf[from], to, -w), entries.emplace_back(rowOf[from], from, w);
+    }
+  };
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k) {
-      const int i = t[k], j = t[(k + 1) % 3], l = t[(k + 2) % 3], row = rowOf[i];
-      if (row == path.front()) continue;
-      const Vec3 a = x[j] - x[i], b = x[l] - x[i];
-      const double la = std::max(a.norm(), 1e-300), lb = std::max(b.norm(), 1e-300);
-      const double halfTan = std::tan(0.5 * std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0)));
-      entries.emplace_back(row, j, -halfTan / la), entries.emplace_back(row, l, -halfTan / lb);
-      entries.emplace_back(row, i, halfTan / la + halfTan / lb);
+      const int c = t[k], a = t[(k + 1) % 3], b = t[(k + 2) % 3];  // edge a-b, opposite corner c
+      const Vec3 u = x[a] - x[c], v = x[b] - x[c];
+      const double sine = u.cross(v).norm();
+      if (sine > 0) edge(a, b, 0.5 * u.dot(v) / sine);  // half the cotangent of the angle at c
     }
   entries.emplace_back(path.front(), path.front(), 1.0);
   for (std::size_t k = 0; k < path.size(); ++k) entries.emplace_back(copy[k], copy[k], 1.0), entries.emplace_back(copy[k], path[k], -1.0);

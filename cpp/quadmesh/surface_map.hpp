@@ -14,9 +14,10 @@ namespace hexlayer {
 
 // What the outer rim is mapped onto: the square [-1, 1]^2 or the unit circle. Its four corners go
 // to 45, 135, 225 and 315 degrees (the square's corners), the rim between them by arc length.
-// Annulus: a surface with two rims (a tube, a ring) is cut open from rim to rim and mapped onto the
-// rectangle [0, 2 pi] x [log(inner radius), 0] of the logarithmic polar plane: the angle round the
-// ring by arc length along both rims, the two sides of the cut at 0 and 2 pi.
+// Annulus: a surface with two rims (a tube, a ring) is cut open from rim to rim and mapped conformally onto
+// the rectangle [0, 2 pi] x [log(inner radius), 0] of the logarithmic polar plane: the height between the rims
+// harmonic, the angle its harmonic conjugate (free on both rims, 2 pi more on one side of the cut than on the
+// other), so a flat ring gets its log-polar map.
 enum class MapBoundary { Circle, Square, Annulus };
 
 // The chordal surface with each hole filled by a fan of triangles around one added point (its
@@ -38,9 +39,9 @@ struct SurfaceMap {
 
 // Empty unless the chordal surface is a sphere with holes (connected, V - E + F = 2 - loops, rims
 // that do not touch); for the Annulus, unless it has exactly two rims. The annulus's inner radius is
-// exp(-2 pi H / C), H the mean distance between the rims and C their mean length (the conformal
-// modulus of a tube); the cut is the shortest path between two points of the rims facing each other,
-// its points placed at the height a harmonic function between the rims gives them. The rectangle is
+// exp(-M), M its conformal modulus: 2 pi over the Dirichlet energy of the height (a tube's is about 2 pi H / C,
+// H the distance between the rims and C their length); the cut is the shortest path between two points of the
+// rims facing each other. The rectangle is
 // convex, so the mean value map has no fold, and a grid evenly spaced in it has near-square quads. The four corners are the rim's four sharpest (turning more than 50 degrees
 // in the surface), or if it has fewer, its points farthest out along the diagonals of its
 // principal axes; the rim's turning is measured over `window` (about a quad) on either side.

@@ -10,7 +10,7 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kPoorHex = 0.5;              // the nodes of hexes below this scaled Jacobian are smoothed
+constexpr double kPoorHex = 0.6;              // the nodes of hexes below this scaled Jacobian are smoothed
 constexpr int kMaxRounds = 20;                // rounds over those nodes, fewer if a round moves none
 constexpr double kSteps[] = {1.0, 0.5, 0.25};  // shares of the way to the neighbours' mean tried, longest first
 constexpr double kMinGain = 1e-6;             // a move must raise the node's worst hex by at least this
