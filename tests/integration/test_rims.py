@@ -73,7 +73,7 @@ RIM_OFF_FACE = {"tube_cut_45"}
 #    chords of the profile meet (0.71), and a fifth of this small plate's hexes are cap hexes;
 #  - the knife-edged strip: its last hexes taper to 0.3 of the wall, 0.17 / 0.94 measured;
 # and the higher bar for the parts whose chordal surface is one structured grid: the tubes cut at 45
-# degrees (a ring grid from the conformal map of the annulus, 0.51 / 0.991 and 0.57 / 0.980 measured) and the
+# degrees (a ring grid from the conformal map of the annulus, 0.53 / 0.991 and 0.67 / 0.981 measured) and the
 # cap cut by a plane (an O-grid, 0.76 / 0.980).
 QUALITY = {"plate_full_round": (0.5, 0.935), "strip_oblique_3x": (0.15, 0.93), "tube_cut_45": (0.5, 0.97),
            "tube_cut_45_both": (0.5, 0.97), "cap_cut_by_plane": (0.5, 0.97)}
