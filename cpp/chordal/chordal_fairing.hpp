@@ -9,6 +9,7 @@ namespace hexlayer {
 
 // Moves every vertex off the rim along its normal by `iterations` λ|μ Laplacian steps over the
 // facet edges (Taubin 1995: λ = 0.5, μ = -0.53). Normals and radius (Eq. 1-3) must be computed afterwards.
+// [in,out] chordal: its vertices moved; [in] iterations.
 void fairChordalSurface(ChordalSurface& chordal, int iterations);
 
 }  // namespace hexlayer

@@ -37,6 +37,7 @@ std::vector<std::pair<std::pair<int, int>, int>> facetEdgeUses(const ChordalSurf
 std::vector<Vec3> vertexNormals(const ChordalSurface& chordal);
 
 // Normal (Eq. 1-2) and radius (Eq. 3) at every chordal vertex.
+// [in,out] chordal: normals and radius set; [in] tets: the kept tets it was cut from.
 void computeNormalsAndRadius(ChordalSurface& chordal, const TetMesh& tets);
 
 // Unit normal of one facet (Eq. 1): e2 x e1 with e1 = v1 - v2, e2 = v3 - v2 for a triangle and the

@@ -29,6 +29,7 @@ Sheet sheetOf(const CadSolid& cad, const WallSides& sides, const std::vector<int
 
 // Leaves the faces of every sheet but the first out of the walls (they become lateral faces: no
 // nodes are placed on them, and the first sheet's chordal surface runs on under them).
+// [in] sheets (findSheets, the first kept); [in,out] sides: the other sheets' faces made lateral.
 void keepFirstSheet(const std::vector<Sheet>& sheets, WallSides& sides);
 
 }  // namespace hexlayer

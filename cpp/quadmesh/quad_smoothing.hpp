@@ -21,10 +21,11 @@ void dropUnusedNodes(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& 
 
 // Removes the doublets: an interior node in just two quads, which share two of its edges, gives
 // two quads with a corner near 180 degrees whatever the smoothing does; they are merged into one
-// and the node dropped. Returns how many were removed.
+// and the node dropped. Returns how many were removed. [in,out] quads.
 int removeDoublets(QuadMesh& quads);
 
 // Smooths the interior nodes (the rim nodes stay where Gmsh put them). Deterministic.
+// [in,out] quads: interior nodes moved on the surface; [in] chordal, iterations.
 void smoothQuadMesh(QuadMesh& quads, const ChordalLocator& chordal, int iterations);
 
 }  // namespace hexlayer

@@ -22,6 +22,7 @@ struct UntangleResult {
 // quad) reaches a scaled Jacobian of at least `target` where it can. `place(i)` re-places the hex
 // nodes of quad node i from dir[i]; `columnQuality(j)` is the smallest scaled Jacobian of the
 // hexes of quad j. A round is kept only where it raises the worst column it touches.
+// [in] quads; [in,out] dir: the sweep directions, moved; [in] target, place, columnQuality.
 UntangleResult untangleSweep(const QuadMesh& quads, std::vector<Vec3>& dir, double target,
                              const std::function<void(int)>& place, const std::function<double(int)>& columnQuality);
 

@@ -37,7 +37,7 @@ bool isCoplanarTet(const std::array<Vec3, 4>& corners);
 TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes);
 
 // Keeps the tets inside the solid that span top and bottom (also those of zero volume); returns
-// what was dropped.
+// what was dropped. [in,out] mesh: its tets filtered; [in] cad.
 TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad);
 
 }  // namespace hexlayer
