@@ -2,6 +2,7 @@
 // child: its bytes, its exception, its crash or its hang as a failure).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <csignal>
 #include <stdexcept>
 #include <string>
