@@ -97,6 +97,7 @@ CadFaces::CadFaces(const CadSolid& cad) : keepsFirstVertex_(OSD_ThreadPool::Defa
   for (int i = 0; i < cad.faces.Extent(); ++i) {
     faces_.push_back(makeFace(cad, i));
     faces_.back().neighbours = std::move(neighbours[i]);
+    faces_.back().name = inputFaceName(cad, i);
   }
 }
 

@@ -12,7 +12,9 @@
 #include <gp_Pnt.hxx>
 
 #include <memory>
+#include <string>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
@@ -34,6 +36,7 @@ class CadFaces {
   // A face and what BRepExtrema_DistShapeShape would derive from it at every query.
   struct Face {
     TopoDS_Face face;
+    std::string name;               // FreeCAD's name of the input face it is (a piece of): "Face<N>"
     double tolerance = 0;
     Bnd_Box box;                    // optimal, enlarged by the tolerance: the quick test of `lies`
     Bnd_Box extremaBox;             // BRepBndLib::Add, as BRepExtrema boxes the face

@@ -369,8 +369,6 @@ std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, con
   r["boundary_deviation"] = std::move(s.deviationReport);
   if (cad.inputFace.empty()) return std::move(s.groups);
   // Faces split into pieces (mixed_faces.hpp): the input's faces, as the user's part has them.
-  nlohmann::json& worst = r["boundary_deviation"]["worst_face"];
-  if (worst.is_string()) worst = inputFaceName(cad, std::stoi(worst.get<std::string>().substr(4)) - 1);
   for (int& f : mesh.nodeFace) f = inputFaceOf(cad, f);
   return groupsOfInputFaces(std::move(s.groups), cad);
 }

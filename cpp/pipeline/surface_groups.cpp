@@ -92,7 +92,7 @@ nlohmann::json deviationReport(const HexMesh& mesh, const CadFaces& faces, const
                       {"mean_relative", sumRelative / n}, {"off_face_tolerance", above}};
   if (worst >= 0) {
     r["worst_at"] = {mesh.nodes[worst].x(), mesh.nodes[worst].y(), mesh.nodes[worst].z()};
-    r["worst_face"] = faceName(mesh.nodeFace[worst]);
+    r["worst_face"] = faces.face(mesh.nodeFace[worst]).name;
   }
   return r;
 }
@@ -124,7 +124,7 @@ std::size_t faceUnplacedNodes(HexMesh& mesh, const WallProjector& walls, const s
 SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const std::vector<BoundaryFace>& quads,
                             const std::vector<int>& boundary) {
   SurfaceGroups out;
-  for (int f = 0; f < faces.count(); ++f) out.groups.push_back({faceName(f), {}, {}});
+  for (int f = 0; f < faces.count(); ++f) out.groups.push_back({faces.face(f).name, {}, {}});
   std::vector<std::vector<int>> facesOf(mesh.nodes.size());
   std::vector<double> distance(mesh.nodes.size(), 0);
   for (int i : boundary)
