@@ -147,10 +147,11 @@ Column nudged(Column c, const Vec3& towardsCapped) {
   return {c.bottom + shift, c.top + shift};
 }
 
-// Whether a column's straight line lies on a lateral face (its middle within kOnFace half-heights of one).
-bool onLateralFace(const WallProjector& walls, const Column& c) {
+// The lateral face a column's straight line lies on (its middle within kOnFace half-heights of it), if any.
+std::optional<int> lateralFaceOf(const WallProjector& walls, const Column& c) {
   const std::optional<FacePoint> on = walls.project(Side::Lateral, middle(c));
-  return on && (on->point - middle(c)).norm() <= kOnFace * 0.5 * (c.top - c.bottom).norm();
+  if (!on || (on->point - middle(c)).norm() > kOnFace * 0.5 * (c.top - c.bottom).norm()) return std::nullopt;
+  return on->face;
 }
 
 // The rim's edges, each with its outward normal: normal to the edge and to its columns' straight lines (the
@@ -210,20 +211,19 @@ Cap layCap(WallRays& rays, const WallProjector& walls, const Column& c, const Ve
 // A cap beside a rim edge without one (where a round end meets a flat side face): its side face lies on that
 // face, the column it stands on too, and the cap's nodes on the profile on the CAD edge between that face and
 // the profile's; alternate projections put them on both, and on that face for the grouping of the side face.
-void onSideFace(const WallProjector& walls, const Column& column, Cap& cap) {
-  const std::optional<FacePoint> side = walls.project(Side::Lateral, 0.5 * (column.bottom + column.top));
-  if (!side || (side->point - 0.5 * (column.bottom + column.top)).norm() > kMaxSnap * (column.top - column.bottom).norm()) return;
+// [in] side: that face (lateralFaceOf the column); [in,out] cap.
+void onSideFace(const WallProjector& walls, int side, Cap& cap) {
   for (auto& row : cap)
     for (FacePoint& x : row) {
       if (x.face < 0) continue;
       const int profileFace = x.face;
       for (int i = 0; i < kEdgeProjections; ++i) {
-        const std::optional<FacePoint> a = walls.projectOntoFace(side->face, x.point);
+        const std::optional<FacePoint> a = walls.projectOntoFace(side, x.point);
         const std::optional<FacePoint> b = a ? walls.projectOntoFace(profileFace, a->point) : std::nullopt;
         if (!b) break;
         x.point = b->point;
       }
-      x.face = side->face;
+      x.face = side;
     }
 }
 
@@ -305,7 +305,7 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
     for (const RimEdge& e : edges) ++rimAt[e.a], ++rimAt[e.b], cappedAt[e.a] += e.capped, cappedAt[e.b] += e.capped;
     for (RimEdge& e : edges)
       for (const int c : {e.a, e.b})
-        if (e.capped && cappedAt[c] < rimAt[c] && !onLateralFace(walls, ends(mesh, columns[c]))) e.capped = false, dropped = true;
+        if (e.capped && cappedAt[c] < rimAt[c] && !lateralFaceOf(walls, ends(mesh, columns[c]))) e.capped = false, dropped = true;
   }
   // The capped columns: inner nodes back on the straight line, then the caps' nodes and hexes. Inner nodes are
   // inside the part, unless the column has an edge without a cap: then its cap's side face is on the boundary.
@@ -328,7 +328,7 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
       if (on && (on->point - x).norm() <= reach) mesh.nodes[v] = on->point, mesh.nodeFace[v] = on->face;
     };
     for (int k = 1; k < layers; ++k) inner(columns[c][k], end.bottom + (static_cast<double>(k) / layers) * (end.top - end.bottom), kRimSwept);
-    if (side) onSideFace(walls, end, caps[c]);
+    if (const std::optional<int> face = side ? lateralFaceOf(walls, end) : std::nullopt) onSideFace(walls, *face, caps[c]);
     ids[c].push_back(columns[c]);
     for (std::size_t j = 0; j < caps[c].size(); ++j) {
       ids[c].emplace_back();

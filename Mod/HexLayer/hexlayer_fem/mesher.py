@@ -159,6 +159,11 @@ def read_result(path):
                                  face_elements=group("face_elements/"), **{name: array(name) for name in names})
 
 
+def progress_text(line):
+    """The stage's text of one of the child's stderr lines ("geometry: 0.02 s"), or None for any other line."""
+    return line[len(PROGRESS):].rstrip("\n") if line.startswith(PROGRESS) else None
+
+
 def mesh_brep(brep_text, progress=None, force=False, **opts):
     """Meshes the BREP text in a child process (blocking: the headless path and macros); `progress` gets each
     stage's line as the child reports it."""
@@ -166,9 +171,9 @@ def mesh_brep(brep_text, progress=None, force=False, **opts):
     child = subprocess.Popen(run.command(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     stderr = []
     for line in child.stderr:
-        if line.startswith(PROGRESS):
-            if progress is not None:
-                progress(line[len(PROGRESS):].rstrip("\n"))
-        else:
+        stage = progress_text(line)
+        if stage is None:
             stderr.append(line)
+        elif progress is not None:
+            progress(stage)
     return run.answer(child.wait(), "".join(stderr))

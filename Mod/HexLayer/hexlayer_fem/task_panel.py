@@ -165,11 +165,12 @@ class TaskPanel:
         lines = text.split("\n")
         self.partial = lines.pop()
         for line in lines:
-            if line.startswith(mesher.PROGRESS):
-                self.progress.appendPlainText(line[len(mesher.PROGRESS):])
-                self.bar.setValue(min(self.bar.value() + 1, self.bar.maximum()))
-            else:
+            stage = mesher.progress_text(line)
+            if stage is None:
                 self.stderr.append(line)
+            else:
+                self.progress.appendPlainText(stage)
+                self.bar.setValue(min(self.bar.value() + 1, self.bar.maximum()))
 
     def finished(self, code, status):
         """The child ended: cancelled (nothing changes), or its mesh or error goes to the object by a recompute."""
