@@ -6,6 +6,7 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <gp_Lin.hxx>
@@ -35,6 +36,9 @@ constexpr double kMiddleClearance = 1 / 1.3;
 // A face is a wall face when the rays crossing the wall stand for at least this share of its area, and it
 // is at least this share of the wall wide (2 x area / perimeter).
 constexpr double kMinWallShare = 0.5, kMinWallWidth = 0.25;
+// A face beyond a knife edge at most this many walls wide across the edge is an oblique rim: its last hexes
+// are sheared by the cut, to a scaled Jacobian of about 1 / this (the cosine of the cut's tilt) at worst.
+constexpr double kMaxObliqueRim = 3.2;
 
 struct Ray {
   double length;
@@ -139,6 +143,30 @@ struct ParityUnionFind {
 };
 
 
+// Total length of the edges faces a and b (0-based) share.
+double sharedEdgeLength(const CadSolid& cad, int a, int b) {
+  TopTools_IndexedMapOfShape edgesOfA;
+  TopExp::MapShapes(cad.faces(a + 1), TopAbs_EDGE, edgesOfA);
+  double length = 0;
+  TopTools_IndexedMapOfShape edgesOfB;
+  TopExp::MapShapes(cad.faces(b + 1), TopAbs_EDGE, edgesOfB);
+  for (int e = 1; e <= edgesOfB.Extent(); ++e)
+    if (edgesOfA.Contains(edgesOfB(e))) length += edgeLength(edgesOfB(e));
+  return length;
+}
+
+// The smaller face of each knife edge, when it is at most kMaxObliqueRim walls wide across the edge.
+std::vector<int> obliqueRimFaces(const CadSolid& cad, const WallSides& w) {
+  std::vector<int> rims;
+  for (const SheetJoin& k : w.knifeEdges) {
+    const int face = w.faces[k.a].area <= w.faces[k.b].area ? k.a : k.b;
+    const double across = w.faces[face].area / std::max(sharedEdgeLength(cad, k.a, k.b), 1e-30);
+    if (across <= kMaxObliqueRim * w.thickness && std::find(rims.begin(), rims.end(), face) == rims.end()) rims.push_back(face);
+  }
+  std::sort(rims.begin(), rims.end());
+  return rims;
+}
+
 // thicknessEverywhere: the area-weighted median ray length over all faces, the part's thickness
 // where no face is a wall face.
 void requireThin(const WallSides& w, const CadSolid& cad, double thicknessEverywhere) {
@@ -224,7 +252,7 @@ std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, WallSides& w, c
   for (const SideRelation& r : rankedRelations(w, across)) {
     if (uf.unite(r.a, r.b, r.relation)) continue;
     if (r.relation == 1) against[r.a] += r.weight, against[r.b] += r.weight;
-    else if (!r.smooth) ++w.knifeEdges;
+    else if (!r.smooth) w.knifeEdges.push_back({r.a, r.b, false});
     else
       throw geometryError("top and bottom cannot be told apart: " + inputFaceName(cad, r.a) + " and " + inputFaceName(cad, r.b) +
                           " share a smooth edge but lie on opposite sides of the wall");
@@ -281,7 +309,13 @@ WallSides classifyWallSides(const CadSolid& cad) {
   requireThin(w, cad, weightedMedian(everywhere));
 
   w.sheetJoins = sheetJoins(cad);
-  const std::vector<std::pair<int, int>> rootParity = solveSides(cad, w, across);
+  std::vector<std::pair<int, int>> rootParity = solveSides(cad, w, across);
+  w.obliqueRims = obliqueRimFaces(cad, w);
+  if (!w.obliqueRims.empty()) {  // sides again without them
+    for (int f : w.obliqueRims) w.faces[f].side = Side::Lateral;
+    w.knifeEdges.clear(), w.ownSideFaces.clear();
+    rootParity = solveSides(cad, w, across);
+  }
   // In each group of connected wall faces, the parity class that faces +z more is Top.
   std::map<int, double> up;
   for (int f = 0; f < n; ++f)

@@ -35,7 +35,8 @@ struct WallSides {
   double sheetAreaShare = 0;    // area of top + bottom over the whole boundary
   std::vector<SheetJoin> sheetJoins;  // faces sharing a smooth or convex edge (sheet_edges.hpp)
   std::vector<int> ownSideFaces;      // wall faces facing a wall on their own side: the sheet branches there
-  int knifeEdges = 0;                 // convex edges between faces on opposite sides: a tapered end's tip
+  std::vector<SheetJoin> knifeEdges;  // convex edges between faces on opposite sides: a tapered end's tip
+  std::vector<int> obliqueRims;       // wall-facing faces made rims: a rim cut so obliquely it faces a wall
 };
 
 // Measures the wall and sorts the faces into top, bottom and lateral.
@@ -50,6 +51,9 @@ struct WallSides {
 //    other are on opposite sides; faces sharing a convex sharp edge are on the same side unless that
 //    contradicts the rest (the knife edge of a tapered end). A parity union-find takes them in that
 //    order; the side whose faces look more towards +z is called Top.
+//  - A face on the far side of a knife edge that is at most kMaxObliqueRim walls wide across that edge (its
+//    area over the edge's length) is a rim cut obliquely, not a taper: it is made lateral, so the hexes'
+//    last column lies on it (sheared by the cut's angle) instead of the wall running out to its tip.
 //  - Walls whose rays cross to a wall that the relations put on their own side (over 2 % of the wall
 //    area) are where the sheet branches: they are listed in ownSideFaces (see ownSideError).
 // [in] cad: the prepared solid. Throws geometryError when the part is not a thin section or its sides

@@ -233,7 +233,7 @@ QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const Wa
     stage.chordal = cut;
     fairChordalSurface(stage.chordal, fairing);
     computeNormalsAndRadius(stage.chordal, tets);
-    if (sides.knifeEdges > 0) stage.knifeFacets = trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal));
+    if (!sides.knifeEdges.empty()) stage.knifeFacets = trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal));
     const ChordalLocator locator(stage.chordal);
     if (o.sizing == "adaptive") qo.vertexSize = adaptiveSizes(stage.chordal, {size, o.minSize, o.maxSize});
     try {
@@ -499,7 +499,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
                 {"worst_column_before_untangling", swept.untangled.worstBefore}};
   result.mesh = std::move(swept.mesh);
   const WallProjector walls(cad, sides);
-  const RimProjectionStats rim = clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, sides.thickness); });
+  const RimProjectionStats rim = clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, 1.6 * sides.thickness); });
   r["sweep"]["rim_nodes"] = rim.rimNodes;
   r["sweep"]["rim_nodes_on_lateral_faces"] = rim.onLateralFaces;
   r["sweep"]["rim_columns_left_unprojected"] = rim.columnsKept;

@@ -1,5 +1,14 @@
 #include "sweep/rim_projection.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_UniformAbscissa.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <cmath>
 #include <deque>
 #include <optional>
 #include <vector>
@@ -15,6 +24,8 @@ namespace {
 constexpr double kSpoiled = 0.2;  // a hex below this scaled Jacobian that got worse is spoiled
 constexpr double kMaxAlongRim = 0.5;  // share of a rim node's move that may run along the rim ...
 constexpr double kFreeMove = 0.1;     // ... unless the move is shorter than this share of the reach
+constexpr double kLean = 0.1;  // a rim column leans when its wall nodes move over this share of an edge beside
+constexpr double kKeptEdge = 0.25;  // share of its length an edge along the wall keeps beside a leaning rim
 
 // Per node, the sum of the outward normals (scaled by area) of the mesh's boundary side faces around it:
 // at a rim node, the direction in which the rim faces outward.
@@ -89,6 +100,78 @@ std::vector<std::optional<FacePoint>> layColumn(const HexMesh& mesh, const std::
   return to;
 }
 
+// A sharp CAD edge where two lateral faces meet, running from the bottom wall to the top (the corner of two
+// rims, or of a rim and a face cut across it): points at even arc lengths along it from its bottom end.
+struct CornerEdge {
+  std::vector<Vec3> points;
+  int face = -1;  // one of its lateral faces, 0-based
+};
+
+constexpr int kCornerSamples = 64;
+
+std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides, const WallProjector& walls) {
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  const double tolerance = 1e-6 * cad.diagonal;
+  auto on = [&](Side side, const Vec3& p) {
+    const std::optional<FacePoint> q = walls.project(side, p);
+    return q && (q->point - p).norm() <= tolerance;
+  };
+  std::vector<CornerEdge> corners;
+  for (int e = 1; e <= edgeFaces.Extent(); ++e) {
+    const TopoDS_Edge edge = TopoDS::Edge(edgeFaces.FindKey(e));
+    std::vector<int> faces;
+    for (const TopoDS_Shape& f : edgeFaces(e)) faces.push_back(cad.faces.FindIndex(f) - 1);
+    if (faces.size() != 2 || faces[0] == faces[1] || BRep_Tool::Degenerated(edge)) continue;
+    if (sides.faces[faces[0]].side != Side::Lateral || sides.faces[faces[1]].side != Side::Lateral) continue;
+    if (BRep_Tool::Continuity(edge, TopoDS::Face(edgeFaces(e).First()), TopoDS::Face(edgeFaces(e).Last())) >= GeomAbs_G1) continue;
+    BRepAdaptor_Curve curve(edge);
+    GCPnts_UniformAbscissa even(curve, kCornerSamples + 1);
+    if (!even.IsDone() || even.NbPoints() < 2) continue;
+    CornerEdge corner{{}, faces[0]};
+    for (int k = 1; k <= even.NbPoints(); ++k) {
+      const gp_Pnt p = curve.Value(even.Parameter(k));
+      corner.points.emplace_back(p.X(), p.Y(), p.Z());
+    }
+    if (on(Side::Top, corner.points.front()) && on(Side::Bottom, corner.points.back()))
+      std::reverse(corner.points.begin(), corner.points.end());
+    if (on(Side::Bottom, corner.points.front()) && on(Side::Top, corner.points.back())) corners.push_back(std::move(corner));
+  }
+  return corners;
+}
+
+// The point at share t of a polyline's length.
+Vec3 alongPolyline(const std::vector<Vec3>& points, double t) {
+  double total = 0;
+  for (std::size_t k = 1; k < points.size(); ++k) total += (points[k] - points[k - 1]).norm();
+  double left = t * total;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    const double step = (points[k] - points[k - 1]).norm();
+    if (left <= step) return points[k - 1] + (step > 0 ? left / step : 0.0) * (points[k] - points[k - 1]);
+    left -= step;
+  }
+  return points.back();
+}
+
+// Each corner edge takes the rim column whose ends are nearest to its ends (within reach): that column is laid
+// along the edge, its nodes at even arc lengths.
+// [in,out] to: the places of the rim columns.
+void layCorners(const std::vector<CornerEdge>& corners, const HexMesh& mesh, const std::vector<std::vector<int>>& columns,
+                std::vector<std::vector<std::optional<FacePoint>>>& to, double reach) {
+  for (const CornerEdge& corner : corners) {
+    int best = -1;
+    double nearest = 2 * reach;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const double d = (mesh.nodes[columns[c].front()] - corner.points.front()).norm() +
+                       (mesh.nodes[columns[c].back()] - corner.points.back()).norm();
+      if (d < nearest) nearest = d, best = static_cast<int>(c);
+    }
+    if (best < 0) continue;
+    const std::size_t m = columns[best].size() - 1;
+    for (std::size_t k = 0; k <= m; ++k) to[best][k] = FacePoint{alongPolyline(corner.points, static_cast<double>(k) / m), corner.face};
+  }
+}
+
 // The hexes that have a rim node, each once, and per rim column the hexes around its nodes.
 struct RimHexes {
   std::vector<std::size_t> hexes;
@@ -114,6 +197,123 @@ RimHexes rimHexes(const HexMesh& mesh, const std::vector<std::vector<int>>& colu
     r.ofColumn.push_back(std::move(around));
   }
   return r;
+}
+
+// Every column of the mesh (layer 0 to the top), indexed by its bottom node (empty for other nodes).
+std::vector<std::vector<int>> columnsByBottom(const HexMesh& mesh) {
+  std::vector<int> above(mesh.nodes.size(), -1);
+  for (const auto& h : mesh.hexes)
+    for (int k = 0; k < 4; ++k) above[h[k]] = h[k + 4];
+  std::vector<std::vector<int>> columns(mesh.nodes.size());
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    if (mesh.nodeLayer[i] == 0 && above[i] >= 0)
+      for (int v = static_cast<int>(i); v >= 0; v = above[v]) columns[i].push_back(v);
+  return columns;
+}
+
+// The move of a rim column's wall nodes, fading over `rows` rows of the walls beside it.
+struct WallMove {
+  Vec3 bottom = Vec3::Zero(), top = Vec3::Zero();
+  double rows = 0;
+};
+
+// Per bottom node of layer 0, its neighbours in that layer (the edges of the hexes' bottom faces), sorted.
+std::vector<std::vector<int>> bottomNeighbours(const HexMesh& mesh) {
+  std::vector<std::vector<int>> next(mesh.nodes.size());
+  for (const auto& h : mesh.hexes)
+    if (mesh.nodeLayer[h[0]] == 0)
+      for (int k = 0; k < 4; ++k) next[h[k]].push_back(h[(k + 1) % 4]), next[h[(k + 1) % 4]].push_back(h[k]);
+  for (auto& n : next) std::sort(n.begin(), n.end()), n.erase(std::unique(n.begin(), n.end()), n.end());
+  return next;
+}
+
+double leanOf(const WallMove& m) { return std::max(m.bottom.norm(), m.top.norm()); }
+
+// The move of a rim column's wall nodes to where `to` puts them (zero where it puts none).
+WallMove wallMove(const HexMesh& mesh, const std::vector<int>& column, const std::vector<std::optional<FacePoint>>& to) {
+  WallMove m;
+  if (to.front()) m.bottom = to.front()->point - mesh.nodes[column.front()];
+  if (to.back()) m.top = to.back()->point - mesh.nodes[column.back()];
+  return m;
+}
+
+// A column (its bottom node `v`) moved by `move` faded by `fade`: its wall nodes onto the walls (onto the walls'
+// rim edges for a rim column, whose inner nodes go onto the lateral faces), evenly between them.
+// Returns the new places (nullopt where a projection failed).
+std::vector<std::optional<FacePoint>> movedColumn(const HexMesh& mesh, const std::vector<int>& column, const WallMove& move,
+                                                  double fade, bool rim, const WallProjector& walls) {
+  const Vec3 bottom0 = mesh.nodes[column.front()], top0 = mesh.nodes[column.back()];
+  const std::size_t m = column.size() - 1;
+  std::vector<std::optional<FacePoint>> to(column.size());
+  to[0] = rim ? walls.projectOntoRimEdges(Side::Bottom, bottom0 + fade * move.bottom) : walls.project(Side::Bottom, bottom0 + fade * move.bottom);
+  to[m] = rim ? walls.projectOntoRimEdges(Side::Top, top0 + fade * move.top) : walls.project(Side::Top, top0 + fade * move.top);
+  if (!to[0] || !to[m]) return std::vector<std::optional<FacePoint>>(column.size());
+  for (std::size_t k = 1; k < m; ++k) {
+    const double t = static_cast<double>(k) / m;
+    const Vec3 p = (1 - t) * to[0]->point + t * to[m]->point;
+    to[k] = rim ? walls.project(Side::Lateral, p) : FacePoint{p, mesh.nodeFace[column[k]]};
+  }
+  return to;
+}
+
+// Where a rim is cut obliquely, its columns lean (their wall nodes move apart along the walls, by up to 1.5
+// walls on a rim 3 walls wide) and the hexes beside them would fold. The columns beside such a rim move with
+// it: by its move times 1 - j / (rows + 1) in the j-th row (rows enough that an edge along the wall keeps
+// kKeptEdge of its length), their wall nodes projected back onto the walls (onto the walls' rim edges on another rim), their
+// inner nodes evenly on the line between.
+// A rim column leans when its wall nodes move more than kLean of the edges beside it.
+// [in,out] mesh: the nodes of columns off the rim moved; [in] rim: the rim columns; [in,out] to: their places.
+void spreadRimMoves(HexMesh& mesh, const std::vector<std::vector<int>>& rim, std::vector<std::vector<std::optional<FacePoint>>>& to,
+                    const WallProjector& walls) {
+  const std::vector<std::vector<int>> next = bottomNeighbours(mesh);
+  const std::vector<std::vector<int>> columns = columnsByBottom(mesh);
+  std::vector<int> rimOf(mesh.nodes.size(), -1);
+  for (std::size_t c = 0; c < rim.size(); ++c) rimOf[rim[c].front()] = static_cast<int>(c);
+  std::vector<WallMove> move(mesh.nodes.size());
+  std::vector<int> level(mesh.nodes.size(), -1);
+  for (std::size_t c = 0; c < rim.size(); ++c) {  // the rim columns that lean
+    const int v = rim[c].front();
+    if (next[v].empty() || !to[c].front() || !to[c].back()) continue;
+    WallMove m = wallMove(mesh, rim[c], to[c]);
+    double edge = 0;  // the mean length of the edges along the wall at the rim node
+    for (int n : next[v]) edge += (mesh.nodes[n] - mesh.nodes[v]).norm();
+    edge /= next[v].size();
+    const double lean = leanOf(m) / std::max(edge, 1e-300);
+    m.rows = std::max(std::ceil(lean / (1 - kKeptEdge)) - 1, 0.0);
+    if (lean > kLean) move[v] = m, level[v] = 0;
+  }
+  std::vector<int> front;
+  for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
+    if (level[v] == 0) front.push_back(static_cast<int>(v));
+  for (int j = 1; !front.empty(); ++j) {
+    std::vector<int> reached;
+    for (int v : front)
+      for (int n : next[v])
+        if (level[n] < 0 && !columns[n].empty()) level[n] = j, reached.push_back(n);
+    std::sort(reached.begin(), reached.end());
+    reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
+    std::vector<int> kept;
+    for (int n : reached) {
+      WallMove mean;
+      int from = 0;
+      for (int p : next[n])
+        if (level[p] == j - 1 && move[p].rows >= j) mean.bottom += move[p].bottom, mean.top += move[p].top, mean.rows += move[p].rows, ++from;
+      if (from == 0) continue;
+      move[n] = {mean.bottom / from, mean.top / from, mean.rows / from};
+      kept.push_back(n);
+    }
+    for (int n : kept) {
+      const double fade = 1 - j / (move[n].rows + 1);
+      if (rimOf[n] >= 0) {
+        to[rimOf[n]] = movedColumn(mesh, columns[n], move[n], fade, true, walls);
+        continue;
+      }
+      const std::vector<std::optional<FacePoint>> at = movedColumn(mesh, columns[n], move[n], fade, false, walls);
+      for (std::size_t k = 0; k < at.size(); ++k)
+        if (at[k]) mesh.nodes[columns[n][k]] = at[k]->point, mesh.nodeFace[columns[n][k]] = at[k]->face;
+    }
+    front = std::move(kept);
+  }
 }
 
 }  // namespace
@@ -145,8 +345,10 @@ RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSide
   for (long c = 0; c < static_cast<long>(columns.size()); ++c) {
     to[c] = layColumn(mesh, columns[c], rimFrame(mesh, columns[c], normal), rays[threadIndex()], walls, reach);
   }
+  layCorners(cornerEdges(cad, sides, walls), mesh, columns, to, reach);
   // Then all columns at once, and back where the sweep put them those that spoil a hex (below a scaled
   // Jacobian of 0.2 and worse than before), until none does: the result does not depend on the order.
+  spreadRimMoves(mesh, columns, to, walls);
   RimProjectionStats stats;
   const RimHexes around = rimHexes(mesh, columns);
   std::vector<double> before(mesh.hexes.size(), 1.0);

@@ -1,7 +1,11 @@
 // Top, bottom and lateral faces (geometry/wall_sides.hpp) on rims of every shape: a ray crosses the wall
 // when its middle is as far from the whole boundary as from its ends, decided per sample.
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gtest/gtest.h>
 
@@ -64,10 +68,12 @@ TEST(WallSides, FullRoundEndsAreLateral) {
   EXPECT_NEAR(w.thickness, 2.0, 1e-3);
 }
 
-// Chamfers at 45 degrees and a rim cut at 45 degrees are rim faces however wide; only the faces parallel to
-// the walls' plane are walls.
+// Chamfers at 45 degrees and rims cut at 45 and 70.5 degrees are rim faces however wide; only the faces
+// parallel to the walls' plane are walls. The cut at 70.5 degrees (3 walls wide) first faces the opposite wall
+// across a knife edge; being narrower than kMaxObliqueRim walls across that edge, it is made a rim.
 TEST(WallSides, ChamferedAndObliqueRimsAreLateral) {
-  for (const char* part : {"plate_chamfer_both_sides", "plate_chamfer_one_side", "strip_oblique_45", "plate_split_rim"}) {
+  for (const char* part : {"plate_chamfer_both_sides", "plate_chamfer_one_side", "strip_oblique_45", "strip_oblique_3x",
+                           "plate_split_rim"}) {
     const CadSolid cad = readSample(std::string("Resources/samples/rims/") + part + ".step");
     const WallSides w = classifyWallSides(cad);
     for (int f = 0; f < cad.faces.Extent(); ++f) {
@@ -76,18 +82,25 @@ TEST(WallSides, ChamferedAndObliqueRimsAreLateral) {
       const bool horizontal = std::abs(std::abs(s.Plane().Axis().Direction().Z()) - 1) < 1e-9;
       EXPECT_EQ(w.faces[f].side != Side::Lateral, horizontal) << part << " Face" << f + 1;
     }
-    EXPECT_EQ(w.knifeEdges, 0) << part;
+    EXPECT_TRUE(w.knifeEdges.empty()) << part;
+    EXPECT_EQ(w.obliqueRims.size(), std::string(part) == "strip_oblique_3x" ? 2u : 0u) << part;
   }
 }
 
-// A rim cut at 70.5 degrees (3 walls wide) makes a knife edge: the oblique face faces the opposite wall
-// across the taper, so it is a wall, and the convex edge where it meets that wall gives way.
+// A blade: a 60 x 20 strip, 2 thick, whose top slopes down to the bottom over its last 20 mm (a face 10 walls
+// wide across its knife edge): the slope is a wall that tapers out, not a rim.
 TEST(WallSides, KnifeEdgeTapersTheWall) {
-  const CadSolid cad = readSample("Resources/samples/rims/strip_oblique_3x.step");
+  BRepBuilderAPI_MakePolygon profile;
+  for (const gp_Pnt& p : {gp_Pnt(0, 0, 0), gp_Pnt(60, 0, 0), gp_Pnt(40, 0, 2), gp_Pnt(0, 0, 2)}) profile.Add(p);
+  profile.Close();
+  const TopoDS_Shape blade = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(0, 20, 0)).Shape();
+  TopExp_Explorer solid(blade, TopAbs_SOLID);
+  const CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
   const WallSides w = classifyWallSides(cad);
   EXPECT_EQ(count(w, Side::Top), 2);
-  EXPECT_EQ(count(w, Side::Bottom), 2);
-  EXPECT_EQ(w.knifeEdges, 2);
+  EXPECT_EQ(count(w, Side::Bottom), 1);
+  EXPECT_EQ(w.knifeEdges.size(), 1u);
+  EXPECT_TRUE(w.obliqueRims.empty());
   EXPECT_TRUE(w.ownSideFaces.empty());
 }
 
