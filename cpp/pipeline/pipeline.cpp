@@ -48,6 +48,9 @@ constexpr double kMinReach = 0.25, kMaxReach = 4;  // a wall hit counts between 
 // Where top and bottom walls meet at a knife edge, the chordal surface ends where the wall is thinner than
 // this share of its median thickness.
 constexpr double kKnifeRadius = 0.3;
+// How far a rim node may move onto the rim faces, in walls: half of a rim cut obliquely 3.2 walls wide
+// (wall_sides.hpp), with room.
+constexpr double kRimReach = 1.6;
 constexpr double kBytesPerHex = 2000;  // plate.step at size 0.3: 64 312 hexes, 73.5 MB peak (x 2 for safety)
 
 // The process's peak resident memory so far, in MiB (Linux's ru_maxrss is in KiB).
@@ -499,7 +502,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
                 {"worst_column_before_untangling", swept.untangled.worstBefore}};
   result.mesh = std::move(swept.mesh);
   const WallProjector walls(cad, sides);
-  const RimProjectionStats rim = clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, 1.6 * sides.thickness); });
+  const RimProjectionStats rim = clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, kRimReach * sides.thickness); });
   r["sweep"]["rim_nodes"] = rim.rimNodes;
   r["sweep"]["rim_nodes_on_lateral_faces"] = rim.onLateralFaces;
   r["sweep"]["rim_columns_left_unprojected"] = rim.columnsKept;
