@@ -917,6 +917,65 @@ def taper_plate():
                                             "x = 60, square ends", wall="3 → 1 (linear in x)")
 
 
+def plate_rounded_holes(L, W, holes):
+    """Plate L x W x 2 with vertical through holes whose edges are filleted:
+    `holes` = (x, y, R, r_top, r_bottom), a fillet radius 0 leaving that edge
+    sharp. Every fillet is made in one OpenCASCADE fillet.
+
+    Volume: the plate minus the holes' cylinders minus, per fillet, the
+    material it takes off the hole's concave edge: the spandrel A = r^2 (1 -
+    pi/4) turned about the hole's axis (Pappus) at the distance of its
+    centroid, R + r - 2 r / (3 (4 - pi)) (the fillet's centre is at R + r;
+    the spandrel's centroid lies 2 r / (3 (4 - pi)) from it towards the hole,
+    as in plate_rim_fillets):
+        V = L W t - sum pi R^2 t - sum 2 pi (R + r - 2 r / (3 (4 - pi))) A.
+    """
+    t = 2.0
+    box = occ.addBox(0, 0, 0, L, W, t)
+    cylinders = [(3, occ.addCylinder(x, y, -1, 0, 0, t + 2, R)) for x, y, R, _, _ in holes]
+    vol = one_volume(occ.cut([(3, box)], cylinders)[0])
+    occ.synchronize()
+    edges, radii, removed = [], [], 0.0
+    for x, y, R, r_top, r_bottom in holes:
+        for z, r in ((t, r_top), (0.0, r_bottom)):
+            if r <= 0:
+                continue
+            assert 2 * r < t
+            found = [c for c in horizontal_curves(vol, z)
+                     if abs(gmsh.model.getBoundingBox(1, c)[0] - (x - R)) < 1e-3
+                     and abs(gmsh.model.getBoundingBox(1, c)[4] - (y + R)) < 1e-3]
+            assert len(found) == 1, (x, y, z, found)
+            edges.append(found[0])
+            radii.append(r)
+            removed += 2 * PI * (R + r - 2 * r / (3 * (4 - PI))) * r * r * (1 - PI / 4)
+    one_volume(occ.fillet([vol], edges, radii))
+    return L * W * t - sum(PI * R * R * t for _, _, R, _, _ in holes) - removed
+
+
+def plate_hole_full_round():
+    return plate_rounded_holes(50.0, 30.0, [(25.0, 15.0, 6.0, 0.98, 0.98)]), dict(
+        dims="50 × 30 × 2 plate, one Ø12 through hole at (25, 15) whose top and "
+             "bottom edges are filleted r = 0.98 (0.49 t: a near-full-round hole rim)",
+        wall="2")
+
+
+def plate_hole_fillet_one_side():
+    return plate_rounded_holes(50.0, 30.0, [(25.0, 15.0, 6.0, 0.7, 0.0)]), dict(
+        dims="50 × 30 × 2 plate, one Ø12 through hole at (25, 15) whose top edge "
+             "only is filleted r = 0.7 (0.35 t)",
+        wall="2")
+
+
+def plate_holes_rounded():
+    return plate_rounded_holes(70.0, 40.0, [(14.0, 20.0, 5.0, 0.98, 0.98), (36.0, 22.0, 4.0, 0.8, 0.0),
+                                            (56.0, 14.0, 3.0, 0.5, 0.5), (56.0, 30.0, 3.5, 0.0, 0.6)]), dict(
+        dims="70 × 40 × 2 plate, four through holes with filleted edges: Ø10 at "
+             "(14, 20) near-full-round (r = 0.98 both edges), Ø8 at (36, 22) top "
+             "edge r = 0.8 (0.4 t), Ø6 at (56, 14) both edges r = 0.5, Ø7 at (56, 30) "
+             "bottom edge only r = 0.6",
+        wall="2")
+
+
 # Written after PARTS, in the same session (see the note on PARTS).
 RIM_PARTS = [
     ("lbracket_round_ends", lbracket_round_ends),
@@ -937,6 +996,9 @@ RIM_PARTS = [
     ("taper_plate", taper_plate),
     ("strip_skin_round", strip_skin_round),
     ("strip_skin_round_thin", strip_skin_round_thin),
+    ("plate_hole_full_round", plate_hole_full_round),
+    ("plate_hole_fillet_one_side", plate_hole_fillet_one_side),
+    ("plate_holes_rounded", plate_holes_rounded),
 ]
 
 RIM_README_HEAD = [
@@ -967,7 +1029,9 @@ RIM_README_NOTES = [
     "spherical faces hold the pole (+Z) as a degenerate edge. `strip_skin_round*`",
     "draw the top wall and the full-round end as one rational B-spline curve",
     "(exact line and quarter circles, knots at the joins), extruded: one face that",
-    "is partly wall and partly rim.",
+    "is partly wall and partly rim. `plate_hole*` and `plate_holes_rounded` are",
+    "plates with through holes whose top and / or bottom edges are filleted (a",
+    "concave rounded rim; volumes by Pappus, see `plate_rounded_holes`).",
     "",
     "Made by `scripts/make_samples.py` after the parts in `..` (run it with",
     "`/usr/bin/python3`, which needs the Debian package `python3-gmsh`); licence",

@@ -134,6 +134,68 @@ void requireManifold(const ChordalSurface& s, double unit) {
 
 }  // namespace
 
+std::size_t dropUnusedVertices(ChordalSurface& s) {
+  std::vector<int> renumber(s.vertices.size(), -1);
+  for (const auto& f : s.facets)
+    for (int v : f)
+      if (v >= 0) renumber[v] = 0;
+  ChordalSurface kept;
+  const bool measured = s.normals.size() == s.vertices.size() && s.radius.size() == s.vertices.size();
+  for (std::size_t v = 0; v < s.vertices.size(); ++v)
+    if (renumber[v] == 0) {
+      renumber[v] = static_cast<int>(kept.vertices.size());
+      kept.vertices.push_back(s.vertices[v]), kept.tetEdge.push_back(s.tetEdge[v]);
+      if (measured) kept.normals.push_back(s.normals[v]), kept.radius.push_back(s.radius[v]);
+    }
+  for (auto f : s.facets) {
+    for (int& v : f) v = v >= 0 ? renumber[v] : -1;
+    kept.facets.push_back(f);
+    ++(f[3] < 0 ? kept.triangles : kept.quads);
+  }
+  s = std::move(kept);
+  return s.facets.size();
+}
+
+std::size_t dropPinchedFacets(ChordalSurface& s) {
+  std::size_t dropped = 0;
+  for (;;) {
+    std::vector<int> rimDegree(s.vertices.size(), 0);
+    for (const auto& [edge, uses] : facetEdgeUses(s))
+      if (uses == 1) ++rimDegree[edge.first], ++rimDegree[edge.second];
+    // Per pinched vertex, its facets; two of them are in one fan when they share an edge at the vertex.
+    std::map<int, std::vector<int>> around;
+    for (std::size_t f = 0; f < s.facets.size(); ++f)
+      for (int v : s.facets[f])
+        if (v >= 0 && rimDegree[v] > 2) around[v].push_back(static_cast<int>(f));
+    std::vector<char> drop(s.facets.size(), 0);
+    for (const auto& [v, facets] : around) {
+      UnionFind fans(static_cast<int>(facets.size()));
+      std::map<int, int> byOtherEnd;  // the other end of an edge at v: the first facet seen with it
+      for (std::size_t i = 0; i < facets.size(); ++i) {
+        const auto& f = s.facets[facets[i]];
+        const int n = f[3] < 0 ? 3 : 4;
+        const int at = static_cast<int>(std::find(f.begin(), f.begin() + n, v) - f.begin());
+        for (int w : {f[(at + 1) % n], f[(at + n - 1) % n]})
+          if (auto [it, fresh] = byOtherEnd.emplace(w, static_cast<int>(i)); !fresh) fans.unite(it->second, static_cast<int>(i));
+      }
+      std::map<int, int> size;  // per fan (its root), its facets
+      for (std::size_t i = 0; i < facets.size(); ++i) ++size[fans.find(static_cast<int>(i))];
+      int largest = -1;
+      for (const auto& [root, n] : size)
+        if (largest < 0 || n > size[largest]) largest = root;
+      for (std::size_t i = 0; i < facets.size(); ++i)
+        if (fans.find(static_cast<int>(i)) != largest) drop[facets[i]] = 1;
+    }
+    const std::size_t before = s.facets.size();
+    std::size_t f = 0;
+    s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), [&](const auto&) { return drop[f++]; }), s.facets.end());
+    if (s.facets.size() == before) break;
+    dropped += before - s.facets.size();
+  }
+  if (dropped) dropUnusedVertices(s);
+  return dropped;
+}
+
 Vec3 facetNormal(const ChordalSurface& s, const std::array<int, 4>& f) {
   const auto& v = s.vertices;
   const bool triangle = f[3] < 0;
@@ -172,6 +234,7 @@ ChordalSurface buildChordalSurface(const TetMesh& m, double unit) {
   if (s.facets.empty()) throw geometryError("empty chordal surface: no tet spans the top and bottom walls");
   collapseDegenerateFacets(s, 1e-9 * boxDiagonal(m.nodes));
   requireManifold(s, unit);
+  s.pinchedFacetsDropped = dropPinchedFacets(s);
   return s;
 }
 
@@ -206,26 +269,7 @@ std::size_t trimKnifeEdges(ChordalSurface& s, double minRadius) {
     s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), thin), s.facets.end());
     dropped = s.facets.size() < n;
   }
-  if (s.facets.size() == before) return 0;
-  std::vector<int> renumber(s.vertices.size(), -1);
-  for (const auto& f : s.facets)
-    for (int v : f)
-      if (v >= 0) renumber[v] = 0;
-  ChordalSurface kept;
-  for (std::size_t v = 0; v < s.vertices.size(); ++v)
-    if (renumber[v] == 0) {
-      renumber[v] = static_cast<int>(kept.vertices.size());
-      kept.vertices.push_back(s.vertices[v]), kept.tetEdge.push_back(s.tetEdge[v]);
-      kept.normals.push_back(s.normals[v]), kept.radius.push_back(s.radius[v]);
-    }
-  for (auto f : s.facets) {
-    for (int& v : f) v = v >= 0 ? renumber[v] : -1;
-    kept.facets.push_back(f);
-    ++(f[3] < 0 ? kept.triangles : kept.quads);
-  }
-  const std::size_t dropped = before - kept.facets.size();
-  s = std::move(kept);
-  return dropped;
+  return before - dropUnusedVertices(s);
 }
 
 std::vector<Vec3> vertexNormals(const ChordalSurface& s) {

@@ -19,12 +19,15 @@ struct ChordalSurface {
   std::vector<Vec3> normals;                 // unit average normal n̄ per vertex (Eq. 2)
   std::vector<double> radius;                // r = n̄ · (v_t - v) per vertex (Eq. 3)
   std::size_t triangles = 0, quads = 0;
+  std::size_t pinchedFacetsDropped = 0;      // facets of ears where the rim passed a vertex twice
 };
 
 // Cuts every tet that spans top and bottom: a 3-1 or 1-3 tet gives a triangle, a 2-2 tet a quad
 // (§5, Figure 3). A chordal vertex belongs to its tet edge, so neighbouring tets share it and the
 // facets form one connected surface. The side labels of the nodes (from the CAD faces) decide the
 // cut, so every tet is "simple" here: no incremental processing of complex tets (§5.4) is needed.
+// Where the rim passes a vertex twice (an ear of one or two tets touching the rest at the vertex only, beside
+// a concave rim such as a hole's rounded one), the smaller fans of facets there are dropped.
 // Throws geometryError if the surface is non-manifold (an edge in more than two facets), naming where in
 // the input's units: the tets' lengths are `unit` per input length (CadSolid::unit).
 ChordalSurface buildChordalSurface(const TetMesh& tets, double unit = 1);
@@ -50,6 +53,15 @@ Vec3 facetNormal(const ChordalSurface& chordal, const std::array<int, 4>& facet)
 // unused vertices with them, so the mesh ends where the wall is still 2 x minRadius thick.
 // [in,out] chordal: with normals and radius computed. Returns the number of facets dropped.
 std::size_t trimKnifeEdges(ChordalSurface& chordal, double minRadius);
+
+// Keeps the vertices the facets use, renumbered in their order (with their normals and radius if computed).
+// [in,out] chordal. Returns the number of facets.
+std::size_t dropUnusedVertices(ChordalSurface& chordal);
+
+// Drops the facets round each rim vertex where the rim passes twice (fans of facets touching at the vertex
+// only), but the largest fan, until the rim passes every vertex once; and the vertices no facet uses then.
+// [in,out] chordal. Returns the number of facets dropped.
+std::size_t dropPinchedFacets(ChordalSurface& chordal);
 
 // Area of the chordal surface (a quad facet as the two triangles (0,1,2) and (0,2,3)).
 double chordalArea(const ChordalSurface& chordal);

@@ -19,8 +19,8 @@ int sideIndex(Side side) { return static_cast<int>(side) + 1; }
 }  // namespace
 
 WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides) {
-  auto piece = [](const TopoDS_Shape& shape, int face) {
-    Piece w{shape, face, {}};
+  auto piece = [](const TopoDS_Shape& shape, int face, int lateral = -1) {
+    Piece w{shape, face, lateral, {}};
     BRepBndLib::AddOptimal(shape, w.box, false, false);  // exact geometry, not the triangulation
     return w;
   };
@@ -28,14 +28,13 @@ WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides) {
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
   for (int e = 1; e <= edgeFaces.Extent(); ++e) {
-    int wall = -1;
-    bool lateral = false;
+    int wall = -1, lateral = -1;
     for (const TopoDS_Shape& face : edgeFaces(e)) {
       const int f = cad.faces.FindIndex(face) - 1;
-      if (sides.faces[f].side == Side::Lateral) lateral = true;
+      if (sides.faces[f].side == Side::Lateral) lateral = f;
       else if (wall < 0) wall = f;
     }
-    if (lateral && wall >= 0) rimEdges_[sideIndex(sides.faces[wall].side)].push_back(piece(edgeFaces.FindKey(e), wall));
+    if (lateral >= 0 && wall >= 0) rimEdges_[sideIndex(sides.faces[wall].side)].push_back(piece(edgeFaces.FindKey(e), wall, lateral));
   }
 }
 
@@ -50,6 +49,13 @@ std::optional<FacePoint> WallProjector::projectOntoFace(int face, const Vec3& p)
 
 std::optional<FacePoint> WallProjector::projectOntoRimEdges(Side side, const Vec3& p) const {
   return nearest(rimEdges_[sideIndex(side)], p);
+}
+
+std::optional<FacePoint> WallProjector::projectOntoRimEdgesOf(Side side, int lateral, const Vec3& p) const {
+  std::vector<Piece> of;
+  for (const Piece& edge : rimEdges_[sideIndex(side)])
+    if (edge.lateral == lateral) of.push_back(edge);
+  return nearest(of, p);
 }
 
 // Pieces nearest first by their boxes; a piece whose box is farther than the best point so far is skipped.

@@ -30,10 +30,15 @@ class WallProjector {
   // with the wall face of that edge; nullopt if the wall meets no lateral face.
   std::optional<FacePoint> projectOntoRimEdges(Side side, const Vec3& p) const;
 
+  // The same, on the edges where the `side` wall meets the one lateral face `lateral` (0-based); nullopt if
+  // they do not meet.
+  std::optional<FacePoint> projectOntoRimEdgesOf(Side side, int lateral, const Vec3& p) const;
+
  private:
   struct Piece {
     TopoDS_Shape shape;  // a face, or an edge of a face
     int face;            // in CadSolid::faces, 0-based
+    int lateral = -1;    // for a rim edge, the lateral face on its other side
     Bnd_Box box;         // contains the shape: its distance to p bounds the shape's from below
   };
   static std::optional<FacePoint> nearest(const std::vector<Piece>& pieces, const Vec3& p);

@@ -13,6 +13,7 @@
 #include "bubbles/bubble_packing.hpp"
 #include "core/groups.hpp"
 #include "chordal/chordal_fairing.hpp"
+#include "chordal/chordal_rim.hpp"
 #include "chordal/chordal_surface.hpp"
 #include "core/error.hpp"
 #include "geometry/cad_faces.hpp"
@@ -483,9 +484,26 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
   const TetFilterCounts dropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
   r["tets"] = {{"delaunay", dropped.delaunay}, {"outside", dropped.outside}, {"flat", dropped.flat}, {"coplanar_kept", dropped.coplanar}, {"kept", tets.tets.size()}};
-  const ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets, cad.unit); });
+  ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets, cad.unit); });
   r["tet_classes"] = classifyTets(tets);
-  r["chordal_surface"] = {{"triangles", cut.triangles}, {"quads", cut.quads}, {"vertices", cut.vertices.size()}};
+  r["chordal_surface"] = {{"triangles", cut.triangles}, {"quads", cut.quads}, {"vertices", cut.vertices.size()},
+                          {"pinched_facets_dropped", cut.pinchedFacetsDropped}};
+  const WallProjector walls(cad, sides);
+  const RimSnapStats snap = clock.run("chordal_rim", [&] {
+    const RimMiddle middle = [&](const Vec3& p) -> std::optional<Vec3> {
+      const std::optional<FacePoint> rim = walls.project(Side::Lateral, p);
+      if (!rim) return std::nullopt;
+      std::optional<FacePoint> top = walls.projectOntoRimEdgesOf(Side::Top, rim->face, p);
+      std::optional<FacePoint> bottom = walls.projectOntoRimEdgesOf(Side::Bottom, rim->face, p);
+      if (!top) top = walls.projectOntoRimEdges(Side::Top, p);  // a rim face on one wall only: a fillet of a round
+      if (!bottom) bottom = walls.projectOntoRimEdges(Side::Bottom, p);
+      if (!top || !bottom) return std::nullopt;
+      return 0.5 * (top->point + bottom->point);
+    };
+    return snapRimBetweenWallEdges(cut, middle, sides.thickness);
+  });
+  r["chordal_surface"]["rim"] = {{"vertices", snap.rimVertices}, {"moved", snap.moved}, {"spikes_dropped", snap.spikesDropped},
+                                 {"largest_move", snap.largestMove / cad.unit}};
   const double size = chooseSize(o, sides, chordalArea(cut), r);
   r["size"] = size;
   r["sizing"] = o.sizing;
@@ -501,7 +519,6 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   r["sweep"] = {{"untangled_regions", swept.untangled.regions}, {"untangling_rounds_kept", swept.untangled.improved},
                 {"worst_column_before_untangling", swept.untangled.worstBefore}};
   result.mesh = std::move(swept.mesh);
-  const WallProjector walls(cad, sides);
   const RimProjectionStats rim = clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, kRimReach * sides.thickness); });
   r["sweep"]["rim_nodes"] = rim.rimNodes;
   r["sweep"]["rim_nodes_on_lateral_faces"] = rim.onLateralFaces;

@@ -46,7 +46,10 @@ std::vector<std::vector<int>> rimLoops(const std::vector<std::array<int, 3>>& tr
   for (std::size_t p = 0; p < points; ++p) {
     if (next[p] < 0 || seen[p]) continue;
     loops.emplace_back();
-    for (int q = static_cast<int>(p); !seen[q]; q = next[q]) seen[q] = 1, loops.back().push_back(q);
+    for (int q = static_cast<int>(p); !seen[q]; q = next[q]) {
+      if (next[q] < 0) return {};  // a rim edge that no other follows: the rim is not oriented as one
+      seen[q] = 1, loops.back().push_back(q);
+    }
   }
   const long euler = static_cast<long>(points) - static_cast<long>(uses.size()) + static_cast<long>(triangles.size());
   if (loops.empty() || euler != 2 - static_cast<long>(loops.size())) return {};

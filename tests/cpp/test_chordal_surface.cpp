@@ -370,3 +370,33 @@ TEST(ChordalSurface, CoplanarTetsOfParallelRowsLeaveNoSlit) {
   for (const auto& f : s.facets) EXPECT_GT(facetNormal(s, f).norm(), 0.5) << "no degenerate facet is left";
   for (const Vec3& v : s.vertices) EXPECT_NEAR(v.z(), 1.0, 1e-12);
 }
+
+namespace {
+
+// A flat surface of the given facets (z = 0) on the vertices, tetEdge left empty.
+ChordalSurface flatSurface(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 4>>& facets) {
+  ChordalSurface s;
+  s.vertices = vertices;
+  s.tetEdge.assign(vertices.size(), {0, 0});
+  s.facets = facets;
+  for (const auto& f : facets) ++(f[3] < 0 ? s.triangles : s.quads);
+  return s;
+}
+
+}  // namespace
+
+// Two squares of two triangles each touching at the vertex (1, 1) only, and an ear: one triangle touching the
+// first square at its vertex (0, 1). The rim passes (1, 1) and (0, 1) twice; the smaller fan goes at each: the
+// ear, then the second square (2 facets against 2: the first in facet order stays). One square is left, its
+// unused vertices dropped and the rest renumbered in order.
+TEST(ChordalSurface, PinchedRimKeepsTheLargestFanAtEachVertex) {
+  ChordalSurface s = flatSurface({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}, {-1, 2, 0}, {-1, 1.5, 0}},
+                                 {{0, 1, 2, -1}, {0, 2, 3, -1}, {2, 4, 5, -1}, {2, 5, 6, -1}, {3, 7, 8, -1}});
+  EXPECT_EQ(dropPinchedFacets(s), 3u);
+  ASSERT_EQ(s.facets.size(), 2u);
+  EXPECT_EQ(s.vertices.size(), 4u);
+  EXPECT_EQ(s.facets[0], (std::array<int, 4>{0, 1, 2, -1}));
+  EXPECT_EQ(s.facets[1], (std::array<int, 4>{0, 2, 3, -1}));
+  EXPECT_EQ(s.triangles, 2u);
+  EXPECT_EQ(dropPinchedFacets(s), 0u) << "nothing pinched is left";
+}

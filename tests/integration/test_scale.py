@@ -1,8 +1,9 @@
 """Issue 15: scale does not matter. The same part in metres (x 0.001), in millimetres and x 1000 gives the same
 mesh, scaled: the same numbers of hexes and nodes, the same quad layout, the same quality and volume error,
 the mesh's extent scaled with the part's, and every boundary node on its CAD face within the CAD's own
-tolerance (1e-7 of the file's unit: in metres, 7e-5 of the hat's wall). Three parts: the hat section with full-round ends (bends, round rims), the spherical cap cut by a
-plane and the strip whose top wall and round end are one B-spline face (split where the wall meets the rim), each scaled with Gmsh's OpenCASCADE (which writes its surfaces as B-splines at every scale: the case
+tolerance (1e-7 of the file's unit: in metres, 7e-5 of the hat's wall). Four parts: the hat section with full-round ends (bends, round rims), the spherical cap cut by a
+plane, the strip whose top wall and round end are one B-spline face (split where the wall meets the rim) and the
+plate with a near-full-round hole (its chordal rim moved between the walls' rim edges), each scaled with Gmsh's OpenCASCADE (which writes its surfaces as B-splines at every scale: the case
 where wall nodes landed 2.4 walls off their faces in metres before the part was met at one size).
 
 Not byte for byte: 0.001 is not a binary fraction, and the bubble packing amplifies the last bit of a
@@ -22,7 +23,7 @@ import numpy as np
 import harness
 from inp import read_inp
 
-PARTS = ["hat_round_ends", "cap_cut_by_plane", "strip_skin_round"]
+PARTS = ["hat_round_ends", "cap_cut_by_plane", "strip_skin_round", "plate_hole_full_round"]
 SCALES = [0.001, 1.0, 1000.0]
 
 

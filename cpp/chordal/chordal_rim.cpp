@@ -1,0 +1,174 @@
+#include "chordal/chordal_rim.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace hexlayer {
+namespace {
+
+constexpr double kMinAreaShare = 0.5;  // a facet may not shrink below this share of its area
+constexpr double kMaxAlongRim = 0.5;   // share of a rim vertex's move that may run along the rim
+constexpr double kMinMove = 0.1;       // share of the reach below which a rim vertex stays: it is on its rim
+
+// Area vector of a facet (half the cross product of its diagonals for a quad): its normal times its area.
+Vec3 areaVector(const ChordalSurface& s, const std::array<int, 4>& f) {
+  const auto& v = s.vertices;
+  if (f[3] < 0) return 0.5 * (v[f[1]] - v[f[0]]).cross(v[f[2]] - v[f[0]]);
+  return 0.5 * (v[f[2]] - v[f[0]]).cross(v[f[3]] - v[f[1]]);
+}
+
+bool spoiled(const Vec3& before, const Vec3& after) {
+  return after.dot(before) <= kMinAreaShare * before.squaredNorm();
+}
+
+// The rim's edges in the direction of their facets (the surface on their left seen from the top): per
+// vertex, the next and the previous rim vertex (-1 if none, or if the rim passes it twice).
+struct RimWalk {
+  std::vector<int> next, previous;
+};
+
+RimWalk rimWalk(const ChordalSurface& s) {
+  std::set<std::pair<int, int>> rimEdges;
+  for (const auto& [edge, uses] : facetEdgeUses(s))
+    if (uses == 1) rimEdges.insert(edge);
+  RimWalk w{std::vector<int>(s.vertices.size(), -1), std::vector<int>(s.vertices.size(), -1)};
+  std::vector<int> passes(s.vertices.size(), 0);
+  for (const auto& f : s.facets) {
+    const int n = f[3] < 0 ? 3 : 4;
+    for (int k = 0; k < n; ++k)
+      if (const int a = f[k], b = f[(k + 1) % n]; rimEdges.count(std::minmax(a, b))) w.next[a] = b, w.previous[b] = a, ++passes[a];
+  }
+  for (std::size_t v = 0; v < passes.size(); ++v)
+    if (passes[v] > 1) w.next[v] = w.previous[v] = -1;
+  return w;
+}
+
+// Where each rim vertex goes: midway between the walls' rim edges nearest to it, if that is farther than
+// kMinMove of the reach (nearer, the vertex is on its rim: a flat rim's), within reach, and across the rim (a
+// move mostly along the rim is a corner's ambiguity, not the rim's profile).
+std::vector<std::optional<Vec3>> rimTargets(const ChordalSurface& s, const RimWalk& walk, const RimMiddle& middle, double reach) {
+  std::vector<std::optional<Vec3>> to(s.vertices.size());
+  for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+    if (walk.next[v] < 0 || walk.previous[v] < 0) continue;
+    const std::optional<Vec3> m = middle(s.vertices[v]);
+    if (!m) continue;
+    const Vec3 move = *m - s.vertices[v];
+    const Vec3 along = (s.vertices[walk.next[v]] - s.vertices[walk.previous[v]]).normalized();
+    if (move.norm() > kMinMove * reach && move.norm() <= reach && std::abs(move.dot(along)) <= kMaxAlongRim * move.norm()) to[v] = m;
+  }
+  return to;
+}
+
+// The facets on the rim (with an edge of no other facet) that the moves of the rim vertices turn over or
+// shrink: they lie in the rim's profile, beyond where the rim goes.
+std::vector<char> spoiledRimFacets(const ChordalSurface& s, const std::vector<Vec3>& before) {
+  std::set<std::pair<int, int>> rimEdges;
+  for (const auto& [edge, uses] : facetEdgeUses(s))
+    if (uses == 1) rimEdges.insert(edge);
+  std::vector<char> spoilt(s.facets.size(), 0);
+  for (std::size_t f = 0; f < s.facets.size(); ++f) {
+    if (!spoiled(before[f], areaVector(s, s.facets[f]))) continue;
+    const auto& facet = s.facets[f];
+    const int n = facet[3] < 0 ? 3 : 4;
+    for (int k = 0; k < n; ++k) spoilt[f] |= rimEdges.count(std::minmax(facet[k], facet[(k + 1) % n])) > 0;
+  }
+  return spoilt;
+}
+
+// The angle at vertex b between its rim neighbours a and c.
+double rimAngle(const ChordalSurface& s, int a, int b, int c) {
+  const Vec3 ba = s.vertices[a] - s.vertices[b], bc = s.vertices[c] - s.vertices[b];
+  return std::atan2(ba.cross(bc).norm(), ba.dot(bc));
+}
+
+constexpr double kMaxSliver = 15 * M_PI / 180;
+constexpr int kMaxSliverRounds = 100;
+
+// Drops the facets that end a narrow spike of the rim (a rim vertex of that facet only, the rim turning back
+// by more than 180 - kMaxSliver degrees there). Returns how many.
+std::size_t dropSpikes(ChordalSurface& s, const RimWalk& w) {
+  std::vector<int> uses(s.vertices.size(), 0);
+  for (const auto& f : s.facets)
+    for (int v : f)
+      if (v >= 0) ++uses[v];
+  const std::size_t before = s.facets.size();
+  s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), [&](const std::array<int, 4>& f) {
+                   for (int b : f)
+                     if (b >= 0 && uses[b] == 1 && w.previous[b] >= 0 && w.next[b] >= 0 &&
+                         rimAngle(s, w.previous[b], b, w.next[b]) < kMaxSliver)
+                       return true;
+                   return false;
+                 }),
+                 s.facets.end());
+  return before - s.facets.size();
+}
+
+// Drops the facets at narrow spikes of the rim (where a tet's cut reached into a rim's profile) until none is
+// left, and the rim's pinches that leaves. Returns how many facets.
+std::size_t dropRimSpikes(ChordalSurface& s) {
+  std::size_t dropped = 0;
+  for (int round = 0; round < kMaxSliverRounds; ++round) {
+    const std::size_t spikes = dropSpikes(s, rimWalk(s));
+    if (spikes == 0) break;
+    dropped += spikes + dropPinchedFacets(s);
+  }
+  dropUnusedVertices(s);
+  return dropped;
+}
+
+}  // namespace
+
+RimSnapStats snapRimBetweenWallEdges(ChordalSurface& s, const RimMiddle& middle, double reach) {
+  RimSnapStats stats;
+  for (;;) {
+    const RimWalk walk = rimWalk(s);
+    std::vector<std::optional<Vec3>> to = rimTargets(s, walk, middle, reach);
+    std::vector<Vec3> before;
+    for (const auto& f : s.facets) before.push_back(areaVector(s, f));
+    const std::vector<Vec3> original = s.vertices;
+    for (std::size_t v = 0; v < s.vertices.size(); ++v)
+      if (to[v]) s.vertices[v] = *to[v];
+    // A facet on the rim that the moves turn over (a tet's cut that reached into the rim's profile) goes,
+    // and the rim is measured again without it.
+    const std::vector<char> spikes = spoiledRimFacets(s, before);
+    if (std::count(spikes.begin(), spikes.end(), 1) > 0) {
+      s.vertices = original;
+      std::size_t f = 0;
+      s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), [&](const auto&) { return spikes[f++] != 0; }), s.facets.end());
+      stats.spikesDropped += before.size() - s.facets.size();
+      dropPinchedFacets(s);
+      dropUnusedVertices(s);
+      continue;
+    }
+    // Back where they were, the moved vertices of facets that turned over or shrank, and of rim edges that
+    // turned round (two rim vertices put on one place or past each other along the rim), until none is left.
+    auto back = [&](int v) { s.vertices[v] = original[v], to[v].reset(); };
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t f = 0; f < s.facets.size(); ++f) {
+        if (!spoiled(before[f], areaVector(s, s.facets[f]))) continue;
+        for (int v : s.facets[f])
+          if (v >= 0 && to[v]) back(v), changed = true;
+      }
+      for (std::size_t a = 0; a < s.vertices.size(); ++a) {
+        const int b = walk.next[a];
+        if (b < 0 || (!to[a] && !to[b])) continue;
+        const Vec3 was = original[b] - original[a];
+        if ((s.vertices[b] - s.vertices[a]).dot(was) > kMinAreaShare * was.squaredNorm()) continue;
+        for (int v : {static_cast<int>(a), b})
+          if (to[v]) back(v), changed = true;
+      }
+    }
+    stats.spikesDropped += dropRimSpikes(s);
+    for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+      stats.rimVertices += walk.next[v] >= 0;
+      if (to[v]) ++stats.moved, stats.largestMove = std::max(stats.largestMove, (s.vertices[v] - original[v]).norm());
+    }
+    return stats;
+  }
+}
+
+}  // namespace hexlayer

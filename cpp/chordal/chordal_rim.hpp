@@ -1,0 +1,39 @@
+// The rim of the chordal surface (beyond the paper). §5 cuts the top-bottom tet edges at their midpoints; at a
+// rim, an edge joins the last top node and the last bottom node, which along a straight rim stand one above
+// the other, but round a concave rim (a hole, and more so one whose edges are rounded or chamfered) they may be
+// far apart round it, so the edge's midpoint falls into the rim's profile: the chordal rim zigzags into the
+// hole, the quad mesh cannot lay a ring of rows round it, and the sweep folds. Here each rim vertex is put
+// midway between the nearest points of the two walls' rim edges (the edges where the top and the bottom wall
+// meet the lateral faces): on a rim normal to the walls that is its middle line, on a round rim the axis of
+// its round, on an oblique cut the middle of the cut.
+#pragma once
+#include <cstddef>
+#include <functional>
+#include <optional>
+
+#include "chordal/chordal_surface.hpp"
+#include "core/types.hpp"
+
+namespace hexlayer {
+
+// The point midway between the top and the bottom wall's rim edges nearest to p (on the lateral face nearest
+// to p where it meets both walls), if any.
+using RimMiddle = std::function<std::optional<Vec3>(const Vec3& p)>;
+
+struct RimSnapStats {
+  std::size_t rimVertices = 0;  // vertices on the chordal surface's rim
+  std::size_t moved = 0;        // of those, put midway between the walls' rim edges
+  std::size_t spikesDropped = 0;  // facets on the rim that the move would turn over, or ending a narrow spike
+  double largestMove = 0;       // in the surface's units
+};
+
+// [in,out] chordal: its rim vertices moved (normals and radius are computed afterwards);
+// [in] middle: the point between the walls' rim edges; [in] reach: the longest move (about the wall thickness).
+// A vertex stays where it is if the midpoint is farther than `reach`, or if moving it would turn a facet
+// around it over (its normal against the one it had) or shrink it below a tenth of its area; but a facet
+// that ends a spike of the rim (its tip in that facet only: a tet cut reaching into a rounded rim's profile)
+// and that the move would turn over is dropped, and the rim measured again. Then the facets that end a narrow
+// spike of the rim (its tip in that facet only, the rim turning back there by more than 165 degrees) go.
+RimSnapStats snapRimBetweenWallEdges(ChordalSurface& chordal, const RimMiddle& middle, double reach);
+
+}  // namespace hexlayer

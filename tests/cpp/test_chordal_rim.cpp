@@ -1,0 +1,80 @@
+// The chordal surface's rim between the walls' rim edges (chordal/chordal_rim.hpp), on flat surfaces made by
+// hand, whose rim should lie on the line y = 0: a zigzag rim straightened, a spike that would turn over dropped,
+// a narrow spike dropped.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "chordal/chordal_rim.hpp"
+#include "chordal/chordal_surface.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+// Rows j = 0..rows of points (i, y_j) for i = 0..columns, row 0 at the heights `rim` (one per column), quads
+// between rows turning counter-clockwise seen from +z.
+ChordalSurface strip(const std::vector<double>& rim, int rows) {
+  ChordalSurface s;
+  const int n = static_cast<int>(rim.size());
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i < n; ++i) s.vertices.emplace_back(i, j == 0 ? rim[i] : j, 0);
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i + 1 < n; ++i) s.facets.push_back({j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i}), ++s.quads;
+  s.tetEdge.assign(s.vertices.size(), {0, 0});
+  return s;
+}
+
+// The rim of the surfaces here: the line y = 0 (for points below y = 0.5, as the rim's profile would be).
+std::optional<Vec3> onLine(const Vec3& p) {
+  if (p.y() > 0.5) return std::nullopt;
+  return Vec3(p.x(), 0, p.z());
+}
+
+}  // namespace
+
+// A strip 6 x 2 whose rim zigzags by +-0.3 about y = 0 (a concave rim's tet cuts): the 5 vertices of that rim
+// off the line go onto it (its ends are on it already; the other rim vertices, at y >= 1, have no place on it)
+// and no other vertex moves.
+TEST(ChordalRim, ZigzagRimGoesOntoTheLineMidwayBetweenTheWalls) {
+  ChordalSurface s = strip({0, 0.3, -0.3, 0.3, -0.3, 0.3, 0}, 2);
+  const std::vector<Vec3> before = s.vertices;
+  const RimSnapStats stats = snapRimBetweenWallEdges(s, onLine, 1.0);
+  EXPECT_EQ(stats.rimVertices, 7u + 7u + 2u);  // the rim row, the top row and the short sides' middle vertices
+  EXPECT_EQ(stats.moved, 5u);
+  EXPECT_NEAR(stats.largestMove, 0.3, 1e-12);
+  EXPECT_EQ(stats.spikesDropped, 0u);
+  for (int i = 0; i < 7; ++i) EXPECT_NEAR(s.vertices[i].y(), 0, 1e-12);
+  for (std::size_t v = 7; v < s.vertices.size(); ++v) EXPECT_EQ(s.vertices[v], before[v]);
+}
+
+// A straight strip with a triangle hanging below its rim, its tip at (2.5, -0.8): put on the line y = 0 the tip
+// would lie on the triangle's base, the triangle flat (below half its area): a spike of the rim that the move
+// spoils, so it is dropped, and its tip with it.
+TEST(ChordalRim, ASpikeTheMoveWouldTurnOverIsDropped) {
+  ChordalSurface s = strip({0, 0, 0, 0, 0, 0}, 2);
+  const int tip = static_cast<int>(s.vertices.size());
+  s.vertices.emplace_back(2.5, -0.8, 0), s.tetEdge.push_back({0, 0});
+  s.facets.push_back({2, tip, 3, -1}), ++s.triangles;
+  const std::size_t facets = s.facets.size();
+  const RimSnapStats stats = snapRimBetweenWallEdges(s, onLine, 1.0);
+  EXPECT_EQ(stats.spikesDropped, 1u);
+  EXPECT_EQ(s.facets.size(), facets - 1);
+  EXPECT_EQ(s.vertices.size(), static_cast<std::size_t>(tip)) << "the tip is no vertex of the surface any more";
+}
+
+// A straight strip with a long thin triangle hanging below its rim, its tip at (2.5, -5) (11.4 degrees there),
+// too far from the line to be moved: a narrow spike of the rim, dropped all the same; the rim is straight again.
+TEST(ChordalRim, ANarrowSpikeIsDropped) {
+  ChordalSurface s = strip({0, 0, 0, 0, 0, 0}, 2);
+  const ChordalSurface straight = s;
+  s.vertices.emplace_back(2.5, -5, 0), s.tetEdge.push_back({0, 0});
+  s.facets.push_back({2, static_cast<int>(s.vertices.size()) - 1, 3, -1}), ++s.triangles;
+  const RimSnapStats stats = snapRimBetweenWallEdges(s, onLine, 1.0);
+  EXPECT_EQ(stats.moved, 0u);
+  EXPECT_EQ(stats.spikesDropped, 1u);
+  EXPECT_EQ(s.facets, straight.facets);
+  EXPECT_EQ(s.vertices, straight.vertices);
+}
