@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <tuple>
 
 namespace hexlayer {
 namespace {
@@ -56,8 +57,8 @@ struct Piece {
 };
 
 struct Candidate {
-  double misplaced;  // sample area on the wrong side of the line (non-crossing in the wall piece, crossing in the rim piece)
-  FaceSplit split;
+  double misplaced;  // sample area on the wrong side of the lines (non-crossing in a wall piece, crossing in the rim piece)
+  std::vector<FaceSplit> splits;  // one line, or two round a rim piece between two wall pieces
 };
 
 double angleDegrees(const Vec3& a, const Vec3& b) {
@@ -65,48 +66,69 @@ double angleDegrees(const Vec3& a, const Vec3& b) {
   return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / M_PI;
 }
 
-// The line at `at` across the face's samples, if it parts them into a wall piece and a rim piece. The rim must
-// turn away from the wall next to it: the wall piece's normal is taken over a band beside the line as wide (in
-// the parameter) as the rim piece, so a curved wall's band along a flat rim is not taken for a rim.
-std::optional<Candidate> tryLine(const std::vector<RayMark>& marks, bool alongV, double at, double thickness, int face) {
+// The band [from, to) of the face's parameter as its rim piece, the rest (below `from`, at or above `to`; one of
+// them may be empty) as wall pieces, if they part the samples so. The rim must turn away from each wall next to
+// it: a wall's normal is taken over a band beside the line as wide (in the parameter) as the rim piece, so a
+// curved wall's band along a flat rim is not taken for a rim.
+std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV, double from, double to, double thickness, int face) {
   auto coord = [&](const RayMark& m) { return alongV ? m.u : m.v; };
-  for (int rimBelow = 0; rimBelow < 2; ++rimBelow) {
-    auto inRim = [&](const RayMark& m) { return (coord(m) < at) == (rimBelow == 1); };
-    Piece wall, rim, beside;
-    double width = 0;  // of the rim piece, in the parameter
-    for (const RayMark& m : marks) {
-      Piece& p = inRim(m) ? rim : wall;
-      p.area += m.area, p.crossing += m.crossing ? m.area : 0, p.normal += m.area * m.normal;
-      if (inRim(m)) width = std::max(width, std::abs(coord(m) - at));
-    }
-    if (wall.share() < kWallPiece || rim.share() >= kRimPiece || rim.area < kMinRimArea * thickness * thickness) continue;
-    for (const RayMark& m : marks)
-      if (!inRim(m) && std::abs(coord(m) - at) <= width) beside.area += m.area, beside.normal += m.area * m.normal;
-    // Each piece must face one way (a band round a tube faces every way), and the two ways differ.
-    if (beside.normal.norm() < kOneWay * beside.area || rim.normal.norm() < kOneWay * rim.area) continue;
-    if (beside.area <= 0 || angleDegrees(beside.normal, rim.normal) < kRimTurn) continue;
-    return Candidate{(wall.area - wall.crossing) + rim.crossing, {face, alongV, at}};
+  auto inRim = [&](const RayMark& m) { return coord(m) >= from && coord(m) < to; };
+  Piece below, above, rim, besideBelow, besideAbove;
+  double first = to, last = from;  // the rim samples' extent in the parameter
+  for (const RayMark& m : marks) {
+    Piece& p = inRim(m) ? rim : coord(m) < from ? below : above;
+    p.area += m.area, p.crossing += m.crossing ? m.area : 0, p.normal += m.area * m.normal;
+    if (inRim(m)) first = std::min(first, coord(m)), last = std::max(last, coord(m));
   }
-  return std::nullopt;
+  const double width = std::max(last - first, 0.0);
+  for (const RayMark& m : marks) {
+    if (coord(m) < from && coord(m) >= from - width) besideBelow.area += m.area, besideBelow.normal += m.area * m.normal;
+    if (coord(m) >= to && coord(m) < to + width) besideAbove.area += m.area, besideAbove.normal += m.area * m.normal;
+  }
+  if (rim.share() >= kRimPiece || rim.area < kMinRimArea * thickness * thickness || rim.normal.norm() < kOneWay * rim.area) return {};
+  if (below.area + above.area <= 0) return {};
+  Candidate c{rim.crossing, {}};
+  for (const auto& [wall, beside, at] : {std::tuple{below, besideBelow, from}, std::tuple{above, besideAbove, to}}) {
+    if (wall.area <= 0) continue;
+    // Each piece must face one way (a band round a tube faces every way), and the two ways differ.
+    if (wall.share() < kWallPiece || beside.area <= 0 || beside.normal.norm() < kOneWay * beside.area) return {};
+    if (angleDegrees(beside.normal, rim.normal) < kRimTurn) return {};
+    c.misplaced += wall.area - wall.crossing;
+    c.splits.push_back({face, alongV, at});
+  }
+  return c;
 }
 
-std::optional<FaceSplit> bestSplit(const CadSolid& cad, const FaceSide& fs, double thickness, int f) {
+void keepBetter(std::optional<Candidate>& best, std::optional<Candidate> c) {
+  if (c && (!best || c->misplaced < best->misplaced)) best = std::move(c);
+}
+
+std::optional<std::vector<FaceSplit>> bestSplit(const CadSolid& cad, const FaceSide& fs, double thickness, int f) {
   const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face, u0, u1, v0, v1);
   std::optional<Candidate> best, bestKnot;
   for (const bool alongV : {true, false}) {
     const double lo = alongV ? u0 : v0, hi = alongV ? u1 : v1;
-    for (int i = 1; i < kLines; ++i)
-      if (auto c = tryLine(fs.marks, alongV, lo + (hi - lo) * i / kLines, thickness, f); c && (!best || c->misplaced < best->misplaced))
-        best = c;
+    const double past = hi + (hi - lo);  // beyond every sample: a band to the face's end
+    for (int i = 1; i < kLines; ++i) {
+      const double at = lo + (hi - lo) * i / kLines;
+      keepBetter(best, tryBand(fs.marks, alongV, at, past, thickness, f));
+      keepBetter(best, tryBand(fs.marks, alongV, lo - (hi - lo), at, thickness, f));
+    }
+    std::vector<double> inner;
     for (double k : knots(face, alongV))
-      if (k > lo && k < hi)
-        if (auto c = tryLine(fs.marks, alongV, k, thickness, f); c && (!bestKnot || c->misplaced < bestKnot->misplaced))
-          bestKnot = c;
+      if (k > lo && k < hi) inner.push_back(k);
+    for (std::size_t i = 0; i < inner.size(); ++i) {
+      keepBetter(bestKnot, tryBand(fs.marks, alongV, inner[i], past, thickness, f));
+      keepBetter(bestKnot, tryBand(fs.marks, alongV, lo - (hi - lo), inner[i], thickness, f));
+      for (std::size_t j = i + 1; j < inner.size(); ++j)  // a skin over a wall, its rim and the other wall
+        keepBetter(bestKnot, tryBand(fs.marks, alongV, inner[i], inner[j], thickness, f));
+    }
   }
-  if (bestKnot && best && bestKnot->misplaced <= best->misplaced + kKnotSlack * fs.area) return bestKnot->split;
-  if (best) return best->split;
+  if (bestKnot && best && bestKnot->misplaced <= best->misplaced + kKnotSlack * fs.area) return bestKnot->splits;
+  if (bestKnot && !best) return bestKnot->splits;
+  if (best) return best->splits;
   return std::nullopt;
 }
 
@@ -117,7 +139,7 @@ std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& side
   for (int f = 0; f < static_cast<int>(sides.faces.size()); ++f) {
     const FaceSide& fs = sides.faces[f];
     if (fs.marks.size() < kMinMarks || fs.wallShare < kRimPiece) continue;  // a rim face
-    if (std::optional<FaceSplit> s = bestSplit(cad, fs, sides.thickness, f)) splits.push_back(*s);
+    if (std::optional<std::vector<FaceSplit>> s = bestSplit(cad, fs, sides.thickness, f)) splits.insert(splits.end(), s->begin(), s->end());
   }
   return splits;
 }

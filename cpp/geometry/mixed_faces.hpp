@@ -21,7 +21,8 @@ struct FaceSplit {
 // face's samples into a wall piece (at least kWallPiece of its area crossing the wall) and a rim piece (at
 // most kRimPiece), each facing one way, whose mean normals differ by at least kRimTurn (the rim turns away from
 // the wall: a band of a flat wall along its rim, whose rays also miss the middle of the wall, does not); the line that
-// misplaces the least sample area, on a knot of the surface where one is as good.
+// misplaces the least sample area, on a knot of the surface where one is as good. A skin over a wall, its rim and
+// the other wall is split on two knots round the rim piece: two FaceSplits of one face.
 std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& sides);
 
 // [in] cad, splits. The solid with those faces split, prepared (prepareSolid) at the same unit, its

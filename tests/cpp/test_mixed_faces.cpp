@@ -50,6 +50,34 @@ TEST(MixedFaces, SkinOverAWallAndRoundItsEdgeIsSplitWhereTheWallEnds) {
   EXPECT_EQ(inputFaceName(split, 0), inputFaceName(cad, splits[0].face));
 }
 
+// strip_skin_wrap: the same strip whose top wall, round end and bottom wall are one face. It is split on two
+// knots at once (x = 40 on the top and on the bottom): three pieces named as the one input face, the half
+// cylinder between two flat walls of 40 x 20; then one top, one bottom and three rim faces (the square end, the
+// sides and the half cylinder: the box's two sides are one each).
+TEST(MixedFaces, SkinOverBothWallsAndTheirRimIsSplitTwice) {
+  const CadSolid cad = readSample("Resources/samples/rims/strip_skin_wrap.step");
+  const std::vector<FaceSplit> splits = findMixedFaces(cad, classifyWallSides(cad));
+  ASSERT_EQ(splits.size(), 2u);
+  EXPECT_EQ(splits[0].face, splits[1].face);
+  const CadSolid split = splitFaces(cad, splits);
+  ASSERT_EQ(split.faces.Extent(), cad.faces.Extent() + 2);
+  const WallSides after = classifyWallSides(split);
+  EXPECT_TRUE(after.ownSideFaces.empty());
+  int top = 0, bottom = 0, lateral = 0, pieces = 0;
+  for (int f = 0; f < split.faces.Extent(); ++f) {
+    const FaceSide& s = after.faces[f];
+    (s.side == Side::Top ? top : s.side == Side::Bottom ? bottom : lateral)++;
+    if (inputFaceOf(split, f) != inputFaceOf(cad, splits[0].face)) continue;
+    ++pieces;
+    if (s.side == Side::Lateral) EXPECT_NEAR(s.area, M_PI * 20, 0.05) << "the half cylinder";
+    else EXPECT_NEAR(s.area, 40 * 20, 0.05) << "a flat wall";
+  }
+  EXPECT_EQ(pieces, 3);
+  EXPECT_EQ(top, 1);
+  EXPECT_EQ(bottom, 1);
+  EXPECT_EQ(lateral, split.faces.Extent() - 2);
+}
+
 // Faces that are wall or rim whole are not split: a thin box (whose top's samples near its rims do not cross
 // the wall, but do not turn away from it either), a bent sheet with round ends, a cylinder shell segment.
 TEST(MixedFaces, WallsAndRimsAreNotSplit) {

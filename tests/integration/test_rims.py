@@ -76,10 +76,14 @@ PARTS = ["lbracket_round_ends", "uchannel_round_ends", "hat_round_ends", "plate_
          "plate_fillet_flat_fillet", "plate_chamfer_one_side", "plate_chamfer_both_sides", "strip_oblique_45",
          "strip_oblique_3x", "plate_split_rim", "plate_split_walls", "lbracket_split_bend", "cap_cut_by_plane",
          "tube_cut_45", "tube_cut_45_both", "taper_plate", "strip_skin_round", "strip_skin_round_thin",
-         "plate_hole_full_round", "plate_hole_fillet_one_side", "plate_holes_rounded"]
+         "strip_skin_wrap", "plate_hole_full_round", "plate_hole_fillet_one_side", "plate_holes_rounded"]
 # Parts whose top wall and round end are one CAD face (split into a wall and a rim piece by the mesher, named
 # as the one face): their rim nodes lie on a face that also has wall nodes.
-MIXED = {"strip_skin_round", "strip_skin_round_thin"}
+MIXED = {"strip_skin_round", "strip_skin_round_thin", "strip_skin_wrap"}
+# OpenCASCADE integrates the volume of the wrapped skin (one rational B-spline face over the top wall, the round
+# end and the bottom wall) 1.7 % high; its exact volume is its profile's area (40 x 2 + pi 2^2 / 8, checked on
+# 4000 points of the skin by make_samples.py) x 20.
+EXACT_VOLUME = {"strip_skin_wrap": (40 * 2 + math.pi * 2 ** 2 / 8) * 20}
 LAYERS = (2, 3)
 
 
@@ -130,6 +134,7 @@ class Rims(unittest.TestCase):
         self.assertGreaterEqual(sj.min(), lo_min)
         self.assertGreaterEqual(sj.mean(), lo_avg)
         cad_volume, gmsh = cad_of(step)
+        cad_volume = EXACT_VOLUME.get(part, cad_volume)
         try:
             error = (volumes.sum() - cad_volume) / cad_volume
             allowed = 0.01
