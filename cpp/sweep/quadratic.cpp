@@ -134,7 +134,11 @@ MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const st
     if (!rim[e]) continue;
     const auto [a, b] = t.edges[e];
     ++stats.rimNodes;
-    const FacePoint p = projectIfClose({mid.position[e], mid.face[e]}, (mesh.nodes[b] - mesh.nodes[a]).norm(), Side::Lateral,
+    // An inner layer's rim edge joins two nodes on the rim faces: its node starts from their midpoint, not from
+    // the walls' (which cut across a rim that bulges between the walls: a chamfer on both sides, a round).
+    const bool inner = mid.layer[e] > 0 && !isWall(mid.layer[e]);
+    const Vec3 start = inner ? Vec3(0.5 * (mesh.nodes[a] + mesh.nodes[b])) : mid.position[e];
+    const FacePoint p = projectIfClose({start, mid.face[e]}, (mesh.nodes[b] - mesh.nodes[a]).norm(), Side::Lateral,
                                        project, stats.rimProjected, stats.maxProjectionMove);
     mid.position[e] = p.point, mid.face[e] = p.face;
   }
