@@ -8,7 +8,7 @@ packages=(
   libocct-data-exchange-dev
   libgmsh-dev libtet1.5-dev
   libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev
-  libgtest-dev googletest
+  libgtest-dev googletest clang-format
   calculix-ccx
   python3-meshio python3-numpy python3-gmsh python3-matplotlib
   pybind11-dev python3-dev

@@ -2,13 +2,13 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepLProp_CLProps.hxx>
 #include <BRepLProp_SLProps.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_QuasiUniformAbscissa.hxx>
 #include <GeomLProp_CLProps.hxx>
-#include <BRepLProp_CLProps.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
@@ -133,7 +133,8 @@ void packEdges(const CadSolid& cad, const WallSides& sides, const std::vector<do
     if (side == Side::Lateral || BRep_Tool::Degenerated(edge)) continue;
     const BRepAdaptor_Curve curve(edge);
     const double length = GCPnts_AbscissaPoint::Length(curve);
-    const double diameter = std::min(curvatureLimit(maxEdgeCurvature(curve), o), diameterAround(faces, cad, faceDiameter));
+    const double diameter =
+        std::min(curvatureLimit(maxEdgeCurvature(curve), o), diameterAround(faces, cad, faceDiameter));
     const int intervals = std::max(1, static_cast<int>(std::lround(length / diameter)));
     if (intervals < 2) continue;
     const GCPnts_QuasiUniformAbscissa split(curve, intervals + 1);
@@ -158,7 +159,9 @@ std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, doub
   std::vector<FaceBubble> seeds;
   PointGrid own(d);
   for (const FaceSample& c : candidates) {
-    const auto tooClose = [&](int j, const Vec3& q) { return (q - c.point).norm() < 0.85 * 0.5 * (d + pack.diameter[j]); };
+    const auto tooClose = [&](int j, const Vec3& q) {
+      return (q - c.point).norm() < 0.85 * 0.5 * (d + pack.diameter[j]);
+    };
     if (pack.anyNearOnSide(c.point, pack.reach(d, 0.85 * 0.5, 2 * d), side, tooClose) ||
         own.anyNear(c.point, 0.85 * d, [](int, const Vec3&) { return true; }))
       continue;
@@ -189,8 +192,11 @@ std::optional<FaceBubble> relaxedBubble(std::size_t i, double d, const Packing& 
   };
   // Nodes beyond 1.5 x their stable distance add exactly zero (the sum starts at +0 and is never
   // -0, so leaving them out changes no bit).
-  pack.grid.forEachNear(x, pack.reach(d, 1.5 * 0.5, 1.5 * d * 2), [&](int j, const Vec3& q) { push(q, 0.5 * (d + pack.diameter[j])); });
-  own.forEachNear(x, 1.5 * d, [&](int j, const Vec3& q) { if (j != static_cast<int>(i)) push(q, d); });
+  pack.grid.forEachNear(x, pack.reach(d, 1.5 * 0.5, 1.5 * d * 2),
+                        [&](int j, const Vec3& q) { push(q, 0.5 * (d + pack.diameter[j])); });
+  own.forEachNear(x, 1.5 * d, [&](int j, const Vec3& q) {
+    if (j != static_cast<int>(i)) push(q, d);
+  });
   Vec3 step = 0.15 * d * force;
   if (step.norm() > 0.25 * d) step *= 0.25 * d / step.norm();
   gp_Pnt p;
@@ -207,12 +213,14 @@ std::optional<FaceBubble> relaxedBubble(std::size_t i, double d, const Packing& 
 
 // One relaxation step of every face bubble at once (each from where the others were: in parallel,
 // one FaceTools per thread); bubbles pushed out of the face are dropped.
-void relaxFace(double d, const Packing& pack, std::vector<FaceBubble>& bubbles, std::vector<std::unique_ptr<FaceTools>>& tools) {
+void relaxFace(double d, const Packing& pack, std::vector<FaceBubble>& bubbles,
+               std::vector<std::unique_ptr<FaceTools>>& tools) {
   PointGrid own(d);
   for (size_t i = 0; i < bubbles.size(); ++i) own.insert(static_cast<int>(i), bubbles[i].point);
   std::vector<std::optional<FaceBubble>> next(bubbles.size());
-  #pragma omp parallel for schedule(static)
-  for (long i = 0; i < static_cast<long>(bubbles.size()); ++i) next[i] = relaxedBubble(i, d, pack, own, bubbles, *tools[threadIndex()]);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < static_cast<long>(bubbles.size()); ++i)
+    next[i] = relaxedBubble(i, d, pack, own, bubbles, *tools[threadIndex()]);
   std::vector<FaceBubble> moved;
   for (const auto& b : next)
     if (b) moved.push_back(*b);

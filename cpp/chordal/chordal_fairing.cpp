@@ -10,15 +10,17 @@ namespace {
 constexpr double kLambda = 0.5, kMu = -0.53;  // Taubin's pass band: noise goes, the shape stays
 
 struct EdgeGraph {
-  Groups<int> neighbours;  // the vertices sharing a facet edge with vertex i: items[start[i] .. start[i + 1])
+  Groups<int> neighbours;   // the vertices sharing a facet edge with vertex i: items[start[i] .. start[i + 1])
   std::vector<char> onRim;  // on an edge of one facet only
 };
 
 EdgeGraph edgeGraph(const ChordalSurface& s) {
   const auto uses = facetEdgeUses(s);
-  EdgeGraph g{groupByKey<int>(s.vertices.size(), [&](auto emit) {
-                for (const auto& [edge, count] : uses) emit(edge.first, edge.second), emit(edge.second, edge.first);
-              }),
+  EdgeGraph g{groupByKey<int>(s.vertices.size(),
+                              [&](auto emit) {
+                                for (const auto& [edge, count] : uses)
+                                  emit(edge.first, edge.second), emit(edge.second, edge.first);
+                              }),
               std::vector<char>(s.vertices.size(), 0)};
   for (const auto& [edge, count] : uses)
     if (count == 1) g.onRim[edge.first] = g.onRim[edge.second] = 1;
@@ -31,7 +33,7 @@ EdgeGraph edgeGraph(const ChordalSurface& s) {
 void laplacianStep(ChordalSurface& s, const EdgeGraph& g, double factor) {
   const std::vector<Vec3> normal = vertexNormals(s);
   std::vector<Vec3> next = s.vertices;
-  #pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static)
   for (long i = 0; i < static_cast<long>(next.size()); ++i) {
     const int first = g.neighbours.start[i], end = g.neighbours.start[i + 1];
     if (g.onRim[i] || first == end) continue;

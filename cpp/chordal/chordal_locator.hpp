@@ -37,7 +37,7 @@ class ChordalLocator {
  private:
   ChordalPoint project(int facet, const Vec3& p) const;
   const ChordalSurface& chordal_;
-  BoxGrid facets_;  // facets by bounding box
+  BoxGrid facets_;             // facets by bounding box
   std::vector<Vec3> lo_, hi_;  // each facet's bounding box
 };
 

@@ -39,7 +39,8 @@ RimWalk rimWalk(const ChordalSurface& s) {
   for (const auto& f : s.facets) {
     const int n = f[3] < 0 ? 3 : 4;
     for (int k = 0; k < n; ++k)
-      if (const int a = f[k], b = f[(k + 1) % n]; rimEdges.count(std::minmax(a, b))) w.next[a] = b, w.previous[b] = a, ++passes[a];
+      if (const int a = f[k], b = f[(k + 1) % n]; rimEdges.count(std::minmax(a, b)))
+        w.next[a] = b, w.previous[b] = a, ++passes[a];
   }
   for (std::size_t v = 0; v < passes.size(); ++v)
     if (passes[v] > 1) w.next[v] = w.previous[v] = -1;
@@ -49,7 +50,8 @@ RimWalk rimWalk(const ChordalSurface& s) {
 // Where each rim vertex goes: midway between the walls' rim edges nearest to it, if that is farther than
 // kMinMove of the reach (nearer, the vertex is on its rim: a flat rim's), within reach, and across the rim (a
 // move mostly along the rim is a corner's ambiguity, not the rim's profile).
-std::vector<std::optional<Vec3>> rimTargets(const ChordalSurface& s, const RimWalk& walk, const RimMiddle& middle, double reach) {
+std::vector<std::optional<Vec3>> rimTargets(const ChordalSurface& s, const RimWalk& walk, const RimMiddle& middle,
+                                            double reach) {
   std::vector<std::optional<Vec3>> to(s.vertices.size());
   for (std::size_t v = 0; v < s.vertices.size(); ++v) {
     if (walk.next[v] < 0 || walk.previous[v] < 0) continue;
@@ -57,7 +59,9 @@ std::vector<std::optional<Vec3>> rimTargets(const ChordalSurface& s, const RimWa
     if (!m) continue;
     const Vec3 move = *m - s.vertices[v];
     const Vec3 along = (s.vertices[walk.next[v]] - s.vertices[walk.previous[v]]).normalized();
-    if (move.norm() > kMinMove * reach && move.norm() <= reach && std::abs(move.dot(along)) <= kMaxAlongRim * move.norm()) to[v] = m;
+    if (move.norm() > kMinMove * reach && move.norm() <= reach &&
+        std::abs(move.dot(along)) <= kMaxAlongRim * move.norm())
+      to[v] = m;
   }
   return to;
 }
@@ -95,13 +99,14 @@ std::size_t dropSpikes(ChordalSurface& s, const RimWalk& w) {
     for (int v : f)
       if (v >= 0) ++uses[v];
   const std::size_t before = s.facets.size();
-  s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), [&](const std::array<int, 4>& f) {
-                   for (int b : f)
-                     if (b >= 0 && uses[b] == 1 && w.previous[b] >= 0 && w.next[b] >= 0 &&
-                         rimAngle(s, w.previous[b], b, w.next[b]) < kMaxSliver)
-                       return true;
-                   return false;
-                 }),
+  s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(),
+                                [&](const std::array<int, 4>& f) {
+                                  for (int b : f)
+                                    if (b >= 0 && uses[b] == 1 && w.previous[b] >= 0 && w.next[b] >= 0 &&
+                                        rimAngle(s, w.previous[b], b, w.next[b]) < kMaxSliver)
+                                      return true;
+                                  return false;
+                                }),
                  s.facets.end());
   return before - s.facets.size();
 }
@@ -137,7 +142,8 @@ RimSnapStats snapRimBetweenWallEdges(ChordalSurface& s, const RimMiddle& middle,
     if (std::count(spikes.begin(), spikes.end(), 1) > 0) {
       s.vertices = original;
       std::size_t f = 0;
-      s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), [&](const auto&) { return spikes[f++] != 0; }), s.facets.end());
+      s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), [&](const auto&) { return spikes[f++] != 0; }),
+                     s.facets.end());
       stats.spikesDropped += before.size() - s.facets.size();
       dropPinchedFacets(s);
       dropUnusedVertices(s);

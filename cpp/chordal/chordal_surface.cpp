@@ -14,7 +14,8 @@ namespace {
 constexpr int kMaxCollapseRounds = 10;
 
 // The chordal vertex of tet edge (top, bottom), created on first use.
-int chordalVertex(ChordalSurface& s, std::unordered_map<std::uint64_t, int>& index, const TetMesh& m, int top, int bottom) {
+int chordalVertex(ChordalSurface& s, std::unordered_map<std::uint64_t, int>& index, const TetMesh& m, int top,
+                  int bottom) {
   const auto [it, added] = index.emplace(edgeKey(top, bottom), static_cast<int>(s.vertices.size()));
   if (added) {
     s.vertices.push_back(0.5 * (m.nodes[top] + m.nodes[bottom]));  // v = (v_t + v_b) / 2 (§5.4)
@@ -56,7 +57,8 @@ bool joinDegenerateFacets(const ChordalSurface& s, UnionFind& merges) {
     for (int k = 1; k < n; ++k)
       if ((at(k + 1) - at(k)).squaredNorm() > (at(longest + 1) - at(longest)).squaredNorm()) longest = k;
     const double length2 = (at(longest + 1) - at(longest)).squaredNorm();
-    const double area2 = n == 3 ? (at(1) - at(0)).cross(at(2) - at(0)).squaredNorm() : (at(2) - at(0)).cross(at(3) - at(1)).squaredNorm();
+    const double area2 = n == 3 ? (at(1) - at(0)).cross(at(2) - at(0)).squaredNorm()
+                                : (at(2) - at(0)).cross(at(3) - at(1)).squaredNorm();
     if (length2 == 0 || area2 > 1e-12 * length2 * length2) continue;
     any = true;
     if (n == 4) {  // the diagonal with the nearer corners is inside the other one on the line
@@ -176,7 +178,8 @@ std::size_t dropPinchedFacets(ChordalSurface& s) {
         const int n = f[3] < 0 ? 3 : 4;
         const int at = static_cast<int>(std::find(f.begin(), f.begin() + n, v) - f.begin());
         for (int w : {f[(at + 1) % n], f[(at + n - 1) % n]})
-          if (auto [it, fresh] = byOtherEnd.emplace(w, static_cast<int>(i)); !fresh) fans.unite(it->second, static_cast<int>(i));
+          if (auto [it, fresh] = byOtherEnd.emplace(w, static_cast<int>(i)); !fresh)
+            fans.unite(it->second, static_cast<int>(i));
       }
       std::map<int, int> size;  // per fan (its root), its facets
       for (std::size_t i = 0; i < facets.size(); ++i) ++size[fans.find(static_cast<int>(i))];
@@ -188,7 +191,8 @@ std::size_t dropPinchedFacets(ChordalSurface& s) {
     }
     const std::size_t before = s.facets.size();
     std::size_t f = 0;
-    s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), [&](const auto&) { return drop[f++]; }), s.facets.end());
+    s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(), [&](const auto&) { return drop[f++]; }),
+                   s.facets.end());
     if (s.facets.size() == before) break;
     dropped += before - s.facets.size();
   }
@@ -222,7 +226,8 @@ ChordalSurface buildChordalSurface(const TetMesh& m, double unit) {
       const std::vector<int>& many = top.size() == 3 ? top : bottom;
       const int lone = top.size() == 3 ? bottom[0] : top[0];
       for (int k = 0; k < 3; ++k)
-        facet[k] = top.size() == 3 ? chordalVertex(s, index, m, many[k], lone) : chordalVertex(s, index, m, lone, many[k]);
+        facet[k] =
+            top.size() == 3 ? chordalVertex(s, index, m, many[k], lone) : chordalVertex(s, index, m, lone, many[k]);
       ++s.triangles;
     }
     Vec3 upward = Vec3::Zero();
@@ -248,8 +253,10 @@ std::vector<std::pair<std::pair<int, int>, int>> facetEdgeUses(const ChordalSurf
   std::sort(edges.begin(), edges.end());
   std::vector<std::pair<std::pair<int, int>, int>> uses;
   for (const auto& e : edges)
-    if (uses.empty() || uses.back().first != e) uses.push_back({e, 1});
-    else ++uses.back().second;
+    if (uses.empty() || uses.back().first != e)
+      uses.push_back({e, 1});
+    else
+      ++uses.back().second;
   return uses;
 }
 
@@ -289,7 +296,7 @@ void computeNormalsAndRadius(ChordalSurface& s, const TetMesh& m) {
   for (size_t v = 0; v < s.vertices.size(); ++v) {
     if (s.normals[v].norm() == 0) s.normals[v] = Vec3::UnitZ();
     const Vec3 l = m.nodes[s.tetEdge[v][0]] - s.vertices[v];  // l = v_t - v
-    s.radius[v] = std::abs(s.normals[v].dot(l));            // Eq. 3: r = n̄ · l
+    s.radius[v] = std::abs(s.normals[v].dot(l));              // Eq. 3: r = n̄ · l
   }
 }
 
@@ -309,7 +316,8 @@ std::map<std::string, std::size_t> classifyTets(const TetMesh& m) {
   auto triKey = [&](std::size_t tet, int face) {
     std::array<int, 3> t{m.tets[tet][faceOf[face][0]], m.tets[tet][faceOf[face][1]], m.tets[tet][faceOf[face][2]]};
     std::sort(t.begin(), t.end());
-    return (static_cast<std::uint64_t>(t[0]) << 42) ^ (static_cast<std::uint64_t>(t[1]) << 21) ^ static_cast<std::uint64_t>(t[2]);
+    return (static_cast<std::uint64_t>(t[0]) << 42) ^ (static_cast<std::uint64_t>(t[1]) << 21) ^
+           static_cast<std::uint64_t>(t[2]);
   };
   // Every tet face as (key, 4 tet + face), sorted: a key found once is an exterior triangle.
   std::vector<std::pair<std::uint64_t, std::size_t>> faces;
@@ -333,7 +341,9 @@ std::map<std::string, std::size_t> classifyTets(const TetMesh& m) {
   for (std::size_t t = 0; t < m.tets.size(); ++t) {
     int tris = 0, edges = 0;
     for (int f = 0; f < 4; ++f) tris += exterior[4 * t + f];
-    for (const auto& e : edgeOf) edges += std::binary_search(exteriorEdges.begin(), exteriorEdges.end(), edgeKey(m.tets[t][e[0]], m.tets[t][e[1]]));
+    for (const auto& e : edgeOf)
+      edges +=
+          std::binary_search(exteriorEdges.begin(), exteriorEdges.end(), edgeKey(m.tets[t][e[0]], m.tets[t][e[1]]));
     ++counts[tris][edges];
   }
   std::map<std::string, std::size_t> classes;

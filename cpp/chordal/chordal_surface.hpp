@@ -13,13 +13,13 @@
 namespace hexlayer {
 
 struct ChordalSurface {
-  std::vector<Vec3> vertices;                // v = (v_t + v_b) / 2 of a top-bottom tet edge
-  std::vector<std::array<int, 2>> tetEdge;   // that edge's (top node, bottom node) in the tet mesh
-  std::vector<std::array<int, 4>> facets;    // triangles end with -1; each turns counter-clockwise seen from the top
-  std::vector<Vec3> normals;                 // unit average normal n̄ per vertex (Eq. 2)
-  std::vector<double> radius;                // r = n̄ · (v_t - v) per vertex (Eq. 3)
+  std::vector<Vec3> vertices;               // v = (v_t + v_b) / 2 of a top-bottom tet edge
+  std::vector<std::array<int, 2>> tetEdge;  // that edge's (top node, bottom node) in the tet mesh
+  std::vector<std::array<int, 4>> facets;   // triangles end with -1; each turns counter-clockwise seen from the top
+  std::vector<Vec3> normals;                // unit average normal n̄ per vertex (Eq. 2)
+  std::vector<double> radius;               // r = n̄ · (v_t - v) per vertex (Eq. 3)
   std::size_t triangles = 0, quads = 0;
-  std::size_t pinchedFacetsDropped = 0;      // facets of ears where the rim passed a vertex twice
+  std::size_t pinchedFacetsDropped = 0;  // facets of ears where the rim passed a vertex twice
 };
 
 // Cuts every tet that spans top and bottom: a 3-1 or 1-3 tet gives a triangle, a 2-2 tet a quad

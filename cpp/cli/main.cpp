@@ -1,4 +1,5 @@
-// hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H | --aspect A] [--sizing uniform|adaptive]
+// hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H | --aspect A] [--sizing
+// uniform|adaptive]
 // [--min-size H] [--max-size H] [--order 1|2] [--report R] [--force] [--quiet]`
 #include <CLI/CLI.hpp>
 
@@ -32,18 +33,21 @@ std::string summary(const nlohmann::json& r, const std::string& output) {
     << sj["min"].get<double>() << ", avg " << sj["avg"].get<double>() << ". Volume " << vol["mesh"].get<double>()
     << " vs CAD " << vol["cad"].get<double>() << " (" << std::showpos << 100 * vol["relative_error"].get<double>()
     << std::noshowpos << " %).";
-  if (r.contains("size")) s << " Quad size " << r["size"].get<double>() << " (" << r["size_source"].get<std::string>() << ").";
+  if (r.contains("size"))
+    s << " Quad size " << r["size"].get<double>() << " (" << r["size_source"].get<std::string>() << ").";
   if (r.contains("solids")) s << " " << r["solids"].size() << " solids, each meshed on its own.";
   if (r.contains("small_features")) {
     const auto& f = r["small_features"];
     if (const int n = f["edges_shorter_than_size"].get<int>() + f["narrow_faces"].get<int>(); n > 0)
-      s << " " << f["edges_shorter_than_size"].get<int>() << " CAD edges shorter than the quad size and " << f["narrow_faces"].get<int>()
-        << " faces narrower (the first at (" << f["first_at"][0].get<double>() << ", "
-        << f["first_at"][1].get<double>() << ", " << f["first_at"][2].get<double>() << ")): features that small may be smoothed over.";
+      s << " " << f["edges_shorter_than_size"].get<int>() << " CAD edges shorter than the quad size and "
+        << f["narrow_faces"].get<int>() << " faces narrower (the first at (" << f["first_at"][0].get<double>() << ", "
+        << f["first_at"][1].get<double>() << ", " << f["first_at"][2].get<double>()
+        << ")): features that small may be smoothed over.";
   }
   if (r.contains("timings_s")) {
     s << " Time:";
-    for (const auto& [stage, t] : r["timings_s"].items()) s << " " << stage << " " << std::fixed << std::setprecision(2) << t.get<double>() << " s" << std::defaultfloat;
+    for (const auto& [stage, t] : r["timings_s"].items())
+      s << " " << stage << " " << std::fixed << std::setprecision(2) << t.get<double>() << " s" << std::defaultfloat;
     s << ".";
   }
   return s.str();
@@ -58,22 +62,28 @@ void writeReport(const std::string& path, const nlohmann::json& report) {
 // The meshing options, the same for `mesh` and `check`.
 void addMeshOptions(CLI::App* command, MeshCommand& c) {
   command->add_option("--layers", c.options.layers, "Hex layers through the thickness (default 2)");
-  command->add_option("--size", c.options.size, "Quad edge length on the chordal surface (default: the wall thickness)");
+  command->add_option("--size", c.options.size,
+                      "Quad edge length on the chordal surface (default: the wall thickness)");
   command->add_option("--sizing", c.options.sizing,
                       "Quad sizing: uniform or adaptive (radius function and curvature, §6.1) (default adaptive)");
-  command->add_flag("--drop-junctions", c.options.dropJunctions,
-                    "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (default: refuse, exit 4)");
-  command->add_option("--aspect", c.options.aspect, "In-plane quad size / layer thickness, instead of --size (default off)");
+  command->add_flag(
+      "--drop-junctions", c.options.dropJunctions,
+      "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (default: refuse, exit 4)");
+  command->add_option("--aspect", c.options.aspect,
+                      "In-plane quad size / layer thickness, instead of --size (default off)");
   command->add_option("--min-size", c.options.minSize, "Smallest adaptive quad size (default: a quarter of the size)");
   command->add_option("--max-size", c.options.maxSize, "Largest adaptive quad size (default: 4 x the size)");
   command->add_option("--order", c.options.order,
                       "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
-  command->add_flag("--force", c.options.force, "Write the mesh even if it fails validation (with a warning per failed check)");
+  command->add_flag("--force", c.options.force,
+                    "Write the mesh even if it fails validation (with a warning per failed check)");
 }
 
 int runMesh(MeshCommand& c) {
-  if (c.machine) c.options.progress = [](const std::string& line) { std::cerr << "@progress " << line << std::endl; };
-  else if (!c.quiet) c.options.progress = [](const std::string& line) { std::cerr << "hexlayer: " << line << std::endl; };
+  if (c.machine)
+    c.options.progress = [](const std::string& line) { std::cerr << "@progress " << line << std::endl; };
+  else if (!c.quiet)
+    c.options.progress = [](const std::string& line) { std::cerr << "hexlayer: " << line << std::endl; };
   hexlayer::MeshResult result = hexlayer::meshFile(c.input, c.options);
   if (!c.result.empty()) hexlayer::writeResult(c.result, result);
   std::vector<hexlayer::CellField> fields;
@@ -82,8 +92,8 @@ int runMesh(MeshCommand& c) {
   if (!c.report.empty()) writeReport(c.report, result.report);
   if (!c.quiet && !c.machine) std::cout << summary(result.report, c.output) << std::endl;
   for (const auto& f : result.report["validation"]["failures"])  // only with --force: else meshFile threw
-    std::cerr << "hexlayer: warning: validation failed (written because of --force): " << f["message"].get<std::string>()
-              << std::endl;
+    std::cerr << "hexlayer: warning: validation failed (written because of --force): "
+              << f["message"].get<std::string>() << std::endl;
   if (const auto& b = result.report["boundary"]; !b["same_topology_as_cad"].get<bool>())
     std::cerr << "hexlayer: warning: the mesh boundary has Euler characteristic " << b["euler_characteristic"]
               << " but the part " << b["cad_euler_characteristic"]
@@ -102,10 +112,12 @@ int main(int argc, char** argv) {
   mesh->add_option("-o,--output", c.output, "Output mesh: .inp (CalculiX), .vtu (VTK) or .msh (Gmsh 4.1)")->required();
   addMeshOptions(mesh, c);
   mesh->add_option("--report", c.report, "Write a JSON report of every stage");
-  mesh->add_option("--result", c.result,
-                   "Write the whole result (mesh, node sets, face groups, report, chordal surface and quad mesh) as a JSON "
-                   "index and its arrays in FILE.bin: what the FreeCAD workbench reads");
-  mesh->add_flag("--machine", c.machine, "Progress as '@progress <line>' lines on stderr, one per stage, and no summary");
+  mesh->add_option(
+      "--result", c.result,
+      "Write the whole result (mesh, node sets, face groups, report, chordal surface and quad mesh) as a JSON "
+      "index and its arrays in FILE.bin: what the FreeCAD workbench reads");
+  mesh->add_flag("--machine", c.machine,
+                 "Progress as '@progress <line>' lines on stderr, one per stage, and no summary");
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
   CLI::App* check = app.add_subcommand("check", "Check mesh options without meshing: exit 0, or 2 with the reason");
   addMeshOptions(check, c);

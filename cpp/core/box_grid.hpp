@@ -44,7 +44,8 @@ class BoxGrid {
         const auto it = cells_.find(key(cell));
         if (it == cells_.end()) return;
         for (int id : it->second)
-          if (const double d2 = distance(id, bestD2); d2 < bestD2 || (d2 == bestD2 && id < best)) best = id, bestD2 = d2;
+          if (const double d2 = distance(id, bestD2); d2 < bestD2 || (d2 == bestD2 && id < best))
+            best = id, bestD2 = d2;
       });
       if (best >= 0 && bestD2 <= (r * h_) * (r * h_)) break;  // cells of ring r+1 are at least r*h away
     }

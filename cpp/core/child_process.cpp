@@ -46,7 +46,8 @@ void writeAll(int fd, const std::string& bytes) {
 bool readAll(int fd, std::string& bytes, std::chrono::steady_clock::time_point deadline) {
   char buffer[1 << 16];
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) return false;
     pollfd p{fd, POLLIN, 0};
     const int ready = poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
@@ -81,7 +82,8 @@ ChildResult runInChildProcess(const std::function<std::string()>& work, double t
   close(fds[1]);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds);
   std::string bytes;
-  const bool finished = readAll(fds[0], bytes, std::chrono::time_point_cast<std::chrono::steady_clock::duration>(deadline));
+  const bool finished =
+      readAll(fds[0], bytes, std::chrono::time_point_cast<std::chrono::steady_clock::duration>(deadline));
   close(fds[0]);
   if (!finished) kill(pid, SIGKILL);
   int status = 0;

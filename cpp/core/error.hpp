@@ -6,7 +6,14 @@
 
 namespace hexlayer {
 
-enum class ExitCode : int { Ok = 0, BadUsage = 2, BadInput = 3, UnsupportedGeometry = 4, Internal = 5, InvalidMesh = 6 };
+enum class ExitCode : int {
+  Ok = 0,
+  BadUsage = 2,
+  BadInput = 3,
+  UnsupportedGeometry = 4,
+  Internal = 5,
+  InvalidMesh = 6
+};
 
 class Error : public std::runtime_error {
  public:

@@ -54,7 +54,8 @@ double squaredDistanceToTriangle(const Vec3& p, const Triangle& t) {
   if (d6 >= 0 && d5 <= d6) return cp.squaredNorm();
   const double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
   if (!(va > 0 && vb > 0 && vc > 0))  // closest point on an edge (or a degenerate triangle)
-    return std::min({squaredDistanceToSegment(p, a, b), squaredDistanceToSegment(p, b, c), squaredDistanceToSegment(p, c, a)});
+    return std::min(
+        {squaredDistanceToSegment(p, a, b), squaredDistanceToSegment(p, b, c), squaredDistanceToSegment(p, c, a)});
   const double sum = va + vb + vc;
   return (a + ab * (vb / sum) + ac * (vc / sum) - p).squaredNorm();
 }

@@ -25,10 +25,10 @@ class TriangleTree {
 
  private:
   struct Node {
-    Vec3 lo, hi;        // bounding box of the node's triangles
-    int first = 0;      // leaf: its triangles are order_[first, first + count)
-    int count = 0;      // 0 for an inner node
-    int right = 0;      // inner node: index of the second child (the first follows the node)
+    Vec3 lo, hi;    // bounding box of the node's triangles
+    int first = 0;  // leaf: its triangles are order_[first, first + count)
+    int count = 0;  // 0 for an inner node
+    int right = 0;  // inner node: index of the second child (the first follows the node)
   };
   int build(int first, int count);
   template <class Visit, class Enter>

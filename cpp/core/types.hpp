@@ -32,8 +32,8 @@ enum class Side : signed char { Bottom = -1, Lateral = 0, Top = 1 };
 
 // The 12 edges of a hex as pairs of its corners, in the order of the mid-edge nodes 9-20 of
 // CalculiX's C3D20 (= VTK_QUADRATIC_HEXAHEDRON's 8-19): bottom quad, top quad, then the sweep edges.
-inline constexpr std::array<std::array<int, 2>, 12> kHexEdges = {{
-    {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+inline constexpr std::array<std::array<int, 2>, 12> kHexEdges = {
+    {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
 
 // HexMesh::nodeOnRim values other than 0.
 constexpr char kRimSwept = 1, kRimCap = 2;
@@ -48,10 +48,10 @@ struct HexMesh {
   std::vector<Vec3> nodes;
   std::vector<std::array<int, 8>> hexes;
   std::vector<std::array<int, 12>> midEdges;  // empty for linear (8-node) hexes, else one per hex
-  std::vector<int> nodeLayer;    // 0 = bottom surface ... layers = top surface; -1 = mid-edge node between two layers
-  std::vector<char> nodeOnRim;   // kRimSwept: swept from a node on the chordal surface's boundary (or mid-edge node of a
-                                 // rim edge); kRimCap: on a rim cap column (rim_cap.hpp), beyond the sweep; else 0
-  std::vector<int> nodeFace;     // CAD face (0-based, FreeCAD's Face1 = 0) the node was put on; -1 if none, or not sized
+  std::vector<int> nodeLayer;   // 0 = bottom surface ... layers = top surface; -1 = mid-edge node between two layers
+  std::vector<char> nodeOnRim;  // kRimSwept: swept from a node on the chordal surface's boundary (or mid-edge node of a
+                                // rim edge); kRimCap: on a rim cap column (rim_cap.hpp), beyond the sweep; else 0
+  std::vector<int> nodeFace;    // CAD face (0-based, FreeCAD's Face1 = 0) the node was put on; -1 if none, or not sized
   int layers = 0;
   bool quadratic() const { return !midEdges.empty(); }
 };
@@ -81,8 +81,8 @@ struct HexFace {
 // there), and the boundary hex faces that lie on it (each boundary hex face on exactly one CAD face).
 struct SurfaceGroup {
   std::string name;
-  std::vector<int> nodes;           // sorted, corners and mid-edge nodes
-  std::vector<HexFace> hexFaces;    // sorted by hex, then local face
+  std::vector<int> nodes;         // sorted, corners and mid-edge nodes
+  std::vector<HexFace> hexFaces;  // sorted by hex, then local face
 };
 
 }  // namespace hexlayer

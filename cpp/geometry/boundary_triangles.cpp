@@ -56,8 +56,8 @@ double distanceToSurface(const gp_Pnt& p, const BRepAdaptor_Surface& surface) {
 // edge midpoints and centre: to the surface point at the same parameters, or (next to a pole,
 // where parameters interpolate badly) to the nearest surface point.
 double largestDeviation(const TopoDS_Face& face, const std::vector<Triangle2d>& mesh) {
-  static constexpr double kAt[7][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, 0}, {0, 0.5, 0.5}, {0.5, 0, 0.5},
-                                       {1.0 / 3, 1.0 / 3, 1.0 / 3}};
+  static constexpr double kAt[7][3] = {
+      {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, 0}, {0, 0.5, 0.5}, {0.5, 0, 0.5}, {1.0 / 3, 1.0 / 3, 1.0 / 3}};
   const BRepAdaptor_Surface surface(face);
   const std::vector<std::pair<gp_Pnt, double>> poles = facePoles(face);
   double worst = 0;
@@ -76,14 +76,18 @@ double largestDeviation(const TopoDS_Face& face, const std::vector<Triangle2d>& 
 // Whether every edge of the triangles (corners compared exactly) is shared by an even number of
 // them: a closed surface, across which a ray's crossings alternate inside and outside.
 bool closedSurface(const std::vector<Triangle>& triangles) {
-  const auto before = [](const Vec3& a, const Vec3& b) { return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end()); };
+  const auto before = [](const Vec3& a, const Vec3& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end());
+  };
   std::vector<std::pair<Vec3, Vec3>> edges;
   for (const Triangle& t : triangles)
     for (int k = 0; k < 3; ++k) {
       const Vec3 &a = t[k], &b = t[(k + 1) % 3];
       if (a != b) edges.push_back(before(a, b) ? std::make_pair(a, b) : std::make_pair(b, a));
     }
-  const auto order = [&](const auto& e, const auto& f) { return before(e.first, f.first) || (e.first == f.first && before(e.second, f.second)); };
+  const auto order = [&](const auto& e, const auto& f) {
+    return before(e.first, f.first) || (e.first == f.first && before(e.second, f.second));
+  };
   std::sort(edges.begin(), edges.end(), order);
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
@@ -142,7 +146,8 @@ BoundaryTriangles::BoundaryTriangles(const CadSolid& cad) {
     const std::vector<Triangle2d> mesh = faceTriangles(face);
     if (mesh.empty()) return;
     deviation = std::max(deviation, largestDeviation(face, mesh));
-    for (const Triangle2d& t : mesh) triangles.push_back({toVec(t.xyz[0].XYZ()), toVec(t.xyz[1].XYZ()), toVec(t.xyz[2].XYZ())});
+    for (const Triangle2d& t : mesh)
+      triangles.push_back({toVec(t.xyz[0].XYZ()), toVec(t.xyz[1].XYZ()), toVec(t.xyz[2].XYZ())});
   }
   if (triangles.empty() || !closedSurface(triangles)) return;
   // A triangle with two corners at one point (at a pole) is a segment along its neighbours' edges.
@@ -157,7 +162,8 @@ BoundaryTriangles::BoundaryTriangles(const CadSolid& cad) {
 Containment BoundaryTriangles::classify(const Vec3& p) const {
   if (!tree_ || tree_->anyWithin(p, margin_)) return Containment::kUndecided;
   for (const Vec3& dir : rays_)
-    if (const std::optional<int> n = tree_->crossings(p, dir)) return *n % 2 ? Containment::kInside : Containment::kOutside;
+    if (const std::optional<int> n = tree_->crossings(p, dir))
+      return *n % 2 ? Containment::kInside : Containment::kOutside;
   return Containment::kUndecided;
 }
 

@@ -135,9 +135,12 @@ BRepExtrema_ExtPC& CadFaceProbe::curve(int edge) {
 TopAbs_State CadFaceProbe::classify(int face, double u, double v) const {
   const CadFaces::Face& f = faces_.face(face);
   switch (f.boundary->side(u, v)) {
-    case UvBoundary::Side::Inside: return TopAbs_IN;
-    case UvBoundary::Side::Outside: return TopAbs_OUT;
-    default: return BRepClass_FaceClassifier(f.face, gp_Pnt2d(u, v), f.tolerance).State();
+    case UvBoundary::Side::Inside:
+      return TopAbs_IN;
+    case UvBoundary::Side::Outside:
+      return TopAbs_OUT;
+    default:
+      return BRepClass_FaceClassifier(f.face, gp_Pnt2d(u, v), f.tolerance).State();
   }
 }
 
@@ -180,8 +183,8 @@ std::optional<double> CadFaceProbe::edgeDistance(int edge, const TopoDS_Vertex& 
   BRep_Tool::Range(e.edge, first, last);
   for (int i = 1; i <= n; ++i) {
     const double t = extrema.Parameter(i);
-    if (std::fabs(nearest - std::sqrt(extrema.SquareDistance(i))) < kEps && std::fabs(t - first) >= Precision::PConfusion() &&
-        std::fabs(t - last) > Precision::PConfusion())
+    if (std::fabs(nearest - std::sqrt(extrema.SquareDistance(i))) < kEps &&
+        std::fabs(t - first) >= Precision::PConfusion() && std::fabs(t - last) > Precision::PConfusion())
       return nearest;
   }
   return std::nullopt;

@@ -5,14 +5,13 @@
 #include <BRepExtrema_ExtPC.hxx>
 #include <Bnd_Box.hxx>
 #include <Extrema_ExtPS.hxx>
-#include <TopoDS_Edge.hxx>
 #include <TopAbs_State.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <gp_Pnt.hxx>
 
 #include <memory>
-#include <string>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,13 +35,13 @@ class CadFaces {
   // A face and what BRepExtrema_DistShapeShape would derive from it at every query.
   struct Face {
     TopoDS_Face face;
-    std::string name;               // FreeCAD's name of the input face it is (a piece of): "Face<N>"
+    std::string name;  // FreeCAD's name of the input face it is (a piece of): "Face<N>"
     double tolerance = 0;
-    Bnd_Box box;                    // optimal, enlarged by the tolerance: the quick test of `lies`
-    Bnd_Box extremaBox;             // BRepBndLib::Add, as BRepExtrema boxes the face
-    std::vector<gp_Pnt> vertices;   // TopExp::MapShapes order
-    std::vector<int> edges;         // into edges()
-    std::vector<int> neighbours;    // faces sharing a vertex, ascending
+    Bnd_Box box;                        // optimal, enlarged by the tolerance: the quick test of `lies`
+    Bnd_Box extremaBox;                 // BRepBndLib::Add, as BRepExtrema boxes the face
+    std::vector<gp_Pnt> vertices;       // TopExp::MapShapes order
+    std::vector<int> edges;             // into edges()
+    std::vector<int> neighbours;        // faces sharing a vertex, ascending
     double uvBounds[4] = {0, 0, 0, 0};  // BRepTools::UVBounds: u1, u2, v1, v2
     std::unique_ptr<UvBoundary> boundary;
   };
@@ -100,7 +99,7 @@ class CadFaceProbe {
                                       std::optional<double> nearest);
 
   const CadFaces& faces_;
-  std::vector<std::unique_ptr<Surface>> surfaces_;        // per face, built at its first query
+  std::vector<std::unique_ptr<Surface>> surfaces_;          // per face, built at its first query
   std::vector<std::unique_ptr<BRepExtrema_ExtPC>> curves_;  // per edge, built at its first query
 };
 

@@ -14,11 +14,11 @@
 #include <IGESControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Solid.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
-#include <Standard_Failure.hxx>
 #include <XSControl_Reader.hxx>
 #include <gp_Trsf.hxx>
 #include <gp_Vec.hxx>
@@ -40,7 +40,6 @@ namespace {
 // microns, if drawn in millimetres) are scaled to kPipelineDiagonal. Parts within are left as they are:
 // Gmsh took 3x longer on the scaled copy of a B-spline part (the AnalysisSitus ski part) whatever the size.
 constexpr double kPipelineDiagonal = 100, kSmallestDiagonal = 10, kLargestDiagonal = 10000;
-
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -64,7 +63,8 @@ Format formatOf(const std::string& path) {
 const char* formatName(Format f) { return f == Format::Step ? "STEP" : f == Format::Iges ? "IGES" : "BREP"; }
 
 TopoDS_Shape readWithTranslator(XSControl_Reader& reader, const std::string& path) {
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw inputError("not a valid " + std::string(formatName(formatOf(path))) + " file");
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+    throw inputError("not a valid " + std::string(formatName(formatOf(path))) + " file");
   reader.TransferRoots();
   return reader.OneShape();
 }
@@ -104,7 +104,8 @@ TopoDS_Shape readShape(const std::string& path) {
   const Format format = formatOf(path);
   std::error_code ec;
   const double seconds = kReadSeconds + kReadSecondsPerMB * std::filesystem::file_size(path, ec) / 1e6;
-  const ChildResult child = runInChildProcess([&] { return readShapeInProcess(path).IsNull() ? "null" : "shape"; }, seconds);
+  const ChildResult child =
+      runInChildProcess([&] { return readShapeInProcess(path).IsNull() ? "null" : "shape"; }, seconds);
   if (child.ok) return readShapeInProcess(path);
   if (child.threw) throw inputError("cannot read '" + path + "': " + child.failure);
   throw inputError("cannot read '" + path + "': the " + formatName(format) + " reader " + child.failure +
@@ -130,10 +131,14 @@ std::string contents(const TopoDS_Shape& shape) {
   };
   const int shells = count(TopAbs_SHELL), faces = count(TopAbs_FACE), edges = count(TopAbs_EDGE);
   std::ostringstream s;
-  if (shells > 0) s << shells << " open shell(s) of " << faces << " face(s) in all, not closed";
-  else if (faces > 0) s << faces << " loose face(s)";
-  else if (edges > 0) s << edges << " edge(s) (wires or curves), no face";
-  else s << "no face and no edge";
+  if (shells > 0)
+    s << shells << " open shell(s) of " << faces << " face(s) in all, not closed";
+  else if (faces > 0)
+    s << faces << " loose face(s)";
+  else if (edges > 0)
+    s << edges << " edge(s) (wires or curves), no face";
+  else
+    s << "no face and no edge";
   s << "; Hex-Layer needs a closed solid";
   return s.str();
 }
@@ -143,7 +148,8 @@ std::string contents(const TopoDS_Shape& shape) {
 std::vector<TopoDS_Solid> readSolids(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw inputError("input file '" + path + "' does not exist");
-  if (!std::filesystem::is_regular_file(path, ec)) throw inputError("input '" + path + "' is not a regular file (a folder?)");
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw inputError("input '" + path + "' is not a regular file (a folder?)");
   if (std::filesystem::file_size(path, ec) == 0) throw inputError("input file '" + path + "' is empty");
   formatOf(path);  // an unknown extension is refused before reading
   if (!std::ifstream(path).good()) throw inputError("input file '" + path + "' cannot be opened");
@@ -220,7 +226,8 @@ long eulerCharacteristic(const CadSolid& cad) {
   long wires = 0, edges = 0;
   for (int f = 1; f <= cad.faces.Extent(); ++f)
     for (TopExp_Explorer w(cad.faces(f), TopAbs_WIRE); w.More(); w.Next()) ++wires;
-  for (int e = 1; e <= cad.edges.Extent(); ++e) edges += !BRep_Tool::Degenerated(TopoDS::Edge(cad.edges(e)));  // a sphere's pole is no edge
+  for (int e = 1; e <= cad.edges.Extent(); ++e)
+    edges += !BRep_Tool::Degenerated(TopoDS::Edge(cad.edges(e)));  // a sphere's pole is no edge
   const long faces = cad.faces.Extent();
   return cad.vertices.Extent() - edges + 2 * faces - wires;
 }

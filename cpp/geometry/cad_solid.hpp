@@ -1,8 +1,8 @@
 // Geometry input (OpenCASCADE): read a CAD file, take its solids, check each is a valid closed solid.
 #pragma once
+#include <Bnd_Box.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Solid.hxx>
-#include <Bnd_Box.hxx>
 #include <string>
 #include <vector>
 
@@ -14,9 +14,9 @@ namespace hexlayer {
 struct CadSolid {
   TopoDS_Solid solid;
   TopTools_IndexedMapOfShape faces, edges, vertices;
-  double volume = 0;   // CAD volume, in the units of `solid`
-  double diagonal = 0; // length of the bounding box diagonal
-  double unit = 1;     // lengths of `solid` per length of the input: the input scaled by `unit` (normalizingUnit)
+  double volume = 0;    // CAD volume, in the units of `solid`
+  double diagonal = 0;  // length of the bounding box diagonal
+  double unit = 1;      // lengths of `solid` per length of the input: the input scaled by `unit` (normalizingUnit)
   std::vector<int> inputFace;  // per face (0-based), the input's face it is (a piece of); empty: the same faces
 };
 
@@ -24,7 +24,9 @@ struct CadSolid {
 inline int inputFaceOf(const CadSolid& cad, int f) { return cad.inputFace.empty() || f < 0 ? f : cad.inputFace[f]; }
 
 // FreeCAD's name of the input's face that face f is (a piece of): "Face<N>".
-inline std::string inputFaceName(const CadSolid& cad, int f) { return "Face" + std::to_string(inputFaceOf(cad, f) + 1); }
+inline std::string inputFaceName(const CadSolid& cad, int f) {
+  return "Face" + std::to_string(inputFaceOf(cad, f) + 1);
+}
 
 // Reads STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep/.brp) and returns every solid in it.
 // Throws inputError for a missing/unreadable file or one without a solid; the reading runs in a child

@@ -11,10 +11,10 @@
 namespace hexlayer {
 
 struct FaceSample {
-  Vec3 point;        // on the exact surface
-  Vec3 normal;       // unit, pointing out of the solid
+  Vec3 point;   // on the exact surface
+  Vec3 normal;  // unit, pointing out of the solid
   double u = 0, v = 0;
-  double area = 0;   // share of the face's area this sample stands for
+  double area = 0;  // share of the face's area this sample stands for
 };
 
 // A triangle of a face's triangulation: its corners in the face's parameter plane and in space.

@@ -25,14 +25,14 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kWallPiece = 0.7;  // the wall piece: at least this share of its sample area crosses the wall
-constexpr double kRimPiece = 0.5;   // the rim piece: less than this share (a rim face's bound, wall_sides.cpp)
-constexpr double kRimTurn = 45;     // degrees between the two pieces' mean normals
-constexpr double kMinRimArea = 0.1;  // the rim piece at least this many squared wall thicknesses
-constexpr double kOneWay = 0.5;      // a piece's mean normal at least this long per area (a half-round: 2 / pi)
+constexpr double kWallPiece = 0.7;    // the wall piece: at least this share of its sample area crosses the wall
+constexpr double kRimPiece = 0.5;     // the rim piece: less than this share (a rim face's bound, wall_sides.cpp)
+constexpr double kRimTurn = 45;       // degrees between the two pieces' mean normals
+constexpr double kMinRimArea = 0.1;   // the rim piece at least this many squared wall thicknesses
+constexpr double kOneWay = 0.5;       // a piece's mean normal at least this long per area (a half-round: 2 / pi)
 constexpr std::size_t kMinMarks = 8;  // samples a face needs to be split
-constexpr int kLines = 64;          // parameter lines tried per direction, besides the surface's knots
-constexpr double kKnotSlack = 0.05;  // a knot is taken if it misplaces at most this share more of the area
+constexpr int kLines = 64;            // parameter lines tried per direction, besides the surface's knots
+constexpr double kKnotSlack = 0.05;   // a knot is taken if it misplaces at most this share more of the area
 
 // The knots of the face's surface along u (alongV lines sit on them) or v: where a B-spline skin joins a flat
 // to a round, its curvature jumps at a knot.
@@ -57,7 +57,8 @@ struct Piece {
 };
 
 struct Candidate {
-  double misplaced;  // sample area on the wrong side of the lines (non-crossing in a wall piece, crossing in the rim piece)
+  double misplaced;  // sample area on the wrong side of the lines (non-crossing in a wall piece, crossing in the rim
+                     // piece)
   std::vector<FaceSplit> splits;  // one line, or two round a rim piece between two wall pieces
 };
 
@@ -70,7 +71,8 @@ double angleDegrees(const Vec3& a, const Vec3& b) {
 // them may be empty) as wall pieces, if they part the samples so. The rim must turn away from each wall next to
 // it: a wall's normal is taken over a band beside the line as wide (in the parameter) as the rim piece, so a
 // curved wall's band along a flat rim is not taken for a rim.
-std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV, double from, double to, double thickness, int face) {
+std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV, double from, double to,
+                                 double thickness, int face) {
   auto coord = [&](const RayMark& m) { return alongV ? m.u : m.v; };
   auto inRim = [&](const RayMark& m) { return coord(m) >= from && coord(m) < to; };
   Piece below, above, rim, besideBelow, besideAbove;
@@ -82,10 +84,13 @@ std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV,
   }
   const double width = std::max(last - first, 0.0);
   for (const RayMark& m : marks) {
-    if (coord(m) < from && coord(m) >= from - width) besideBelow.area += m.area, besideBelow.normal += m.area * m.normal;
+    if (coord(m) < from && coord(m) >= from - width)
+      besideBelow.area += m.area, besideBelow.normal += m.area * m.normal;
     if (coord(m) >= to && coord(m) < to + width) besideAbove.area += m.area, besideAbove.normal += m.area * m.normal;
   }
-  if (rim.share() >= kRimPiece || rim.area < kMinRimArea * thickness * thickness || rim.normal.norm() < kOneWay * rim.area) return {};
+  if (rim.share() >= kRimPiece || rim.area < kMinRimArea * thickness * thickness ||
+      rim.normal.norm() < kOneWay * rim.area)
+    return {};
   if (below.area + above.area <= 0) return {};
   Candidate c{rim.crossing, {}};
   for (const auto& [wall, beside, at] : {std::tuple{below, besideBelow, from}, std::tuple{above, besideAbove, to}}) {
@@ -139,7 +144,8 @@ std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& side
   for (int f = 0; f < static_cast<int>(sides.faces.size()); ++f) {
     const FaceSide& fs = sides.faces[f];
     if (fs.marks.size() < kMinMarks || fs.wallShare < kRimPiece) continue;  // a rim face
-    if (std::optional<std::vector<FaceSplit>> s = bestSplit(cad, fs, sides.thickness, f)) splits.insert(splits.end(), s->begin(), s->end());
+    if (std::optional<std::vector<FaceSplit>> s = bestSplit(cad, fs, sides.thickness, f))
+      splits.insert(splits.end(), s->begin(), s->end());
   }
   return splits;
 }
@@ -152,7 +158,7 @@ CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
       double u0, u1, v0, v1;
       BRepTools::UVBounds(face, u0, u1, v0, v1);
       const Handle(Geom2d_Line) line = s.alongV ? new Geom2d_Line(gp_Pnt2d(s.at, 0), gp_Dir2d(0, 1))
-                                               : new Geom2d_Line(gp_Pnt2d(0, s.at), gp_Dir2d(1, 0));
+                                                : new Geom2d_Line(gp_Pnt2d(0, s.at), gp_Dir2d(1, 0));
       BRepBuilderAPI_MakeEdge edge(line, BRep_Tool::Surface(face), s.alongV ? v0 : u0, s.alongV ? v1 : u1);
       if (!edge.IsDone()) return {};
       TopoDS_Edge e = edge.Edge();

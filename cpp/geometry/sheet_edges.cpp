@@ -31,7 +31,8 @@ std::vector<SheetJoin> sheetJoins(const CadSolid& cad) {
   for (int e = 1; e <= edgeFaces.Extent(); ++e) {
     std::vector<int> faces;
     for (const TopoDS_Shape& f : edgeFaces(e))
-      if (const int i = cad.faces.FindIndex(f) - 1; std::find(faces.begin(), faces.end(), i) == faces.end()) faces.push_back(i);
+      if (const int i = cad.faces.FindIndex(f) - 1; std::find(faces.begin(), faces.end(), i) == faces.end())
+        faces.push_back(i);
     const TopoDS_Edge edge = TopoDS::Edge(edgeFaces.FindKey(e));
     if (faces.size() != 2 || hasKind(edgeTypes, edge, ChFiDS_Concave)) continue;
     const auto [a, b] = std::minmax(faces[0], faces[1]);

@@ -12,9 +12,9 @@
 namespace hexlayer {
 
 struct Sheet {
-  std::vector<int> faces;  // 0-based (FreeCAD's Face<i+1>), top and bottom faces
-  double area = 0;         // of those faces
-  double volume = 0;       // about: half the sum of face area x the wall thickness measured from it
+  std::vector<int> faces;      // 0-based (FreeCAD's Face<i+1>), top and bottom faces
+  double area = 0;             // of those faces
+  double volume = 0;           // about: half the sum of face area x the wall thickness measured from it
   Vec3 centre = Vec3::Zero();  // area-weighted centre of the faces' samples
 };
 

@@ -15,10 +15,10 @@ namespace {
 
 using Sample = UvBoundary::Sample;
 
-constexpr std::size_t kChunk = 16;   // segments per chunk
-constexpr double kSag = 0.25;        // largest distance of a pcurve from its polyline, in margins
-constexpr int kMaxDepth = 16;        // halvings of a pcurve interval at most
-constexpr int kMinDepth = 2;         // halvings of a curved pcurve interval at least
+constexpr std::size_t kChunk = 16;  // segments per chunk
+constexpr double kSag = 0.25;       // largest distance of a pcurve from its polyline, in margins
+constexpr int kMaxDepth = 16;       // halvings of a pcurve interval at most
+constexpr int kMinDepth = 2;        // halvings of a curved pcurve interval at least
 
 // Distance from (x, y) to the segment a-b, squared.
 double squaredDistance(double x, double y, const Sample& a, const Sample& b) {
@@ -53,7 +53,8 @@ struct PcurveSampler {
 };
 
 // The polyline of one pcurve on [first, last], split at its C2 intervals; empty if it cannot be sampled.
-std::vector<Sample> polyline(const Handle(Geom2d_Curve)& pcurve, double first, double last, double scaleU, double scaleV) {
+std::vector<Sample> polyline(const Handle(Geom2d_Curve) & pcurve, double first, double last, double scaleU,
+                             double scaleV) {
   const Geom2dAdaptor_Curve curve(pcurve, first, last);
   const PcurveSampler sampler{curve, scaleU, scaleV, curve.GetType() != GeomAbs_Line};
   TColStd_Array1OfReal breaks(1, curve.NbIntervals(GeomAbs_C2) + 1);
@@ -77,8 +78,10 @@ void joinEnds(std::vector<std::vector<Sample>>& lines) {
       const auto same = std::find_if(joints.begin(), joints.end(), [&](const Sample& j) {
         return std::abs(j.x - end->x) < kJoint && std::abs(j.y - end->y) < kJoint;
       });
-      if (same == joints.end()) joints.push_back(*end);
-      else end->x = same->x, end->y = same->y;
+      if (same == joints.end())
+        joints.push_back(*end);
+      else
+        end->x = same->x, end->y = same->y;
     }
 }
 

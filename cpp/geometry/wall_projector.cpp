@@ -24,21 +24,27 @@ WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides) {
     BRepBndLib::AddOptimal(shape, w.box, false, false);  // exact geometry, not the triangulation
     return w;
   };
-  for (int f = 0; f < cad.faces.Extent(); ++f) faces_[sideIndex(sides.faces[f].side)].push_back(piece(cad.faces(f + 1), f));
+  for (int f = 0; f < cad.faces.Extent(); ++f)
+    faces_[sideIndex(sides.faces[f].side)].push_back(piece(cad.faces(f + 1), f));
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
   for (int e = 1; e <= edgeFaces.Extent(); ++e) {
     int wall = -1, lateral = -1;
     for (const TopoDS_Shape& face : edgeFaces(e)) {
       const int f = cad.faces.FindIndex(face) - 1;
-      if (sides.faces[f].side == Side::Lateral) lateral = f;
-      else if (wall < 0) wall = f;
+      if (sides.faces[f].side == Side::Lateral)
+        lateral = f;
+      else if (wall < 0)
+        wall = f;
     }
-    if (lateral >= 0 && wall >= 0) rimEdges_[sideIndex(sides.faces[wall].side)].push_back(piece(edgeFaces.FindKey(e), wall, lateral));
+    if (lateral >= 0 && wall >= 0)
+      rimEdges_[sideIndex(sides.faces[wall].side)].push_back(piece(edgeFaces.FindKey(e), wall, lateral));
   }
 }
 
-std::optional<FacePoint> WallProjector::project(Side side, const Vec3& p) const { return nearest(faces_[sideIndex(side)], p); }
+std::optional<FacePoint> WallProjector::project(Side side, const Vec3& p) const {
+  return nearest(faces_[sideIndex(side)], p);
+}
 
 std::optional<FacePoint> WallProjector::projectOntoFace(int face, const Vec3& p) const {
   for (const std::vector<Piece>& side : faces_)

@@ -42,8 +42,8 @@ class WallProjector {
     Bnd_Box box;         // contains the shape: its distance to p bounds the shape's from below
   };
   static std::optional<FacePoint> nearest(const std::vector<Piece>& pieces, const Vec3& p);
-  std::array<std::vector<Piece>, 3> faces_;      // by side: bottom, lateral, top (Side + 1)
-  std::array<std::vector<Piece>, 3> rimEdges_;   // by side (bottom and top): the walls' edges on lateral faces
+  std::array<std::vector<Piece>, 3> faces_;     // by side: bottom, lateral, top (Side + 1)
+  std::array<std::vector<Piece>, 3> rimEdges_;  // by side (bottom and top): the walls' edges on lateral faces
 };
 
 }  // namespace hexlayer

@@ -14,7 +14,8 @@ std::optional<FacePoint> WallRays::cast(Side side, const Vec3& from, const Vec3&
                        maxDistance);
   if (!rays_.IsDone() || rays_.NbPnt() == 0) return std::nullopt;
   const int face = cad_.faces.FindIndex(rays_.Face(1)) - 1;
-  if (face < 0 || (sides_.faces[face].side != side && !(orRim && sides_.faces[face].side == Side::Lateral))) return std::nullopt;
+  if (face < 0 || (sides_.faces[face].side != side && !(orRim && sides_.faces[face].side == Side::Lateral)))
+    return std::nullopt;
   const gp_Pnt& p = rays_.Pnt(1);
   return FacePoint{Vec3(p.X(), p.Y(), p.Z()), face};
 }

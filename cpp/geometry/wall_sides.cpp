@@ -49,7 +49,8 @@ struct Ray {
 double weightedMedian(std::vector<Ray> rays) {
   if (rays.empty()) return 0;
   std::sort(rays.begin(), rays.end(), [](const Ray& a, const Ray& b) { return a.length < b.length; });
-  const double total = std::accumulate(rays.begin(), rays.end(), 0.0, [](double s, const Ray& r) { return s + r.weight; });
+  const double total =
+      std::accumulate(rays.begin(), rays.end(), 0.0, [](double s, const Ray& r) { return s + r.weight; });
   double acc = 0;
   for (const Ray& r : rays)
     if ((acc += r.weight) >= 0.5 * total) return r.length;
@@ -75,10 +76,10 @@ double perimeter(const TopoDS_Shape& face) {
 
 // The inward rays of one face's samples: where each first meets the boundary again.
 struct FaceRays {
-  std::vector<Ray> all;       // every ray that hit
-  std::vector<Ray> crossing;  // the rays that cross the wall (crossesWall)
-  double sampledArea = 0;     // of all samples, hit or not
-  std::vector<RayMark> marks;  // every sample
+  std::vector<Ray> all;            // every ray that hit
+  std::vector<Ray> crossing;       // the rays that cross the wall (crossesWall)
+  double sampledArea = 0;          // of all samples, hit or not
+  std::vector<RayMark> marks;      // every sample
   Vec3 meanNormal = Vec3::Zero();  // area-weighted outward normal
 };
 
@@ -93,7 +94,8 @@ bool crossesWall(const BoundaryTriangles& boundary, const Vec3& p, const Vec3& i
 }
 
 // Casts rays from the face's samples inward and records how far the boundary is and which face it is.
-FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, IntCurvesFace_ShapeIntersector& rays, int f) {
+FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, IntCurvesFace_ShapeIntersector& rays,
+                        int f) {
   const TopoDS_Shape& face = cad.faces(f + 1);
   const double spacing = std::sqrt(std::max(triangulatedArea(face), 1e-30) / kRaysPerFace);
   const double skip = 1e-5 * cad.diagonal;
@@ -101,13 +103,15 @@ FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, 
   for (const FaceSample& s : sampleFace(face, spacing)) {
     out.meanNormal += s.area * s.normal;
     out.sampledArea += s.area;
-    const gp_Lin line(gp_Pnt(s.point.x(), s.point.y(), s.point.z()), gp_Dir(-s.normal.x(), -s.normal.y(), -s.normal.z()));
+    const gp_Lin line(gp_Pnt(s.point.x(), s.point.y(), s.point.z()),
+                      gp_Dir(-s.normal.x(), -s.normal.y(), -s.normal.z()));
     rays.PerformNearest(line, skip, 2 * cad.diagonal);
     out.marks.push_back({s.u, s.v, s.area, s.normal, false});
     if (!rays.IsDone() || rays.NbPnt() == 0) continue;
     const Ray ray{rays.WParameter(1), cad.faces.FindIndex(rays.Face(1)) - 1, s.area};
     out.all.push_back(ray);
-    if (crossesWall(boundary, s.point, -s.normal, ray.length)) out.crossing.push_back(ray), out.marks.back().crossing = true;
+    if (crossesWall(boundary, s.point, -s.normal, ray.length))
+      out.crossing.push_back(ray), out.marks.back().crossing = true;
   }
   return out;
 }
@@ -142,7 +146,6 @@ struct ParityUnionFind {
   }
 };
 
-
 // Total length of the edges faces a and b (0-based) share.
 double sharedEdgeLength(const CadSolid& cad, int a, int b) {
   TopTools_IndexedMapOfShape edgesOfA;
@@ -161,7 +164,8 @@ std::vector<int> obliqueRimFaces(const CadSolid& cad, const WallSides& w) {
   for (const SheetJoin& k : w.knifeEdges) {
     const int face = w.faces[k.a].area <= w.faces[k.b].area ? k.a : k.b;
     const double across = w.faces[face].area / std::max(sharedEdgeLength(cad, k.a, k.b), 1e-30);
-    if (across <= kMaxObliqueRim * w.thickness && std::find(rims.begin(), rims.end(), face) == rims.end()) rims.push_back(face);
+    if (across <= kMaxObliqueRim * w.thickness && std::find(rims.begin(), rims.end(), face) == rims.end())
+      rims.push_back(face);
   }
   std::sort(rims.begin(), rims.end());
   return rims;
@@ -175,10 +179,11 @@ void requireThin(const WallSides& w, const CadSolid& cad, double thicknessEveryw
   const double slenderness = thickness / cad.diagonal;
   if (w.thickness > 0 && w.sheetAreaShare >= 0.5 && slenderness <= kMaxSlenderness) return;
   msg << "not a thin section: measured thickness " << thickness / cad.unit << " over part size (diagonal) "
-      << cad.diagonal / cad.unit
-      << " = " << slenderness << " (a thin section has at most " << kMaxSlenderness << ")";
-  if (w.thickness > 0) msg << ", top+bottom area share " << w.sheetAreaShare << " (at least 0.5)";
-  else msg << ", and no face's inward rays cross a wall (their middles are nearer another face than their ends)";
+      << cad.diagonal / cad.unit << " = " << slenderness << " (a thin section has at most " << kMaxSlenderness << ")";
+  if (w.thickness > 0)
+    msg << ", top+bottom area share " << w.sheetAreaShare << " (at least 0.5)";
+  else
+    msg << ", and no face's inward rays cross a wall (their middles are nearer another face than their ends)";
   throw geometryError(msg.str());
 }
 
@@ -219,7 +224,7 @@ Error junctionError(const CadSolid& cad, const WallSides& w, const std::vector<i
 // A relation between two faces' sides: 0 the same side, 1 opposite sides.
 struct SideRelation {
   int a, b, relation;
-  double weight;       // area of the rays that tie them (joins: 0, decided by their rank)
+  double weight;        // area of the rays that tie them (joins: 0, decided by their rank)
   bool smooth = false;  // a smooth edge, which no other relation may undo
 };
 
@@ -236,7 +241,8 @@ std::vector<SideRelation> rankedRelations(const WallSides& w, const std::vector<
     for (const auto& [g, area] : across[f])
       if (g != f && isWall(f) && isWall(g)) pairs[std::minmax(f, g)] += area;
   for (const auto& [fg, area] : pairs) opposite.push_back({fg.first, fg.second, 1, area});
-  std::stable_sort(opposite.begin(), opposite.end(), [](const SideRelation& x, const SideRelation& y) { return x.weight > y.weight; });
+  std::stable_sort(opposite.begin(), opposite.end(),
+                   [](const SideRelation& x, const SideRelation& y) { return x.weight > y.weight; });
   std::vector<SideRelation> all = std::move(smooth);
   all.insert(all.end(), opposite.begin(), opposite.end());
   all.insert(all.end(), convex.begin(), convex.end());
@@ -245,17 +251,20 @@ std::vector<SideRelation> rankedRelations(const WallSides& w, const std::vector<
 
 // Same side across shared edges, opposite sides across the wall; returns (group, parity) per face.
 // Walls facing a wall on their own side (the sheet branches) go into w.ownSideFaces.
-std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, WallSides& w, const std::vector<std::map<int, double>>& across) {
+std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, WallSides& w,
+                                            const std::vector<std::map<int, double>>& across) {
   const int n = static_cast<int>(w.faces.size());
   ParityUnionFind uf(n);
   std::vector<double> against(n, 0.0);  // per face, the ray area of its relations across the wall that failed
   for (const SideRelation& r : rankedRelations(w, across)) {
     if (uf.unite(r.a, r.b, r.relation)) continue;
-    if (r.relation == 1) against[r.a] += r.weight, against[r.b] += r.weight;
-    else if (!r.smooth) w.knifeEdges.push_back({r.a, r.b, false});
+    if (r.relation == 1)
+      against[r.a] += r.weight, against[r.b] += r.weight;
+    else if (!r.smooth)
+      w.knifeEdges.push_back({r.a, r.b, false});
     else
-      throw geometryError("top and bottom cannot be told apart: " + inputFaceName(cad, r.a) + " and " + inputFaceName(cad, r.b) +
-                          " share a smooth edge but lie on opposite sides of the wall");
+      throw geometryError("top and bottom cannot be told apart: " + inputFaceName(cad, r.a) + " and " +
+                          inputFaceName(cad, r.b) + " share a smooth edge but lie on opposite sides of the wall");
   }
   double junctionArea = 0, wallArea = 0;
   for (int f = 0; f < n; ++f)

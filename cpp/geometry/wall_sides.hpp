@@ -4,8 +4,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/types.hpp"
 #include "core/error.hpp"
+#include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
 #include "geometry/sheet_edges.hpp"
 
@@ -24,15 +24,15 @@ struct FaceSide {
   double thickness = 0;  // area-weighted median distance to the opposite wall along the inward normal
   double width = 0;      // 2 * area / perimeter: about the wall thickness for a lateral (rim) face
   double area = 0;
-  int opposite = -1;     // 0-based index of the face most rays crossing the wall hit, -1 if none
-  double wallShare = 0;  // share of the face's area whose inward rays cross the wall (a wall face: >= 0.5)
+  int opposite = -1;           // 0-based index of the face most rays crossing the wall hit, -1 if none
+  double wallShare = 0;        // share of the face's area whose inward rays cross the wall (a wall face: >= 0.5)
   std::vector<RayMark> marks;  // its samples (mixed_faces.hpp splits a face that is partly wall, partly rim)
 };
 
 struct WallSides {
-  std::vector<FaceSide> faces;  // indexed like CadSolid::faces, 0-based (FreeCAD's Face<i+1>)
-  double thickness = 0;         // area-weighted median over top and bottom faces
-  double sheetAreaShare = 0;    // area of top + bottom over the whole boundary
+  std::vector<FaceSide> faces;        // indexed like CadSolid::faces, 0-based (FreeCAD's Face<i+1>)
+  double thickness = 0;               // area-weighted median over top and bottom faces
+  double sheetAreaShare = 0;          // area of top + bottom over the whole boundary
   std::vector<SheetJoin> sheetJoins;  // faces sharing a smooth or convex edge (sheet_edges.hpp)
   std::vector<int> ownSideFaces;      // wall faces facing a wall on their own side: the sheet branches there
   std::vector<SheetJoin> knifeEdges;  // convex edges between faces on opposite sides: a tapered end's tip
@@ -69,7 +69,7 @@ Error ownSideError(const CadSolid& cad, const WallSides& sides);
 // (walls) or than half the wall thickness (lateral faces): slivers, small fillets and chamfers.
 struct SmallFeatures {
   int shortEdges = 0, narrowFaces = 0;  // narrowFaces: wall or lateral
-  Vec3 firstAt = Vec3::Zero();  // the middle of the first such edge, else a point of the first such face
+  Vec3 firstAt = Vec3::Zero();          // the middle of the first such edge, else a point of the first such face
 };
 SmallFeatures findSmallFeatures(const CadSolid& cad, const WallSides& sides, double size);
 

@@ -1,5 +1,7 @@
 #include "pipeline/pipeline.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <deque>
@@ -7,25 +9,23 @@
 #include <iterator>
 #include <optional>
 #include <sstream>
-#include <unistd.h>
-#include <sys/resource.h>
 
 #include "bubbles/bubble_packing.hpp"
-#include "core/groups.hpp"
 #include "chordal/chordal_fairing.hpp"
 #include "chordal/chordal_rim.hpp"
 #include "chordal/chordal_surface.hpp"
 #include "core/error.hpp"
+#include "core/groups.hpp"
+#include "core/threads.hpp"
 #include "geometry/cad_faces.hpp"
 #include "geometry/mixed_faces.hpp"
-#include "core/threads.hpp"
+#include "geometry/sheet_junctions.hpp"
 #include "geometry/wall_projector.hpp"
 #include "geometry/wall_rays.hpp"
-#include "geometry/sheet_junctions.hpp"
 #include "geometry/wall_sides.hpp"
+#include "pipeline/surface_groups.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/sizing.hpp"
-#include "pipeline/surface_groups.hpp"
 #include "quality/quality.hpp"
 #include "quality/validation.hpp"
 #include "sweep/quadratic.hpp"
@@ -89,7 +89,9 @@ class StageClock {
 // The quad size as far as it is known before the chordal surface: the given one, A layer thicknesses
 // (thickness / layers) with --aspect A, else the wall thickness (bending-accurate C3D8I with 2 layers).
 double plannedSize(const MeshOptions& o, const WallSides& sides) {
-  return o.size > 0 ? o.size : o.aspect > 0 ? o.aspect * sides.thickness / o.layers : kDefaultSizeOverThickness * sides.thickness;
+  return o.size > 0     ? o.size
+         : o.aspect > 0 ? o.aspect * sides.thickness / o.layers
+                        : kDefaultSizeOverThickness * sides.thickness;
 }
 
 // The quad size used: the planned one, made coarser by default if the part would need too many quads.
@@ -170,7 +172,10 @@ std::string describeSheet(const CadSolid& cad, const Sheet& s) {
 }
 
 nlohmann::json junctionReport(const CadSolid& cad, const Sheet& s) {
-  return {{"at", {s.centre.x(), s.centre.y(), s.centre.z()}}, {"faces", faceNames(cad, s)}, {"area", s.area}, {"volume", s.volume}};
+  return {{"at", {s.centre.x(), s.centre.y(), s.centre.z()}},
+          {"faces", faceNames(cad, s)},
+          {"area", s.area},
+          {"volume", s.volume}};
 }
 
 // Ribs, bosses and flanges standing on the sheet (T-junctions, where the chordal surface would be
@@ -198,7 +203,8 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohman
   std::ostringstream msg;
   msg << "T-junction: " << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
       << "chordal surface would be non-manifold, which this method does not mesh: " << describeSheet(cad, sheets[1]);
-  for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s) msg << ", " << describeSheet(cad, sheets[s]);
+  for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s)
+    msg << ", " << describeSheet(cad, sheets[s]);
   if (sheets.size() > 4) msg << ", ...";
   msg << "; --drop-junctions meshes the main sheet without them";
   throw geometryError(msg.str());
@@ -214,10 +220,14 @@ struct QuadStage {
 
 const char* layoutName(QuadLayout layout) {
   switch (layout) {
-    case QuadLayout::Grid: return "grid";
-    case QuadLayout::OGrid: return "o-grid";
-    case QuadLayout::Ring: return "ring";
-    default: return "gmsh";
+    case QuadLayout::Grid:
+      return "grid";
+    case QuadLayout::OGrid:
+      return "o-grid";
+    case QuadLayout::Ring:
+      return "ring";
+    default:
+      return "gmsh";
   }
 }
 
@@ -237,7 +247,8 @@ QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const Wa
     stage.chordal = cut;
     fairChordalSurface(stage.chordal, fairing);
     computeNormalsAndRadius(stage.chordal, tets);
-    if (!sides.knifeEdges.empty()) stage.knifeFacets = trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal));
+    if (!sides.knifeEdges.empty())
+      stage.knifeFacets = trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal));
     const ChordalLocator locator(stage.chordal);
     if (o.sizing == "adaptive") qo.vertexSize = adaptiveSizes(stage.chordal, {size, o.minSize, o.maxSize});
     try {
@@ -262,11 +273,13 @@ QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const Wa
 
 // §7: every quad node swept along its sweep line, cast onto the CAD walls (one ray caster per
 // thread: OpenCASCADE's intersector keeps state).
-SweepResult sweepToWalls(const QuadMesh& quads, const ChordalLocator& locator, const CadSolid& cad, const WallSides& sides, int layers) {
+SweepResult sweepToWalls(const QuadMesh& quads, const ChordalLocator& locator, const CadSolid& cad,
+                         const WallSides& sides, int layers) {
   std::deque<WallRays> rays;
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
-  return sweepQuads(quads, locator, layers,
-                    [&](const Vec3& q, const Vec3& n, double rr) { return castSweepLine(rays[threadIndex()], q, n, rr); });
+  return sweepQuads(quads, locator, layers, [&](const Vec3& q, const Vec3& n, double rr) {
+    return castSweepLine(rays[threadIndex()], q, n, rr);
+  });
 }
 
 nlohmann::json faceSideCounts(const WallSides& sides) {
@@ -278,8 +291,11 @@ nlohmann::json faceSideCounts(const WallSides& sides) {
 // Order 2: 20-node hexes whose wall mid-edge nodes lie on the CAD walls (π_t, π_b of §3).
 nlohmann::json makeQuadratic(HexMesh& mesh, const WallProjector& walls) {
   const QuadraticStats s = addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) { return walls.project(side, p); });
-  return {{"mid_edge_nodes", s.midNodes}, {"wall_mid_edge_nodes", s.wallNodes}, {"projected_onto_cad", s.projected},
-          {"rim_mid_edge_nodes", s.rimNodes}, {"rim_projected_onto_lateral_faces", s.rimProjected},
+  return {{"mid_edge_nodes", s.midNodes},
+          {"wall_mid_edge_nodes", s.wallNodes},
+          {"projected_onto_cad", s.projected},
+          {"rim_mid_edge_nodes", s.rimNodes},
+          {"rim_projected_onto_lateral_faces", s.rimProjected},
           {"max_projection_move", s.maxProjectionMove}};
 }
 
@@ -292,13 +308,18 @@ std::vector<double> reportQuality(const HexMesh& mesh, double cadVolume, nlohman
   r["layers"] = mesh.layers;
   r["inverted_hexes"] = q.inverted;
   r["worst_hex_at"] = {q.worstAt.x(), q.worstAt.y(), q.worstAt.z()};
-  r["scaled_jacobian"] = {{"min", q.sjMin}, {"avg", q.sjAvg},
-                          {"histogram", {{"lo", q.sjHistogram.lo}, {"hi", q.sjHistogram.hi}, {"counts", q.sjHistogram.counts}}}};
+  r["scaled_jacobian"] = {
+      {"min", q.sjMin},
+      {"avg", q.sjAvg},
+      {"histogram", {{"lo", q.sjHistogram.lo}, {"hi", q.sjHistogram.hi}, {"counts", q.sjHistogram.counts}}}};
   r["aspect_ratio"] = {{"min", q.arMin}, {"avg", q.arAvg}, {"max", q.arMax}};
   r["volume"] = {{"cad", cadVolume}, {"mesh", q.volume}, {"relative_error", (q.volume - cadVolume) / cadVolume}};
   const BoundaryCheck b = checkBoundary(mesh);
-  r["boundary"] = {{"faces", b.faces}, {"open_edges", b.openEdges}, {"non_manifold_edges", b.nonManifoldEdges},
-                   {"watertight", b.watertight()}, {"euler_characteristic", b.eulerCharacteristic}};
+  r["boundary"] = {{"faces", b.faces},
+                   {"open_edges", b.openEdges},
+                   {"non_manifold_edges", b.nonManifoldEdges},
+                   {"watertight", b.watertight()},
+                   {"euler_characteristic", b.eulerCharacteristic}};
   r["validation"] = {{"passed", true}, {"failures", nlohmann::json::array()}};
   for (const ValidationFailure& f : validateMesh(mesh, q, b, cadVolume)) {
     nlohmann::json one = {{"check", f.check}, {"count", f.count}, {"message", f.message}};
@@ -356,14 +377,16 @@ std::vector<SurfaceGroup> groupsOfInputFaces(std::vector<SurfaceGroup> pieces, c
   for (SurfaceGroup& g : merged) {
     std::sort(g.nodes.begin(), g.nodes.end());
     g.nodes.erase(std::unique(g.nodes.begin(), g.nodes.end()), g.nodes.end());
-    std::sort(g.hexFaces.begin(), g.hexFaces.end(),
-              [](const HexFace& a, const HexFace& b) { return std::make_pair(a.hex, a.localFace) < std::make_pair(b.hex, b.localFace); });
+    std::sort(g.hexFaces.begin(), g.hexFaces.end(), [](const HexFace& a, const HexFace& b) {
+      return std::make_pair(a.hex, a.localFace) < std::make_pair(b.hex, b.localFace);
+    });
   }
   return merged;
 }
 
 // The mesh's boundary on the CAD faces (FreeCAD's FaceN): surface groups and boundary deviation in the report.
-std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, const WallProjector& walls, nlohmann::json& r) {
+std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, const WallProjector& walls,
+                                         nlohmann::json& r) {
   const std::vector<BoundaryFace> quads = boundaryFaces(mesh);  // sorted by hex, then local face
   const std::vector<int> boundary = boundaryNodes(mesh, quads);
   const std::size_t unplaced = faceUnplacedNodes(mesh, walls, boundary);
@@ -437,8 +460,10 @@ void toInputUnits(MeshResult& result, nlohmann::json& r, double unit) {
   for (double& radius : result.chordalSurface.radius) radius /= unit;
   for (Vec3& p : result.quadMesh.nodes) p /= unit;
   auto length = [&](nlohmann::json& j, double power) {
-    if (j.is_number()) j = j.get<double>() / std::pow(unit, power);
-    else if (j.is_array()) for (auto& x : j) x = x.get<double>() / unit;  // a point
+    if (j.is_number())
+      j = j.get<double>() / std::pow(unit, power);
+    else if (j.is_array())
+      for (auto& x : j) x = x.get<double>() / unit;  // a point
   };
   length(r["thickness"], 1);
   length(r["size"], 1);
@@ -454,10 +479,12 @@ void toInputUnits(MeshResult& result, nlohmann::json& r, double unit) {
 
 void validateOptions(const MeshOptions& o) {
   if (o.layers < 1 || o.layers > kMaxLayers)
-    throw usageError("--layers must be between 1 and " + std::to_string(kMaxLayers) + ", got " + std::to_string(o.layers));
+    throw usageError("--layers must be between 1 and " + std::to_string(kMaxLayers) + ", got " +
+                     std::to_string(o.layers));
   if (!(o.size >= 0) || !std::isfinite(o.size)) throw usageError("--size must be a positive length");
   if (o.order != 1 && o.order != 2) throw usageError("--order must be 1 or 2, got " + std::to_string(o.order));
-  if (o.sizing != "uniform" && o.sizing != "adaptive") throw usageError("--sizing must be 'uniform' or 'adaptive', got '" + o.sizing + "'");
+  if (o.sizing != "uniform" && o.sizing != "adaptive")
+    throw usageError("--sizing must be 'uniform' or 'adaptive', got '" + o.sizing + "'");
   if (!(o.aspect >= 0) || !std::isfinite(o.aspect)) throw usageError("--aspect must be a positive ratio (0 = off)");
   if (o.size > 0 && o.aspect > 0) throw usageError("give --size or --aspect, not both");
   if (!(o.minSize >= 0) || !(o.maxSize >= 0) || !std::isfinite(o.minSize) || !std::isfinite(o.maxSize) ||
@@ -483,10 +510,16 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   r["bubbles"] = nodes.size();
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
   const TetFilterCounts dropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
-  r["tets"] = {{"delaunay", dropped.delaunay}, {"outside", dropped.outside}, {"flat", dropped.flat}, {"coplanar_kept", dropped.coplanar}, {"kept", tets.tets.size()}};
+  r["tets"] = {{"delaunay", dropped.delaunay},
+               {"outside", dropped.outside},
+               {"flat", dropped.flat},
+               {"coplanar_kept", dropped.coplanar},
+               {"kept", tets.tets.size()}};
   ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets, cad.unit); });
   r["tet_classes"] = classifyTets(tets);
-  r["chordal_surface"] = {{"triangles", cut.triangles}, {"quads", cut.quads}, {"vertices", cut.vertices.size()},
+  r["chordal_surface"] = {{"triangles", cut.triangles},
+                          {"quads", cut.quads},
+                          {"vertices", cut.vertices.size()},
                           {"pinched_facets_dropped", cut.pinchedFacetsDropped}};
   const WallProjector walls(cad, sides);
   const RimSnapStats snap = clock.run("chordal_rim", [&] {
@@ -502,13 +535,16 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
     };
     return snapRimBetweenWallEdges(cut, middle, sides.thickness);
   });
-  r["chordal_surface"]["rim"] = {{"vertices", snap.rimVertices}, {"moved", snap.moved}, {"spikes_dropped", snap.spikesDropped},
+  r["chordal_surface"]["rim"] = {{"vertices", snap.rimVertices},
+                                 {"moved", snap.moved},
+                                 {"spikes_dropped", snap.spikesDropped},
                                  {"largest_move", snap.largestMove / cad.unit}};
   const double size = chooseSize(o, sides, chordalArea(cut), r);
   r["size"] = size;
   r["sizing"] = o.sizing;
   const SmallFeatures small = findSmallFeatures(cad, sides, size);
-  r["small_features"] = {{"edges_shorter_than_size", small.shortEdges}, {"narrow_faces", small.narrowFaces},
+  r["small_features"] = {{"edges_shorter_than_size", small.shortEdges},
+                         {"narrow_faces", small.narrowFaces},
                          {"first_at", {small.firstAt.x(), small.firstAt.y(), small.firstAt.z()}}};
   QuadStage stage = clock.run("quad_mesh", [&] { return quadMeshStage(cut, tets, sides, o, size, r); });
   const QuadMesh& quads = stage.quads;
@@ -516,18 +552,24 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   r["quad_mesh"]["nodes"] = quads.nodes.size();
   const ChordalLocator locator(stage.chordal);
   SweepResult swept = clock.run("sweep", [&] { return sweepToWalls(quads, locator, cad, sides, o.layers); });
-  r["sweep"] = {{"untangled_regions", swept.untangled.regions}, {"untangling_rounds_kept", swept.untangled.improved},
+  r["sweep"] = {{"untangled_regions", swept.untangled.regions},
+                {"untangling_rounds_kept", swept.untangled.improved},
                 {"worst_column_before_untangling", swept.untangled.worstBefore}};
   result.mesh = std::move(swept.mesh);
-  const RimProjectionStats rim = clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, kRimReach * sides.thickness); });
+  const RimProjectionStats rim =
+      clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, kRimReach * sides.thickness); });
   r["sweep"]["rim_nodes"] = rim.rimNodes;
   r["sweep"]["rim_nodes_on_lateral_faces"] = rim.onLateralFaces;
   r["sweep"]["rim_columns_left_unprojected"] = rim.columnsKept;
   const RimCapStats cap = clock.run("rim_cap", [&] { return capRims(result.mesh, cad, sides, walls); });
-  r["rim_cap"] = {{"rim_edges", cap.rimEdges}, {"capped_edges", cap.cappedEdges}, {"columns", cap.capColumns},
+  r["rim_cap"] = {{"rim_edges", cap.rimEdges},
+                  {"capped_edges", cap.cappedEdges},
+                  {"columns", cap.capColumns},
                   {"hexes", cap.capHexes}};
   const SmoothingStats smooth = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
-  r["smoothing"] = {{"poor_hexes", smooth.poorHexes}, {"moves", smooth.nodesMoved}, {"worst_before", smooth.worstBefore},
+  r["smoothing"] = {{"poor_hexes", smooth.poorHexes},
+                    {"moves", smooth.nodesMoved},
+                    {"worst_before", smooth.worstBefore},
                     {"worst_after", smooth.worstAfter}};
   if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
@@ -536,7 +578,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   // From here on, the input's units.
   toInputUnits(result, r, cad.unit);
   const double unit3 = cad.unit * cad.unit * cad.unit;
-  result.scaledJacobian = clock.run("quality", [&] { return reportQuality(result.mesh, (cad.volume - leftOut) / unit3, r); });
+  result.scaledJacobian =
+      clock.run("quality", [&] { return reportQuality(result.mesh, (cad.volume - leftOut) / unit3, r); });
   r["volume"]["junctions_left_out"] = leftOut / unit3;  // "cad" is the part's volume without them
   compareTopology(r, eulerCharacteristic(cad));
   if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);

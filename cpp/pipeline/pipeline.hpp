@@ -14,23 +14,23 @@
 namespace hexlayer {
 
 struct MeshOptions {
-  int layers = 2;   // hex layers through the thickness (§7.2)
-  double size = 0;  // quad edge length on the chordal surface; 0 = chosen from the part
-  int order = 1;    // 1: 8-node hexes, 2: 20-node hexes with the wall mid-edge nodes on the CAD
+  int layers = 2;                   // hex layers through the thickness (§7.2)
+  double size = 0;                  // quad edge length on the chordal surface; 0 = chosen from the part
+  int order = 1;                    // 1: 8-node hexes, 2: 20-node hexes with the wall mid-edge nodes on the CAD
   std::string sizing = "adaptive";  // "adaptive" or "uniform" (§6.1: radius function and curvature)
-  double aspect = 0;  // in-plane quad size / layer thickness; 0 = off (size from --size or the wall)
+  double aspect = 0;                // in-plane quad size / layer thickness; 0 = off (size from --size or the wall)
   double minSize = 0, maxSize = 0;  // bounds of the adaptive size; 0 = a quarter and 4 x the size
-  bool dropJunctions = false;  // mesh the largest sheet and leave out ribs/bosses standing on it (else refuse)
-  bool force = false;  // hand on a mesh that failed validation (report "validation") instead of throwing
+  bool dropJunctions = false;       // mesh the largest sheet and leave out ribs/bosses standing on it (else refuse)
+  bool force = false;               // hand on a mesh that failed validation (report "validation") instead of throwing
   std::function<void(const std::string&)> progress;  // one line per finished stage (may be empty)
 };
 
 struct MeshResult {
-  HexMesh mesh;                  // all solids of the input, one conformal mesh per solid
-  std::vector<NodeSet> nodeSets; // TOP, BOTTOM, RIM
+  HexMesh mesh;                             // all solids of the input, one conformal mesh per solid
+  std::vector<NodeSet> nodeSets;            // TOP, BOTTOM, RIM
   std::vector<SurfaceGroup> surfaceGroups;  // one per CAD face, Face1..FaceN as FreeCAD numbers them
-  nlohmann::json report;         // numbers of every stage, see README "Report"
-  std::vector<double> scaledJacobian;  // per hex, as measured for the report
+  nlohmann::json report;                    // numbers of every stage, see README "Report"
+  std::vector<double> scaledJacobian;       // per hex, as measured for the report
   // The stages as used (§5-6), for looking at them: the (faired) chordal surface the quad mesh was made on,
   // and that quad mesh, which the sweep turned into the hexes (mesh.nodeLayer: each node's layer).
   ChordalSurface chordalSurface;

@@ -19,8 +19,10 @@ class Arrays {
     static_assert(sizeof(double) == 8, "8-byte doubles");
     index_[name] = {{"dtype", std::is_floating_point_v<T> ? "<f8" : "<i8"}, {"shape", shape}, {"offset", offset_}};
     for (const T& v : values) {
-      if constexpr (std::is_floating_point_v<T>) write(static_cast<double>(v));
-      else write(static_cast<std::int64_t>(v));
+      if constexpr (std::is_floating_point_v<T>)
+        write(static_cast<double>(v));
+      else
+        write(static_cast<std::int64_t>(v));
     }
   }
   nlohmann::json index() const { return index_; }

@@ -55,8 +55,8 @@ int faceOfQuad(const HexMesh& mesh, CadFaceProbe& probe, const BoundaryFace& qua
 }
 
 struct NodeKinds {
-  std::vector<char> midEdge;        // a mid-edge node of a 20-node hex
-  std::vector<double> thickness;    // local wall thickness at a boundary node
+  std::vector<char> midEdge;      // a mid-edge node of a 20-node hex
+  std::vector<double> thickness;  // local wall thickness at a boundary node
 };
 
 NodeKinds nodeKinds(const HexMesh& mesh, const std::vector<BoundaryFace>& quads) {
@@ -83,13 +83,18 @@ nlohmann::json deviationReport(const HexMesh& mesh, const CadFaces& faces, const
     if (d > max) max = d, worst = i;
     maxRelative = std::max(maxRelative, relative);
     if (d >= faces.tolerance(mesh.nodeFace[i])) {
-      const std::string kind = std::string(mesh.nodeOnRim[i] ? "rim" : "wall") + (kinds.midEdge[i] ? "_mid_edge" : "_corners");
+      const std::string kind =
+          std::string(mesh.nodeOnRim[i] ? "rim" : "wall") + (kinds.midEdge[i] ? "_mid_edge" : "_corners");
       above[kind] = above[kind].get<int>() + 1;
     }
   }
   const double n = boundary.empty() ? 1 : static_cast<double>(boundary.size());
-  nlohmann::json r = {{"nodes", boundary.size()}, {"max", max}, {"mean", sum / n}, {"max_relative", maxRelative},
-                      {"mean_relative", sumRelative / n}, {"off_face_tolerance", above}};
+  nlohmann::json r = {{"nodes", boundary.size()},
+                      {"max", max},
+                      {"mean", sum / n},
+                      {"max_relative", maxRelative},
+                      {"mean_relative", sumRelative / n},
+                      {"off_face_tolerance", above}};
   if (worst >= 0) {
     r["worst_at"] = {mesh.nodes[worst].x(), mesh.nodes[worst].y(), mesh.nodes[worst].z()};
     r["worst_face"] = faces.face(mesh.nodeFace[worst]).name;
@@ -128,14 +133,15 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
   std::vector<std::vector<int>> facesOf(mesh.nodes.size());
   std::vector<double> distance(mesh.nodes.size(), 0);
   for (int i : boundary)
-    if (mesh.nodeFace[i] < 0) throw Error(ExitCode::Internal, "boundary node " + std::to_string(i + 1) + " has no CAD face");
+    if (mesh.nodeFace[i] < 0)
+      throw Error(ExitCode::Internal, "boundary node " + std::to_string(i + 1) + " has no CAD face");
   // The distance queries in parallel, each thread with its own probe (OpenCASCADE's extrema tools on the
   // shared, read-only faces); the groups are filled afterwards in the nodes' order, the same for any thread count.
   const long nBoundary = static_cast<long>(boundary.size());
-  #pragma omp parallel
+#pragma omp parallel
   {
     CadFaceProbe probe(faces);
-    #pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(dynamic, 64)
     for (long k = 0; k < nBoundary; ++k) {
       const int i = boundary[k];
       FacesAtPoint at = probe.facesAt(mesh.nodeFace[i], mesh.nodes[i]);
@@ -151,10 +157,10 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
   const long nQuads = static_cast<long>(quads.size());
   std::vector<int> faceOf(quads.size());
   std::vector<char> isAcross(quads.size(), 0);
-  #pragma omp parallel
+#pragma omp parallel
   {
     CadFaceProbe probe(faces);
-    #pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(dynamic, 64)
     for (long k = 0; k < nQuads; ++k) {
       std::size_t a = 0;
       faceOf[k] = faceOfQuad(mesh, probe, quads[k], facesOf, a);
@@ -168,14 +174,15 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
   }
   std::size_t nonEmpty = 0;
   for (const SurfaceGroup& g : out.groups) nonEmpty += !g.hexFaces.empty();
-  out.surfaceReport = {{"cad_faces", faces.count()}, {"meshed_cad_faces", nonEmpty}, {"boundary_nodes", boundary.size()},
-                       {"nodes_on_several_faces", several}, {"element_faces", quads.size()},
-                       {"element_faces_across_cad_edges", across}};
+  out.surfaceReport = {{"cad_faces", faces.count()},        {"meshed_cad_faces", nonEmpty},
+                       {"boundary_nodes", boundary.size()}, {"nodes_on_several_faces", several},
+                       {"element_faces", quads.size()},     {"element_faces_across_cad_edges", across}};
   out.deviationReport = deviationReport(mesh, faces, boundary, distance, nodeKinds(mesh, quads));
   return out;
 }
 
-void appendSurfaceGroups(std::vector<SurfaceGroup>& all, const std::vector<SurfaceGroup>& part, int nodeOffset, int hexOffset) {
+void appendSurfaceGroups(std::vector<SurfaceGroup>& all, const std::vector<SurfaceGroup>& part, int nodeOffset,
+                         int hexOffset) {
   for (SurfaceGroup g : part) {
     g.name = faceName(static_cast<int>(all.size()));
     for (int& n : g.nodes) n += nodeOffset;

@@ -38,6 +38,7 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
 // The groups of `part` appended to `all`, for a mesh made of several solids: node and hex ids shifted
 // by the part mesh's offsets, faces renumbered after the groups already there (FreeCAD's numbering
 // of a compound of disjoint solids).
-void appendSurfaceGroups(std::vector<SurfaceGroup>& all, const std::vector<SurfaceGroup>& part, int nodeOffset, int hexOffset);
+void appendSurfaceGroups(std::vector<SurfaceGroup>& all, const std::vector<SurfaceGroup>& part, int nodeOffset,
+                         int hexOffset);
 
 }  // namespace hexlayer

@@ -1,17 +1,18 @@
 // pyhexlayer: the Hex-Layer pipeline as a Python module (pybind11), for FreeCAD's workbench and macros.
 // mesh_file(path, ...) and mesh_brep(text, ...) take the CLI's options as keywords and return a MeshResult
 // of NumPy arrays and the report dict. hexlayer::Error becomes UsageError / InputError / GeometryError /
-// ValidationError (subclasses of HexLayerError, with the CLI's exit code and message); no C++ exception reaches the interpreter.
+// ValidationError (subclasses of HexLayerError, with the CLI's exit code and message); no C++ exception reaches the
+// interpreter.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <Standard_Failure.hxx>
 
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "core/error.hpp"
 #include "pipeline/pipeline.hpp"
@@ -46,11 +47,16 @@ Options forced(Options o, bool force) {
 
 py::object toPython(const nlohmann::json& j) {
   switch (j.type()) {
-    case nlohmann::json::value_t::boolean: return py::bool_(j.get<bool>());
-    case nlohmann::json::value_t::number_integer: return py::int_(j.get<long long>());
-    case nlohmann::json::value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
-    case nlohmann::json::value_t::number_float: return py::float_(j.get<double>());
-    case nlohmann::json::value_t::string: return py::str(j.get<std::string>());
+    case nlohmann::json::value_t::boolean:
+      return py::bool_(j.get<bool>());
+    case nlohmann::json::value_t::number_integer:
+      return py::int_(j.get<long long>());
+    case nlohmann::json::value_t::number_unsigned:
+      return py::int_(j.get<unsigned long long>());
+    case nlohmann::json::value_t::number_float:
+      return py::float_(j.get<double>());
+    case nlohmann::json::value_t::string:
+      return py::str(j.get<std::string>());
     case nlohmann::json::value_t::array: {
       py::list list;
       for (const auto& item : j) list.append(toPython(item));
@@ -61,23 +67,24 @@ py::object toPython(const nlohmann::json& j) {
       for (const auto& [key, value] : j.items()) dict[py::str(key)] = toPython(value);
       return std::move(dict);
     }
-    default: return py::none();
+    default:
+      return py::none();
   }
 }
 
 struct PyMeshResult {
-  py::array_t<double> nodes;            // (N, 3)
-  py::array_t<long long> hexes;         // (M, 8) or (M, 20), 0-based: 8 corners, then 12 mid-edge nodes (C3D20)
-  py::array_t<double> scaledJacobian;   // (M,)
-  py::dict nodeSets;                    // name -> node ids (0-based)
-  py::dict faceNodes;                   // "FaceN" -> ids of the boundary nodes on CAD face N (0-based)
-  py::dict faceElements;                // "FaceN" -> (K, 2): hex (0-based), local face 0..5 (CalculiX S1..S6)
+  py::array_t<double> nodes;           // (N, 3)
+  py::array_t<long long> hexes;        // (M, 8) or (M, 20), 0-based: 8 corners, then 12 mid-edge nodes (C3D20)
+  py::array_t<double> scaledJacobian;  // (M,)
+  py::dict nodeSets;                   // name -> node ids (0-based)
+  py::dict faceNodes;                  // "FaceN" -> ids of the boundary nodes on CAD face N (0-based)
+  py::dict faceElements;               // "FaceN" -> (K, 2): hex (0-based), local face 0..5 (CalculiX S1..S6)
   py::dict report;
-  py::array_t<double> chordalVertices;  // (V, 3)
-  py::array_t<long long> chordalFacets; // (F, 4), triangles end with -1
-  py::array_t<double> quadNodes;        // (Q, 3)
-  py::array_t<long long> quads;         // (K, 4)
-  py::array_t<long long> nodeLayer;     // (N,)
+  py::array_t<double> chordalVertices;   // (V, 3)
+  py::array_t<long long> chordalFacets;  // (F, 4), triangles end with -1
+  py::array_t<double> quadNodes;         // (Q, 3)
+  py::array_t<long long> quads;          // (K, 4)
+  py::array_t<long long> nodeLayer;      // (N,)
 };
 
 py::array_t<double> nodeArray(const std::vector<hexlayer::Vec3>& nodes) {
@@ -184,7 +191,8 @@ std::string replaceAll(std::string text, const std::string& from, const std::str
 }
 
 PyMeshResult meshFile(const std::string& path, const Options& o, const py::object& progress) {
-  return toPython(runReleased([&](const hexlayer::MeshOptions& core) { return hexlayer::meshFile(path, core); }, o, progress));
+  return toPython(
+      runReleased([&](const hexlayer::MeshOptions& core) { return hexlayer::meshFile(path, core); }, o, progress));
 }
 
 // The BREP string is meshed through a temporary file, so it takes the file's path in the core: the same
@@ -204,11 +212,16 @@ struct ExceptionTypes {
   py::object base, usage, input, geometry, validation;
   const py::object& of(ExitCode code) const {
     switch (code) {
-      case ExitCode::BadUsage: return usage;
-      case ExitCode::BadInput: return input;
-      case ExitCode::UnsupportedGeometry: return geometry;
-      case ExitCode::InvalidMesh: return validation;
-      default: return base;
+      case ExitCode::BadUsage:
+        return usage;
+      case ExitCode::BadInput:
+        return input;
+      case ExitCode::UnsupportedGeometry:
+        return geometry;
+      case ExitCode::InvalidMesh:
+        return validation;
+      default:
+        return base;
     }
   }
 };
@@ -226,7 +239,8 @@ ExceptionTypes defineExceptions(py::module_& m) {
   ExceptionTypes t;
   t.base = defineException(m, "HexLayerError", PyExc_Exception, int(ExitCode::Internal),
                            "A meshing run failed; exit_code is the CLI's exit code, str() its message.");
-  t.usage = defineException(m, "UsageError", t.base.ptr(), int(ExitCode::BadUsage), "A bad option value (exit code 2).");
+  t.usage =
+      defineException(m, "UsageError", t.base.ptr(), int(ExitCode::BadUsage), "A bad option value (exit code 2).");
   t.input = defineException(m, "InputError", t.base.ptr(), int(ExitCode::BadInput),
                             "A missing, unreadable or invalid input file or shape (exit code 3).");
   t.geometry = defineException(m, "GeometryError", t.base.ptr(), int(ExitCode::UnsupportedGeometry),
@@ -257,15 +271,17 @@ void registerTranslator(const ExceptionTypes& types) {
 }
 
 // The keyword arguments shared by mesh_file, mesh_brep and check_options.
-#define HEXLAYER_OPTION_ARGS                                                                                 \
-  py::kw_only(), py::arg("layers") = 2, py::arg("size") = 0.0, py::arg("sizing") = "adaptive",             \
-      py::arg("aspect") = 0.0, py::arg("order") = 1, py::arg("drop_junctions") = false
+#define HEXLAYER_OPTION_ARGS                                                                   \
+  py::kw_only(), py::arg("layers") = 2, py::arg("size") = 0.0, py::arg("sizing") = "adaptive", \
+                 py::arg("aspect") = 0.0, py::arg("order") = 1, py::arg("drop_junctions") = false
 
 constexpr const char* kOptionsDoc =
     "layers: hex layers through the thickness (1-64); size: quad edge length, 0 = the wall thickness; "
-    "sizing: 'uniform' or 'adaptive' (radius function and curvature); aspect: in-plane size / layer thickness instead of size, 0 = off; "
+    "sizing: 'uniform' or 'adaptive' (radius function and curvature); aspect: in-plane size / layer thickness instead "
+    "of size, 0 = off; "
     "order: 1 = linear hexes (M, 8), 2 = quadratic hexes (M, 20), wall mid-edge nodes on the CAD walls; "
-    "drop_junctions: mesh the largest sheet and leave out ribs, bosses and flanges standing on it (else GeometryError); "
+    "drop_junctions: mesh the largest sheet and leave out ribs, bosses and flanges standing on it (else "
+    "GeometryError); "
     "progress: callable taking one line per finished stage, or None "
     "(an exception it raises ends the run); force: return a mesh that failed validation instead of raising "
     "ValidationError.";
@@ -283,9 +299,10 @@ PYBIND11_MODULE(pyhexlayer, m) {
 
   py::class_<PyMeshResult>(m, "MeshResult", "Nodes, hexes, per-hex quality, node sets and the report of one run.")
       .def_readonly("nodes", &PyMeshResult::nodes, "float64 (N, 3) node coordinates")
-      .def_readonly("hexes", &PyMeshResult::hexes,
-                    "int64 (M, 8) or, order 2, (M, 20) 0-based node ids: corners 0-3 the bottom quad, 4-7 the quad above "
-                    "them, then the 12 mid-edge nodes in C3D20 order (see the module doc)")
+      .def_readonly(
+          "hexes", &PyMeshResult::hexes,
+          "int64 (M, 8) or, order 2, (M, 20) 0-based node ids: corners 0-3 the bottom quad, 4-7 the quad above "
+          "them, then the 12 mid-edge nodes in C3D20 order (see the module doc)")
       .def_readonly("scaled_jacobian", &PyMeshResult::scaledJacobian, "float64 (M,) Verdict scaled Jacobian per hex")
       .def_readonly("node_sets", &PyMeshResult::nodeSets, "dict: 'TOP', 'BOTTOM', 'RIM' -> int64 node ids (0-based)")
       .def_readonly("face_nodes", &PyMeshResult::faceNodes,
@@ -299,8 +316,10 @@ PYBIND11_MODULE(pyhexlayer, m) {
                     "float64 (V, 3): vertices of the chordal surface (§5) the quad mesh was made on (after fairing)")
       .def_readonly("chordal_facets", &PyMeshResult::chordalFacets,
                     "int64 (F, 4) 0-based rows of chordal_vertices: quads, and triangles padded with -1")
-      .def_readonly("quad_nodes", &PyMeshResult::quadNodes, "float64 (Q, 3): nodes of the quad mesh on the chordal surface")
-      .def_readonly("quads", &PyMeshResult::quads, "int64 (K, 4) 0-based rows of quad_nodes: the quads the sweep made the hexes of")
+      .def_readonly("quad_nodes", &PyMeshResult::quadNodes,
+                    "float64 (Q, 3): nodes of the quad mesh on the chordal surface")
+      .def_readonly("quads", &PyMeshResult::quads,
+                    "int64 (K, 4) 0-based rows of quad_nodes: the quads the sweep made the hexes of")
       .def_readonly("node_layer", &PyMeshResult::nodeLayer,
                     "int64 (N,): layer of each node, 0 = bottom surface .. layers = top surface; -1 = a mid-edge node "
                     "between two layers (order 2). A hex's layer is the lowest of its corners'")
@@ -309,24 +328,28 @@ PYBIND11_MODULE(pyhexlayer, m) {
                std::to_string(r.nodes.shape(0)) + " nodes>";
       });
 
-  m.def("mesh_file",
-        [](const std::string& path, int layers, double size, const std::string& sizing, double aspect, int order,
-           bool dropJunctions, const py::object& progress, bool force) {
-          return meshFile(path, forced(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force), progress);
-        },
-        py::arg("path"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(), py::arg("force") = false,
-        (std::string("Meshes every solid of a STEP, IGES or BREP file. ") + kOptionsDoc).c_str());
-  m.def("mesh_brep",
-        [](const std::string& text, int layers, double size, const std::string& sizing, double aspect, int order,
-           bool dropJunctions, const py::object& progress, bool force) {
-          return meshBrep(text, forced(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force), progress);
-        },
-        py::arg("brep"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(), py::arg("force") = false,
-        (std::string("Meshes every solid of a shape in OpenCASCADE's BREP text (FreeCAD: Shape.exportBrepToString()). ") +
-         kOptionsDoc).c_str());
-  m.def("check_options",
-        [](int layers, double size, const std::string& sizing, double aspect, int order, bool dropJunctions) {
-          makeOptions(layers, size, sizing, aspect, order, dropJunctions);
-        },
-        HEXLAYER_OPTION_ARGS, "Raises UsageError, with the CLI's message, if an option value is not supported.");
+  m.def(
+      "mesh_file",
+      [](const std::string& path, int layers, double size, const std::string& sizing, double aspect, int order,
+         bool dropJunctions, const py::object& progress, bool force) {
+        return meshFile(path, forced(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force), progress);
+      },
+      py::arg("path"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(), py::arg("force") = false,
+      (std::string("Meshes every solid of a STEP, IGES or BREP file. ") + kOptionsDoc).c_str());
+  m.def(
+      "mesh_brep",
+      [](const std::string& text, int layers, double size, const std::string& sizing, double aspect, int order,
+         bool dropJunctions, const py::object& progress, bool force) {
+        return meshBrep(text, forced(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force), progress);
+      },
+      py::arg("brep"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(), py::arg("force") = false,
+      (std::string("Meshes every solid of a shape in OpenCASCADE's BREP text (FreeCAD: Shape.exportBrepToString()). ") +
+       kOptionsDoc)
+          .c_str());
+  m.def(
+      "check_options",
+      [](int layers, double size, const std::string& sizing, double aspect, int order, bool dropJunctions) {
+        makeOptions(layers, size, sizing, aspect, order, dropJunctions);
+      },
+      HEXLAYER_OPTION_ARGS, "Raises UsageError, with the CLI's message, if an option value is not supported.");
 }

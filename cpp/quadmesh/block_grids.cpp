@@ -8,7 +8,7 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kCore = 0.4;      // half-side of the O-grid's core in the unit disc (keeps a shelled box's floor in it)
+constexpr double kCore = 0.4;  // half-side of the O-grid's core in the unit disc (keeps a shelled box's floor in it)
 constexpr int kRadialSamples = 8;  // samples per quad along a line, to measure it
 
 // A box of grid cells: columns i0 .. i0 + n0, rows k0 .. k0 + n1 of lines x (u, falling with i) and
@@ -37,7 +37,8 @@ struct GridLines {
 // Quads the target size needs along a line, accumulated from its start.
 std::vector<double> quadsAlong(const std::vector<Vec3>& line, const SizeField& size) {
   std::vector<double> quads{0};
-  for (std::size_t i = 0; i + 1 < line.size(); ++i) quads.push_back(quads.back() + (line[i + 1] - line[i]).norm() / size(0.5 * (line[i] + line[i + 1])));
+  for (std::size_t i = 0; i + 1 < line.size(); ++i)
+    quads.push_back(quads.back() + (line[i + 1] - line[i]).norm() / size(0.5 * (line[i] + line[i + 1])));
   return quads;
 }
 
@@ -68,15 +69,17 @@ Eigen::Vector2d linePoint(const PlaneLine& line, int j, int m) {
   if (j >= m) return line.to;
   const double target = line.quads.back() * j / m;
   const int last = static_cast<int>(line.quads.size()) - 1;
-  const int s = std::clamp(static_cast<int>(std::lower_bound(line.quads.begin(), line.quads.end(), target) - line.quads.begin()), 1, last);
+  const int s = std::clamp(
+      static_cast<int>(std::lower_bound(line.quads.begin(), line.quads.end(), target) - line.quads.begin()), 1, last);
   const double g = (target - line.quads[s - 1]) / std::max(line.quads[s] - line.quads[s - 1], 1e-300);
   return line.from + (line.to - line.from) * (s - 1 + g) / (line.quads.size() - 1);
 }
 
 // Points of a loop (counter-clockwise, from its corner 0) for a box's boundary walk: sides[k] points
 // from corner k towards corner k + 1, spaced by the quads the target size needs along the loop.
-std::vector<LoopPoint> loopPoints(const SurfaceMap& map, const std::vector<int>& loop, const std::array<int, 4>& corners,
-                                  const std::array<int, 4>& sides, const SizeField& size) {
+std::vector<LoopPoint> loopPoints(const SurfaceMap& map, const std::vector<int>& loop,
+                                  const std::array<int, 4>& corners, const std::array<int, 4>& sides,
+                                  const SizeField& size) {
   const std::vector<double> quads = quadsAlongLoop(map, loop, size);
   std::vector<LoopPoint> points;
   for (int k = 0; k < 4; ++k) {
@@ -89,8 +92,8 @@ std::vector<LoopPoint> loopPoints(const SurfaceMap& map, const std::vector<int>&
 // Rows of quads between a box's boundary walk and as many loop points the same way round, out to the
 // outer rim or in to a hole: as many rows as the most any line between them needs, the nodes spaced
 // along each line by the target size, the last row on the loop.
-void addRing(BlockGrid& grid, const MapLocator& locate, const GridLines& lines, const Box& box, const std::vector<LoopPoint>& loop,
-             bool outward, const SizeField& size) {
+void addRing(BlockGrid& grid, const MapLocator& locate, const GridLines& lines, const Box& box,
+             const std::vector<LoopPoint>& loop, bool outward, const SizeField& size) {
   const int n = box.around();
   std::vector<PlaneLine> across;
   int m = 1;
@@ -108,8 +111,9 @@ void addRing(BlockGrid& grid, const MapLocator& locate, const GridLines& lines, 
   };
   for (int j = 0; j < m; ++j)
     for (int t = 0; t < n; ++t)
-      grid.quads.push_back(outward ? std::array<int, 4>{node(j, t), node(j + 1, t), node(j + 1, t + 1), node(j, t + 1)}
-                                   : std::array<int, 4>{node(j, t), node(j, t + 1), node(j + 1, t + 1), node(j + 1, t)});
+      grid.quads.push_back(outward
+                               ? std::array<int, 4>{node(j, t), node(j + 1, t), node(j + 1, t + 1), node(j, t + 1)}
+                               : std::array<int, 4>{node(j, t), node(j, t + 1), node(j + 1, t + 1), node(j + 1, t)});
   grid.blocks += 4;
 }
 
@@ -118,16 +122,18 @@ void addCells(BlockGrid& grid, const MapLocator& locate, const GridLines& lines,
   const int n0 = static_cast<int>(lines.x.size()) - 1, n1 = static_cast<int>(lines.y.size()) - 1;
   const std::size_t first = grid.nodes.size();
   grid.nodes.resize(first + (n0 + 1) * (n1 + 1));
-  #pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static)
   for (int i = 0; i <= n0; ++i)
     for (int k = 0; k <= n1; ++k) grid.nodes[first + lines.node(i, k)] = locate(lines.uv(i, k));
   for (int i = 0; i < n0; ++i)
     for (int k = 0; k < n1; ++k)
-      if (!skip[i * n1 + k]) grid.quads.push_back({lines.node(i, k), lines.node(i + 1, k), lines.node(i + 1, k + 1), lines.node(i, k + 1)});
+      if (!skip[i * n1 + k])
+        grid.quads.push_back({lines.node(i, k), lines.node(i + 1, k), lines.node(i + 1, k + 1), lines.node(i, k + 1)});
 }
 
 // n + 1 grid lines along one axis of the plane: where a line from -to to `to` needs equal shares of quads.
-std::vector<double> linesAlong(const MapLocator& locate, const Eigen::Vector2d& to, int n, int axis, const SizeField& size) {
+std::vector<double> linesAlong(const MapLocator& locate, const Eigen::Vector2d& to, int n, int axis,
+                               const SizeField& size) {
   const PlaneLine line = planeLine(locate, -to, {locate(to), to}, size);
   std::vector<double> at;
   for (int i = 0; i <= n; ++i) at.push_back(linePoint(line, i, n)[axis]);
@@ -145,7 +151,7 @@ bool pocketBox(const SurfaceMap& map, const std::vector<int>& hole, const GridLi
   for (int p : hole) lo = lo.cwiseMin(map.uv[p]), hi = hi.cwiseMax(map.uv[p]);
   const int n0 = static_cast<int>(lines.x.size()) - 1, n1 = static_cast<int>(lines.y.size()) - 1;
   int i0 = 0, i1 = n0, k0 = 0, k1 = n1;
-  const double tolerance = 1e-9;  // a hole's side on a grid line is within it
+  const double tolerance = 1e-9;                                       // a hole's side on a grid line is within it
   while (i0 + 1 <= n0 && lines.x[i0 + 1] >= hi.x() - tolerance) ++i0;  // x falls with i
   while (i1 - 1 >= 0 && lines.x[i1 - 1] <= lo.x() + tolerance) --i1;
   while (k0 + 1 <= n1 && lines.y[k0 + 1] >= hi.y() - tolerance) ++k0;
@@ -159,7 +165,8 @@ bool pocketBox(const SurfaceMap& map, const std::vector<int>& hole, const GridLi
 bool holeCorners(const SurfaceMap& map, std::vector<int>& hole, std::array<int, 4>& corners) {
   std::vector<Vec3> x;
   Vec3 lo = Vec3::Constant(1e300), hi = -lo;
-  for (int p : hole) x.emplace_back(map.uv[p].x(), map.uv[p].y(), 0), lo = lo.cwiseMin(x.back()), hi = hi.cwiseMax(x.back());
+  for (int p : hole)
+    x.emplace_back(map.uv[p].x(), map.uv[p].y(), 0), lo = lo.cwiseMin(x.back()), hi = hi.cwiseMax(x.back());
   corners = diagonalExtremes(x, 0.5 * (lo + hi), Vec3::UnitX(), Vec3::UnitY());
   std::rotate(hole.begin(), hole.begin() + corners[0], hole.end());
   const int n = static_cast<int>(hole.size()), start = corners[0];
@@ -175,7 +182,8 @@ BlockGrid oGrid(const SurfaceMap& map, const SizeField& size) {
   const std::vector<double> quads = quadsAlongLoop(map, map.rim, size);
   auto side = [&](int k) { return (k == 3 ? quads.back() : quads[map.corners[k + 1]]) - quads[map.corners[k]]; };
   const Box core{0, 0, count(std::max(side(0), side(2))), count(std::max(side(1), side(3)))};
-  const GridLines lines{linesAlong(locate, {-kCore, 0.0}, core.n0, 0, size), linesAlong(locate, {0.0, -kCore}, core.n1, 1, size)};
+  const GridLines lines{linesAlong(locate, {-kCore, 0.0}, core.n0, 0, size),
+                        linesAlong(locate, {0.0, -kCore}, core.n1, 1, size)};
   BlockGrid grid;
   addCells(grid, locate, lines, std::vector<char>(core.n0 * core.n1, 0));
   grid.blocks = 1;
@@ -192,8 +200,12 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
   // Grid lines where sides 0 and 2 (for x) and 1 and 3 (for y) put their nodes, averaged.
   const std::vector<LoopPoint> rim = loopPoints(map, map.rim, map.corners, all.sides(), size);
   GridLines lines;
-  for (int i = 0; i <= all.n0; ++i) lines.x.push_back(i == all.n0 ? -1.0 : 0.5 * (rim[i].uv.x() + rim[(2 * all.n0 + all.n1 - i) % all.around()].uv.x()));
-  for (int k = 0; k <= all.n1; ++k) lines.y.push_back(k == all.n1 ? -1.0 : 0.5 * (rim[all.n0 + k].uv.y() + rim[(all.around() - k) % all.around()].uv.y()));
+  for (int i = 0; i <= all.n0; ++i)
+    lines.x.push_back(i == all.n0 ? -1.0
+                                  : 0.5 * (rim[i].uv.x() + rim[(2 * all.n0 + all.n1 - i) % all.around()].uv.x()));
+  for (int k = 0; k <= all.n1; ++k)
+    lines.y.push_back(k == all.n1 ? -1.0
+                                  : 0.5 * (rim[all.n0 + k].uv.y() + rim[(all.around() - k) % all.around()].uv.y()));
   lines.x[0] = 1, lines.y[0] = 1;
   std::vector<char> inPocket(all.n0 * all.n1, 0);
   std::vector<std::pair<Box, std::size_t>> pockets;
@@ -231,8 +243,10 @@ BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size) {
   const MapLocator locate(map);
   const std::vector<int>& inner = map.holes[0];
   const std::vector<double> innerAngle = loopAngles(map, inner), outerAngle = loopAngles(map, map.rim);
-  if (!std::is_sorted(innerAngle.begin(), innerAngle.end()) || !std::is_sorted(outerAngle.begin(), outerAngle.end())) return {};
-  const double outerQuads = quadsAlongLoop(map, map.rim, size).back(), innerQuads = quadsAlongLoop(map, inner, size).back();
+  if (!std::is_sorted(innerAngle.begin(), innerAngle.end()) || !std::is_sorted(outerAngle.begin(), outerAngle.end()))
+    return {};
+  const double outerQuads = quadsAlongLoop(map, map.rim, size).back(),
+               innerQuads = quadsAlongLoop(map, inner, size).back();
   const int around = std::max(kMinAround, count(std::max(outerQuads, innerQuads)));
   // Rows as square as the columns: the map's rectangle is -log(inner radius) tall and 2 pi wide.
   const double height = -std::log(map.innerRadius);
@@ -246,13 +260,17 @@ BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size) {
   for (int j = 0; j <= across; ++j)
     for (int i = 0; i < around; ++i) {
       const double u = 2 * M_PI * i / around;
-      if (j == 0) grid.nodes.push_back(onRim(inner, innerAngle, u));
-      else if (j == across) grid.nodes.push_back(onRim(map.rim, outerAngle, u));
-      else grid.nodes.push_back(locate.periodic({u, -height * (1 - static_cast<double>(j) / across)}, 2 * M_PI));
+      if (j == 0)
+        grid.nodes.push_back(onRim(inner, innerAngle, u));
+      else if (j == across)
+        grid.nodes.push_back(onRim(map.rim, outerAngle, u));
+      else
+        grid.nodes.push_back(locate.periodic({u, -height * (1 - static_cast<double>(j) / across)}, 2 * M_PI));
     }
   auto node = [&](int i, int j) { return j * around + (i % around); };
   for (int j = 0; j < across; ++j)
-    for (int i = 0; i < around; ++i) grid.quads.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)});
+    for (int i = 0; i < around; ++i)
+      grid.quads.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)});
   grid.blocks = 1;
   return grid;
 }

@@ -91,13 +91,15 @@ std::vector<std::array<int, 4>> retile(const Strip& s) {
 
 // One round: every triangle's shortest strips, applied shortest first where they touch nothing
 // already changed. Returns how many triangles were paired.
-std::size_t pairingRound(std::vector<std::array<int, 4>>& quads, std::vector<std::array<int, 3>>& triangles, int maxStrip) {
+std::size_t pairingRound(std::vector<std::array<int, 4>>& quads, std::vector<std::array<int, 3>>& triangles,
+                         int maxStrip) {
   const Elements el(quads, triangles);
   std::vector<Strip> strips;
   for (int t = static_cast<int>(quads.size()); t < el.count(); ++t)
     for (int k = 0; k < 3; ++k)
       if (Strip s; walkStrip(el, t, k, maxStrip, s)) strips.push_back(std::move(s));
-  std::stable_sort(strips.begin(), strips.end(), [](const Strip& x, const Strip& y) { return x.quads.size() < y.quads.size(); });
+  std::stable_sort(strips.begin(), strips.end(),
+                   [](const Strip& x, const Strip& y) { return x.quads.size() < y.quads.size(); });
   std::vector<char> used(el.count(), 0);
   std::vector<std::array<int, 4>> added;
   std::size_t paired = 0;
@@ -142,14 +144,16 @@ std::unordered_map<std::uint64_t, int> edgesToSplit(const std::vector<std::array
     if (on == quadsOnEdge.end()) continue;
     for (int q : on->second)
       for (int k = 0; k < 4; ++k)
-        if (edgeKey(quads[q][k], quads[q][(k + 1) % 4]) == edgeKey(a, b)) todo.push_back({quads[q][(k + 2) % 4], quads[q][(k + 3) % 4]});
+        if (edgeKey(quads[q][k], quads[q][(k + 1) % 4]) == edgeKey(a, b))
+          todo.push_back({quads[q][(k + 2) % 4], quads[q][(k + 3) % 4]});
   }
   return split;
 }
 
 }  // namespace
 
-std::size_t splitTriangles(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& quads, std::vector<std::array<int, 3>>& triangles) {
+std::size_t splitTriangles(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& quads,
+                           std::vector<std::array<int, 3>>& triangles) {
   if (triangles.empty()) return 0;
   std::unordered_map<std::uint64_t, int> split = edgesToSplit(quads, triangles);
   auto mid = [&](int a, int b) {  // the midpoint node of edge (a, b), or -1 if it is not split
@@ -188,7 +192,8 @@ std::size_t splitTriangles(std::vector<Vec3>& nodes, std::vector<std::array<int,
   return count;
 }
 
-QuadCompletion pairTriangles(std::vector<std::array<int, 4>>& quads, std::vector<std::array<int, 3>>& triangles, int maxStrip) {
+QuadCompletion pairTriangles(std::vector<std::array<int, 4>>& quads, std::vector<std::array<int, 3>>& triangles,
+                             int maxStrip) {
   QuadCompletion done;
   while (!triangles.empty()) {
     const std::size_t paired = pairingRound(quads, triangles, maxStrip);

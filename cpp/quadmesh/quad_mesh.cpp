@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <map>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
-#include <unordered_map>
 #include <tuple>
+#include <unordered_map>
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
@@ -25,8 +25,8 @@ namespace {
 // Gmsh's nodes stray from the chordal triangles by up to half a quad in strongly bent patches (its
 // smoothing and recombination move them in 3D); farther than this x size means a failed reparametrization.
 constexpr double kOffSurface = 1.0;
-constexpr int kMaxStrip = 20;  // quads between two leftover triangles that are paired (quad_completion)
-constexpr int kCurveSamples = 64;  // points along a patch curve to measure it
+constexpr int kMaxStrip = 20;             // quads between two leftover triangles that are paired (quad_completion)
+constexpr int kCurveSamples = 64;         // points along a patch curve to measure it
 constexpr double kStructuredMean = 0.98;  // mean quad scaled Jacobian of a try that needs no other
 constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  // of a structured patch
 
@@ -52,7 +52,9 @@ void addChordalTriangles(const ChordalSurface& chordal) {
   }
   gmsh::model::mesh::addNodes(2, surface, tags, coords);
   std::vector<std::size_t> triangles;
-  auto add = [&](int a, int b, int c) { triangles.insert(triangles.end(), {std::size_t(a) + 1, std::size_t(b) + 1, std::size_t(c) + 1}); };
+  auto add = [&](int a, int b, int c) {
+    triangles.insert(triangles.end(), {std::size_t(a) + 1, std::size_t(b) + 1, std::size_t(c) + 1});
+  };
   for (const auto& f : chordal.facets) {
     add(f[0], f[1], f[2]);
     if (f[3] >= 0) add(f[0], f[2], f[3]);
@@ -76,9 +78,11 @@ double sizeAt(const ChordalLocator& chordal, const std::vector<double>& vertexSi
 void setQuadOptions(const QuadMeshOptions& o, const PatchSplit& split, const ChordalLocator& chordal) {
   const bool adaptive = !o.vertexSize.empty();
   gmsh::option::setNumber("Mesh.MeshSizeMin", smallestSize(o));
-  gmsh::option::setNumber("Mesh.MeshSizeMax", adaptive ? *std::max_element(o.vertexSize.begin(), o.vertexSize.end()) : o.size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax",
+                          adaptive ? *std::max_element(o.vertexSize.begin(), o.vertexSize.end()) : o.size);
   if (adaptive)  // §6.1: geometry-adaptive quads
-    gmsh::model::mesh::setSizeCallback([&](int, int, double x, double y, double z) { return sizeAt(chordal, o.vertexSize, Vec3(x, y, z)); });
+    gmsh::model::mesh::setSizeCallback(
+        [&](int, int, double x, double y, double z) { return sizeAt(chordal, o.vertexSize, Vec3(x, y, z)); });
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -114,7 +118,8 @@ SampledCurve sampleCurve(int tag) {
   for (size_t i = 0; i + 2 < xyz.size(); i += 3) c.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
   std::vector<double> first;
   gmsh::model::getValue(0, std::abs(ends[0].second), {}, first);
-  const bool firstIsStart = (Vec3(first[0], first[1], first[2]) - c.points.front()).norm() <= (Vec3(first[0], first[1], first[2]) - c.points.back()).norm();
+  const bool firstIsStart = (Vec3(first[0], first[1], first[2]) - c.points.front()).norm() <=
+                            (Vec3(first[0], first[1], first[2]) - c.points.back()).norm();
   c.ends = {std::abs(ends[firstIsStart ? 0 : 1].second), std::abs(ends[firstIsStart ? 1 : 0].second)};
   return c;
 }
@@ -134,16 +139,19 @@ std::vector<SampledCurve> fourSides(int surface, std::map<int, SampledCurve>& cu
   if (sides.size() != 4) return {};
   for (int k = 1; k < 4; ++k) {  // chain them: side k starts or ends where side k - 1 ends
     const int joint = sides[k - 1].ends[1];
-    auto next = std::find_if(sides.begin() + k, sides.end(), [&](const SampledCurve& c) { return c.ends[0] == joint || c.ends[1] == joint; });
+    auto next = std::find_if(sides.begin() + k, sides.end(),
+                             [&](const SampledCurve& c) { return c.ends[0] == joint || c.ends[1] == joint; });
     if (next == sides.end()) return {};
     std::swap(sides[k], *next);
-    if (sides[k].ends[1] == joint) std::reverse(sides[k].points.begin(), sides[k].points.end()), std::swap(sides[k].ends[0], sides[k].ends[1]);
+    if (sides[k].ends[1] == joint)
+      std::reverse(sides[k].points.begin(), sides[k].points.end()), std::swap(sides[k].ends[0], sides[k].ends[1]);
   }
   if (sides[3].ends[1] != sides[0].ends[0]) return {};
   for (int k = 0; k < 4; ++k) {  // the corner where side k ends and side k + 1 starts
     const auto& in = sides[k].points;
     const auto& out = sides[(k + 1) % 4].points;
-    const double angle = std::acos(std::clamp((in[in.size() - 2] - in.back()).normalized().dot((out[1] - out[0]).normalized()), -1.0, 1.0));
+    const double angle = std::acos(
+        std::clamp((in[in.size() - 2] - in.back()).normalized().dot((out[1] - out[0]).normalized()), -1.0, 1.0));
     if (angle < kMinCorner || angle > kMaxCorner) return {};
   }
   return sides;
@@ -154,7 +162,8 @@ double segmentsNeeded(const SampledCurve& c, const QuadMeshOptions& o, const Cho
   double segments = 0;
   for (size_t i = 0; i + 1 < c.points.size(); ++i) {
     const Vec3 mid = 0.5 * (c.points[i] + c.points[i + 1]);
-    segments += (c.points[i + 1] - c.points[i]).norm() / (o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, mid));
+    segments +=
+        (c.points[i + 1] - c.points[i]).norm() / (o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, mid));
   }
   return std::max(1.0, std::round(segments));
 }
@@ -184,7 +193,8 @@ std::size_t structurePatches(const QuadMeshOptions& o, const ChordalLocator& cho
     double& s = segments[opposite.find(at)];
     s = std::max(s, segmentsNeeded(curves[tag], o, chordal));
   }
-  for (const auto& [tag, at] : index) gmsh::model::mesh::setTransfiniteCurve(tag, static_cast<int>(segments[opposite.find(at)]) + 1);
+  for (const auto& [tag, at] : index)
+    gmsh::model::mesh::setTransfiniteCurve(tag, static_cast<int>(segments[opposite.find(at)]) + 1);
   for (const auto& [surface, sides] : patches) {
     gmsh::model::mesh::setTransfiniteSurface(surface);
     gmsh::model::mesh::setRecombine(2, surface);
@@ -211,7 +221,8 @@ QuadMesh collectQuads() {
   std::vector<double> coord, param;
   gmsh::model::mesh::getNodes(nodeTags, coord, param, -1, -1, true, false);
   std::map<std::size_t, Vec3> position;
-  for (size_t i = 0; i < nodeTags.size(); ++i) position[nodeTags[i]] = Vec3(coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]);
+  for (size_t i = 0; i < nodeTags.size(); ++i)
+    position[nodeTags[i]] = Vec3(coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]);
   QuadMesh q;
   std::map<std::size_t, int> index;  // Gmsh node tag -> our node id, in order of first use
   auto node = [&](std::size_t tag) {
@@ -235,7 +246,8 @@ QuadMesh collectQuads() {
 
 // A quad mesh as bytes and back, to cross from the child process that runs Gmsh.
 std::string toBytes(const QuadMesh& q) {
-  const std::size_t counts[6] = {q.nodes.size(), q.quads.size(), q.pairedTriangles, q.splitTriangles, q.holes, q.structuredPatches};
+  const std::size_t counts[6] = {q.nodes.size(),   q.quads.size(), q.pairedTriangles,
+                                 q.splitTriangles, q.holes,        q.structuredPatches};
   std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
   for (const Vec3& p : q.nodes) bytes.append(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
   bytes.append(reinterpret_cast<const char*>(q.quads.data()), q.quads.size() * sizeof(q.quads[0]));
@@ -261,7 +273,6 @@ QuadMesh fromBytes(const std::string& bytes) {
   return q;
 }
 
-
 double gmshTimeout(const ChordalSurface& chordal, double size) {
   return 60 + chordalArea(chordal) / (size * size) / 2000;
 }
@@ -269,33 +280,36 @@ double gmshTimeout(const ChordalSurface& chordal, double size) {
 // One Gmsh run: split the chordal surface into patches, reparametrize, mesh.
 // Gmsh runs in a child process: its crashes and hangs (both seen on real parts with Gmsh 4.8) end
 // that try only. Returns no quads, and why in `error`, if Gmsh fails.
-QuadMesh gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const PatchSplit& split, std::string& error) {
+QuadMesh gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const PatchSplit& split,
+                   std::string& error) {
   const ChordalSurface& chordal = locator.surface();
-  const ChildResult run = runInChildProcess([&] {
-    GmshSession session;
-    try {
-      gmsh::model::add("chordal_surface");
-      addChordalTriangles(chordal);
-      const double toRadians = M_PI / 180.0;
-      gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
-      gmsh::model::mesh::createGeometry();
-      // Gmsh 4.8 caps every mesh size by the model's size, which is only computed on a synchronize:
-      // without it, the discrete model's default of 1 caps the adaptive sizes (§6.1).
-      gmsh::model::geo::synchronize();
-      setQuadOptions(o, split, locator);
-      const std::size_t structured = split.structured ? structurePatches(o, locator) : 0;
-      gmsh::model::mesh::generate(2);
-      QuadMesh q = collectQuads();
-      q.structuredPatches = structured;
-      return toBytes(q);
-    } catch (const std::exception&) {
-      throw;
-    } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
-      std::string last;
-      gmsh::logger::getLastError(last);
-      throw std::runtime_error(last.empty() ? "unknown Gmsh error" : last);
-    }
-  }, o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTimeout(chordal, smallestSize(o)));
+  const ChildResult run = runInChildProcess(
+      [&] {
+        GmshSession session;
+        try {
+          gmsh::model::add("chordal_surface");
+          addChordalTriangles(chordal);
+          const double toRadians = M_PI / 180.0;
+          gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
+          gmsh::model::mesh::createGeometry();
+          // Gmsh 4.8 caps every mesh size by the model's size, which is only computed on a synchronize:
+          // without it, the discrete model's default of 1 caps the adaptive sizes (§6.1).
+          gmsh::model::geo::synchronize();
+          setQuadOptions(o, split, locator);
+          const std::size_t structured = split.structured ? structurePatches(o, locator) : 0;
+          gmsh::model::mesh::generate(2);
+          QuadMesh q = collectQuads();
+          q.structuredPatches = structured;
+          return toBytes(q);
+        } catch (const std::exception&) {
+          throw;
+        } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
+          std::string last;
+          gmsh::logger::getLastError(last);
+          throw std::runtime_error(last.empty() ? "unknown Gmsh error" : last);
+        }
+      },
+      o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTimeout(chordal, smallestSize(o)));
   if (!run.ok) {
     error = "Gmsh " + run.failure;
     return {};
@@ -315,7 +329,7 @@ SurfaceCheck onChordalSurface(const QuadMesh& q, const ChordalLocator& chordal) 
   SurfaceCheck c;
   c.onSurface = q.nodes;
   const long n = static_cast<long>(q.nodes.size());
-  #pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256)
   for (long i = 0; i < n; ++i)
     if (q.nodes[i].allFinite()) c.onSurface[i] = chordal.locate(q.nodes[i]).point;
   for (long i = 0; i < n; ++i) {
@@ -355,7 +369,8 @@ long eulerCharacteristic(const QuadMesh& q, const std::vector<EdgeUse>& uses) {
 }
 
 long eulerCharacteristic(const ChordalSurface& s) {
-  return static_cast<long>(s.vertices.size()) - static_cast<long>(facetEdgeUses(s).size()) + static_cast<long>(s.facets.size());
+  return static_cast<long>(s.vertices.size()) - static_cast<long>(facetEdgeUses(s).size()) +
+         static_cast<long>(s.facets.size());
 }
 
 // A smoothed try's quads, best first: the chordal surface's topology, fewest holes, fewest
@@ -375,7 +390,7 @@ struct QuadScore {
 std::size_t foldedEdges(const QuadMesh& q, const std::vector<EdgeUse>& uses, const ChordalLocator& chordal) {
   std::vector<char> facesNormal(q.quads.size());
   const long quads = static_cast<long>(q.quads.size());
-  #pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256)
   for (long e = 0; e < quads; ++e) {
     const auto& quad = q.quads[e];
     const Vec3 centroid = 0.25 * (q.nodes[quad[0]] + q.nodes[quad[1]] + q.nodes[quad[2]] + q.nodes[quad[3]]);
@@ -383,9 +398,11 @@ std::size_t foldedEdges(const QuadMesh& q, const std::vector<EdgeUse>& uses, con
     facesNormal[e] = n.dot(normalAt(chordal.surface(), chordal.locate(centroid))) >= 0;
   }
   std::size_t folded = 0;
-  for (std::size_t i = 0; i + 1 < uses.size(); ++i) {  // an inside edge: turned, its two quads must run it opposite ways
+  for (std::size_t i = 0; i + 1 < uses.size();
+       ++i) {  // an inside edge: turned, its two quads must run it opposite ways
     const EdgeUse &a = uses[i], &b = uses[i + 1];
-    const bool inside = a.edge == b.edge && (i == 0 || uses[i - 1].edge != a.edge) && (i + 2 == uses.size() || uses[i + 2].edge != a.edge);
+    const bool inside = a.edge == b.edge && (i == 0 || uses[i - 1].edge != a.edge) &&
+                        (i + 2 == uses.size() || uses[i + 2].edge != a.edge);
     if (inside) folded += (a.fromLower != facesNormal[a.quad]) == (b.fromLower != facesNormal[b.quad]);
   }
   return folded;
@@ -413,12 +430,15 @@ QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOp
 // each hole, and if its rim has no four sharp corners, an O-grid too (if it is a disc), and a ring grid
 // if it has two rims (a tube, a ring).
 std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const QuadMeshOptions& o) {
-  const SizeField size = [&](const Vec3& p) { return o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, p); };
+  const SizeField size = [&](const Vec3& p) {
+    return o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, p);
+  };
   std::vector<QuadMesh> tries;
   auto add = [&](BlockGrid grid, QuadLayout layout) {
     if (grid.empty()) return;
     QuadMesh q;
-    q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks, q.layout = layout;
+    q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks,
+    q.layout = layout;
     tries.push_back(std::move(q));
   };
   const SurfaceMap square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
@@ -439,7 +459,8 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
   std::vector<std::vector<int>> around(q.nodes.size());
   for (const auto& quad : q.quads)
     for (int k = 0; k < 4; ++k)
-      if (int a = quad[k], b = quad[(k + 1) % 4]; use[edgeKey(a, b)] == 1) around[a].push_back(b), around[b].push_back(a);
+      if (int a = quad[k], b = quad[(k + 1) % 4]; use[edgeKey(a, b)] == 1)
+        around[a].push_back(b), around[b].push_back(a);
   return around;
 }
 
@@ -454,13 +475,14 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
   // single try keeps its own parallel loops: an inactive region does not nest them.)
   std::vector<QuadMesh> blocks = blockGridQuads(chordal, o);
   std::vector<QuadScore> scores(blocks.size());
-  #pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
+#pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
   for (long i = 0; i < static_cast<long>(blocks.size()); ++i) {
     blocks[i].nodes = onChordalSurface(blocks[i], chordal).onSurface;
     scores[i] = finishTry(blocks[i], chordal, o, chordalEuler);
   }
   for (std::size_t i = 0; i < blocks.size(); ++i)
-    if (!scores[i].topologyChanged && scores[i].inverted == 0 && scores[i] < bestScore) best = std::move(blocks[i]), bestScore = scores[i];
+    if (!scores[i].topologyChanged && scores[i].inverted == 0 && scores[i] < bestScore)
+      best = std::move(blocks[i]), bestScore = scores[i];
   Vec3 failedAt = Vec3::Zero();
   std::string gmshError;
   for (std::size_t i = 0; i < o.patchSplits.size() && !(bestScore.good() && bestScore.mean >= kStructuredMean); ++i) {
@@ -472,7 +494,8 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
       continue;
     }
     q.nodes = std::move(c.onSurface);
-    if (const QuadScore score = finishTry(q, chordal, o, chordalEuler); score < bestScore) best = std::move(q), bestScore = score;
+    if (const QuadScore score = finishTry(q, chordal, o, chordalEuler); score < bestScore)
+      best = std::move(q), bestScore = score;
     if (bestScore.good()) break;
   }
   if (best.quads.empty()) {
@@ -481,7 +504,8 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
     if (!gmshError.empty())
       msg << gmshError;
     else
-      msg << "its reparametrization failed near (" << failedAt.x() << ", " << failedAt.y() << ", " << failedAt.z() << ")";
+      msg << "its reparametrization failed near (" << failedAt.x() << ", " << failedAt.y() << ", " << failedAt.z()
+          << ")";
     throw geometryError(msg.str());
   }
   return best;

@@ -16,13 +16,13 @@ namespace hexlayer {
 enum class QuadLayout { Gmsh, Grid, OGrid, Ring };
 
 struct QuadMesh {
-  std::vector<Vec3> nodes;                 // on the chordal surface
-  std::vector<std::array<int, 4>> quads;   // orientation as Gmsh made it (the sweep orients them)
-  std::size_t pairedTriangles = 0;         // Gmsh's leftover triangles turned into quads (quad_completion)
-  std::size_t splitTriangles = 0;          // the others, split into quads with the strips from them
-  std::size_t holes = 0;                   // leftover triangles neither could handle: each is a hole
-  int doubletsRemoved = 0;                 // before smoothing (quad_smoothing)
-  std::size_t structuredPatches = 0;       // patches (or blocks) meshed with a structured grid
+  std::vector<Vec3> nodes;                // on the chordal surface
+  std::vector<std::array<int, 4>> quads;  // orientation as Gmsh made it (the sweep orients them)
+  std::size_t pairedTriangles = 0;        // Gmsh's leftover triangles turned into quads (quad_completion)
+  std::size_t splitTriangles = 0;         // the others, split into quads with the strips from them
+  std::size_t holes = 0;                  // leftover triangles neither could handle: each is a hole
+  int doubletsRemoved = 0;                // before smoothing (quad_smoothing)
+  std::size_t structuredPatches = 0;      // patches (or blocks) meshed with a structured grid
   QuadLayout layout = QuadLayout::Gmsh;
 };
 
@@ -40,7 +40,7 @@ struct PatchSplit {
 };
 
 struct QuadMeshOptions {
-  double size = 0;  // target edge length (uniform sizing)
+  double size = 0;                 // target edge length (uniform sizing)
   std::vector<double> vertexSize;  // adaptive sizing: target edge length per chordal vertex (sizing.hpp)
   // The structured block grids are tried first (block_grids.hpp); Gmsh, one split after the other,
   // unless one of them is good with a mean quad of at least 0.98. Gmsh's reparametrization of a
@@ -49,14 +49,17 @@ struct QuadMeshOptions {
   // tries, the one that keeps the topology, then with the fewest holes, then the fewest inverted
   // (or folded), then the fewest below acceptableQuad, then the best mean quad, then the best
   // worst is kept.
-  std::vector<PatchSplit> patchSplits{{60, 60, true}, {60, 180}, {40, 40}, {40, 180}, {80, 80}, {25, 25},
-                                      {60, 60, true, 2}, {60, 180, false, 2}, {40, 40, false, 2}, {40, 180, false, 2},
+  std::vector<PatchSplit> patchSplits{{60, 60, true},     {60, 180},
+                                      {40, 40},           {40, 180},
+                                      {80, 80},           {25, 25},
+                                      {60, 60, true, 2},  {60, 180, false, 2},
+                                      {40, 40, false, 2}, {40, 180, false, 2},
                                       {80, 80, false, 2}, {25, 25, false, 2}};
   double acceptableQuad = 0.1;   // quad scaled Jacobian, smoothed
   int smoothingIterations = 10;  // of every try (quad_smoothing)
   // For one Gmsh try: a fixed minute plus a second per 2000 quads the surface will get (Gmsh 4.8
   // meshes tens of thousands of quads a second; a try that takes far longer has hung).
-  double timeoutSeconds = 0;      // 0: from the chordal surface's area and the size
+  double timeoutSeconds = 0;  // 0: from the chordal surface's area and the size
 };
 
 // For every node, the nodes it shares a rim edge with (an edge of a single quad); empty inside.

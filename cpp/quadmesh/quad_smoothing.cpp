@@ -12,7 +12,8 @@ namespace {
 
 // The quad's scaled Jacobian from its corners, the edge vectors edge[k] = p[k+1] - p[k] and their
 // lengths (corner k's second edge p[k+3] - p[k] is the exact negation of edge k+3).
-double scaledJacobianFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge, const std::array<double, 4>& length) {
+double scaledJacobianFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge,
+                               const std::array<double, 4>& length) {
   Vec3 n = (p[2] - p[0]).cross(p[3] - p[1]);
   if (n.norm() == 0) return -1;
   n.normalize();
@@ -40,7 +41,8 @@ std::array<double, 4> lengthsOf(const std::array<Vec3, 4>& edge) {
 constexpr double kFreeAspect = 4;  // quads up to this ratio of longest to shortest edge are not penalized
 
 // quadSmoothingQuality from the corners, the edge vectors and their lengths.
-double qualityFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge, const std::array<double, 4>& length) {
+double qualityFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge,
+                        const std::array<double, 4>& length) {
   double shortest = std::numeric_limits<double>::infinity(), longest = 0;
   for (int k = 0; k < 4; ++k) shortest = std::min(shortest, length[k]), longest = std::max(longest, length[k]);
   return std::min(scaledJacobianFromEdges(p, edge, length), longest > 0 ? kFreeAspect * shortest / longest : -1.0);
@@ -60,10 +62,10 @@ double quadSmoothingQuality(const std::array<Vec3, 4>& p) {
 
 namespace {
 
-constexpr double kGoodQuad = 0.999;                // quads below this get their nodes optimized
-constexpr double kMeanWeight = 2;                  // weight of the mean quad against the worst one
-constexpr double kMinGain = 1e-4;                  // a node moves only for a better score than this
-constexpr double kSmallestStep = 1e-2;             // pattern search stops at this x the longest edge around
+constexpr double kGoodQuad = 0.999;                  // quads below this get their nodes optimized
+constexpr double kMeanWeight = 2;                    // weight of the mean quad against the worst one
+constexpr double kMinGain = 1e-4;                    // a node moves only for a better score than this
+constexpr double kSmallestStep = 1e-2;               // pattern search stops at this x the longest edge around
 constexpr double kRimCornerAngle = 30 * M_PI / 180;  // a rim node turning more than this stays
 
 using NodeQuads = Groups<int>;  // the quads around node i: items[start[i] .. start[i + 1])
@@ -84,7 +86,8 @@ std::vector<std::array<int, 2>> rimNeighbours(const QuadMesh& q) {
     if (around[i].empty()) continue;
     rim[i] = {-2, -2};
     if (around[i].size() != 2) continue;
-    const Vec3 a = (q.nodes[i] - q.nodes[around[i][0]]).normalized(), b = (q.nodes[around[i][1]] - q.nodes[i]).normalized();
+    const Vec3 a = (q.nodes[i] - q.nodes[around[i][0]]).normalized(),
+               b = (q.nodes[around[i][1]] - q.nodes[i]).normalized();
     if (a.dot(b) > std::cos(kRimCornerAngle)) rim[i] = {around[i][0], around[i][1]};
   }
   return rim;

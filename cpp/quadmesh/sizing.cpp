@@ -20,7 +20,8 @@ double median(std::vector<double> v) {
 }
 
 // h_i = min(h_i, h_j + g |x_i - x_j|) over the edges until nothing changes (a discrete Lipschitz bound).
-void limitGradation(const ChordalSurface& s, const std::vector<std::pair<int, int>>& edges, double g, std::vector<double>& h) {
+void limitGradation(const ChordalSurface& s, const std::vector<std::pair<int, int>>& edges, double g,
+                    std::vector<double>& h) {
   for (bool changed = true; changed;) {
     changed = false;
     for (const auto& [a, b] : edges) {
@@ -53,8 +54,8 @@ std::vector<double> adaptiveSizes(const ChordalSurface& s, const SizingOptions& 
   const std::vector<double> curvature = chordalCurvature(s);
   std::vector<double> h(s.vertices.size());
   for (size_t i = 0; i < h.size(); ++i) {
-    h[i] = medianRadius > 0 ? o.size * s.radius[i] / medianRadius : o.size;          // §6.1: radius function
-    if (curvature[i] > 0) h[i] = std::min(h[i], o.turnPerQuad / curvature[i]);        // §6.1: curvature
+    h[i] = medianRadius > 0 ? o.size * s.radius[i] / medianRadius : o.size;     // §6.1: radius function
+    if (curvature[i] > 0) h[i] = std::min(h[i], o.turnPerQuad / curvature[i]);  // §6.1: curvature
     h[i] = std::clamp(h[i], lo, hi);
   }
   limitGradation(s, facetEdges(s), o.gradation, h);

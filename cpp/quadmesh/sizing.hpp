@@ -8,11 +8,11 @@
 namespace hexlayer {
 
 struct SizingOptions {
-  double size = 0;          // quad size where the wall has its median thickness
-  double minSize = 0;       // bounds of the adaptive size (0: size / 4 and 4 x size)
+  double size = 0;     // quad size where the wall has its median thickness
+  double minSize = 0;  // bounds of the adaptive size (0: size / 4 and 4 x size)
   double maxSize = 0;
-  double gradation = 0.3;   // the size grows by at most this much per unit length
-  double turnPerQuad = 0.5; // radians the chordal surface may turn across one quad
+  double gradation = 0.3;    // the size grows by at most this much per unit length
+  double turnPerQuad = 0.5;  // radians the chordal surface may turn across one quad
 };
 
 // Target quad size at every chordal vertex (§6.1): size x r / median r (quads as many wall

@@ -1,8 +1,8 @@
 #include "quadmesh/surface_map.hpp"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/Sparse>
 #include <Eigen/OrderingMethods>
+#include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
@@ -67,8 +67,8 @@ double loopSpan(const std::vector<double>& length, int i, int j) {
 // How much the rim turns at each of its points in the surface's tangent plane (the rim's bends
 // with a bent surface do not count): the angle from its direction `window` behind the point to
 // its direction `window` ahead, positive to the left (into the surface).
-std::vector<double> rimTurning(const std::vector<int>& loop, const std::vector<double>& length, const std::vector<Vec3>& x,
-                               const std::vector<Vec3>& normals, double window) {
+std::vector<double> rimTurning(const std::vector<int>& loop, const std::vector<double>& length,
+                               const std::vector<Vec3>& x, const std::vector<Vec3>& normals, double window) {
   const int n = static_cast<int>(loop.size());
   std::vector<double> turn(n, 0);
   for (int i = 0; i < n; ++i) {
@@ -86,14 +86,15 @@ std::vector<double> rimTurning(const std::vector<int>& loop, const std::vector<d
 // The rim's four corners, ascending along it: its four sharpest corners (turning more than
 // kSharpCorner, the most within `window`) if it has four or more (then `sharp`), else the diagonal
 // extremes of its principal axes (a rounded rectangle's arcs, a circle's 45° points).
-std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<int>& loop, const std::vector<double>& length, double window,
-                              bool& sharp) {
+std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<int>& loop,
+                              const std::vector<double>& length, double window, bool& sharp) {
   const std::vector<double> turn = rimTurning(loop, length, chordal.vertices, chordal.normals, window);
   const int n = static_cast<int>(loop.size());
   std::vector<int> peaks;
   for (int i = 0; i < n; ++i) {
     bool peak = turn[i] > kSharpCorner;
-    for (int j = i - 1; peak && j > i - n && loopSpan(length, j, i) < window; --j) peak = turn[(j % n + n) % n] < turn[i];
+    for (int j = i - 1; peak && j > i - n && loopSpan(length, j, i) < window; --j)
+      peak = turn[(j % n + n) % n] < turn[i];
     for (int j = i + 1; peak && j < i + n && loopSpan(length, i, j) < window; ++j) peak = turn[j % n] <= turn[i];
     if (peak) peaks.push_back(i);
   }
@@ -129,8 +130,8 @@ Eigen::Vector2d boundaryPoint(MapBoundary boundary, int k, double f) {
 // Floater's mean value weights, as the matrix of "every point off the rim is the weighted mean of
 // its neighbours" (row i: sum_j w_ij u_i - sum_j w_ij u_j = 0, w_ij = (tan(α/2) + tan(β/2)) / |x_j - x_i|
 // with α, β the angles at i of the two triangles on the edge), and "u_i = its place" on the rim.
-Eigen::SparseMatrix<double> meanValueSystem(const std::vector<std::array<int, 3>>& triangles, const std::vector<Vec3>& x,
-                                            const std::vector<char>& onRim) {
+Eigen::SparseMatrix<double> meanValueSystem(const std::vector<std::array<int, 3>>& triangles,
+                                            const std::vector<Vec3>& x, const std::vector<char>& onRim) {
   std::vector<Eigen::Triplet<double>> entries;  // Eigen sums the duplicates
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k) {
@@ -186,7 +187,8 @@ std::vector<int> shortestPath(const SurfaceMap& map, const std::vector<char>& on
     if (p == to) break;
     if (d > distance[p] || (p != from && onRim[p])) continue;
     for (int q : next[p])
-      if (const double e = d + (map.points[q] - map.points[p]).norm(); e < distance[q]) distance[q] = e, previous[q] = p, queue.push({e, q});
+      if (const double e = d + (map.points[q] - map.points[p]).norm(); e < distance[q])
+        distance[q] = e, previous[q] = p, queue.push({e, q});
   }
   if (previous[to] < 0) return {};
   std::vector<int> path{to};
@@ -199,7 +201,8 @@ std::vector<int> shortestPath(const SurfaceMap& map, const std::vector<char>& on
 // copy of each of its points. Returns the copies, in the path's order.
 std::vector<int> cutOpen(SurfaceMap& map, const std::vector<int>& path) {
   std::unordered_map<std::uint64_t, int> cutEdge;  // directed edge of the path -> 1
-  for (std::size_t k = 0; k + 1 < path.size(); ++k) cutEdge[edgeKey(path[k], path[k + 1])] = 1, cutEdge[edgeKey(path[k + 1], path[k])] = 1;
+  for (std::size_t k = 0; k + 1 < path.size(); ++k)
+    cutEdge[edgeKey(path[k], path[k + 1])] = 1, cutEdge[edgeKey(path[k + 1], path[k])] = 1;
   const Groups<int> around = groupByKey<int>(map.points.size(), [&](auto emit) {  // the triangles round each point
     for (std::size_t t = 0; t < map.triangles.size(); ++t)
       for (int p : map.triangles[t]) emit(p, static_cast<int>(t));
@@ -252,7 +255,7 @@ Eigen::SparseMatrix<double> periodicSystem(const std::vector<std::array<int, 3>>
   for (std::size_t i = 0; i < x.size(); ++i) rowOf[i] = static_cast<int>(i);
   for (std::size_t k = 0; k < path.size(); ++k) rowOf[copy[k]] = path[k];
   std::vector<Eigen::Triplet<double>> entries;  // Eigen sums the duplicates
-  auto edge = [&](int a, int b, double w) {  // w (value(b) - value(a)) in a's row, and the other way round
+  auto edge = [&](int a, int b, double w) {     // w (value(b) - value(a)) in a's row, and the other way round
     for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
       if (rowOf[from] == path.front()) continue;
       entries.emplace_back(rowOf[from], to, -w), entries.emplace_back(rowOf[from], from, w);
@@ -266,7 +269,8 @@ Eigen::SparseMatrix<double> periodicSystem(const std::vector<std::array<int, 3>>
       if (sine > 0) edge(a, b, 0.5 * u.dot(v) / sine);  // half the cotangent of the angle at c
     }
   entries.emplace_back(path.front(), path.front(), 1.0);
-  for (std::size_t k = 0; k < path.size(); ++k) entries.emplace_back(copy[k], copy[k], 1.0), entries.emplace_back(copy[k], path[k], -1.0);
+  for (std::size_t k = 0; k < path.size(); ++k)
+    entries.emplace_back(copy[k], copy[k], 1.0), entries.emplace_back(copy[k], path[k], -1.0);
   Eigen::SparseMatrix<double> a(x.size(), x.size());
   a.setFromTriplets(entries.begin(), entries.end());
   return a;
@@ -283,7 +287,8 @@ double conformalModulus(const SurfaceMap& map, Height&& h) {
     const double doubleArea = n.norm();
     if (doubleArea <= 0) continue;
     // grad h = sum of h_i (n x e_i) / (2 area), e_i the edge opposite corner i
-    const Vec3 grad = (h(t[0]) * n.cross(c - b) + h(t[1]) * n.cross(a - c) + h(t[2]) * n.cross(b - a)) / (doubleArea * doubleArea);
+    const Vec3 grad =
+        (h(t[0]) * n.cross(c - b) + h(t[1]) * n.cross(a - c) + h(t[2]) * n.cross(b - a)) / (doubleArea * doubleArea);
     energy += 0.5 * doubleArea * grad.squaredNorm();
   }
   return energy > 0 ? 2 * M_PI / energy : 0;
@@ -299,11 +304,12 @@ bool anglesIncrease(const std::vector<int>& loop, const std::vector<Eigen::Vecto
 // The annulus map of a surface with two rims (loops, longer first; map.points and map.triangles set).
 SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
   if (loops.size() != 2 || loops[0].size() < 8 || loops[1].size() < 8) return {};
-  if (arcLength(loops[1], map.points).back() < kMinRingRims * arcLength(loops[0], map.points).back()) return {};  // a hole
+  if (arcLength(loops[1], map.points).back() < kMinRingRims * arcLength(loops[0], map.points).back())
+    return {};  // a hole
   std::vector<int>& outer = loops[0];
   std::vector<int>& inner = loops[1];
   std::reverse(inner.begin(), inner.end());  // round the hole the way the outer rim goes
-  double apart = 0;  // mean distance from the outer rim's points to the inner rim
+  double apart = 0;                          // mean distance from the outer rim's points to the inner rim
   int facing = 0;
   for (std::size_t i = 0; i < outer.size(); ++i) {
     double nearest = std::numeric_limits<double>::infinity();
@@ -340,7 +346,8 @@ SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
   const double conformal = conformalModulus(map, [&](std::size_t i) { return height[uncutOf(i)].x(); });
   if (!(conformal > 0 && conformal < kMaxAnnulusModulus)) return {};
   map.innerRadius = std::exp(-conformal);
-  for (std::size_t i = 0; i < map.points.size(); ++i) map.uv[i] = {angle[i].x(), -conformal * (1 - height[uncutOf(i)].x())};
+  for (std::size_t i = 0; i < map.points.size(); ++i)
+    map.uv[i] = {angle[i].x(), -conformal * (1 - height[uncutOf(i)].x())};
   if (!anglesIncrease(outer, map.uv)) return {};
   map.rim = outer;
   map.holes = {inner};
@@ -353,19 +360,22 @@ SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
 
 std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Vec3>& x) {
   std::vector<double> length{0};
-  for (std::size_t i = 0; i < loop.size(); ++i) length.push_back(length.back() + (x[loop[(i + 1) % loop.size()]] - x[loop[i]]).norm());
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    length.push_back(length.back() + (x[loop[(i + 1) % loop.size()]] - x[loop[i]]).norm());
   return length;
 }
 
 std::array<int, 4> diagonalExtremes(const std::vector<Vec3>& loop, const Vec3& centre, const Vec3& e1, const Vec3& e2) {
   double a = 0, b = 0;
-  for (const Vec3& p : loop) a = std::max(a, std::abs((p - centre).dot(e1))), b = std::max(b, std::abs((p - centre).dot(e2)));
+  for (const Vec3& p : loop)
+    a = std::max(a, std::abs((p - centre).dot(e1))), b = std::max(b, std::abs((p - centre).dot(e2)));
   std::array<int, 4> extremes{};
   const int signs[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
   for (int k = 0; k < 4; ++k) {
     double best = -std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < loop.size(); ++i)
-      if (const double s = signs[k][0] * (loop[i] - centre).dot(e1) / a + signs[k][1] * (loop[i] - centre).dot(e2) / b; s > best)
+      if (const double s = signs[k][0] * (loop[i] - centre).dot(e1) / a + signs[k][1] * (loop[i] - centre).dot(e2) / b;
+          s > best)
         best = s, extremes[k] = static_cast<int>(i);
   }
   return extremes;
@@ -388,7 +398,8 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary 
     for (int p : loops[h]) centre += map.points[p] / loops[h].size();
     const int c = static_cast<int>(map.points.size());
     map.points.push_back(centre);
-    for (std::size_t i = 0; i < loops[h].size(); ++i) map.triangles.push_back({loops[h][(i + 1) % loops[h].size()], loops[h][i], c});
+    for (std::size_t i = 0; i < loops[h].size(); ++i)
+      map.triangles.push_back({loops[h][(i + 1) % loops[h].size()], loops[h][i], c});
     std::reverse(loops[h].begin(), loops[h].end());
     map.holes.push_back(loops[h]);
   }
@@ -415,14 +426,16 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary 
 
 LoopPoint loopPoint(const SurfaceMap& map, const std::vector<int>& loop, const std::vector<double>& measure, double s) {
   const std::size_t n = loop.size();
-  const std::size_t i = std::clamp<std::size_t>(std::upper_bound(measure.begin(), measure.end(), s) - measure.begin(), 1, n) - 1;
+  const std::size_t i =
+      std::clamp<std::size_t>(std::upper_bound(measure.begin(), measure.end(), s) - measure.begin(), 1, n) - 1;
   const double span = measure[i + 1] - measure[i];
   const double g = span > 0 ? std::clamp((s - measure[i]) / span, 0.0, 1.0) : 0.0;
   const int a = loop[i], b = loop[(i + 1) % n];
   return {(1 - g) * map.points[a] + g * map.points[b], (1 - g) * map.uv[a] + g * map.uv[b]};
 }
 
-MapLocator::MapLocator(const SurfaceMap& map) : map_(map), triangles_(2.0 / std::sqrt(static_cast<double>(map.triangles.size()) + 1)) {
+MapLocator::MapLocator(const SurfaceMap& map)
+    : map_(map), triangles_(2.0 / std::sqrt(static_cast<double>(map.triangles.size()) + 1)) {
   for (size_t t = 0; t < map.triangles.size(); ++t) {
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for (int p : map.triangles[t]) lo = lo.cwiseMin(at(p)), hi = hi.cwiseMax(at(p));

@@ -28,12 +28,12 @@ struct SurfaceMap {
   std::vector<std::array<int, 3>> triangles;  // the chordal facets (quads split on a diagonal), then the fans
   std::vector<Eigen::Vector2d> uv;            // per point
   // Rim loops as points, each counter-clockwise in the plane.
-  std::vector<int> rim;                       // the outer rim (the longest loop), starting at corner 0
-  std::array<int, 4> corners{};               // positions in rim of the four corners, ascending
-  std::vector<std::vector<int>> holes;        // the other rim loops
+  std::vector<int> rim;                 // the outer rim (the longest loop), starting at corner 0
+  std::array<int, 4> corners{};         // positions in rim of the four corners, ascending
+  std::vector<std::vector<int>> holes;  // the other rim loops
   MapBoundary boundary = MapBoundary::Circle;
-  bool sharpCorners = false;                  // the four corners are the rim's sharpest, all sharp
-  double innerRadius = 0;                     // Annulus: the rectangle runs from log(innerRadius) to 0
+  bool sharpCorners = false;  // the four corners are the rim's sharpest, all sharp
+  double innerRadius = 0;     // Annulus: the rectangle runs from log(innerRadius) to 0
   bool empty() const { return triangles.empty(); }
 };
 
@@ -42,9 +42,9 @@ struct SurfaceMap {
 // exp(-M), M its conformal modulus: 2 pi over the Dirichlet energy of the height (a tube's is about 2 pi H / C,
 // H the distance between the rims and C their length); the cut is the shortest path between two points of the
 // rims facing each other. The rectangle is
-// convex, so the mean value map has no fold, and a grid evenly spaced in it has near-square quads. The four corners are the rim's four sharpest (turning more than 50 degrees
-// in the surface), or if it has fewer, its points farthest out along the diagonals of its
-// principal axes; the rim's turning is measured over `window` (about a quad) on either side.
+// convex, so the mean value map has no fold, and a grid evenly spaced in it has near-square quads. The four corners are
+// the rim's four sharpest (turning more than 50 degrees in the surface), or if it has fewer, its points farthest out
+// along the diagonals of its principal axes; the rim's turning is measured over `window` (about a quad) on either side.
 SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary boundary);
 
 // 3D arc length along a loop from its first point: up to point i at [i], the whole loop at [size].

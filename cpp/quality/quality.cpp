@@ -10,8 +10,8 @@
 
 namespace hexlayer {
 
-const std::array<std::array<int, 4>, 6> kHexFaces = {{
-    {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
+const std::array<std::array<int, 4>, 6> kHexFaces = {
+    {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
 
 namespace {
 
@@ -167,7 +167,7 @@ std::vector<BoundaryFace> boundaryFaces(const HexMesh& mesh) {
     for (std::size_t f = 0; f < count; ++f) emit(static_cast<unsigned>(key(f)[0]) % buckets, f);
   });
   std::vector<char> shared(count, 0);  // each face is written by the one bucket it is in
-  #pragma omp parallel for schedule(dynamic, 4096)
+#pragma omp parallel for schedule(dynamic, 4096)
   for (long v = 0; v < buckets; ++v)
     for (std::size_t a = byNode.start[v]; a < byNode.start[v + 1]; ++a)
       for (std::size_t b = a + 1; b < byNode.start[v + 1]; ++b)
@@ -212,7 +212,9 @@ CoincidentNodes findCoincidentNodes(const HexMesh& mesh, double tol) {
   // three indices pack into one sorted key with z last (cells z-1 .. z+1 are one key range).
   const double cell = std::max(tol, 1e-6 * (hi - lo).maxCoeff());
   auto index = [&](const Vec3& p) { return ((p - lo) / cell).array().floor().cast<std::int64_t>().eval(); };
-  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) { return static_cast<std::uint64_t>((x << 42) | (y << 21) | z); };
+  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+    return static_cast<std::uint64_t>((x << 42) | (y << 21) | z);
+  };
   std::vector<std::pair<std::uint64_t, int>> byCell(mesh.nodes.size());
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
     const auto c = index(mesh.nodes[i]);
@@ -222,15 +224,17 @@ CoincidentNodes findCoincidentNodes(const HexMesh& mesh, double tol) {
   const long n = static_cast<long>(mesh.nodes.size());
   std::size_t pairs = 0;
   long first = n;
-  #pragma omp parallel for schedule(static) reduction(+ : pairs) reduction(min : first)
+#pragma omp parallel for schedule(static) reduction(+ : pairs) reduction(min : first)
   for (long i = 0; i < n; ++i) {  // each pair counted at its higher-numbered node
     const Vec3& p = mesh.nodes[i];
     const auto c = index(p);
     for (std::int64_t x = std::max<std::int64_t>(c.x() - 1, 0); x <= c.x() + 1; ++x)
       for (std::int64_t y = std::max<std::int64_t>(c.y() - 1, 0); y <= c.y() + 1; ++y) {
-        auto at = std::lower_bound(byCell.begin(), byCell.end(), std::make_pair(key(x, y, std::max<std::int64_t>(c.z() - 1, 0)), 0));
+        auto at = std::lower_bound(byCell.begin(), byCell.end(),
+                                   std::make_pair(key(x, y, std::max<std::int64_t>(c.z() - 1, 0)), 0));
         for (const std::uint64_t last = key(x, y, c.z() + 1); at != byCell.end() && at->first <= last; ++at)
-          if (at->second < i && (mesh.nodes[at->second] - p).squaredNorm() < tol * tol) ++pairs, first = std::min(first, i);
+          if (at->second < i && (mesh.nodes[at->second] - p).squaredNorm() < tol * tol)
+            ++pairs, first = std::min(first, i);
       }
   }
   found.pairs = pairs;

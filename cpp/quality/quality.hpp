@@ -57,7 +57,9 @@ std::vector<BoundaryFace> boundaryFaces(const HexMesh& mesh);
 struct BoundaryCheck {
   std::size_t faces = 0, openEdges = 0, nonManifoldEdges = 0, inconsistentlyOrientedEdges = 0;
   long eulerCharacteristic = 0;
-  std::array<int, 2> firstBadEdge{-1, -1};  // nodes of the first open, non-manifold or flipped edge (by node ids)  // V - E + F of the boundary faces: 2 - 2 x (number of holes) for one closed shell
+  std::array<int, 2> firstBadEdge{-1,
+                                  -1};  // nodes of the first open, non-manifold or flipped edge (by node ids)  // V - E
+                                        // + F of the boundary faces: 2 - 2 x (number of holes) for one closed shell
   // Every boundary edge is used by exactly 2 boundary faces, in opposite directions (true if no faces).
   bool watertight() const { return openEdges == 0 && nonManifoldEdges == 0 && inconsistentlyOrientedEdges == 0; }
 };

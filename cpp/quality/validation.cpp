@@ -26,7 +26,8 @@ ValidationFailure failure(const std::string& check, std::size_t count, const Vec
 // A hex whose 8 corners are not 8 distinct nodes of the mesh.
 bool degenerate(std::array<int, 8> hex, std::size_t nodes) {
   std::sort(hex.begin(), hex.end());
-  return std::adjacent_find(hex.begin(), hex.end()) != hex.end() || hex.front() < 0 || static_cast<std::size_t>(hex.back()) >= nodes;
+  return std::adjacent_find(hex.begin(), hex.end()) != hex.end() || hex.front() < 0 ||
+         static_cast<std::size_t>(hex.back()) >= nodes;
 }
 
 std::optional<ValidationFailure> checkHexes(const HexMesh& mesh) {
@@ -44,7 +45,8 @@ std::optional<ValidationFailure> checkConformal(const HexMesh& mesh) {
   if (mesh.nodes.empty()) return std::nullopt;
   const CoincidentNodes c = findCoincidentNodes(mesh, kCoincidentTolerance * boxDiagonal(mesh.nodes));
   if (c.pairs == 0) return std::nullopt;
-  return failure("conformal", c.pairs, mesh.nodes[c.firstNode], "pairs of duplicate nodes (the hexes there are not joined), the first");
+  return failure("conformal", c.pairs, mesh.nodes[c.firstNode],
+                 "pairs of duplicate nodes (the hexes there are not joined), the first");
 }
 
 std::optional<ValidationFailure> checkWatertight(const HexMesh& mesh, const BoundaryCheck& b) {

@@ -15,10 +15,10 @@ namespace hexlayer {
 inline constexpr double kMaxVolumeError = 0.05;
 
 struct ValidationFailure {
-  std::string check;        // "hexes", "inverted", "conformal", "watertight" or "volume"
-  std::size_t count = 0;    // how many elements, node pairs or edges fail (1 for the volume)
-  std::optional<Vec3> at;   // where: the worst or first offender (none for the volume)
-  std::string message;      // one sentence naming the check, the count and the place
+  std::string check;       // "hexes", "inverted", "conformal", "watertight" or "volume"
+  std::size_t count = 0;   // how many elements, node pairs or edges fail (1 for the volume)
+  std::optional<Vec3> at;  // where: the worst or first offender (none for the volume)
+  std::string message;     // one sentence naming the check, the count and the place
 };
 
 // Runs every check on the corners of the hexes; q and b are the mesh's measured quality and boundary.

@@ -95,7 +95,8 @@ FacePoint projectIfClose(const FacePoint& at, double edgeLength, Side side, cons
 // Mid-edge node of a top or bottom wall edge: the midpoint, projected onto that wall if the move is small enough.
 FacePoint wallMidNode(const Vec3& a, const Vec3& b, Side side, const WallProjection& project, QuadraticStats& stats) {
   ++stats.wallNodes;
-  return projectIfClose(FacePoint{0.5 * (a + b), -1}, (b - a).norm(), side, project, stats.projected, stats.maxProjectionMove);
+  return projectIfClose(FacePoint{0.5 * (a + b), -1}, (b - a).norm(), side, project, stats.projected,
+                        stats.maxProjectionMove);
 }
 
 struct MidEdgeNodes {
@@ -110,14 +111,16 @@ struct MidEdgeNodes {
 MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const std::vector<char>& rim,
                                const WallProjection& project, QuadraticStats& stats) {
   const SweepColumns col = sweepColumns(mesh);
-  MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size()), std::vector<int>(t.edges.size(), -1)};
+  MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size()),
+                   std::vector<int>(t.edges.size(), -1)};
   auto isWall = [&](int layer) { return layer == 0 || layer == mesh.layers; };
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [a, b] = t.edges[e];
     const int ka = mesh.nodeLayer[a], kb = mesh.nodeLayer[b];
     const bool cap = onCap(mesh, a) || onCap(mesh, b);  // on a rim cap: neither a wall nor a layer
     mid.layer[e] = ka == kb && !cap ? ka : -1;
-    if (mid.layer[e] < 0) mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
+    if (mid.layer[e] < 0)
+      mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
     else if (isWall(ka)) {
       const FacePoint p = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
       mid.position[e] = p.point, mid.face[e] = p.face;
@@ -160,7 +163,8 @@ QuadraticStats addMidEdgeNodes(HexMesh& mesh, const WallProjection& project) {
   mesh.nodes.insert(mesh.nodes.end(), mid.position.begin(), mid.position.end());
   mesh.nodeLayer.insert(mesh.nodeLayer.end(), mid.layer.begin(), mid.layer.end());
   mesh.nodeOnRim.insert(mesh.nodeOnRim.end(), rim.begin(), rim.end());
-  if (mesh.nodeFace.size() == static_cast<std::size_t>(corners)) mesh.nodeFace.insert(mesh.nodeFace.end(), mid.face.begin(), mid.face.end());
+  if (mesh.nodeFace.size() == static_cast<std::size_t>(corners))
+    mesh.nodeFace.insert(mesh.nodeFace.end(), mid.face.begin(), mid.face.end());
   mesh.midEdges = t.ofHex;
   for (auto& hex : mesh.midEdges)
     for (int& e : hex) e += corners;

@@ -10,16 +10,17 @@
 
 namespace hexlayer {
 
-// The point of the `side` wall (Side::Top, Side::Bottom or Side::Lateral) nearest to p and its CAD face; nullopt if there is none.
+// The point of the `side` wall (Side::Top, Side::Bottom or Side::Lateral) nearest to p and its CAD face; nullopt if
+// there is none.
 using WallProjection = std::function<std::optional<FacePoint>(Side side, const Vec3& p)>;
 
 struct QuadraticStats {
-  std::size_t midNodes = 0;        // nodes added, one per edge of the mesh
-  std::size_t wallNodes = 0;       // of them on an edge of the top or bottom wall
-  std::size_t projected = 0;       // wall nodes moved onto the CAD wall
-  std::size_t rimNodes = 0;        // nodes on an edge of a lateral boundary face (the rim)
-  std::size_t rimProjected = 0;    // of them moved onto a lateral CAD face
-  double maxProjectionMove = 0;    // largest distance a node was moved onto the CAD
+  std::size_t midNodes = 0;      // nodes added, one per edge of the mesh
+  std::size_t wallNodes = 0;     // of them on an edge of the top or bottom wall
+  std::size_t projected = 0;     // wall nodes moved onto the CAD wall
+  std::size_t rimNodes = 0;      // nodes on an edge of a lateral boundary face (the rim)
+  std::size_t rimProjected = 0;  // of them moved onto a lateral CAD face
+  double maxProjectionMove = 0;  // largest distance a node was moved onto the CAD
 };
 
 // Adds the mid-edge nodes to `mesh` (ids after the corners, numbered by first appearance going

@@ -1,9 +1,9 @@
 #include "sweep/rim_cap.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
-#include <array>
 #include <map>
 #include <optional>
 #include <utility>
@@ -24,7 +24,7 @@ constexpr double kInside = 0.25;     // an edge's profile is cast from at least 
 constexpr double kMinLoss = 0.02;    // cap a rim whose hexes leave out more than this share of (2 h)^2 ...
 constexpr double kGain = 0.5;        // ... if the cap leaves out at most this share of it
 constexpr double kMinQuality = 0.3;  // every cap hex at least this scaled Jacobian
-constexpr int kMinChords = 4;       // a cap's columns cut a half-round profile with at least this many chords
+constexpr int kMinChords = 4;        // a cap's columns cut a half-round profile with at least this many chords
 constexpr double kOnFace = 1e-3;     // a column this many half-heights from a lateral face lies on it
 constexpr double kNudge = 1e-3;      // a side face's profile is cast this many half-heights inside it
 constexpr int kEdgeProjections = 8;  // alternate projections onto two faces that put a node on their edge
@@ -48,7 +48,8 @@ Profile rimProfile(WallRays& rays, const Vec3& bottom, const Vec3& top, const Ve
   for (int i = 1; i < kProfileRays; ++i) {
     const double phi = M_PI * (static_cast<double>(i) / kProfileRays - 0.5);  // -90 .. 90 degrees from outward
     const Vec3 dir = std::cos(phi) * p.outward + std::sin(phi) * p.up;
-    if (std::optional<FacePoint> hit = rays.cast(Side::Lateral, p.origin, dir, kReach * p.h, false, kSkip * p.h)) p.points.push_back(hit->point);
+    if (std::optional<FacePoint> hit = rays.cast(Side::Lateral, p.origin, dir, kReach * p.h, false, kSkip * p.h))
+      p.points.push_back(hit->point);
   }
   p.points.push_back(top);
   return p;
@@ -135,7 +136,9 @@ struct Column {
   Vec3 bottom, top;
 };
 
-Column ends(const HexMesh& mesh, const std::vector<int>& column) { return {mesh.nodes[column.front()], mesh.nodes[column.back()]}; }
+Column ends(const HexMesh& mesh, const std::vector<int>& column) {
+  return {mesh.nodes[column.front()], mesh.nodes[column.back()]};
+}
 
 Vec3 middle(const Column& c) { return 0.5 * (c.bottom + c.top); }
 
@@ -271,8 +274,8 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
   std::deque<WallRays> rays;
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
   const int rows = capRows(layers);
-  // Which edges lose enough of their profile for a cap to be worth it: their profile at their middle.
-  #pragma omp parallel for schedule(dynamic, 8)
+// Which edges lose enough of their profile for a cap to be worth it: their profile at their middle.
+#pragma omp parallel for schedule(dynamic, 8)
   for (long i = 0; i < static_cast<long>(edges.size()); ++i) {
     RimEdge& e = edges[i];
     const Column a = ends(mesh, columns[e.a]), b = ends(mesh, columns[e.b]);
@@ -292,20 +295,23 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
       const Vec3 ab = (middle(ends(mesh, columns[e.b])) - middle(ends(mesh, columns[e.a]))).normalized();
       along[e.a] += ab, along[e.b] -= ab;  // cancels where both edges are capped
     }
-    #pragma omp parallel for schedule(dynamic, 8)
+#pragma omp parallel for schedule(dynamic, 8)
     for (long c = 0; c < static_cast<long>(columns.size()); ++c)
-      caps[c] = outward[c].norm() > 0 ? layCap(rays[threadIndex()], walls, nudged(ends(mesh, columns[c]), along[c]), outward[c], layers, rows)
+      caps[c] = outward[c].norm() > 0 ? layCap(rays[threadIndex()], walls, nudged(ends(mesh, columns[c]), along[c]),
+                                               outward[c], layers, rows)
                                       : Cap{};
     dropped = false;
     for (RimEdge& e : edges)
-      if (e.capped && (caps[e.a].empty() || caps[e.b].empty() || worstCapHex(mesh, columns, caps, e, layers) < kMinQuality))
+      if (e.capped &&
+          (caps[e.a].empty() || caps[e.b].empty() || worstCapHex(mesh, columns, caps, e, layers) < kMinQuality))
         e.capped = false, dropped = true;
     // A cap may end only where its side face lies on the CAD (a round end meeting a flat side face).
     std::vector<int> rimAt(columns.size(), 0), cappedAt(columns.size(), 0);
     for (const RimEdge& e : edges) ++rimAt[e.a], ++rimAt[e.b], cappedAt[e.a] += e.capped, cappedAt[e.b] += e.capped;
     for (RimEdge& e : edges)
       for (const int c : {e.a, e.b})
-        if (e.capped && cappedAt[c] < rimAt[c] && !lateralFaceOf(walls, ends(mesh, columns[c]))) e.capped = false, dropped = true;
+        if (e.capped && cappedAt[c] < rimAt[c] && !lateralFaceOf(walls, ends(mesh, columns[c])))
+          e.capped = false, dropped = true;
   }
   // The capped columns: inner nodes back on the straight line, then the caps' nodes and hexes. Inner nodes are
   // inside the part, unless the column has an edge without a cap: then its cap's side face is on the boundary.
@@ -327,8 +333,10 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
       const std::optional<FacePoint> on = walls.project(Side::Lateral, x);
       if (on && (on->point - x).norm() <= reach) mesh.nodes[v] = on->point, mesh.nodeFace[v] = on->face;
     };
-    for (int k = 1; k < layers; ++k) inner(columns[c][k], end.bottom + (static_cast<double>(k) / layers) * (end.top - end.bottom), kRimSwept);
-    if (const std::optional<int> face = side ? lateralFaceOf(walls, end) : std::nullopt) onSideFace(walls, *face, caps[c]);
+    for (int k = 1; k < layers; ++k)
+      inner(columns[c][k], end.bottom + (static_cast<double>(k) / layers) * (end.top - end.bottom), kRimSwept);
+    if (const std::optional<int> face = side ? lateralFaceOf(walls, end) : std::nullopt)
+      onSideFace(walls, *face, caps[c]);
     ids[c].push_back(columns[c]);
     for (std::size_t j = 0; j < caps[c].size(); ++j) {
       ids[c].emplace_back();
@@ -347,7 +355,8 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
   for (const RimEdge& e : edges) {
     if (!e.capped) continue;
     for (std::size_t j = 1; j < ids[e.a].size(); ++j)
-      for (int k = 0; k < layers; ++k) mesh.hexes.push_back(capHex(ids[e.a][j - 1], ids[e.b][j - 1], ids[e.a][j], ids[e.b][j], k));
+      for (int k = 0; k < layers; ++k)
+        mesh.hexes.push_back(capHex(ids[e.a][j - 1], ids[e.b][j - 1], ids[e.a][j], ids[e.b][j], k));
     stats.capHexes += layers * rows;
   }
   return stats;

@@ -17,7 +17,7 @@
 namespace hexlayer {
 
 struct RimCapStats {
-  std::size_t rimEdges = 0;    // edges of the chordal surface's rim (column pairs)
+  std::size_t rimEdges = 0;     // edges of the chordal surface's rim (column pairs)
   std::size_t cappedEdges = 0;  // of those, capped
   std::size_t capColumns = 0;   // new columns of nodes
   std::size_t capHexes = 0;     // new hexes (capped edges x layers)

@@ -21,11 +21,11 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kSpoiled = 0.2;  // a hex below this scaled Jacobian that got worse is spoiled
+constexpr double kSpoiled = 0.2;      // a hex below this scaled Jacobian that got worse is spoiled
 constexpr double kMaxAlongRim = 0.5;  // share of a rim node's move that may run along the rim ...
 constexpr double kFreeMove = 0.1;     // ... unless the move is shorter than this share of the reach
-constexpr double kLean = 0.1;  // a rim column leans when its wall nodes move over this share of an edge beside
-constexpr double kKeptEdge = 0.25;  // share of its length an edge along the wall keeps beside a leaning rim
+constexpr double kLean = 0.1;         // a rim column leans when its wall nodes move over this share of an edge beside
+constexpr double kKeptEdge = 0.25;    // share of its length an edge along the wall keeps beside a leaning rim
 
 // Per node, the sum of the outward normals (scaled by area) of the mesh's boundary side faces around it:
 // at a rim node, the direction in which the rim faces outward.
@@ -68,7 +68,8 @@ bool acrossRim(const RimFrame& frame, const Vec3& from, const std::optional<Face
 
 // The point of the lateral faces for p: along the rim's outward line through p if it meets one within
 // reach, else the nearest one within reach if that lies across the rim.
-std::optional<FacePoint> ontoRim(WallRays& rays, const WallProjector& walls, const Vec3& p, const RimFrame& frame, double reach) {
+std::optional<FacePoint> ontoRim(WallRays& rays, const WallProjector& walls, const Vec3& p, const RimFrame& frame,
+                                 double reach) {
   if (frame.outward.squaredNorm() > 0)
     if (std::optional<FacePoint> hit = rays.nearestOnLine(Side::Lateral, p, frame.outward, reach)) return hit;
   std::optional<FacePoint> nearest = walls.project(Side::Lateral, p);
@@ -88,8 +89,9 @@ std::optional<FacePoint> ontoWallEdge(Side side, WallRays& rays, const WallProje
 // Where the nodes of one rim column go (nullopt: where they are): the ends onto the edges where the walls
 // meet the lateral faces, the nodes between them evenly spaced on the line joining the moved ends, then
 // along the rim's outward line onto the lateral faces.
-std::vector<std::optional<FacePoint>> layColumn(const HexMesh& mesh, const std::vector<int>& column, const RimFrame& frame,
-                                                WallRays& rays, const WallProjector& walls, double reach) {
+std::vector<std::optional<FacePoint>> layColumn(const HexMesh& mesh, const std::vector<int>& column,
+                                                const RimFrame& frame, WallRays& rays, const WallProjector& walls,
+                                                double reach) {
   const std::size_t m = column.size() - 1;
   std::vector<std::optional<FacePoint>> to(column.size());
   to[0] = ontoWallEdge(Side::Bottom, rays, walls, mesh.nodes[column[0]], frame, reach);
@@ -124,7 +126,9 @@ std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides,
     for (const TopoDS_Shape& f : edgeFaces(e)) faces.push_back(cad.faces.FindIndex(f) - 1);
     if (faces.size() != 2 || faces[0] == faces[1] || BRep_Tool::Degenerated(edge)) continue;
     if (sides.faces[faces[0]].side != Side::Lateral || sides.faces[faces[1]].side != Side::Lateral) continue;
-    if (BRep_Tool::Continuity(edge, TopoDS::Face(edgeFaces(e).First()), TopoDS::Face(edgeFaces(e).Last())) >= GeomAbs_G1) continue;
+    if (BRep_Tool::Continuity(edge, TopoDS::Face(edgeFaces(e).First()), TopoDS::Face(edgeFaces(e).Last())) >=
+        GeomAbs_G1)
+      continue;
     BRepAdaptor_Curve curve(edge);
     GCPnts_UniformAbscissa even(curve, kCornerSamples + 1);
     if (!even.IsDone() || even.NbPoints() < 2) continue;
@@ -135,7 +139,8 @@ std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides,
     }
     if (on(Side::Top, corner.points.front()) && on(Side::Bottom, corner.points.back()))
       std::reverse(corner.points.begin(), corner.points.end());
-    if (on(Side::Bottom, corner.points.front()) && on(Side::Top, corner.points.back())) corners.push_back(std::move(corner));
+    if (on(Side::Bottom, corner.points.front()) && on(Side::Top, corner.points.back()))
+      corners.push_back(std::move(corner));
   }
   return corners;
 }
@@ -156,8 +161,9 @@ Vec3 alongPolyline(const std::vector<Vec3>& points, double t) {
 // Each corner edge takes the rim column whose ends are nearest to its ends (within reach): that column is laid
 // along the edge, its nodes at even arc lengths.
 // [in,out] to: the places of the rim columns.
-void layCorners(const std::vector<CornerEdge>& corners, const HexMesh& mesh, const std::vector<std::vector<int>>& columns,
-                std::vector<std::vector<std::optional<FacePoint>>>& to, double reach) {
+void layCorners(const std::vector<CornerEdge>& corners, const HexMesh& mesh,
+                const std::vector<std::vector<int>>& columns, std::vector<std::vector<std::optional<FacePoint>>>& to,
+                double reach) {
   for (const CornerEdge& corner : corners) {
     int best = -1;
     double nearest = 2 * reach;
@@ -168,7 +174,8 @@ void layCorners(const std::vector<CornerEdge>& corners, const HexMesh& mesh, con
     }
     if (best < 0) continue;
     const std::size_t m = columns[best].size() - 1;
-    for (std::size_t k = 0; k <= m; ++k) to[best][k] = FacePoint{alongPolyline(corner.points, static_cast<double>(k) / m), corner.face};
+    for (std::size_t k = 0; k <= m; ++k)
+      to[best][k] = FacePoint{alongPolyline(corner.points, static_cast<double>(k) / m), corner.face};
   }
 }
 
@@ -193,7 +200,8 @@ RimHexes rimHexes(const HexMesh& mesh, const std::vector<std::vector<int>>& colu
       }
   for (const std::vector<int>& column : columns) {
     std::vector<std::size_t> around;
-    for (int v : column) around.insert(around.end(), at.items.begin() + at.start[v], at.items.begin() + at.start[v + 1]);
+    for (int v : column)
+      around.insert(around.end(), at.items.begin() + at.start[v], at.items.begin() + at.start[v + 1]);
     r.ofColumn.push_back(std::move(around));
   }
   return r;
@@ -230,7 +238,8 @@ std::vector<std::vector<int>> bottomNeighbours(const HexMesh& mesh) {
 double leanOf(const WallMove& m) { return std::max(m.bottom.norm(), m.top.norm()); }
 
 // The move of a rim column's wall nodes to where `to` puts them (zero where it puts none).
-WallMove wallMove(const HexMesh& mesh, const std::vector<int>& column, const std::vector<std::optional<FacePoint>>& to) {
+WallMove wallMove(const HexMesh& mesh, const std::vector<int>& column,
+                  const std::vector<std::optional<FacePoint>>& to) {
   WallMove m;
   if (to.front()) m.bottom = to.front()->point - mesh.nodes[column.front()];
   if (to.back()) m.top = to.back()->point - mesh.nodes[column.back()];
@@ -240,13 +249,16 @@ WallMove wallMove(const HexMesh& mesh, const std::vector<int>& column, const std
 // A column (its bottom node `v`) moved by `move` faded by `fade`: its wall nodes onto the walls (onto the walls'
 // rim edges for a rim column, whose inner nodes go onto the lateral faces), evenly between them.
 // Returns the new places (nullopt where a projection failed).
-std::vector<std::optional<FacePoint>> movedColumn(const HexMesh& mesh, const std::vector<int>& column, const WallMove& move,
-                                                  double fade, bool rim, const WallProjector& walls) {
+std::vector<std::optional<FacePoint>> movedColumn(const HexMesh& mesh, const std::vector<int>& column,
+                                                  const WallMove& move, double fade, bool rim,
+                                                  const WallProjector& walls) {
   const Vec3 bottom0 = mesh.nodes[column.front()], top0 = mesh.nodes[column.back()];
   const std::size_t m = column.size() - 1;
   std::vector<std::optional<FacePoint>> to(column.size());
-  to[0] = rim ? walls.projectOntoRimEdges(Side::Bottom, bottom0 + fade * move.bottom) : walls.project(Side::Bottom, bottom0 + fade * move.bottom);
-  to[m] = rim ? walls.projectOntoRimEdges(Side::Top, top0 + fade * move.top) : walls.project(Side::Top, top0 + fade * move.top);
+  to[0] = rim ? walls.projectOntoRimEdges(Side::Bottom, bottom0 + fade * move.bottom)
+              : walls.project(Side::Bottom, bottom0 + fade * move.bottom);
+  to[m] = rim ? walls.projectOntoRimEdges(Side::Top, top0 + fade * move.top)
+              : walls.project(Side::Top, top0 + fade * move.top);
   if (!to[0] || !to[m]) return std::vector<std::optional<FacePoint>>(column.size());
   for (std::size_t k = 1; k < m; ++k) {
     const double t = static_cast<double>(k) / m;
@@ -259,12 +271,12 @@ std::vector<std::optional<FacePoint>> movedColumn(const HexMesh& mesh, const std
 // Where a rim is cut obliquely, its columns lean (their wall nodes move apart along the walls, by up to 1.5
 // walls on a rim 3 walls wide) and the hexes beside them would fold. The columns beside such a rim move with
 // it: by its move times 1 - j / (rows + 1) in the j-th row (rows enough that an edge along the wall keeps
-// kKeptEdge of its length), their wall nodes projected back onto the walls (onto the walls' rim edges on another rim), their
-// inner nodes evenly on the line between.
-// A rim column leans when its wall nodes move more than kLean of the edges beside it.
-// [in,out] mesh: the nodes of columns off the rim moved; [in] rim: the rim columns; [in,out] to: their places.
-void spreadRimMoves(HexMesh& mesh, const std::vector<std::vector<int>>& rim, std::vector<std::vector<std::optional<FacePoint>>>& to,
-                    const WallProjector& walls) {
+// kKeptEdge of its length), their wall nodes projected back onto the walls (onto the walls' rim edges on another rim),
+// their inner nodes evenly on the line between. A rim column leans when its wall nodes move more than kLean of the
+// edges beside it. [in,out] mesh: the nodes of columns off the rim moved; [in] rim: the rim columns; [in,out] to: their
+// places.
+void spreadRimMoves(HexMesh& mesh, const std::vector<std::vector<int>>& rim,
+                    std::vector<std::vector<std::optional<FacePoint>>>& to, const WallProjector& walls) {
   const std::vector<std::vector<int>> next = bottomNeighbours(mesh);
   const std::vector<std::vector<int>> columns = columnsByBottom(mesh);
   std::vector<int> rimOf(mesh.nodes.size(), -1);
@@ -297,7 +309,8 @@ void spreadRimMoves(HexMesh& mesh, const std::vector<std::vector<int>>& rim, std
       WallMove mean;
       int from = 0;
       for (int p : next[n])
-        if (level[p] == j - 1 && move[p].rows >= j) mean.bottom += move[p].bottom, mean.top += move[p].top, mean.rows += move[p].rows, ++from;
+        if (level[p] == j - 1 && move[p].rows >= j)
+          mean.bottom += move[p].bottom, mean.top += move[p].top, mean.rows += move[p].rows, ++from;
       if (from == 0) continue;
       move[n] = {mean.bottom / from, mean.top / from, mean.rows / from};
       kept.push_back(n);
@@ -341,7 +354,7 @@ RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSide
   std::vector<std::vector<std::optional<FacePoint>>> to(columns.size());
   std::deque<WallRays> rays;
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
-  #pragma omp parallel for schedule(dynamic, 8)
+#pragma omp parallel for schedule(dynamic, 8)
   for (long c = 0; c < static_cast<long>(columns.size()); ++c) {
     to[c] = layColumn(mesh, columns[c], rimFrame(mesh, columns[c], normal), rays[threadIndex()], walls, reach);
   }

@@ -10,10 +10,10 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kPoorHex = 0.6;              // the nodes of hexes below this scaled Jacobian are smoothed
-constexpr int kMaxRounds = 20;                // rounds over those nodes, fewer if a round moves none
+constexpr double kPoorHex = 0.6;               // the nodes of hexes below this scaled Jacobian are smoothed
+constexpr int kMaxRounds = 20;                 // rounds over those nodes, fewer if a round moves none
 constexpr double kSteps[] = {1.0, 0.5, 0.25};  // shares of the way to the neighbours' mean tried, longest first
-constexpr double kMinGain = 1e-6;             // a move must raise the node's worst hex by at least this
+constexpr double kMinGain = 1e-6;              // a move must raise the node's worst hex by at least this
 
 // How a node may move: not at all, freely (inside the part), or on the faces of one side.
 struct Freedom {
@@ -23,7 +23,8 @@ struct Freedom {
 
 Freedom freedomOf(const HexMesh& mesh, const WallSides& sides, int v) {
   const bool wallLayer = mesh.nodeLayer[v] == 0 || mesh.nodeLayer[v] == mesh.layers;
-  if (mesh.nodeOnRim[v] == kRimCap || (mesh.nodeOnRim[v] == kRimSwept && wallLayer)) return {};  // on a CAD edge or a cap
+  if (mesh.nodeOnRim[v] == kRimCap || (mesh.nodeOnRim[v] == kRimSwept && wallLayer))
+    return {};  // on a CAD edge or a cap
   if (mesh.nodeFace[v] >= 0) return {true, sides.faces[mesh.nodeFace[v]].side};
   if (!wallLayer && !mesh.nodeOnRim[v]) return {true, std::nullopt};
   return {};  // a boundary node not put on the CAD
@@ -99,7 +100,8 @@ SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const 
     if (moved == 0) break;
   }
   stats.worstAfter = 1;
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) stats.worstAfter = std::min(stats.worstAfter, hexScaledJacobian(hexCorners(mesh, h)));
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+    stats.worstAfter = std::min(stats.worstAfter, hexScaledJacobian(hexCorners(mesh, h)));
   return stats;
 }
 

@@ -15,8 +15,8 @@
 namespace hexlayer {
 
 struct SmoothingStats {
-  std::size_t poorHexes = 0;  // hexes below kPoorHex before
-  std::size_t nodesMoved = 0;  // moves kept (a node may move in several rounds)
+  std::size_t poorHexes = 0;               // hexes below kPoorHex before
+  std::size_t nodesMoved = 0;              // moves kept (a node may move in several rounds)
   double worstBefore = 1, worstAfter = 1;  // scaled Jacobian of the worst hex
 };
 

@@ -29,7 +29,7 @@ HexMesh layeredHexes(const QuadMesh& q, const std::vector<SweepDirection>& dir, 
     const Vec3 n = (q.nodes[quad[2]] - q.nodes[quad[0]]).cross(q.nodes[quad[3]] - q.nodes[quad[1]]);
     const Vec3 sweepDir = dir[quad[0]].normal + dir[quad[1]].normal + dir[quad[2]].normal + dir[quad[3]].normal;
     if (n.dot(sweepDir) < 0) std::swap(quad[1], quad[3]);  // counter-clockwise seen from the top
-    for (int k = 0; k < m; ++k) {  // the quad's nodes in layers k and k + 1
+    for (int k = 0; k < m; ++k) {                          // the quad's nodes in layers k and k + 1
       std::array<int, 8> hex;
       for (int c = 0; c < 4; ++c) hex[c] = quad[c] * stride + k, hex[c + 4] = quad[c] * stride + k + 1;
       mesh.hexes.push_back(hex);
@@ -60,7 +60,8 @@ double columnQuality(const HexMesh& mesh, int quad) {
 SweepDirection interpolateSweep(const ChordalSurface& chordal, const ChordalPoint& at) {
   const auto& f = chordal.facets[at.facet];
   SweepDirection d{normalAt(chordal, at), 0};
-  for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) d.radius += at.weights[k] * chordal.radius[f[k]];  // Eq. 6 (Eq. 5 on an edge)
+  for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k)
+    d.radius += at.weights[k] * chordal.radius[f[k]];  // Eq. 6 (Eq. 5 on an edge)
   d.normal.normalize();  // the weighted sum of unit normals is shorter than 1: sweep along a unit vector
   return d;
 }
@@ -82,16 +83,18 @@ SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, 
   if (m < 1) throw usageError("the number of layers must be at least 1");
   const std::vector<double> offsets = layerOffsets(m);
   std::vector<SweepDirection> dir(q.nodes.size());
-  #pragma omp parallel for schedule(static)
-  for (long i = 0; i < static_cast<long>(q.nodes.size()); ++i) dir[i] = interpolateSweep(chordal.surface(), chordal.locate(q.nodes[i]));
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < static_cast<long>(q.nodes.size()); ++i)
+    dir[i] = interpolateSweep(chordal.surface(), chordal.locate(q.nodes[i]));
 
   SweepResult result{layeredHexes(q, dir, m), {}};
   std::vector<Vec3> normal(dir.size());
   for (size_t i = 0; i < dir.size(); ++i) normal[i] = dir[i].normal;
   auto place = [&](int i) { placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, walls); };
-  #pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256)
   for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) place(i);
-  result.untangled = untangleSweep(q, normal, kUntangleTarget, place, [&](int j) { return columnQuality(result.mesh, j); });
+  result.untangled =
+      untangleSweep(q, normal, kUntangleTarget, place, [&](int j) { return columnQuality(result.mesh, j); });
   return result;
 }
 

@@ -5,8 +5,8 @@
 namespace hexlayer {
 namespace {
 
-constexpr int kRounds = 8;           // the ring grows by one quad per round
-constexpr int kSmoothingSweeps = 10; // Jacobi sweeps of the direction smoothing per round
+constexpr int kRounds = 8;            // the ring grows by one quad per round
+constexpr int kSmoothingSweeps = 10;  // Jacobi sweeps of the direction smoothing per round
 
 using Adjacency = std::vector<std::vector<int>>;
 
@@ -104,7 +104,8 @@ UntangleResult untangleSweep(const QuadMesh& q, std::vector<Vec3>& dir, double t
   UntangleResult result;
   result.worstBefore = column.empty() ? 1 : *std::min_element(column.begin(), column.end());
   for (int round = 0; round < kRounds; ++round) {
-    const std::vector<std::vector<int>> parts = components(badRegion(q, column, target, round + 1, neighbours), neighbours);
+    const std::vector<std::vector<int>> parts =
+        components(badRegion(q, column, target, round + 1, neighbours), neighbours);
     if (parts.empty()) break;
     result.regions += static_cast<int>(parts.size());
     for (const std::vector<int>& nodes : parts) {

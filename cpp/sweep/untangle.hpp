@@ -13,8 +13,8 @@
 namespace hexlayer {
 
 struct UntangleResult {
-  int regions = 0;       // connected groups of bad columns that were worked on
-  int improved = 0;      // smoothing rounds that were kept
+  int regions = 0;                         // connected groups of bad columns that were worked on
+  int improved = 0;                        // smoothing rounds that were kept
   double worstBefore = 1, worstAfter = 1;  // smallest column scaled Jacobian
 };
 

@@ -1,15 +1,15 @@
 #include "tets/tet_mesh.hpp"
 
+#include <tetgen.h>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepClass3d.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <TopoDS_Shell.hxx>
-#include <tetgen.h>
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -20,7 +20,7 @@ namespace hexlayer {
 
 namespace {
 
-constexpr double kJitter = 1e-6;  // of the nodes' bounding box diagonal
+constexpr double kJitter = 1e-6;    // of the nodes' bounding box diagonal
 constexpr double kCoplanar = 1e-4;  // isCoplanarTet: 6 V below this x shortest edge x longest edge squared
 
 // A fixed pseudo-random number in [-1, 1] for (node, coordinate): the same input gives the same tets.
@@ -39,13 +39,15 @@ bool isCoplanar(const TetMesh& mesh, const std::array<int, 4>& t) {
 // Whether the coplanar tet lies in the rim: its centre closer to the solid's boundary than a quarter
 // of its shortest top-bottom edge (about the wall thickness; a bend's coplanar tet is half of it away).
 // A centre clearly farther than that from the triangulation is not measured on the exact shell.
-bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Shape& boundary, const BoundaryTriangles& triangles) {
+bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Shape& boundary,
+              const BoundaryTriangles& triangles) {
   double shortest = std::numeric_limits<double>::infinity();
   Vec3 c = Vec3::Zero();
   for (int a : t) {
     c += 0.25 * mesh.nodes[a];
     for (int b : t)
-      if (mesh.side[a] == Side::Top && mesh.side[b] == Side::Bottom) shortest = std::min(shortest, (mesh.nodes[a] - mesh.nodes[b]).norm());
+      if (mesh.side[a] == Side::Top && mesh.side[b] == Side::Bottom)
+        shortest = std::min(shortest, (mesh.nodes[a] - mesh.nodes[b]).norm());
   }
   if (triangles.fartherThan(c, 0.25 * shortest)) return false;
   BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(gp_Pnt(c.x(), c.y(), c.z())).Vertex(), boundary);
@@ -101,13 +103,15 @@ void peelHullSlivers(const TetMesh& mesh, std::vector<char>& verdict) {
 bool isCoplanarTet(const std::array<Vec3, 4>& p) {
   double shortest = std::numeric_limits<double>::infinity(), longest = 0;
   for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b) shortest = std::min(shortest, (p[b] - p[a]).norm()), longest = std::max(longest, (p[b] - p[a]).norm());
+    for (int b = a + 1; b < 4; ++b)
+      shortest = std::min(shortest, (p[b] - p[a]).norm()), longest = std::max(longest, (p[b] - p[a]).norm());
   const double sixVolume = std::abs((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])));
   return sixVolume <= kCoplanar * shortest * longest * longest;
 }
 
 TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
-  if (nodes.size() < 4) throw geometryError("too few surface nodes (" + std::to_string(nodes.size()) + ") to build tets");
+  if (nodes.size() < 4)
+    throw geometryError("too few surface nodes (" + std::to_string(nodes.size()) + ") to build tets");
   TetMesh mesh;
   tetgenio in, out;
   in.firstnumber = 0;
@@ -125,7 +129,8 @@ TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
   try {
     tetrahedralize(switches, &in, &out);
   } catch (int code) {
-    throw geometryError("TetGen failed to tetrahedralize the surface nodes (TetGen error " + std::to_string(code) + ")");
+    throw geometryError("TetGen failed to tetrahedralize the surface nodes (TetGen error " + std::to_string(code) +
+                        ")");
   }
   mesh.tets.resize(out.numberoftetrahedra);
   for (int t = 0; t < out.numberoftetrahedra; ++t)
@@ -136,10 +141,10 @@ TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
 TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
   std::vector<char> verdict(mesh.tets.size());
   const BoundaryTriangles triangles(cad);
-  #pragma omp parallel
+#pragma omp parallel
   {
     std::optional<BRepClass3d_SolidClassifier> exact;
-    #pragma omp for schedule(dynamic, 256)
+#pragma omp for schedule(dynamic, 256)
     for (long i = 0; i < static_cast<long>(mesh.tets.size()); ++i) {
       const auto& t = mesh.tets[i];
       int top = 0;

@@ -8,9 +8,9 @@
 namespace hexlayer {
 namespace {
 
-constexpr int kIdsPerLine = 16;       // Abaqus limit for data lines of *NSET and *ELEMENT
-constexpr std::size_t kMaxField = 20;   // CalculiX reads a *NODE coordinate from its first 20 characters
-constexpr std::size_t kMaxName = 80;    // CalculiX set names
+constexpr int kIdsPerLine = 16;        // Abaqus limit for data lines of *NSET and *ELEMENT
+constexpr std::size_t kMaxField = 20;  // CalculiX reads a *NODE coordinate from its first 20 characters
+constexpr std::size_t kMaxName = 80;   // CalculiX set names
 
 // Shortest round-trip text if it fits in 20 characters, else scientific with as many digits as fit
 // (at least 13 significant digits), written at `at` (room for 32 characters); returns its end.

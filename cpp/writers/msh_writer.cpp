@@ -15,7 +15,8 @@ constexpr int kGmshQuad = 3, kGmshHex = 5, kGmshQuad8 = 16, kGmshHex20 = 17;
 // Gmsh's 20-node hex (type 17) mid-edge nodes 8..19 are on edges 0-1, 0-3, 0-4, 1-2, 1-5, 2-3,
 // 2-6, 3-7, 4-5, 4-7, 5-6, 6-7: here as indices into kHexEdges.
 constexpr std::array<int, 12> kGmshHexEdges = {0, 3, 8, 1, 9, 2, 10, 11, 4, 7, 5, 6};
-constexpr int kSolidPhysical = 4;  // physical tags 1..3 are "top", "bottom", "rim", 5.. the CAD faces: every tag is unique
+constexpr int kSolidPhysical =
+    4;  // physical tags 1..3 are "top", "bottom", "rim", 5.. the CAD faces: every tag is unique
 const std::array<const char*, 3> kSurfaceNames = {"top", "bottom", "rim"};
 
 // One surface entity: boundary quads (4 corners, then for 20-node hexes the mid-edge nodes of the
@@ -30,7 +31,8 @@ int surfaceOf(const HexMesh& mesh, const std::array<int, 4>& quad) {
   if (mesh.nodeLayer.size() != mesh.nodes.size()) return 2;
   auto all = [&](int layer) {  // a rim cap's faces lie on the rim in every layer
     for (int n : quad)
-      if (mesh.nodeLayer[n] != layer || (n < static_cast<int>(mesh.nodeOnRim.size()) && mesh.nodeOnRim[n] == kRimCap)) return false;
+      if (mesh.nodeLayer[n] != layer || (n < static_cast<int>(mesh.nodeOnRim.size()) && mesh.nodeOnRim[n] == kRimCap))
+        return false;
     return true;
   };
   return all(mesh.layers) ? 0 : all(0) ? 1 : 2;
@@ -46,7 +48,8 @@ BoundaryFace boundaryFace(const HexMesh& mesh, const HexFace& f) {
 std::vector<Patch> classPatches(const HexMesh& mesh) {
   std::vector<Patch> byClass(3);
   for (int c = 0; c < 3; ++c) byClass[c].surfaceClass = c;
-  for (const BoundaryFace& f : boundaryFaces(mesh)) byClass[surfaceOf(mesh, f.nodes)].quads.push_back(boundaryFaceNodes(mesh, f));
+  for (const BoundaryFace& f : boundaryFaces(mesh))
+    byClass[surfaceOf(mesh, f.nodes)].quads.push_back(boundaryFaceNodes(mesh, f));
   std::vector<Patch> patches;
   for (Patch& p : byClass)
     if (!p.quads.empty()) patches.push_back(std::move(p));
@@ -127,8 +130,10 @@ void writeEntities(std::ostream& out, const HexMesh& mesh, const std::vector<Pat
       for (int n : q) box.add(mesh.nodes[n]);
     out << i + 1 << " ";
     writeBox(out, box);
-    if (patches[i].cadFace.empty()) out << "1 " << patches[i].surfaceClass + 1 << " 0\n";
-    else out << "2 " << patches[i].surfaceClass + 1 << " " << facePhysical(i) << " 0\n";
+    if (patches[i].cadFace.empty())
+      out << "1 " << patches[i].surfaceClass + 1 << " 0\n";
+    else
+      out << "2 " << patches[i].surfaceClass + 1 << " " << facePhysical(i) << " 0\n";
   }
   Box box;
   for (const Vec3& p : mesh.nodes) box.add(p);
@@ -145,7 +150,8 @@ void writeNodes(std::ostream& out, const HexMesh& mesh) {
   if (n) {
     out << "3 1 0 " << n << "\n";
     for (std::size_t i = 1; i <= n; ++i) out << i << "\n";
-    for (const Vec3& p : mesh.nodes) out << formatDouble(p.x()) << " " << formatDouble(p.y()) << " " << formatDouble(p.z()) << "\n";
+    for (const Vec3& p : mesh.nodes)
+      out << formatDouble(p.x()) << " " << formatDouble(p.y()) << " " << formatDouble(p.z()) << "\n";
   }
   out << "$EndNodes\n";
 }
@@ -174,7 +180,8 @@ void writeElements(std::ostream& out, const HexMesh& mesh, const std::vector<Pat
   std::size_t tag = 0;
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) writeElement(out, ++tag, gmshHexNodes(mesh, h));
   for (std::size_t i = 0; i < patches.size(); ++i) {
-    out << "2 " << i + 1 << " " << (mesh.quadratic() ? kGmshQuad8 : kGmshQuad) << " " << patches[i].quads.size() << "\n";
+    out << "2 " << i + 1 << " " << (mesh.quadratic() ? kGmshQuad8 : kGmshQuad) << " " << patches[i].quads.size()
+        << "\n";
     for (const auto& q : patches[i].quads) writeElement(out, ++tag, q);
   }
   out << "$EndElements\n";

@@ -12,11 +12,16 @@ constexpr int kValuesPerLine = 8;
 std::string xmlEscape(const std::string& s) {
   std::string e;
   for (char c : s) {
-    if (c == '&') e += "&amp;";
-    else if (c == '<') e += "&lt;";
-    else if (c == '>') e += "&gt;";
-    else if (c == '"') e += "&quot;";
-    else e += c;
+    if (c == '&')
+      e += "&amp;";
+    else if (c == '<')
+      e += "&lt;";
+    else if (c == '>')
+      e += "&gt;";
+    else if (c == '"')
+      e += "&quot;";
+    else
+      e += c;
   }
   return e;
 }
@@ -79,7 +84,8 @@ void writeCellData(std::ostream& out, const std::vector<CellField>& cellFields) 
 void writePoints(std::ostream& out, const HexMesh& mesh) {
   out << "<Points>\n";
   openArray(out, "Float64", "Points", 3);
-  for (const Vec3& p : mesh.nodes) out << formatDouble(p.x()) << " " << formatDouble(p.y()) << " " << formatDouble(p.z()) << "\n";
+  for (const Vec3& p : mesh.nodes)
+    out << formatDouble(p.x()) << " " << formatDouble(p.y()) << " " << formatDouble(p.z()) << "\n";
   out << "</DataArray>\n</Points>\n";
 }
 

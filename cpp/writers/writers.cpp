@@ -23,10 +23,12 @@ void checkSurfaces(const HexMesh& mesh, const std::vector<SurfaceGroup>& surface
   for (const SurfaceGroup& g : surfaces) {
     for (int n : g.nodes)
       if (n < 0 || static_cast<std::size_t>(n) >= mesh.nodes.size())
-        throw Error(ExitCode::Internal, "surface group '" + g.name + "' has node " + std::to_string(n) + " out of range");
+        throw Error(ExitCode::Internal,
+                    "surface group '" + g.name + "' has node " + std::to_string(n) + " out of range");
     for (const HexFace& f : g.hexFaces)
       if (f.hex < 0 || static_cast<std::size_t>(f.hex) >= mesh.hexes.size() || f.localFace < 0 || f.localFace > 5)
-        throw Error(ExitCode::Internal, "surface group '" + g.name + "' has a face of hex " + std::to_string(f.hex) + " out of range");
+        throw Error(ExitCode::Internal,
+                    "surface group '" + g.name + "' has a face of hex " + std::to_string(f.hex) + " out of range");
   }
 }
 

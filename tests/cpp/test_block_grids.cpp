@@ -22,7 +22,9 @@ ChordalSurface withoutUnusedVertices(const ChordalSurface& s) {
   for (auto f : s.facets) {
     for (int& v : f)
       if (v >= 0) {
-        if (index[v] < 0) index[v] = static_cast<int>(out.vertices.size()), out.vertices.push_back(s.vertices[v]), out.normals.push_back(s.normals[v]);
+        if (index[v] < 0)
+          index[v] = static_cast<int>(out.vertices.size()), out.vertices.push_back(s.vertices[v]),
+          out.normals.push_back(s.normals[v]);
         v = index[v];
       }
     out.facets.push_back(f);
@@ -38,7 +40,8 @@ ChordalSurface rectangle(int nx, int ny, const std::vector<std::array<int, 4>>& 
     for (int i = 0; i <= nx; ++i) s.vertices.emplace_back(i, j, 0), s.normals.push_back(Vec3::UnitZ());
   auto v = [&](int i, int j) { return j * (nx + 1) + i; };
   auto inHole = [&](int i, int j) {
-    return std::any_of(holes.begin(), holes.end(), [&](const auto& h) { return i >= h[0] && i < h[1] && j >= h[2] && j < h[3]; });
+    return std::any_of(holes.begin(), holes.end(),
+                       [&](const auto& h) { return i >= h[0] && i < h[1] && j >= h[2] && j < h[3]; });
   };
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
@@ -51,7 +54,8 @@ ChordalSurface disc(int rings, int around) {
   ChordalSurface s;
   s.vertices.emplace_back(0, 0, 0);
   for (int k = 1; k <= rings; ++k)
-    for (int j = 0; j < around; ++j) s.vertices.emplace_back(k * std::cos(2 * M_PI * j / around), k * std::sin(2 * M_PI * j / around), 0);
+    for (int j = 0; j < around; ++j)
+      s.vertices.emplace_back(k * std::cos(2 * M_PI * j / around), k * std::sin(2 * M_PI * j / around), 0);
   s.normals.assign(s.vertices.size(), Vec3::UnitZ());
   auto v = [&](int k, int j) { return 1 + (k - 1) * around + j % around; };
   for (int j = 0; j < around; ++j) s.facets.push_back({0, v(1, j), v(1, j + 1), -1});
@@ -144,7 +148,8 @@ TEST(BlockGrids, OGridOfADisc) {
   const double polygon = 0.5 * 64 * 100 * std::sin(2 * M_PI / 64);  // the disc's area
   EXPECT_NEAR(q.area, polygon, 0.02 * polygon);
   for (const Vec3& p : g.nodes) EXPECT_LE(p.norm(), 10 + 1e-9);
-  EXPECT_TRUE(oGrid(mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0, MapBoundary::Circle), unit).empty());  // has a hole
+  EXPECT_TRUE(
+      oGrid(mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0, MapBoundary::Circle), unit).empty());  // has a hole
 }
 
 TEST(BlockGrids, PocketsThatMeetAreRefused) {

@@ -1,11 +1,11 @@
 // The quick inside/outside test of the tet filter (triangles of the CAD's triangulation in a bounding
 // volume hierarchy) and the point grid's queries the bubble packing relies on.
+#include <gtest/gtest.h>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <TopoDS.hxx>
-#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
@@ -57,11 +57,11 @@ int decidedAsOpenCascade(const CadSolid& cad, double lo, double hi, int steps) {
 
 TEST(TriangleTree, DistanceToATriangleFromItsFaceEdgesAndCorners) {
   const Triangle t = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0)};
-  EXPECT_DOUBLE_EQ(squaredDistanceToTriangle(Vec3(0.5, 0.5, 3), t), 9);          // above the face
-  EXPECT_DOUBLE_EQ(squaredDistanceToTriangle(Vec3(1, -1, 0), t), 1);             // beside an edge
-  EXPECT_DOUBLE_EQ(squaredDistanceToTriangle(Vec3(2, 2, 0), t), 2);              // beside the long edge
-  EXPECT_DOUBLE_EQ(squaredDistanceToTriangle(Vec3(-1, -1, 0), t), 2);            // beyond a corner
-  const Triangle segment = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)};        // no area
+  EXPECT_DOUBLE_EQ(squaredDistanceToTriangle(Vec3(0.5, 0.5, 3), t), 9);    // above the face
+  EXPECT_DOUBLE_EQ(squaredDistanceToTriangle(Vec3(1, -1, 0), t), 1);       // beside an edge
+  EXPECT_DOUBLE_EQ(squaredDistanceToTriangle(Vec3(2, 2, 0), t), 2);        // beside the long edge
+  EXPECT_DOUBLE_EQ(squaredDistanceToTriangle(Vec3(-1, -1, 0), t), 2);      // beyond a corner
+  const Triangle segment = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)};  // no area
   EXPECT_DOUBLE_EQ(squaredDistanceToTriangle(Vec3(1.5, 1, 0), segment), 1);
 }
 
@@ -97,7 +97,8 @@ TEST(BoundaryTriangles, CurvedAndFreeformSolidsAreDecidedAsOpenCascadeDecides) {
   EXPECT_LT(BoundaryTriangles(ball).margin(), 0.5);
   EXPECT_GT(decidedAsOpenCascade(ball, -12, 12, 12), 1800);
   // The box as B-spline faces: triangulated again, finer, for the test.
-  const TopoDS_Shape nurbs = BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 10, 10, 2).Solid()).Shape();
+  const TopoDS_Shape nurbs =
+      BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 10, 10, 2).Solid()).Shape();
   const CadSolid freeform = prepareSolid(TopoDS::Solid(nurbs));
   EXPECT_LT(BoundaryTriangles(freeform).margin(), 1e-2);
   EXPECT_GT(decidedAsOpenCascade(freeform, -1, 11, 12), 2000);
@@ -108,7 +109,8 @@ TEST(PointGrid, QueriesFindExactlyThePointsWithinTheRadiusInCellOrder) {
   std::uniform_real_distribution<double> along(-5, 5), across(0, 0.5);
   PointGrid grid(1.0);
   std::vector<Vec3> points;
-  for (int i = 0; i < 400; ++i) points.push_back(Vec3(along(random), along(random), across(random))), grid.insert(i, points.back());
+  for (int i = 0; i < 400; ++i)
+    points.push_back(Vec3(along(random), along(random), across(random))), grid.insert(i, points.back());
   for (int q = 0; q < 50; ++q) {
     const Vec3 p(along(random), along(random), along(random));
     std::vector<int> found, expected;

@@ -1,12 +1,12 @@
 // Bubbles and tets (paper §3-4, §5.4): the bubble force, TetGen's Delaunay tets and their filter,
 // the wall sides of a thin box, and bubble nodes that land on the top and bottom faces only.
+#include <gtest/gtest.h>
 #include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepTools.hxx>
+#include <GProp_GProps.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <BRepPrimAPI_MakeBox.hxx>
-#include <GProp_GProps.hxx>
-#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -87,8 +87,8 @@ TEST(Bubbles, BubbleForceRepelsBelowStableDistanceAndAttractsUpTo1Point5) {
 
 // TetGen tetrahedralizes the convex hull of the nodes: 8 corners of a perturbed box.
 TEST(Tets, DelaunayTetsFillTheConvexHull) {
-  const std::vector<Vec3> corners = {Vec3(0, 0, 0),      Vec3(3.1, 0, 0.05), Vec3(3, 2.2, 0),  Vec3(0.1, 2, -0.03),
-                                     Vec3(0, 0.1, 1),    Vec3(2.9, 0, 1.1),  Vec3(3, 2, 0.97), Vec3(-0.1, 2.05, 0.95)};
+  const std::vector<Vec3> corners = {Vec3(0, 0, 0),   Vec3(3.1, 0, 0.05), Vec3(3, 2.2, 0),  Vec3(0.1, 2, -0.03),
+                                     Vec3(0, 0.1, 1), Vec3(2.9, 0, 1.1),  Vec3(3, 2, 0.97), Vec3(-0.1, 2.05, 0.95)};
   std::vector<SurfaceNode> nodes;
   for (const Vec3& c : corners) nodes.push_back(node(c, c.z() > 0.5 ? Side::Top : Side::Bottom));
   const TetMesh mesh = delaunayTets(nodes);
@@ -133,22 +133,22 @@ TEST(Tets, KeepSpanningTetsInsideDropsFlatAndOutsideTetsAndKeepsCoplanarOnes) {
   const CadSolid cad = box(10, 10, 2);
   TetMesh m;
   auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
-  add({1, 1, 2}, Side::Top);         // 0
-  add({4, 1, 2}, Side::Top);         // 1
-  add({1, 4, 2}, Side::Top);         // 2
-  add({2, 2, 0}, Side::Bottom);      // 3
-  add({3, 3, 0}, Side::Bottom);      // 4
-  add({2, 2, 1.5}, Side::Top);       // 5: with 0 1 2 a flat top tet
-  add({5, 2, 0}, Side::Bottom);      // 6
-  add({2, 5, 0.5}, Side::Bottom);    // 7: with 3 4 6 a flat bottom tet
-  add({12, 1, 2}, Side::Top);        // 8..11: a spanning tet beside the box
-  add({15, 1, 2}, Side::Top);        // 9
-  add({12, 4, 2}, Side::Top);        // 10
-  add({13, 2, 0}, Side::Bottom);     // 11
-  add({1, 1, 0}, Side::Bottom);      // 12: with 0 1 13 four nodes in the plane y = 1
-  add({4, 1, 0}, Side::Bottom);      // 13
-  add({2, 0.3, 2}, Side::Top);       // 14, 15: behind that plane (y < 1)
-  add({3, 0.3, 0}, Side::Bottom);    // 15
+  add({1, 1, 2}, Side::Top);       // 0
+  add({4, 1, 2}, Side::Top);       // 1
+  add({1, 4, 2}, Side::Top);       // 2
+  add({2, 2, 0}, Side::Bottom);    // 3
+  add({3, 3, 0}, Side::Bottom);    // 4
+  add({2, 2, 1.5}, Side::Top);     // 5: with 0 1 2 a flat top tet
+  add({5, 2, 0}, Side::Bottom);    // 6
+  add({2, 5, 0.5}, Side::Bottom);  // 7: with 3 4 6 a flat bottom tet
+  add({12, 1, 2}, Side::Top);      // 8..11: a spanning tet beside the box
+  add({15, 1, 2}, Side::Top);      // 9
+  add({12, 4, 2}, Side::Top);      // 10
+  add({13, 2, 0}, Side::Bottom);   // 11
+  add({1, 1, 0}, Side::Bottom);    // 12: with 0 1 13 four nodes in the plane y = 1
+  add({4, 1, 0}, Side::Bottom);    // 13
+  add({2, 0.3, 2}, Side::Top);     // 14, 15: behind that plane (y < 1)
+  add({3, 0.3, 0}, Side::Bottom);  // 15
   const std::array<int, 4> spanning31{0, 1, 2, 3}, flatTop{0, 1, 2, 5}, outside{8, 9, 10, 11}, coplanar{0, 1, 12, 13},
       flatBottom{3, 4, 6, 7}, spanning22{0, 1, 3, 4};
   // The coplanar tet between tets on its two sides: in front (y > 1) on its faces 0 1 12 and 1 13 12, behind
@@ -174,12 +174,12 @@ TEST(Tets, CoplanarTetOnTheHullIsDropped) {
   const CadSolid cad = box(10, 10, 2);
   TetMesh m;
   auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
-  add({1, 5, 2}, Side::Top);      // 0
-  add({4, 5, 2}, Side::Top);      // 1
-  add({1, 5, 0}, Side::Bottom);   // 2
-  add({4, 5, 0}, Side::Bottom);   // 3
-  add({1, 8, 2}, Side::Top);      // 4
-  add({3, 8, 0}, Side::Bottom);   // 5
+  add({1, 5, 2}, Side::Top);     // 0
+  add({4, 5, 2}, Side::Top);     // 1
+  add({1, 5, 0}, Side::Bottom);  // 2
+  add({4, 5, 0}, Side::Bottom);  // 3
+  add({1, 8, 2}, Side::Top);     // 4
+  add({3, 8, 0}, Side::Bottom);  // 5
   const std::array<int, 4> coplanar{0, 1, 2, 3}, front1{0, 1, 2, 4}, front2{1, 3, 2, 5};
   m.tets = {coplanar, front1, front2};
 
@@ -197,11 +197,11 @@ TEST(Tets, RimSliverSlightlyOffTheRimFaceIsDropped) {
   const CadSolid cad = box(10, 10, 2);
   TetMesh m;
   auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
-  add({1, 2.6e-4, 2}, Side::Top);       // 0, 1: on the rim edge y = 0, z = 2, just inside
+  add({1, 2.6e-4, 2}, Side::Top);  // 0, 1: on the rim edge y = 0, z = 2, just inside
   add({4, 2.2e-4, 2}, Side::Top);
   add({1.5, 1.5e-4, 0}, Side::Bottom);  // 2, 3: on the rim edge y = 0, z = 0
   add({3.5, 2.0e-4, 0}, Side::Bottom);
-  add({2.5, 2, 0}, Side::Bottom);       // 4: inside
+  add({2.5, 2, 0}, Side::Bottom);  // 4: inside
   const std::array<int, 4> sliver{0, 1, 2, 3}, inside{0, 1, 2, 4};
   ASSERT_FALSE(isCoplanarTet({m.nodes[0], m.nodes[1], m.nodes[2], m.nodes[4]}));
   ASSERT_TRUE(isCoplanarTet({m.nodes[0], m.nodes[1], m.nodes[2], m.nodes[3]}));
@@ -222,7 +222,8 @@ TEST(Tets, CoplanarTetIsFlatForItsShortestEdge) {
   EXPECT_FALSE(isCoplanarTet({a, b, c, Vec3(1.5, 1.5, 1e-3)})) << "1e-3 off: a thin tet, not a plane";
   EXPECT_FALSE(isCoplanarTet({a, b, c, Vec3(0.5, 0.5, 1)})) << "a tet of fair shape";
   // The U-channel's 0.002 mm tunnel: flat only because one edge is 0.002 mm long.
-  EXPECT_FALSE(isCoplanarTet({Vec3(1.5, 0.002, 1.5), Vec3(1.502, 0.002, 0), Vec3(1.502, 0.002, 1.5), Vec3(1.502, 0, 0)}));
+  EXPECT_FALSE(
+      isCoplanarTet({Vec3(1.5, 0.002, 1.5), Vec3(1.502, 0.002, 0), Vec3(1.502, 0.002, 1.5), Vec3(1.502, 0, 0)}));
 }
 
 // A 40 x 30 x 2 plate: 2 mm thick, z = 2 is Top, z = 0 Bottom, the four rim faces Lateral.
@@ -327,7 +328,8 @@ TEST(Tets, ThinBoxTetsFillThePlateAndCutAtMidPlane) {
   const WallSides w = classifyWallSides(cad);
   TetMesh tets = delaunayTets(packBubbles(cad, w, BubbleOptions{}));
   double hull = 0;  // the hull of the nodes is the box: only flat slivers on its rim faces are outside
-  for (const auto& t : tets.tets) hull += std::abs(tetVolume(tets.nodes[t[0]], tets.nodes[t[1]], tets.nodes[t[2]], tets.nodes[t[3]]));
+  for (const auto& t : tets.tets)
+    hull += std::abs(tetVolume(tets.nodes[t[0]], tets.nodes[t[1]], tets.nodes[t[2]], tets.nodes[t[3]]));
   const TetFilterCounts counts = keepSpanningTetsInside(tets, cad);
   EXPECT_EQ(counts.delaunay, tets.tets.size() + counts.flat + counts.outside);
   double volume = 0;

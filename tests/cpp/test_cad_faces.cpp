@@ -55,7 +55,8 @@ std::vector<Vec3> probePoints(const CadFaces::Face& f) {
     const BRepAdaptor_Curve c(TopoDS::Edge(e.Current()));
     for (int k = 0; k <= 4; ++k) {
       const Vec3 p = vec(c.Value(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * k / 4.0));
-      for (const Vec3& off : {Vec3(0, 0, 0), Vec3(1e-9, -1e-9, 1e-9), Vec3(3e-6, 2e-6, -1e-6)}) points.push_back(p + off);
+      for (const Vec3& off : {Vec3(0, 0, 0), Vec3(1e-9, -1e-9, 1e-9), Vec3(3e-6, 2e-6, -1e-6)})
+        points.push_back(p + off);
     }
   }
   return points;
@@ -74,7 +75,8 @@ int expectSameAsBRepExtrema(const CadSolid& cad) {
         const double fast = probe.distance(g, p), exact = reference(faces, g, p);
         EXPECT_EQ(std::memcmp(&fast, &exact, sizeof fast), 0)
             << "face " << g << " at (" << p.transpose() << "): " << fast << " against BRepExtrema's " << exact;
-        EXPECT_EQ(probe.lies(g, p), !faces.face(g).box.IsOut(gp_Pnt(p.x(), p.y(), p.z())) && exact < faces.tolerance(g));
+        EXPECT_EQ(probe.lies(g, p),
+                  !faces.face(g).box.IsOut(gp_Pnt(p.x(), p.y(), p.z())) && exact < faces.tolerance(g));
         ++checked;
       }
     }
@@ -91,7 +93,9 @@ CadSolid readPart(const std::string& path) {
 
 TEST(CadFaces, DistancesAreBRepExtremasOnTheSamples) {
   for (const char* name : {"plate_holes", "hat_holes", "spherical_cap", "twisted_strip", "cylinder_shell"})
-    EXPECT_GT(expectSameAsBRepExtrema(readPart(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/" + name + ".step")), 500)
+    EXPECT_GT(
+        expectSameAsBRepExtrema(readPart(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/" + name + ".step")),
+        500)
         << name;
 }
 
@@ -111,7 +115,8 @@ TEST(CadFaces, PointsOnTheLinesThroughTheHoleCentresAreBRepExtremas) {
           for (int x = 1; x < 80; ++x) {
             const Vec3 p(x, y, z);
             const double fast = probe.distance(f, p), exact = reference(faces, f, p);
-            EXPECT_EQ(std::memcmp(&fast, &exact, sizeof fast), 0) << "face " << f << " at (" << p.transpose() << "): " << fast << " against " << exact;
+            EXPECT_EQ(std::memcmp(&fast, &exact, sizeof fast), 0)
+                << "face " << f << " at (" << p.transpose() << "): " << fast << " against " << exact;
             onFace += exact == 0;
           }
         }
@@ -129,21 +134,24 @@ TEST(CadFaces, DistancesAreBRepExtremasOnARealSheetMetalPart) {
 TEST(CadFaces, NearlyEquidistantVerticesAreBRepExtremas) {
   for (int k = 180; k < 200; ++k) {
     const gp_Ax2 axis(gp_Pnt(0.1 * k, 0.37, -0.2), gp_Dir(std::sin(0.1 + 0.013 * k), 0.3, std::cos(0.1 + 0.013 * k)));
-    const CadSolid cad = prepareSolid(TopoDS::Solid(BRepPrimAPI_MakeCylinder(axis, 10 + 0.1 * k, 40, 0.9 + 0.01 * k).Shape()));
+    const CadSolid cad =
+        prepareSolid(TopoDS::Solid(BRepPrimAPI_MakeCylinder(axis, 10 + 0.1 * k, 40, 0.9 + 0.01 * k).Shape()));
     const CadFaces faces(cad);
     CadFaceProbe probe(faces);
     const Vec3 p = vec(axis.Location().Translated(gp_Vec(axis.Direction()) * (43.0 + 0.01 * k)));
     for (int f = 0; f < faces.count(); ++f) {
       const double fast = probe.distance(f, p), exact = reference(faces, f, p);
-      EXPECT_EQ(std::memcmp(&fast, &exact, sizeof fast), 0) << "k " << k << " face " << f << ": " << fast << " against " << exact;
+      EXPECT_EQ(std::memcmp(&fast, &exact, sizeof fast), 0)
+          << "k " << k << " face " << f << ": " << fast << " against " << exact;
     }
   }
 }
 
 TEST(UvBoundary, PlateWithAHoleDecidesAwayFromItsEdges) {
-  const TopoDS_Shape plate = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(40, 30, 2).Shape(),
-                                             BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 15, -1), gp_Dir(0, 0, 1)), 5, 4).Shape())
-                                 .Shape();
+  const TopoDS_Shape plate =
+      BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(40, 30, 2).Shape(),
+                      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 15, -1), gp_Dir(0, 0, 1)), 5, 4).Shape())
+          .Shape();
   for (TopExp_Explorer e(plate, TopAbs_FACE); e.More(); e.Next()) {
     const TopoDS_Face face = TopoDS::Face(e.Current());
     BRepAdaptor_Surface s(face);

@@ -22,7 +22,8 @@ ChordalSurface strip(const std::vector<double>& rim, int rows) {
   for (int j = 0; j <= rows; ++j)
     for (int i = 0; i < n; ++i) s.vertices.emplace_back(i, j == 0 ? rim[i] : j, 0);
   for (int j = 0; j < rows; ++j)
-    for (int i = 0; i + 1 < n; ++i) s.facets.push_back({j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i}), ++s.quads;
+    for (int i = 0; i + 1 < n; ++i)
+      s.facets.push_back({j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i}), ++s.quads;
   s.tetEdge.assign(s.vertices.size(), {0, 0});
   return s;
 }

@@ -38,7 +38,8 @@ TetMesh moved(TetMesh m, const Eigen::Matrix3d& R, const Vec3& t) {
 }
 
 Eigen::Matrix3d someRotation() {
-  return (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) * Eigen::AngleAxisd(-0.4, Vec3::UnitX())).toRotationMatrix();
+  return (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) * Eigen::AngleAxisd(-0.4, Vec3::UnitX()))
+      .toRotationMatrix();
 }
 
 // All 24 orders of the corners of tet {0, 1, 2, 3}.
@@ -101,17 +102,20 @@ void expectGeometryError(F&& f, const std::string& words) {
 }
 
 // A 2-2 tet: top edge along x at z = 1, bottom edge along y at z = 0, crossing above (0.5, 0.5).
-const std::vector<Node> kTwoTwo = {
-    {Vec3(0, 0.5, 1), Side::Top}, {Vec3(1, 0.5, 1), Side::Top},
-    {Vec3(0.5, 0, 0), Side::Bottom}, {Vec3(0.5, 1, 0), Side::Bottom}};
+const std::vector<Node> kTwoTwo = {{Vec3(0, 0.5, 1), Side::Top},
+                                   {Vec3(1, 0.5, 1), Side::Top},
+                                   {Vec3(0.5, 0, 0), Side::Bottom},
+                                   {Vec3(0.5, 1, 0), Side::Bottom}};
 
 // A 3-1 tet (three top nodes at z = 1 over one bottom node) and a 1-3 tet.
-const std::vector<Node> kThreeOne = {
-    {Vec3(0, 0, 1), Side::Top}, {Vec3(1, 0, 1), Side::Top}, {Vec3(0, 1, 1), Side::Top},
-    {Vec3(0.2, 0.3, 0), Side::Bottom}};
-const std::vector<Node> kOneThree = {
-    {Vec3(0, 0, 0), Side::Bottom}, {Vec3(1, 0, 0), Side::Bottom}, {Vec3(0, 1, 0), Side::Bottom},
-    {Vec3(0.2, 0.3, 1), Side::Top}};
+const std::vector<Node> kThreeOne = {{Vec3(0, 0, 1), Side::Top},
+                                     {Vec3(1, 0, 1), Side::Top},
+                                     {Vec3(0, 1, 1), Side::Top},
+                                     {Vec3(0.2, 0.3, 0), Side::Bottom}};
+const std::vector<Node> kOneThree = {{Vec3(0, 0, 0), Side::Bottom},
+                                     {Vec3(1, 0, 0), Side::Bottom},
+                                     {Vec3(0, 1, 0), Side::Bottom},
+                                     {Vec3(0.2, 0.3, 1), Side::Top}};
 
 }  // namespace
 
@@ -166,14 +170,13 @@ TEST(ChordalSurface, ThreeOneAndOneThreeTetsGiveOneTriangleFacingTop) {
     const std::vector<Node>* nodes;
     std::vector<Vec3> expected;
   };
-  const std::vector<Case> cases = {
-      {&kThreeOne, {Vec3(0.1, 0.15, 0.5), Vec3(0.6, 0.15, 0.5), Vec3(0.1, 0.65, 0.5)}},
-      {&kOneThree, {Vec3(0.1, 0.15, 0.5), Vec3(0.6, 0.15, 0.5), Vec3(0.1, 0.65, 0.5)}}};
+  const std::vector<Case> cases = {{&kThreeOne, {Vec3(0.1, 0.15, 0.5), Vec3(0.6, 0.15, 0.5), Vec3(0.1, 0.65, 0.5)}},
+                                   {&kOneThree, {Vec3(0.1, 0.15, 0.5), Vec3(0.6, 0.15, 0.5), Vec3(0.1, 0.65, 0.5)}}};
   const Eigen::Matrix3d R = someRotation();
   for (const Case& c : cases)
     for (const auto& order : allOrders()) {
-      SCOPED_TRACE(testing::Message() << (c.nodes == &kThreeOne ? "3-1" : "1-3") << " order " << order[0]
-                                      << order[1] << order[2] << order[3]);
+      SCOPED_TRACE(testing::Message() << (c.nodes == &kThreeOne ? "3-1" : "1-3") << " order " << order[0] << order[1]
+                                      << order[2] << order[3]);
       const TetMesh m = makeTets(*c.nodes, {order});
       const ChordalSurface s = buildChordalSurface(m);
       ASSERT_EQ(s.facets.size(), 1u);
@@ -195,9 +198,9 @@ TEST(ChordalSurface, ThreeOneAndOneThreeTetsGiveOneTriangleFacingTop) {
 // (c) A prism (3 top nodes at z = 2 over 3 bottom nodes at z = 0) split into 3 tets.
 namespace {
 TetMesh prismSlab(const Vec3& topShift) {
-  const std::vector<Node> nodes = {
-      {Vec3(0, 0, 0), Side::Bottom}, {Vec3(1, 0, 0), Side::Bottom}, {Vec3(0, 1, 0), Side::Bottom},
-      {Vec3(0, 0, 2) + topShift, Side::Top}, {Vec3(1, 0, 2) + topShift, Side::Top}, {Vec3(0, 1, 2) + topShift, Side::Top}};
+  const std::vector<Node> nodes = {{Vec3(0, 0, 0), Side::Bottom},         {Vec3(1, 0, 0), Side::Bottom},
+                                   {Vec3(0, 1, 0), Side::Bottom},         {Vec3(0, 0, 2) + topShift, Side::Top},
+                                   {Vec3(1, 0, 2) + topShift, Side::Top}, {Vec3(0, 1, 2) + topShift, Side::Top}};
   // a0 a1 a2 b0 (3-1 from the bottom's view: 1 top node), a1 a2 b0 b1 (2-2), a2 b0 b1 b2 (1 bottom).
   return makeTets(nodes, {{0, 1, 2, 3}, {1, 2, 3, 4}, {2, 3, 4, 5}});
 }
@@ -264,9 +267,11 @@ TEST(ChordalSurface, RadiusIsNormalComponentOnShearedSlab) {
 // Eq. 2: the vertex normal is the normalized mean of the normals of the facets around it.
 TEST(ChordalSurface, VertexNormalAveragesFacetNormals) {
   // Two 3-1 tets on a roof: chordal triangles tilted by +-45 degrees about the y axis, sharing an edge.
-  const std::vector<Node> nodes = {
-      {Vec3(0, 0, 0), Side::Top},   {Vec3(0, 2, 0), Side::Top},  {Vec3(-2, 0, -2), Side::Top},
-      {Vec3(2, 0, -2), Side::Top},  {Vec3(0, 1, -2), Side::Bottom}};
+  const std::vector<Node> nodes = {{Vec3(0, 0, 0), Side::Top},
+                                   {Vec3(0, 2, 0), Side::Top},
+                                   {Vec3(-2, 0, -2), Side::Top},
+                                   {Vec3(2, 0, -2), Side::Top},
+                                   {Vec3(0, 1, -2), Side::Bottom}};
   // Tet A: top 0 1 2 over bottom 4; tet B: top 0 1 3 over bottom 4.
   const TetMesh m = makeTets(nodes, {{0, 1, 2, 4}, {0, 1, 3, 4}});
   ChordalSurface s = buildChordalSurface(m);
@@ -292,19 +297,21 @@ TEST(ChordalSurface, VertexNormalAveragesFacetNormals) {
 
 // (d) Three tets around the same two chordal vertices: a fin, the chordal edge is in three facets.
 TEST(ChordalSurface, EdgeInThreeFacetsIsNonManifold) {
-  const std::vector<Node> nodes = {
-      {Vec3(0, 0, 1), Side::Top},      // T0
-      {Vec3(0, -1, 0), Side::Bottom},  // B0
-      {Vec3(0, 1, 0), Side::Bottom},   // B1
-      {Vec3(1, 0, 1), Side::Top},      // 2-2 with T0 B0 B1
-      {Vec3(-1, 0, 1), Side::Top},     // 2-2 on the other side
-      {Vec3(0, 0, -1), Side::Bottom}}; // 1-3: the fin below
+  const std::vector<Node> nodes = {{Vec3(0, 0, 1), Side::Top},       // T0
+                                   {Vec3(0, -1, 0), Side::Bottom},   // B0
+                                   {Vec3(0, 1, 0), Side::Bottom},    // B1
+                                   {Vec3(1, 0, 1), Side::Top},       // 2-2 with T0 B0 B1
+                                   {Vec3(-1, 0, 1), Side::Top},      // 2-2 on the other side
+                                   {Vec3(0, 0, -1), Side::Bottom}};  // 1-3: the fin below
   // Control: two of them make a manifold strip sharing the edge (T0B0, T0B1).
   const ChordalSurface ok = buildChordalSurface(makeTets(nodes, {{0, 1, 2, 3}, {0, 1, 2, 4}}));
   EXPECT_EQ(ok.facets.size(), 2u);
   EXPECT_EQ(ok.vertices.size(), 6u);
-  expectGeometryError([&] { buildChordalSurface(makeTets(nodes, {{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 1, 2, 5}})); },
-                      "non-manifold");
+  expectGeometryError(
+      [&] {
+        buildChordalSurface(makeTets(nodes, {{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 1, 2, 5}}));
+      },
+      "non-manifold");
 }
 
 TEST(ChordalSurface, OnlyFlatTetsGiveNoSurface) {
@@ -315,9 +322,11 @@ TEST(ChordalSurface, OnlyFlatTetsGiveNoSurface) {
 
 // (e) Table 1 keys: exterior triangles / exterior edges per tet.
 TEST(ChordalSurface, ClassifyTetsCountsExteriorTrianglesAndEdges) {
-  const std::vector<Node> nodes = {
-      {Vec3(0, 0, 0), Side::Bottom}, {Vec3(1, 0, 0), Side::Bottom}, {Vec3(0, 1, 0), Side::Bottom},
-      {Vec3(0, 0, 1), Side::Top}, {Vec3(0.3, 0.3, -1), Side::Bottom}};
+  const std::vector<Node> nodes = {{Vec3(0, 0, 0), Side::Bottom},
+                                   {Vec3(1, 0, 0), Side::Bottom},
+                                   {Vec3(0, 1, 0), Side::Bottom},
+                                   {Vec3(0, 0, 1), Side::Top},
+                                   {Vec3(0.3, 0.3, -1), Side::Bottom}};
   EXPECT_EQ(classifyTets(makeTets(nodes, {{0, 1, 2, 3}})), (std::map<std::string, std::size_t>{{"4/6", 1}}));
   // Sharing face (0, 1, 2): each tet has 3 exterior triangles, and all 6 of its edges are still
   // edges of an exterior triangle.
@@ -362,9 +371,11 @@ TEST(ChordalSurface, CoplanarTetsOfParallelRowsLeaveNoSlit) {
     }
   const TetMesh tets = delaunayTets(nodes);
   const ChordalSurface s = buildChordalSurface(tets);
-  EXPECT_NEAR(chordalArea(s), 3.0 * 2.0, 0.05 * 6) << "[0.15, 3.15] x [0, 2] at z = 1; a collapse moves vertices along the rows";
+  EXPECT_NEAR(chordalArea(s), 3.0 * 2.0, 0.05 * 6)
+      << "[0.15, 3.15] x [0, 2] at z = 1; a collapse moves vertices along the rows";
   const auto uses = facetEdgeUses(s);
-  const long euler = static_cast<long>(s.vertices.size()) - static_cast<long>(uses.size()) + static_cast<long>(s.facets.size());
+  const long euler =
+      static_cast<long>(s.vertices.size()) - static_cast<long>(uses.size()) + static_cast<long>(s.facets.size());
   EXPECT_EQ(euler, 1) << "a disk: no slit along the node rows";
   for (const auto& [edge, n] : uses) EXPECT_LE(n, 2);
   for (const auto& f : s.facets) EXPECT_GT(facetNormal(s, f).norm(), 0.5) << "no degenerate facet is left";
@@ -390,8 +401,9 @@ ChordalSurface flatSurface(const std::vector<Vec3>& vertices, const std::vector<
 // ear, then the second square (2 facets against 2: the first in facet order stays). One square is left, its
 // unused vertices dropped and the rest renumbered in order.
 TEST(ChordalSurface, PinchedRimKeepsTheLargestFanAtEachVertex) {
-  ChordalSurface s = flatSurface({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}, {-1, 2, 0}, {-1, 1.5, 0}},
-                                 {{0, 1, 2, -1}, {0, 2, 3, -1}, {2, 4, 5, -1}, {2, 5, 6, -1}, {3, 7, 8, -1}});
+  ChordalSurface s = flatSurface(
+      {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}, {-1, 2, 0}, {-1, 1.5, 0}},
+      {{0, 1, 2, -1}, {0, 2, 3, -1}, {2, 4, 5, -1}, {2, 5, 6, -1}, {3, 7, 8, -1}});
   EXPECT_EQ(dropPinchedFacets(s), 3u);
   ASSERT_EQ(s.facets.size(), 2u);
   EXPECT_EQ(s.vertices.size(), 4u);

@@ -24,7 +24,9 @@ TEST(Groups, ItemsOfEachKeyInTheOrderGiven) {
   });
   ASSERT_EQ(at.start.size(), nodes + 1);
   EXPECT_EQ(at.items.size(), 16u);
-  auto group = [&](int v) { return std::vector<int>(at.items.begin() + at.start[v], at.items.begin() + at.start[v + 1]); };
+  auto group = [&](int v) {
+    return std::vector<int>(at.items.begin() + at.start[v], at.items.begin() + at.start[v + 1]);
+  };
   EXPECT_EQ(group(0), std::vector<int>{0});
   EXPECT_EQ(group(1), (std::vector<int>{0, 1}));
   EXPECT_EQ(group(6), (std::vector<int>{0, 1}));
@@ -44,18 +46,22 @@ TEST(ChildProcess, BytesExceptionCrashAndHang) {
   EXPECT_TRUE(threw.threw);
   EXPECT_NE(threw.failure.find("no solid in it"), std::string::npos) << threw.failure;
 
-  const ChildResult crashed = runInChildProcess([]() -> std::string {
-    std::raise(SIGSEGV);
-    return "never";
-  }, 10);
+  const ChildResult crashed = runInChildProcess(
+      []() -> std::string {
+        std::raise(SIGSEGV);
+        return "never";
+      },
+      10);
   EXPECT_FALSE(crashed.ok);
   EXPECT_FALSE(crashed.threw);
   EXPECT_FALSE(crashed.failure.empty());
 
-  const ChildResult hung = runInChildProcess([]() -> std::string {
-    std::this_thread::sleep_for(std::chrono::seconds(30));
-    return "late";
-  }, 0.5);
+  const ChildResult hung = runInChildProcess(
+      []() -> std::string {
+        std::this_thread::sleep_for(std::chrono::seconds(30));
+        return "late";
+      },
+      0.5);
   EXPECT_FALSE(hung.ok);
   EXPECT_FALSE(hung.failure.empty());
 }

@@ -1,7 +1,7 @@
 // Faces that are partly wall and partly rim (geometry/mixed_faces.hpp): a B-spline skin over the top wall
 // and round the strip's end is split where the wall meets the round, and only there.
-#include <BRepPrimAPI_MakeBox.hxx>
 #include <gtest/gtest.h>
+#include <BRepPrimAPI_MakeBox.hxx>
 
 #include <algorithm>
 #include <string>
@@ -40,8 +40,10 @@ TEST(MixedFaces, SkinOverAWallAndRoundItsEdgeIsSplitWhereTheWallEnds) {
     (s.side == Side::Top ? top : s.side == Side::Bottom ? bottom : lateral)++;
     if (inputFaceOf(split, f) != inputFaceOf(cad, splits[0].face)) continue;
     ++pieces;
-    if (s.side == Side::Lateral) EXPECT_NEAR(s.area, M_PI * 20, 0.05) << "the half cylinder";
-    else EXPECT_NEAR(s.area, 40 * 20, 0.05) << "the flat wall";
+    if (s.side == Side::Lateral)
+      EXPECT_NEAR(s.area, M_PI * 20, 0.05) << "the half cylinder";
+    else
+      EXPECT_NEAR(s.area, 40 * 20, 0.05) << "the flat wall";
   }
   EXPECT_EQ(pieces, 2);
   EXPECT_EQ(top, 1);
@@ -69,8 +71,10 @@ TEST(MixedFaces, SkinOverBothWallsAndTheirRimIsSplitTwice) {
     (s.side == Side::Top ? top : s.side == Side::Bottom ? bottom : lateral)++;
     if (inputFaceOf(split, f) != inputFaceOf(cad, splits[0].face)) continue;
     ++pieces;
-    if (s.side == Side::Lateral) EXPECT_NEAR(s.area, M_PI * 20, 0.05) << "the half cylinder";
-    else EXPECT_NEAR(s.area, 40 * 20, 0.05) << "a flat wall";
+    if (s.side == Side::Lateral)
+      EXPECT_NEAR(s.area, M_PI * 20, 0.05) << "the half cylinder";
+    else
+      EXPECT_NEAR(s.area, 40 * 20, 0.05) << "a flat wall";
   }
   EXPECT_EQ(pieces, 3);
   EXPECT_EQ(top, 1);
@@ -83,8 +87,9 @@ TEST(MixedFaces, SkinOverBothWallsAndTheirRimIsSplitTwice) {
 TEST(MixedFaces, WallsAndRimsAreNotSplit) {
   const CadSolid box = prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40, 30, 2).Solid());
   EXPECT_TRUE(findMixedFaces(box, classifyWallSides(box)).empty());
-  for (const std::string sample : {"Resources/samples/rims/lbracket_round_ends.step", "Resources/samples/cylinder_shell.step",
-                                   "Resources/samples/rims/plate_full_round.step"}) {
+  for (const std::string sample :
+       {"Resources/samples/rims/lbracket_round_ends.step", "Resources/samples/cylinder_shell.step",
+        "Resources/samples/rims/plate_full_round.step"}) {
     const CadSolid cad = readSample(sample);
     EXPECT_TRUE(findMixedFaces(cad, classifyWallSides(cad)).empty()) << sample;
   }

@@ -30,8 +30,8 @@ HexMesh block(int nx, int ny, int m, const std::vector<double>& height) {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
       for (int k = 0; k < m; ++k)
-        mesh.hexes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-                              id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+        mesh.hexes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                              id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
   return mesh;
 }
 
@@ -92,8 +92,8 @@ TEST(Quadratic, MidEdgeNodeSitsBetweenTheC3D20CornerPair) {
       EXPECT_LT((mesh.nodes[mesh.midEdges[h][e]] - mid).norm(), 1e-12) << "hex " << h << " edge " << e;
     }
   // C3D20 order spelled out for the first hex: 9-12 bottom, 13-16 top, 17-20 along the sweep.
-  const std::array<std::array<int, 2>, 12> c3d20 = {{{1, 2}, {2, 3}, {3, 4}, {4, 1}, {5, 6}, {6, 7}, {7, 8}, {8, 5},
-                                                     {1, 5}, {2, 6}, {3, 7}, {4, 8}}};
+  const std::array<std::array<int, 2>, 12> c3d20 = {
+      {{1, 2}, {2, 3}, {3, 4}, {4, 1}, {5, 6}, {6, 7}, {7, 8}, {8, 5}, {1, 5}, {2, 6}, {3, 7}, {4, 8}}};
   for (int e = 0; e < 12; ++e) EXPECT_EQ(kHexEdges[e], (std::array<int, 2>{c3d20[e][0] - 1, c3d20[e][1] - 1}));
 }
 
@@ -133,7 +133,7 @@ TEST(Quadratic, ProjectionIsAskedForWallEdgesOnlyAndInnerLayersFollow) {
     // Inner edges half way between the walls' mid-edge nodes; a rim edge of the inner layer joins two rim nodes
     // and starts from their midpoint (here it stays there: no lateral face to project onto).
     if (k == 1) EXPECT_DOUBLE_EQ(z, mesh.nodeOnRim[i] ? 1.0 : 0.5 * (2.1 - 0.2));
-    if (k == -1) EXPECT_TRUE(z == 0.5 || z == 1.5);      // sweep edges: plain midpoints
+    if (k == -1) EXPECT_TRUE(z == 0.5 || z == 1.5);  // sweep edges: plain midpoints
   }
 }
 
@@ -142,7 +142,8 @@ TEST(Quadratic, RimNodesAreProjectedOntoTheLateralFacesLast) {
   mesh.nodeFace.assign(mesh.nodes.size(), -1);
   std::size_t lateral = 0;
   const QuadraticStats s = addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) -> std::optional<FacePoint> {
-    if (side != Side::Lateral) return FacePoint{p + Vec3(0, 0, side == Side::Top ? 0.1 : -0.1), side == Side::Top ? 7 : 3};
+    if (side != Side::Lateral)
+      return FacePoint{p + Vec3(0, 0, side == Side::Top ? 0.1 : -0.1), side == Side::Top ? 7 : 3};
     ++lateral;
     if (p.x() == 0) return FacePoint{p + Vec3(-0.3, 0, 0), 2};  // more than a quarter of the unit edges: refused
     return FacePoint{p + Vec3(0.01, 0, 0), 1};
@@ -173,7 +174,8 @@ TEST(Quadratic, FarOrFailedProjectionKeepsTheMidpoint) {
   HexMesh mesh = block(1, 1, 1, {0, 1});
   const QuadraticStats s = addMidEdgeNodes(mesh, [](Side side, const Vec3& p) -> std::optional<FacePoint> {
     if (side != Side::Top) return std::nullopt;
-    return FacePoint{p + Vec3(0, 0, p.x() == 0.5 ? 0.2 : 0.3), 5};  // edges along x move 0.2 (kept), along y 0.3 (> 1/4)
+    return FacePoint{p + Vec3(0, 0, p.x() == 0.5 ? 0.2 : 0.3),
+                     5};  // edges along x move 0.2 (kept), along y 0.3 (> 1/4)
   });
   EXPECT_EQ(s.wallNodes, 8u);
   EXPECT_EQ(s.projected, 2u);

@@ -178,7 +178,8 @@ TEST(QualityReport, HistogramSumsToHexCountAndMatchesPerHexValues) {
   m.nodes[27] += Vec3(0.4, -0.3, 0.2);  // distort the hexes around interior node (2,1,1)
   m.nodes[31] += Vec3(-0.9, 0.9, 1.5);  // fold those around interior node (1,2,1)
   const QualityReport q = measureQuality(m);
-  EXPECT_EQ(std::accumulate(q.sjHistogram.counts.begin(), q.sjHistogram.counts.end(), 0), static_cast<int>(m.hexes.size()));
+  EXPECT_EQ(std::accumulate(q.sjHistogram.counts.begin(), q.sjHistogram.counts.end(), 0),
+            static_cast<int>(m.hexes.size()));
   EXPECT_DOUBLE_EQ(q.sjMin, *std::min_element(q.scaledJacobian.begin(), q.scaledJacobian.end()));
   EXPECT_LT(q.sjMin, 0.0);
   EXPECT_GE(q.sjHistogram.counts[0], 1);  // negative values land in bin 0
@@ -293,7 +294,7 @@ TEST(BoundaryCoincidentNodes, SeparateHexesShareFourNodePositions) {
   for (int i = 0; i < 8; ++i) m.nodes.push_back(m.nodes[i] + Vec3(1, 0, 0));
   m.hexes.push_back({8, 9, 10, 11, 12, 13, 14, 15});
   EXPECT_EQ(countCoincidentNodes(m, 1e-9), 4u);
-  EXPECT_EQ(checkBoundary(m).faces, 12u);  // not conformal: no shared face
+  EXPECT_EQ(checkBoundary(m).faces, 12u);      // not conformal: no shared face
   EXPECT_TRUE(checkBoundary(m).watertight());  // but two closed shells
 }
 
@@ -322,9 +323,7 @@ const ValidationFailure* find(const std::vector<ValidationFailure>& failures, co
 
 }  // namespace
 
-TEST(Validation, BlockOfGoodHexesPasses) {
-  EXPECT_TRUE(validate(block({0, 1, 2}, {0, 1}, {0, 0.5, 1}), 2.0).empty());
-}
+TEST(Validation, BlockOfGoodHexesPasses) { EXPECT_TRUE(validate(block({0, 1, 2}, {0, 1}, {0, 0.5, 1}), 2.0).empty()); }
 
 TEST(Validation, InvertedHexIsNamedWithItsPlace) {
   HexMesh m = singleHex(box(2, 1, 1));

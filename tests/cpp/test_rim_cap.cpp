@@ -1,7 +1,7 @@
 // Rim caps (sweep/rim_cap.hpp) on the round ends of a bent sheet, and the smoothing of poor hexes
 // (sweep/smoothing.hpp) on a block with one inner node pushed aside.
-#include <BRepPrimAPI_MakeBox.hxx>
 #include <gtest/gtest.h>
+#include <BRepPrimAPI_MakeBox.hxx>
 
 #include <cmath>
 #include <string>
@@ -23,7 +23,8 @@ using namespace hexlayer;
 TEST(RimCap, RoundEndsGetACapOnTheHalfCircle) {
   MeshOptions o;
   o.layers = 2;
-  const MeshResult r = meshFile(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/rims/lbracket_round_ends.step", o);
+  const MeshResult r =
+      meshFile(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/rims/lbracket_round_ends.step", o);
   const auto& cap = r.report["rim_cap"];
   ASSERT_GT(cap["capped_edges"].get<int>(), 0);
   EXPECT_EQ(cap["hexes"].get<int>(), 2 * cap["capped_edges"].get<int>());

@@ -2,10 +2,10 @@
 // column lies on the cut (its last hexes sheared by the cut's angle, the best a hex can do at that edge), the
 // columns beside it lean with it, and the columns at the corners with the strip's sides lie on the CAD edges
 // there, so the mesh fills the part exactly. Run on the parts as drawn and scaled by 1e-3 and 1e3.
+#include <gtest/gtest.h>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <TopoDS.hxx>
 #include <gp_Trsf.hxx>
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
@@ -18,7 +18,8 @@ using namespace hexlayer;
 namespace {
 
 TopoDS_Solid scaled(const std::string& sample, double factor) {
-  const TopoDS_Solid solid = readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/rims/" + sample + ".step").at(0);
+  const TopoDS_Solid solid =
+      readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/rims/" + sample + ".step").at(0);
   gp_Trsf scale;
   scale.SetScale(gp_Pnt(0, 0, 0), factor);
   return TopoDS::Solid(BRepBuilderAPI_Transform(solid, scale, true).Shape());

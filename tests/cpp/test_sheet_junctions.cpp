@@ -51,7 +51,9 @@ TEST(SheetJunctions, SharpLBendIsOneSheet) {
 // on the tube; dropping it leaves the plate's two faces as the only walls.
 TEST(SheetJunctions, BossOnAPlateIsASecondSheet) {
   const gp_Ax2 axis(gp_Pnt(20, 20, 2), gp_Dir(0, 0, 1));
-  const TopoDS_Shape tube = BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(axis, 3, 7).Shape(), BRepPrimAPI_MakeCylinder(axis, 1.5, 7).Shape()).Shape();
+  const TopoDS_Shape tube =
+      BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(axis, 3, 7).Shape(), BRepPrimAPI_MakeCylinder(axis, 1.5, 7).Shape())
+          .Shape();
   const CadSolid cad = solidOf(BRepAlgoAPI_Fuse(plate(), tube).Shape());
   WallSides sides = classifyWallSides(cad);
   const std::vector<Sheet> sheets = findSheets(cad, sides);

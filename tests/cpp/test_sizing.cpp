@@ -23,8 +23,8 @@ ChordalSurface strip(int n, double (*radius)(double)) {
   return s;
 }
 
-double wedge(double x) { return 0.5 + 0.05 * x; }    // wall 1 mm thick at x = 0, 3 mm at x = 20
-double step(double x) { return x < 10 ? 0.5 : 4.0; } // a sudden jump of the wall
+double wedge(double x) { return 0.5 + 0.05 * x; }     // wall 1 mm thick at x = 0, 3 mm at x = 20
+double step(double x) { return x < 10 ? 0.5 : 4.0; }  // a sudden jump of the wall
 
 }  // namespace
 

@@ -50,7 +50,8 @@ QuadMesh sameQuads(const ChordalSurface& s) {
 // The quad node a hex node was swept from: the one with the same x and y.
 int quadNodeBelow(const QuadMesh& q, const Vec3& h) {
   for (size_t i = 0; i < q.nodes.size(); ++i)
-    if (std::abs(q.nodes[i].x() - h.x()) < 1e-12 && std::abs(q.nodes[i].y() - h.y()) < 1e-12) return static_cast<int>(i);
+    if (std::abs(q.nodes[i].x() - h.x()) < 1e-12 && std::abs(q.nodes[i].y() - h.y()) < 1e-12)
+      return static_cast<int>(i);
   return -1;
 }
 
@@ -128,8 +129,8 @@ TEST(Sweep, TriangleWeightsGiveNearestPointOfTriangle) {
   const Vec3 p(3, 1, 0);  // nearest point of the triangle: b (foot on line bc is beyond b)
   const Eigen::Vector3d w = triangleWeights(a, b, c, p);
   const Vec3 q = w[0] * a + w[1] * b + w[2] * c;
-  EXPECT_LT((q - b).norm(), 1e-9) << "weights " << w.transpose() << " give " << q.transpose() << ", |p - q| = "
-                                  << (p - q).norm() << " > |p - b| = " << (p - b).norm();
+  EXPECT_LT((q - b).norm(), 1e-9) << "weights " << w.transpose() << " give " << q.transpose()
+                                  << ", |p - q| = " << (p - q).norm() << " > |p - b| = " << (p - b).norm();
 }
 
 // Inverse bilinear map on a planar trapezoid (not a parallelogram) and a twisted quad.
@@ -141,8 +142,8 @@ TEST(Sweep, InverseBilinearRecoversParameters) {
   for (const auto* quad : {&trapezoid, &twisted})
     for (const Eigen::Vector2d& uv : params) {
       const Eigen::Vector2d got = inverseBilinear(*quad, bilinear(*quad, uv.x(), uv.y()));
-      EXPECT_LT((got - uv).norm(), 1e-9) << (quad == &trapezoid ? "trapezoid" : "twisted") << " (u, v) = "
-                                         << uv.transpose() << ", got " << got.transpose();
+      EXPECT_LT((got - uv).norm(), 1e-9) << (quad == &trapezoid ? "trapezoid" : "twisted")
+                                         << " (u, v) = " << uv.transpose() << ", got " << got.transpose();
     }
   // Off a planar quad along its normal: the parameters of the foot point.
   for (const Eigen::Vector2d& uv : params) {

@@ -97,8 +97,8 @@ TEST(Untangle, SmoothedDirectionsUnfoldTheInsideOfASharpBend) {
   std::vector<Vec3> dir = sheet.normal;
   BentSweep sweep = sweepBent(sheet, dir, 0.75);  // half-thickness above the bend radius
   ASSERT_LT(worstHex(sweep.mesh), 0) << "the radial lines must fold the inner layer";
-  const UntangleResult r = untangleSweep(sheet.quads, dir, 0.2, [&](int i) { sweep.place(sheet, dir, i); },
-                                         [&](int j) { return sweep.column(j); });
+  const UntangleResult r = untangleSweep(
+      sheet.quads, dir, 0.2, [&](int i) { sweep.place(sheet, dir, i); }, [&](int j) { return sweep.column(j); });
   EXPECT_LT(r.worstBefore, 0);
   EXPECT_GT(r.worstAfter, 0.2);
   EXPECT_NEAR(worstHex(sweep.mesh), r.worstAfter, 1e-12);
@@ -114,8 +114,8 @@ TEST(Untangle, LeavesAGoodSweepAlone) {
   const BentSheet sheet = bentSheet(3.0, 3, 6, 2, 1.0);
   std::vector<Vec3> dir = sheet.normal;
   BentSweep sweep = sweepBent(sheet, dir, 0.5);
-  const UntangleResult r = untangleSweep(sheet.quads, dir, 0.2, [&](int i) { sweep.place(sheet, dir, i); },
-                                         [&](int j) { return sweep.column(j); });
+  const UntangleResult r = untangleSweep(
+      sheet.quads, dir, 0.2, [&](int i) { sweep.place(sheet, dir, i); }, [&](int j) { return sweep.column(j); });
   EXPECT_EQ(r.regions, 0);
   EXPECT_GT(r.worstBefore, 0.2);
   for (size_t i = 0; i < dir.size(); ++i) EXPECT_EQ(dir[i], sheet.normal[i]);
@@ -126,7 +126,8 @@ TEST(WallRays, RaysFromTheMidPlaneEndOnTopAndBottomOnlyThroughThem) {
   const WallSides sides = classifyWallSides(cad);
   WallRays rays(cad, sides);
   const Vec3 mid(10, 10, 1), tilted = Vec3(1, 0, 1).normalized();
-  const auto top = rays.cast(Side::Top, mid, Vec3::UnitZ(), 5), bottom = rays.cast(Side::Bottom, mid, -Vec3::UnitZ(), 5);
+  const auto top = rays.cast(Side::Top, mid, Vec3::UnitZ(), 5),
+             bottom = rays.cast(Side::Bottom, mid, -Vec3::UnitZ(), 5);
   ASSERT_TRUE(top && bottom);
   EXPECT_NEAR((top->point - Vec3(10, 10, 2)).norm(), 0, 1e-9);
   EXPECT_NEAR((bottom->point - Vec3(10, 10, 0)).norm(), 0, 1e-9);
@@ -151,7 +152,8 @@ TEST(ChordalFairing, RemovesNoiseKeepsTheRimAndDoesNotShrinkACylinder) {
       s.vertices.emplace_back(rr * std::cos(a), rr * std::sin(a), k * 1.0);
     }
   for (int k = 0; k + 1 < nz; ++k)
-    for (int i = 0; i + 1 < na; ++i) s.facets.push_back({k * na + i, k * na + i + 1, (k + 1) * na + i + 1, (k + 1) * na + i});
+    for (int i = 0; i + 1 < na; ++i)
+      s.facets.push_back({k * na + i, k * na + i + 1, (k + 1) * na + i + 1, (k + 1) * na + i});
   const std::vector<Vec3> before = s.vertices;
   auto radialError = [&](const std::vector<Vec3>& v) {  // root mean square distance to the cylinder
     double sum = 0;

@@ -20,9 +20,12 @@ TEST(WallProjector, PlateWallsAndTheirEdges) {
   const WallProjector walls(cad, classifyWallSides(cad));
   EXPECT_NEAR((walls.project(Side::Top, Vec3(10, 10, 1.4))->point - Vec3(10, 10, 2)).norm(), 0, 1e-9);
   EXPECT_NEAR((walls.project(Side::Bottom, Vec3(10, 10, 1.4))->point - Vec3(10, 10, 0)).norm(), 0, 1e-9);
-  EXPECT_NEAR((walls.project(Side::Top, Vec3(10, 10, -3))->point - Vec3(10, 10, 2)).norm(), 0, 1e-9) << "from the far side";
-  EXPECT_NEAR((walls.project(Side::Top, Vec3(41, 10, 2.5))->point - Vec3(40, 10, 2)).norm(), 0, 1e-9) << "beyond the rim: its edge";
-  EXPECT_NEAR((walls.project(Side::Lateral, Vec3(39.8, 10, 1.3))->point - Vec3(40, 10, 1.3)).norm(), 0, 1e-9) << "the rim";
+  EXPECT_NEAR((walls.project(Side::Top, Vec3(10, 10, -3))->point - Vec3(10, 10, 2)).norm(), 0, 1e-9)
+      << "from the far side";
+  EXPECT_NEAR((walls.project(Side::Top, Vec3(41, 10, 2.5))->point - Vec3(40, 10, 2)).norm(), 0, 1e-9)
+      << "beyond the rim: its edge";
+  EXPECT_NEAR((walls.project(Side::Lateral, Vec3(39.8, 10, 1.3))->point - Vec3(40, 10, 1.3)).norm(), 0, 1e-9)
+      << "the rim";
   // MakeBox numbers its faces like FreeCAD's Part box: Face1 x = 0, Face2 x = 40, ..., Face5 z = 0, Face6 z = 2.
   EXPECT_EQ(walls.project(Side::Top, Vec3(10, 10, 1.4))->face, 5);
   EXPECT_EQ(walls.project(Side::Bottom, Vec3(10, 10, 1.4))->face, 4);

@@ -1,5 +1,6 @@
 // Top, bottom and lateral faces (geometry/wall_sides.hpp) on rims of every shape: a ray crosses the wall
 // when its middle is as far from the whole boundary as from its ends, decided per sample.
+#include <gtest/gtest.h>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
@@ -7,7 +8,6 @@
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
@@ -24,7 +24,9 @@ CadSolid readSample(const std::string& path) {
   return prepareSolid(readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/" + path).at(0));
 }
 
-BRepAdaptor_Surface surfaceOf(const CadSolid& cad, int f) { return BRepAdaptor_Surface(TopoDS::Face(cad.faces(f + 1))); }
+BRepAdaptor_Surface surfaceOf(const CadSolid& cad, int f) {
+  return BRepAdaptor_Surface(TopoDS::Face(cad.faces(f + 1)));
+}
 
 int count(const WallSides& w, Side side) {
   int n = 0;
@@ -41,8 +43,10 @@ TEST(WallSides, ThinBoxTopCrossesTheWallButNearItsSidesAndTheSidesNowhere) {
   const WallSides w = classifyWallSides(cad);
   const double d = 1 / 1.3, share = (40 - 2 * d) * (30 - 2 * d) / (40 * 30);
   for (const FaceSide& f : w.faces) {
-    if (f.side == Side::Lateral) EXPECT_EQ(f.wallShare, 0.0);
-    else EXPECT_NEAR(f.wallShare, share, 0.04) << "the samples stand for about 3 x 3 each";
+    if (f.side == Side::Lateral)
+      EXPECT_EQ(f.wallShare, 0.0);
+    else
+      EXPECT_NEAR(f.wallShare, share, 0.04) << "the samples stand for about 3 x 3 each";
   }
 }
 
@@ -93,7 +97,8 @@ TEST(WallSides, KnifeEdgeTapersTheWall) {
   BRepBuilderAPI_MakePolygon profile;
   for (const gp_Pnt& p : {gp_Pnt(0, 0, 0), gp_Pnt(60, 0, 0), gp_Pnt(40, 0, 2), gp_Pnt(0, 0, 2)}) profile.Add(p);
   profile.Close();
-  const TopoDS_Shape blade = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(0, 20, 0)).Shape();
+  const TopoDS_Shape blade =
+      BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(0, 20, 0)).Shape();
   TopExp_Explorer solid(blade, TopAbs_SOLID);
   const CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
   const WallSides w = classifyWallSides(cad);

@@ -40,7 +40,8 @@ HexMesh twoHexBlock() {
 
 std::vector<NodeSet> layerSets(const HexMesh& m) {
   std::vector<NodeSet> sets{{"TOP", {}}, {"bottom", {}}};
-  for (std::size_t i = 0; i < m.nodes.size(); ++i) sets[m.nodeLayer[i] == 1 ? 0 : 1].nodes.push_back(static_cast<int>(i));
+  for (std::size_t i = 0; i < m.nodes.size(); ++i)
+    sets[m.nodeLayer[i] == 1 ? 0 : 1].nodes.push_back(static_cast<int>(i));
   return sets;
 }
 
@@ -84,8 +85,10 @@ std::vector<std::string> inpBlock(const std::vector<std::string>& all, const std
   std::vector<std::string> out;
   bool in = false;
   for (const std::string& l : all) {
-    if (!l.empty() && l[0] == '*') in = l.rfind(keyword, 0) == 0;
-    else if (in) out.push_back(l);
+    if (!l.empty() && l[0] == '*')
+      in = l.rfind(keyword, 0) == 0;
+    else if (in)
+      out.push_back(l);
   }
   return out;
 }
@@ -143,9 +146,8 @@ ExitCode codeOf(const std::function<void()>& f) {
 class WriterTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("hexlayer_writer_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("hexlayer_writer_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir_);
     mesh_ = twoHexBlock();
     sets_ = layerSets(mesh_);
@@ -221,8 +223,9 @@ TEST_F(WriterTest, MshHasOnePhysicalGroupPerCadFaceReadBackThroughGmsh) {
   gmsh::open(p.string());
   const std::map<std::string, std::size_t> elementsPerGroup = elementsPerPhysicalGroup();
   gmsh::finalize();
-  const std::map<std::string, std::size_t> expected{{"Face1", 1}, {"Face2", 1}, {"Face3", 2}, {"Face4", 2}, {"Face5", 2},
-                                                    {"Face6", 2}, {"top", 2}, {"bottom", 2}, {"rim", 6}, {"solid", 2}};
+  const std::map<std::string, std::size_t> expected{{"Face1", 1}, {"Face2", 1}, {"Face3", 2}, {"Face4", 2},
+                                                    {"Face5", 2}, {"Face6", 2}, {"top", 2},   {"bottom", 2},
+                                                    {"rim", 6},   {"solid", 2}};
   EXPECT_EQ(elementsPerGroup, expected) << "Face7 has no mesh faces: no group";
 }
 
@@ -247,9 +250,10 @@ TEST_F(WriterTest, VtuHasTheCadFaceOfEveryNode) {
   const fs::path p = write("faces.vtu");
   const fs::path script = dir_ / "check.py";
   // Every node of the block is on a face; a node on several gets the lowest N (x = 0 before z = 0 ...).
-  std::ofstream(script) << "import sys, meshio\n"
-                           "m = meshio.read(sys.argv[1])\n"
-                           "assert list(m.point_data['cad_face']) == [1, 3, 2, 1, 4, 2] * 2, m.point_data['cad_face']\n";
+  std::ofstream(script)
+      << "import sys, meshio\n"
+         "m = meshio.read(sys.argv[1])\n"
+         "assert list(m.point_data['cad_face']) == [1, 3, 2, 1, 4, 2] * 2, m.point_data['cad_face']\n";
   expectPythonPasses(script, p);
 }
 
@@ -324,7 +328,8 @@ TEST_F(WriterTest, InpWritesC3D20RWithAContinuationLine) {
     ASSERT_EQ(ids.size(), 21u);
     EXPECT_EQ(ids[0], std::to_string(h + 1));
     for (int e = 0; e < 12; ++e) {
-      const Vec3 mid = 0.5 * (mesh_.nodes[std::stoi(ids[1 + kHexEdges[e][0]]) - 1] + mesh_.nodes[std::stoi(ids[1 + kHexEdges[e][1]]) - 1]);
+      const Vec3 mid = 0.5 * (mesh_.nodes[std::stoi(ids[1 + kHexEdges[e][0]]) - 1] +
+                              mesh_.nodes[std::stoi(ids[1 + kHexEdges[e][1]]) - 1]);
       EXPECT_EQ(mesh_.nodes[std::stoi(ids[9 + e]) - 1], mid) << "hex " << h << " C3D20 node " << 9 + e;
     }
   }

@@ -20,7 +20,8 @@ class FuzzFile {
  public:
   FuzzFile(const uint8_t* data, size_t size, const char* extension)
       : path_("/tmp/hexlayer-fuzz-" + std::to_string(getpid()) + extension) {
-    std::ofstream(path_, std::ios::binary).write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    std::ofstream(path_, std::ios::binary)
+        .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
   ~FuzzFile() { std::remove(path_.c_str()); }
   const std::string& path() const { return path_; }
@@ -33,7 +34,7 @@ void meshEverySolid(const std::string& path) {
   hexlayer::MeshOptions options;
   options.force = true;  // the mesh of a damaged part may fail validation: that is an answer, not a bug
   options.layers = 1;
-  options.size = 10;     // a few dozen quads on the 60 x 40 mm seeds: many runs a minute under the sanitizers
+  options.size = 10;  // a few dozen quads on the 60 x 40 mm seeds: many runs a minute under the sanitizers
   for (const TopoDS_Solid& solid : hexlayer::readSolids(path)) hexlayer::meshSolid(solid, options);
 }
 
