@@ -1,7 +1,5 @@
 #include "pipeline/pipeline.hpp"
 
-#include <sys/resource.h>
-#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <deque>
@@ -14,8 +12,10 @@
 #include "chordal/chordal_fairing.hpp"
 #include "chordal/chordal_rim.hpp"
 #include "chordal/chordal_surface.hpp"
+#include "core/append.hpp"
 #include "core/error.hpp"
 #include "core/groups.hpp"
+#include "core/memory.hpp"
 #include "core/threads.hpp"
 #include "geometry/cad_faces.hpp"
 #include "geometry/mixed_faces.hpp"
@@ -33,6 +33,7 @@
 #include "sweep/rim_projection.hpp"
 #include "sweep/smoothing.hpp"
 #include "sweep/sweep.hpp"
+#include "sweep/sweep_to_walls.hpp"
 #include "tets/tet_mesh.hpp"
 
 namespace hexlayer {
@@ -45,21 +46,12 @@ constexpr int kMaxSplitRounds = 3;  // rounds of splitting faces that are partly
 constexpr int kFairingIterations[] = {10, 3, 0};
 constexpr double kDefaultSizeOverThickness = 1.0;
 constexpr double kMaxAutoQuads = 250000;
-constexpr double kMinReach = 0.25, kMaxReach = 4;  // a wall hit counts between these multiples of r
 // Where top and bottom walls meet at a knife edge, the chordal surface ends where the wall is thinner than
 // this share of its median thickness.
 constexpr double kKnifeRadius = 0.3;
 // How far a rim node may move onto the rim faces, in walls: half of a rim cut obliquely 3.2 walls wide
 // (wall_sides.hpp), with room.
 constexpr double kRimReach = 1.6;
-constexpr double kBytesPerHex = 2000;  // plate.step at size 0.3: 64 312 hexes, 73.5 MB peak (x 2 for safety)
-
-// The process's peak resident memory so far, in MiB (Linux's ru_maxrss is in KiB).
-double peakMemoryMiB() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
 
 // Runs one stage, records its wall time in report["timings_s"][name] and the process's peak memory
 // at its end in report["peak_memory_mib"][name], and reports progress.
@@ -105,34 +97,22 @@ double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalAr
   return std::max(planned, std::sqrt(chordalArea / kMaxAutoQuads));
 }
 
-// Refuses, before meshing, a size that would need more memory than the machine has: quads from the
-// top wall's area, hexes = quads x layers, kBytesPerHex measured as the peak memory per hex on plate.step.
+// Refuses, before meshing, a size that would need more memory than the machine has (estimateMemory: quads
+// from the top wall's area).
 // unit: pipeline lengths per input length (CadSolid::unit), for the message.
 void requireMemory(const MeshOptions& o, const WallSides& sides, double unit, nlohmann::json& r) {
   double topArea = 0;
   for (const FaceSide& f : sides.faces) topArea += f.side == Side::Top ? f.area : 0;
-  const double size = plannedSize(o, sides), quads = topArea / (size * size), hexes = quads * o.layers;
-  const double bytes = hexes * kBytesPerHex * (o.order == 2 ? 2 : 1);
-  const double machine = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-  r["memory_estimate"] = {{"quads", quads}, {"hexes", hexes}, {"bytes", bytes}, {"machine_bytes", machine}};
-  if (bytes <= machine) return;
+  const double size = plannedSize(o, sides);
+  const MemoryEstimate m = estimateMemory(topArea, size, o.layers, o.order, machineBytes());
+  r["memory_estimate"] = {
+      {"quads", m.quads}, {"hexes", m.hexes}, {"bytes", m.bytes}, {"machine_bytes", m.machineBytes}};
+  if (m.fits()) return;
   std::ostringstream msg;
-  msg << std::setprecision(3) << "quad size " << size / unit << " would need about " << quads << " quads, " << hexes
-      << " hexes and " << bytes / 1e9 << " GB of memory (estimated), more than this machine's " << machine / 1e9
-      << " GB: choose a larger --size (or --aspect) or fewer --layers";
+  msg << std::setprecision(3) << "quad size " << size / unit << " would need about " << m.quads << " quads, " << m.hexes
+      << " hexes and " << m.bytes / 1e9 << " GB of memory (estimated), more than this machine's "
+      << m.machineBytes / 1e9 << " GB: choose a larger --size (or --aspect) or fewer --layers";
   throw usageError(msg.str());
-}
-
-// π_b, π_t (§3): the sweep line cast onto the CAD walls, or onto a rim face where it leaves through one (an
-// oblique or rounded rim overhanging the wall); the radius function's ends (§7.2) where a ray misses.
-SweepLine castSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r) {
-  SweepLine line = radiusSweepLine(q, n, r);
-  auto keep = [&](const std::optional<FacePoint>& hit, Vec3& end, int& face) {
-    if (hit && (hit->point - q).norm() > kMinReach * r) end = hit->point, face = hit->face;
-  };
-  keep(rays.cast(Side::Top, q, n, kMaxReach * r, true), line.top, line.topFace);
-  keep(rays.cast(Side::Bottom, q, -n, kMaxReach * r, true), line.bottom, line.bottomFace);
-  return line;
 }
 
 // Faces that are partly wall and partly rim split into pieces that are one or the other (mixed_faces.hpp), the
@@ -271,17 +251,6 @@ QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const Wa
   return stage;
 }
 
-// §7: every quad node swept along its sweep line, cast onto the CAD walls (one ray caster per
-// thread: OpenCASCADE's intersector keeps state).
-SweepResult sweepToWalls(const QuadMesh& quads, const ChordalLocator& locator, const CadSolid& cad,
-                         const WallSides& sides, int layers) {
-  std::deque<WallRays> rays;
-  for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
-  return sweepQuads(quads, locator, layers, [&](const Vec3& q, const Vec3& n, double rr) {
-    return castSweepLine(rays[threadIndex()], q, n, rr);
-  });
-}
-
 nlohmann::json faceSideCounts(const WallSides& sides) {
   int top = 0, bottom = 0, lateral = 0;
   for (const FaceSide& f : sides.faces) (f.side == Side::Top ? top : f.side == Side::Bottom ? bottom : lateral)++;
@@ -400,31 +369,8 @@ std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, con
   return groupsOfInputFaces(std::move(s.groups), cad);
 }
 
-void append(HexMesh& all, const HexMesh& part) {
-  const int offset = static_cast<int>(all.nodes.size());
-  all.layers = part.layers;
-  all.nodes.insert(all.nodes.end(), part.nodes.begin(), part.nodes.end());
-  all.nodeLayer.insert(all.nodeLayer.end(), part.nodeLayer.begin(), part.nodeLayer.end());
-  all.nodeOnRim.insert(all.nodeOnRim.end(), part.nodeOnRim.begin(), part.nodeOnRim.end());
-  all.nodeFace.insert(all.nodeFace.end(), part.nodeFace.begin(), part.nodeFace.end());
-  for (auto h : part.hexes) {
-    for (int& v : h) v += offset;
-    all.hexes.push_back(h);
-  }
-  for (auto m : part.midEdges) {
-    for (int& v : m) v += offset;
-    all.midEdges.push_back(m);
-  }
-}
-
 // The chordal surface and quad mesh of one more solid, their ids after those already there (-1 stays).
 void appendStages(MeshResult& all, const MeshResult& part) {
-  auto appendCells = [](auto& to, const auto& from, int offset) {
-    for (auto cell : from) {
-      for (int& v : cell) v += v >= 0 ? offset : 0;
-      to.push_back(cell);
-    }
-  };
   ChordalSurface& c = all.chordalSurface;
   appendCells(c.facets, part.chordalSurface.facets, static_cast<int>(c.vertices.size()));
   c.vertices.insert(c.vertices.end(), part.chordalSurface.vertices.begin(), part.chordalSurface.vertices.end());
@@ -607,7 +553,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
     all.report["solids"].push_back(one.report);
     appendSurfaceGroups(all.surfaceGroups, one.surfaceGroups, static_cast<int>(all.mesh.nodes.size()),
                         static_cast<int>(all.mesh.hexes.size()));
-    append(all.mesh, one.mesh);
+    appendHexMesh(all.mesh, one.mesh);
     appendStages(all, one);
   }
   all.scaledJacobian = reportQuality(all.mesh, cad, all.report);
