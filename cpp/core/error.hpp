@@ -30,6 +30,8 @@ inline Error usageError(const std::string& m) { return Error(ExitCode::BadUsage,
 inline Error inputError(const std::string& m) { return Error(ExitCode::BadInput, m); }
 // A valid solid this method does not handle: not thin, non-manifold chordal surface (exit 4).
 inline Error geometryError(const std::string& m) { return Error(ExitCode::UnsupportedGeometry, m); }
+// A step that should not fail did (a truncated result from a child process, data Gmsh left out) (exit 5).
+inline Error internalError(const std::string& m) { return Error(ExitCode::Internal, m); }
 // The finished mesh failed a validation check (inverted hex, not conformal, not watertight, volume);
 // nothing was written (exit 6).
 inline Error validationError(const std::string& m) { return Error(ExitCode::InvalidMesh, m); }

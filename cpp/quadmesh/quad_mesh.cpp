@@ -229,7 +229,7 @@ QuadMesh collectQuads() {
     const auto [it, added] = index.emplace(tag, static_cast<int>(q.nodes.size()));
     if (added) {
       const auto p = position.find(tag);
-      if (p == position.end()) throw std::runtime_error("Gmsh gave no coordinates for node " + std::to_string(tag));
+      if (p == position.end()) throw internalError("Gmsh gave no coordinates for node " + std::to_string(tag));
       q.nodes.push_back(p->second);
     }
     return it->second;
@@ -256,7 +256,7 @@ std::string toBytes(const QuadMesh& q) {
 
 QuadMesh fromBytes(const std::string& bytes) {
   std::size_t counts[6];
-  if (bytes.size() < sizeof counts) throw std::runtime_error("truncated quad mesh");
+  if (bytes.size() < sizeof counts) throw internalError("truncated quad mesh from the Gmsh process");
   std::memcpy(counts, bytes.data(), sizeof counts);
   QuadMesh q;
   q.nodes.resize(counts[0]);
@@ -266,7 +266,8 @@ QuadMesh fromBytes(const std::string& bytes) {
   q.holes = counts[4];
   q.structuredPatches = counts[5];
   const std::size_t nodeBytes = counts[0] * 3 * sizeof(double), quadBytes = counts[1] * sizeof(q.quads[0]);
-  if (bytes.size() != sizeof counts + nodeBytes + quadBytes) throw std::runtime_error("truncated quad mesh");
+  if (bytes.size() != sizeof counts + nodeBytes + quadBytes)
+    throw internalError("truncated quad mesh from the Gmsh process");
   const char* at = bytes.data() + sizeof counts;
   for (Vec3& p : q.nodes) std::memcpy(p.data(), at, 3 * sizeof(double)), at += 3 * sizeof(double);
   std::memcpy(static_cast<void*>(q.quads.data()), at, quadBytes);
@@ -277,11 +278,16 @@ double gmshTimeout(const ChordalSurface& chordal, double size) {
   return 60 + chordalArea(chordal) / (size * size) / 2000;
 }
 
+// One Gmsh try: its quads, or why it failed (Gmsh's error, crash or hang).
+struct GmshTry {
+  QuadMesh quads;
+  std::string failure;  // empty if the try gave quads
+};
+
 // One Gmsh run: split the chordal surface into patches, reparametrize, mesh.
 // Gmsh runs in a child process: its crashes and hangs (both seen on real parts with Gmsh 4.8) end
-// that try only. Returns no quads, and why in `error`, if Gmsh fails.
-QuadMesh gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const PatchSplit& split,
-                   std::string& error) {
+// that try only.
+GmshTry gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const PatchSplit& split) {
   const ChordalSurface& chordal = locator.surface();
   const ChildResult run = runInChildProcess(
       [&] {
@@ -306,15 +312,14 @@ QuadMesh gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, cons
         } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
           std::string last;
           gmsh::logger::getLastError(last);
-          throw std::runtime_error(last.empty() ? "unknown Gmsh error" : last);
+          throw geometryError(last.empty() ? "unknown Gmsh error" : last);
         }
       },
       o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTimeout(chordal, smallestSize(o)));
-  if (!run.ok) {
-    error = "Gmsh " + run.failure;
-    return {};
-  }
-  return fromBytes(run.output);
+  if (!run.ok) return {{}, "Gmsh " + run.failure};
+  GmshTry done{fromBytes(run.output), ""};
+  if (done.quads.quads.empty()) done.failure = "Gmsh made no quads";
+  return done;
 }
 
 // How far the quad mesh is from the chordal surface it should lie on (a failed reparametrization
@@ -484,10 +489,14 @@ QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions
     if (!scores[i].topologyChanged && scores[i].inverted == 0 && scores[i] < bestScore)
       best = std::move(blocks[i]), bestScore = scores[i];
   Vec3 failedAt = Vec3::Zero();
-  std::string gmshError;
+  std::string gmshError;  // the last try's failure, if it failed in Gmsh
   for (std::size_t i = 0; i < o.patchSplits.size() && !(bestScore.good() && bestScore.mean >= kStructuredMean); ++i) {
-    QuadMesh q = gmshQuads(chordal, o, o.patchSplits[i], gmshError);
-    if (q.quads.empty()) continue;
+    GmshTry t = gmshQuads(chordal, o, o.patchSplits[i]);
+    if (!t.failure.empty()) {
+      gmshError = t.failure;
+      continue;
+    }
+    QuadMesh& q = t.quads;
     SurfaceCheck c = onChordalSurface(q, chordal);
     if (!(c.farthest < kOffSurface * o.size)) {
       failedAt = c.farthestNode, gmshError.clear();
