@@ -10,7 +10,7 @@ packages=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev
   libgtest-dev googletest clang-format
   calculix-ccx
-  python3-meshio python3-numpy python3-gmsh python3-matplotlib
+  python3-meshio python3-numpy python3-gmsh python3-matplotlib python3-jsonschema
   pybind11-dev python3-dev
   freecad xvfb xauth
 )
