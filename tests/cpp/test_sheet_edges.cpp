@@ -1,0 +1,59 @@
+// Where one sheet runs on across a CAD edge (geometry/sheet_edges.hpp): smooth and convex edges join faces of
+// one sheet, concave ones (where a rib stands on it) do not.
+#include <gtest/gtest.h>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
+#include <algorithm>
+#include <string>
+
+#include "geometry/cad_solid.hpp"
+#include "geometry/sheet_edges.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+CadSolid readSample(const std::string& path) {
+  return prepareSolid(readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/" + path).at(0));
+}
+
+int count(const std::vector<SheetJoin>& joins, bool smooth) {
+  return static_cast<int>(
+      std::count_if(joins.begin(), joins.end(), [&](const SheetJoin& j) { return j.smooth == smooth; }));
+}
+
+}  // namespace
+
+// A box's 12 edges are all convex and sharp: 12 joins of two distinct faces (lower index first), none smooth.
+TEST(SheetEdges, ABoxHasTwelveConvexSharpJoins) {
+  const CadSolid box = prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40, 30, 2).Solid());
+  const std::vector<SheetJoin> joins = sheetJoins(box);
+  EXPECT_EQ(joins.size(), 12u);
+  EXPECT_EQ(count(joins, true), 0);
+  for (const SheetJoin& j : joins) EXPECT_LT(j.a, j.b);
+}
+
+// An L-bracket (rims/lbracket_round_ends): the bend's two cylinders meet the legs' walls at 4 tangent edges,
+// and the half-round ends meet the legs' walls at 4 more: 8 smooth joins; the rest (the side faces' edges)
+// convex and sharp.
+TEST(SheetEdges, ABendAndRoundEndsJoinSmoothly) {
+  const CadSolid cad = readSample("Resources/samples/rims/lbracket_round_ends.step");
+  const std::vector<SheetJoin> joins = sheetJoins(cad);
+  EXPECT_EQ(count(joins, true), 8);
+  EXPECT_GT(count(joins, false), 0);
+}
+
+// A rib on a plate (robustness/t_junction: a 60 x 40 x 2 plate fused with a 60 x 2 x 12 rib along its middle,
+// scripts/make_bad_inputs.py): 10 faces, 24 edges, of which the 2 where the rib's walls meet the plate's top are
+// concave: they join nothing; the other 22 are convex and sharp.
+TEST(SheetEdges, ConcaveEdgesWhereARibStandsJoinNothing) {
+  const CadSolid cad = readSample("tests/data/robustness/t_junction.step");
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(cad.solid, TopAbs_EDGE, edges);
+  ASSERT_EQ(edges.Extent(), 24);
+  const std::vector<SheetJoin> joins = sheetJoins(cad);
+  EXPECT_EQ(joins.size(), 22u);
+  EXPECT_EQ(count(joins, true), 0);
+}
