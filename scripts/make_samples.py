@@ -1000,6 +1000,37 @@ def plate_holes_rounded():
         wall="2")
 
 
+def plate_hole_near_rim():
+    return plate_rounded_holes(50.0, 30.0, [(8.0, 15.0, 4.0, 0.9, 0.9)]), dict(
+        dims="50 × 30 × 2 plate, one Ø8 through hole at (8, 15), 3.1 from the rim beyond its fillets, both "
+             "edges filleted r = 0.9 (0.45 t)",
+        wall="2")
+
+
+def plate_slot_fillet():
+    """Plate 60 x 30 x 2 with a through slot (two half circles R3 at x = 20 and 40, y = 15, joined by straight
+    sides) whose top edge is filleted r = 0.7. Volume: the plate minus the slot's area (20 x 6 + pi 3^2) x t
+    minus the fillet's spandrel A = r^2 (1 - pi/4) swept along the two straight sides (2 x 20) and, by Pappus,
+    turned half round each end at the distance of its centroid from the end's axis, 3 + r - 2 r / (3 (4 - pi))
+    (plate_rounded_holes)."""
+    L, W, t, R, r = 60.0, 30.0, 2.0, 3.0, 0.7
+    box = occ.addBox(0, 0, 0, L, W, t)
+    ends = [occ.addCylinder(x, 15, -1, 0, 0, t + 2, R) for x in (20.0, 40.0)]
+    middle = occ.addBox(20, 15 - R, -1, 20, 2 * R, t + 2)
+    slot, _ = occ.fuse([(3, ends[0])], [(3, ends[1]), (3, middle)])
+    vol = one_volume(occ.cut([(3, box)], slot)[0])
+    occ.synchronize()
+    top = [c for c in horizontal_curves(vol, t)
+           if gmsh.model.getBoundingBox(1, c)[0] > 20 - R - 1e-3 and gmsh.model.getBoundingBox(1, c)[3] < 40 + R + 1e-3]
+    assert len(top) == 4, top  # two half circles, two lines
+    one_volume(occ.fillet([vol], top, [r]))
+    A = r * r * (1 - PI / 4)
+    return L * W * t - (20 * 2 * R + PI * R * R) * t - A * (2 * 20 + 2 * PI * (R + r - 2 * r / (3 * (4 - PI)))), dict(
+        dims="60 × 30 × 2 plate, a through slot 26 × 6 (R3 ends at x = 20 and 40, y = 15) whose top edge is "
+             "filleted r = 0.7 (0.35 t)",
+        wall="2")
+
+
 # Written after PARTS, in the same session (see the note on PARTS).
 RIM_PARTS = [
     ("lbracket_round_ends", lbracket_round_ends),
@@ -1024,6 +1055,8 @@ RIM_PARTS = [
     ("plate_hole_full_round", plate_hole_full_round),
     ("plate_hole_fillet_one_side", plate_hole_fillet_one_side),
     ("plate_holes_rounded", plate_holes_rounded),
+    ("plate_hole_near_rim", plate_hole_near_rim),
+    ("plate_slot_fillet", plate_slot_fillet),
 ]
 
 RIM_README_HEAD = [
@@ -1056,7 +1089,8 @@ RIM_README_NOTES = [
     "(exact line and quarter circles, knots at the joins), extruded: one face that",
     "is partly wall and partly rim. `plate_hole*` and `plate_holes_rounded` are",
     "plates with through holes whose top and / or bottom edges are filleted (a",
-    "concave rounded rim; volumes by Pappus, see `plate_rounded_holes`).",
+    "concave rounded rim; volumes by Pappus, see `plate_rounded_holes`); `plate_hole_near_rim` has one near",
+    "the plate's rim, `plate_slot_fillet` a slot (straight and round edges) filleted on top.",
     "",
     "Made by `scripts/make_samples.py` after the parts in `..` (run it with",
     "`/usr/bin/python3`, which needs the Debian package `python3-gmsh`); licence",

@@ -5,7 +5,8 @@ and on both sides, strips cut at 45 degrees and at 70.5 degrees (a rim face 3 x 
 19.5 degrees), rims and walls split into coplanar pieces, a bend split into tangent pieces, a spherical
 cap cut by a plane (a flat rim wider than the wall), tubes cut at 45 degrees, a tapered plate, strips
 whose top wall and round end are one B-spline face (split by the mesher into a wall and a rim piece), and
-plates with holes whose edges are filleted (near-full-round, one edge only, four holes of three kinds).
+plates with holes whose edges are filleted (near-full-round, one edge only, four holes of three kinds, a hole
+near the plate's rim, a slot filleted on top).
 
 Each part with 2 and 3 layers, checked on the written .inp with tools of their own, not the mesher's
 report: every element an 8-node hex of positive volume; the mesh volume against the CAD volume that
@@ -76,7 +77,8 @@ PARTS = ["lbracket_round_ends", "uchannel_round_ends", "hat_round_ends", "plate_
          "plate_fillet_flat_fillet", "plate_chamfer_one_side", "plate_chamfer_both_sides", "strip_oblique_45",
          "strip_oblique_3x", "plate_split_rim", "plate_split_walls", "lbracket_split_bend", "cap_cut_by_plane",
          "tube_cut_45", "tube_cut_45_both", "taper_plate", "strip_skin_round", "strip_skin_round_thin",
-         "strip_skin_wrap", "plate_hole_full_round", "plate_hole_fillet_one_side", "plate_holes_rounded"]
+         "strip_skin_wrap", "plate_hole_full_round", "plate_hole_fillet_one_side", "plate_holes_rounded",
+         "plate_hole_near_rim", "plate_slot_fillet"]
 # Parts whose top wall and round end are one CAD face (split into a wall and a rim piece by the mesher, named
 # as the one face): their rim nodes lie on a face that also has wall nodes.
 MIXED = {"strip_skin_round", "strip_skin_round_thin", "strip_skin_wrap"}
