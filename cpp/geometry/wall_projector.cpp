@@ -64,6 +64,17 @@ std::optional<FacePoint> WallProjector::projectOntoRimEdgesOf(Side side, int lat
   return nearest(of, p);
 }
 
+std::optional<Vec3> WallProjector::rimMiddle(const Vec3& p) const {
+  const std::optional<FacePoint> rim = project(Side::Lateral, p);
+  if (!rim) return std::nullopt;
+  std::optional<FacePoint> top = projectOntoRimEdgesOf(Side::Top, rim->face, p);
+  std::optional<FacePoint> bottom = projectOntoRimEdgesOf(Side::Bottom, rim->face, p);
+  if (!top) top = projectOntoRimEdges(Side::Top, p);
+  if (!bottom) bottom = projectOntoRimEdges(Side::Bottom, p);
+  if (!top || !bottom) return std::nullopt;
+  return Vec3(0.5 * (top->point + bottom->point));
+}
+
 // Pieces nearest first by their boxes; a piece whose box is farther than the best point so far is skipped.
 std::optional<FacePoint> WallProjector::nearest(const std::vector<Piece>& faces, const Vec3& p) {
   const gp_Pnt point(p.x(), p.y(), p.z());

@@ -34,6 +34,11 @@ class WallProjector {
   // they do not meet.
   std::optional<FacePoint> projectOntoRimEdgesOf(Side side, int lateral, const Vec3& p) const;
 
+  // The point midway between the top and the bottom wall's rim edges nearest to p on the lateral face nearest
+  // to p (on the nearest rim edges of either wall if that face meets only one wall: a round's fillet); nullopt
+  // if there are none. The middle line of a flat rim, the axis of a round one, the middle of an oblique cut.
+  std::optional<Vec3> rimMiddle(const Vec3& p) const;
+
  private:
   struct Piece {
     TopoDS_Shape shape;  // a face, or an edge of a face

@@ -9,7 +9,6 @@
 #include <sstream>
 
 #include "bubbles/bubble_packing.hpp"
-#include "chordal/chordal_fairing.hpp"
 #include "chordal/chordal_rim.hpp"
 #include "chordal/chordal_surface.hpp"
 #include "core/append.hpp"
@@ -25,7 +24,7 @@
 #include "geometry/wall_sides.hpp"
 #include "pipeline/surface_groups.hpp"
 #include "quadmesh/quad_mesh.hpp"
-#include "quadmesh/sizing.hpp"
+#include "quadmesh/quad_stage.hpp"
 #include "quality/quality.hpp"
 #include "quality/validation.hpp"
 #include "sweep/quadratic.hpp"
@@ -41,14 +40,8 @@ namespace {
 
 constexpr int kMaxLayers = 64;
 constexpr int kMaxSplitRounds = 3;  // rounds of splitting faces that are partly wall, partly rim
-// Fairing of the chordal surface, strongest first: a faired surface gives Gmsh fewer, cleaner
-// patches, but Gmsh's reparametrization can fail on one surface and not on another.
-constexpr int kFairingIterations[] = {10, 3, 0};
 constexpr double kDefaultSizeOverThickness = 1.0;
 constexpr double kMaxAutoQuads = 250000;
-// Where top and bottom walls meet at a knife edge, the chordal surface ends where the wall is thinner than
-// this share of its median thickness.
-constexpr double kKnifeRadius = 0.3;
 // How far a rim node may move onto the rim faces, in walls: half of a rim cut obliquely 3.2 walls wide
 // (wall_sides.hpp), with room.
 constexpr double kRimReach = 1.6;
@@ -188,67 +181,6 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohman
   if (sheets.size() > 4) msg << ", ...";
   msg << "; --drop-junctions meshes the main sheet without them";
   throw geometryError(msg.str());
-}
-
-// §6: the chordal surface, faired as much as Gmsh can reparametrize (kFairingIterations, strongest
-// first), and its quad mesh: leftover triangles completed, doublets removed, smoothed on the surface.
-struct QuadStage {
-  ChordalSurface chordal;
-  QuadMesh quads;
-  std::size_t knifeFacets = 0;  // dropped where the wall runs out to a knife edge
-};
-
-const char* layoutName(QuadLayout layout) {
-  switch (layout) {
-    case QuadLayout::Grid:
-      return "grid";
-    case QuadLayout::OGrid:
-      return "o-grid";
-    case QuadLayout::Ring:
-      return "ring";
-    default:
-      return "gmsh";
-  }
-}
-
-double medianRadius(const ChordalSurface& chordal) {
-  std::vector<double> r = chordal.radius;
-  if (r.empty()) return 0;
-  std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
-  return r[r.size() / 2];
-}
-
-QuadStage quadMeshStage(const ChordalSurface& cut, const TetMesh& tets, const WallSides& sides, const MeshOptions& o,
-                        double size, nlohmann::json& r) {
-  QuadMeshOptions qo;
-  qo.size = size;
-  QuadStage stage;
-  for (const int fairing : kFairingIterations) {
-    stage.chordal = cut;
-    fairChordalSurface(stage.chordal, fairing);
-    computeNormalsAndRadius(stage.chordal, tets);
-    if (!sides.knifeEdges.empty())
-      stage.knifeFacets = trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal));
-    const ChordalLocator locator(stage.chordal);
-    if (o.sizing == "adaptive") qo.vertexSize = adaptiveSizes(stage.chordal, {size, o.minSize, o.maxSize});
-    try {
-      stage.quads = meshChordalSurface(locator, qo);
-    } catch (const Error& e) {
-      if (fairing == kFairingIterations[std::size(kFairingIterations) - 1]) throw;
-      if (o.progress) o.progress("quad_mesh: " + std::string(e.what()) + "; trying a less faired chordal surface");
-      continue;
-    }
-    r["chordal_surface"]["fairing_iterations"] = fairing;
-    r["chordal_surface"]["knife_edge_facets_dropped"] = stage.knifeFacets;
-    r["quad_mesh"]["triangles_paired"] = stage.quads.pairedTriangles;
-    r["quad_mesh"]["triangles_split"] = stage.quads.splitTriangles;
-    r["quad_mesh"]["unpaired_triangles"] = stage.quads.holes;
-    r["quad_mesh"]["doublets_removed"] = stage.quads.doubletsRemoved;
-    r["quad_mesh"]["structured_patches"] = stage.quads.structuredPatches;
-    r["quad_mesh"]["layout"] = layoutName(stage.quads.layout);
-    break;
-  }
-  return stage;
 }
 
 nlohmann::json faceSideCounts(const WallSides& sides) {
@@ -469,17 +401,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
                           {"pinched_facets_dropped", cut.pinchedFacetsDropped}};
   const WallProjector walls(cad, sides);
   const RimSnapStats snap = clock.run("chordal_rim", [&] {
-    const RimMiddle middle = [&](const Vec3& p) -> std::optional<Vec3> {
-      const std::optional<FacePoint> rim = walls.project(Side::Lateral, p);
-      if (!rim) return std::nullopt;
-      std::optional<FacePoint> top = walls.projectOntoRimEdgesOf(Side::Top, rim->face, p);
-      std::optional<FacePoint> bottom = walls.projectOntoRimEdgesOf(Side::Bottom, rim->face, p);
-      if (!top) top = walls.projectOntoRimEdges(Side::Top, p);  // a rim face on one wall only: a fillet of a round
-      if (!bottom) bottom = walls.projectOntoRimEdges(Side::Bottom, p);
-      if (!top || !bottom) return std::nullopt;
-      return 0.5 * (top->point + bottom->point);
-    };
-    return snapRimBetweenWallEdges(cut, middle, sides.thickness);
+    return snapRimBetweenWallEdges(
+        cut, [&](const Vec3& p) { return walls.rimMiddle(p); }, sides.thickness);
   });
   r["chordal_surface"]["rim"] = {{"vertices", snap.rimVertices},
                                  {"moved", snap.moved},
@@ -492,10 +415,21 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   r["small_features"] = {{"edges_shorter_than_size", small.shortEdges},
                          {"narrow_faces", small.narrowFaces},
                          {"first_at", {small.firstAt.x(), small.firstAt.y(), small.firstAt.z()}}};
-  QuadStage stage = clock.run("quad_mesh", [&] { return quadMeshStage(cut, tets, sides, o, size, r); });
+  QuadStageOptions qo;
+  qo.size = size, qo.adaptive = o.sizing == "adaptive", qo.sizing = {size, o.minSize, o.maxSize};
+  qo.knifeEdges = !sides.knifeEdges.empty(), qo.progress = o.progress;
+  QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
   const QuadMesh& quads = stage.quads;
-  r["quad_mesh"]["quads"] = quads.quads.size();
-  r["quad_mesh"]["nodes"] = quads.nodes.size();
+  r["chordal_surface"]["fairing_iterations"] = stage.fairingIterations;
+  r["chordal_surface"]["knife_edge_facets_dropped"] = stage.knifeFacets;
+  r["quad_mesh"] = {{"quads", quads.quads.size()},
+                    {"nodes", quads.nodes.size()},
+                    {"triangles_paired", quads.pairedTriangles},
+                    {"triangles_split", quads.splitTriangles},
+                    {"unpaired_triangles", quads.holes},
+                    {"doublets_removed", quads.doubletsRemoved},
+                    {"structured_patches", quads.structuredPatches},
+                    {"layout", layoutName(quads.layout)}};
   const ChordalLocator locator(stage.chordal);
   SweepResult swept = clock.run("sweep", [&] { return sweepToWalls(quads, locator, cad, sides, o.layers); });
   r["sweep"] = {{"untangled_regions", swept.untangled.regions},

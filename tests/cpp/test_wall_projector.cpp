@@ -56,3 +56,24 @@ TEST(WallProjector, CylinderShellWallsAreHitExactly) {
   EXPECT_NEAR(std::min(radii[0], radii[1]), 10, 1e-9);
   EXPECT_NEAR(std::max(radii[0], radii[1]), 12, 1e-9);
 }
+
+// The middle between the walls' rim edges (rimMiddle): on a box's flat rim, its middle line; on the strip cut at
+// 70.5 degrees, the middle of the cut (between its bottom edge at x = 0 and its top edge at x = 5.66); on the
+// plate with a near-full-round hole (R6, fillets 0.98 on both edges), the fillets' axis at radius 6.98.
+TEST(WallProjector, RimMiddleIsHalfWayBetweenTheWallsRimEdges) {
+  const CadSolid box = prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40, 30, 2).Solid());
+  const WallProjector plate(box, classifyWallSides(box));
+  EXPECT_NEAR((*plate.rimMiddle(Vec3(39.5, 10, 0.7)) - Vec3(40, 10, 1)).norm(), 0, 1e-9);
+  auto sample = [](const char* name) {
+    return prepareSolid(readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/rims/" + name).at(0));
+  };
+  const CadSolid strip = sample("strip_oblique_3x.step");
+  const WallProjector oblique(strip, classifyWallSides(strip));
+  EXPECT_NEAR((*oblique.rimMiddle(Vec3(2.5, 10, 1)) - Vec3(2 * std::sqrt(2.0), 10, 1)).norm(), 0, 1e-6);
+  const CadSolid hole = sample("plate_hole_full_round.step");
+  const WallProjector round(hole, classifyWallSides(hole));
+  const Vec3 m = *round.rimMiddle(Vec3(25 + 5.3, 15, 1.1));
+  EXPECT_NEAR(m.x(), 25 + 6.98, 1e-6);
+  EXPECT_NEAR(m.y(), 15, 1e-6);
+  EXPECT_NEAR(m.z(), 1, 1e-6);
+}
