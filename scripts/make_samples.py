@@ -976,35 +976,30 @@ def plate_rounded_holes(L, W, holes):
     return L * W * t - sum(PI * R * R * t for _, _, R, _, _ in holes) - removed
 
 
-def plate_hole_full_round():
-    return plate_rounded_holes(50.0, 30.0, [(25.0, 15.0, 6.0, 0.98, 0.98)]), dict(
-        dims="50 × 30 × 2 plate, one Ø12 through hole at (25, 15) whose top and "
-             "bottom edges are filleted r = 0.98 (0.49 t: a near-full-round hole rim)",
-        wall="2")
+def rounded_hole_plate(L, W, holes, dims):
+    """A builder for RIM_PARTS: plate_rounded_holes(L, W, holes) with its README line."""
+    return lambda: (plate_rounded_holes(L, W, holes), dict(dims=dims, wall="2"))
 
 
-def plate_hole_fillet_one_side():
-    return plate_rounded_holes(50.0, 30.0, [(25.0, 15.0, 6.0, 0.7, 0.0)]), dict(
-        dims="50 × 30 × 2 plate, one Ø12 through hole at (25, 15) whose top edge "
-             "only is filleted r = 0.7 (0.35 t)",
-        wall="2")
-
-
-def plate_holes_rounded():
-    return plate_rounded_holes(70.0, 40.0, [(14.0, 20.0, 5.0, 0.98, 0.98), (36.0, 22.0, 4.0, 0.8, 0.0),
-                                            (56.0, 14.0, 3.0, 0.5, 0.5), (56.0, 30.0, 3.5, 0.0, 0.6)]), dict(
-        dims="70 × 40 × 2 plate, four through holes with filleted edges: Ø10 at "
-             "(14, 20) near-full-round (r = 0.98 both edges), Ø8 at (36, 22) top "
-             "edge r = 0.8 (0.4 t), Ø6 at (56, 14) both edges r = 0.5, Ø7 at (56, 30) "
-             "bottom edge only r = 0.6",
-        wall="2")
-
-
-def plate_hole_near_rim():
-    return plate_rounded_holes(50.0, 30.0, [(8.0, 15.0, 4.0, 0.9, 0.9)]), dict(
-        dims="50 × 30 × 2 plate, one Ø8 through hole at (8, 15), 3.1 from the rim beyond its fillets, both "
-             "edges filleted r = 0.9 (0.45 t)",
-        wall="2")
+ROUNDED_HOLE_PLATES = [
+    ("plate_hole_full_round", rounded_hole_plate(
+        50.0, 30.0, [(25.0, 15.0, 6.0, 0.98, 0.98)],
+        "50 × 30 × 2 plate, one Ø12 through hole at (25, 15) whose top and bottom edges are filleted r = 0.98 "
+        "(0.49 t: a near-full-round hole rim)")),
+    ("plate_hole_fillet_one_side", rounded_hole_plate(
+        50.0, 30.0, [(25.0, 15.0, 6.0, 0.7, 0.0)],
+        "50 × 30 × 2 plate, one Ø12 through hole at (25, 15) whose top edge only is filleted r = 0.7 (0.35 t)")),
+    ("plate_holes_rounded", rounded_hole_plate(
+        70.0, 40.0, [(14.0, 20.0, 5.0, 0.98, 0.98), (36.0, 22.0, 4.0, 0.8, 0.0), (56.0, 14.0, 3.0, 0.5, 0.5),
+                     (56.0, 30.0, 3.5, 0.0, 0.6)],
+        "70 × 40 × 2 plate, four through holes with filleted edges: Ø10 at (14, 20) near-full-round (r = 0.98 "
+        "both edges), Ø8 at (36, 22) top edge r = 0.8 (0.4 t), Ø6 at (56, 14) both edges r = 0.5, Ø7 at "
+        "(56, 30) bottom edge only r = 0.6")),
+    ("plate_hole_near_rim", rounded_hole_plate(
+        50.0, 30.0, [(8.0, 15.0, 4.0, 0.9, 0.9)],
+        "50 × 30 × 2 plate, one Ø8 through hole at (8, 15), 3.1 from the rim beyond its fillets, both edges "
+        "filleted r = 0.9 (0.45 t)")),
+]
 
 
 def plate_slot_fillet():
@@ -1052,10 +1047,7 @@ RIM_PARTS = [
     ("strip_skin_round", strip_skin_round),
     ("strip_skin_round_thin", strip_skin_round_thin),
     ("strip_skin_wrap", strip_skin_wrap),
-    ("plate_hole_full_round", plate_hole_full_round),
-    ("plate_hole_fillet_one_side", plate_hole_fillet_one_side),
-    ("plate_holes_rounded", plate_holes_rounded),
-    ("plate_hole_near_rim", plate_hole_near_rim),
+    *ROUNDED_HOLE_PLATES,
     ("plate_slot_fillet", plate_slot_fillet),
 ]
 

@@ -18,69 +18,55 @@ CadSolid readSample(const std::string& path) {
   return prepareSolid(readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/" + path).at(0));
 }
 
-}  // namespace
-
-// strip_skin_round: 40 x 20 x 2, the top wall and the half-round end (r = 1) one face (Face1). It is split
-// once, on the knot where the line meets the circle (x = 40): a flat piece of 40 x 20 and a half cylinder of
-// pi x 20, both named Face1; the sides then find one top, one bottom and four rim faces, and no junction.
-TEST(MixedFaces, SkinOverAWallAndRoundItsEdgeIsSplitWhereTheWallEnds) {
-  const CadSolid cad = readSample("Resources/samples/rims/strip_skin_round.step");
-  const WallSides before = classifyWallSides(cad);
-  EXPECT_FALSE(before.ownSideFaces.empty()) << "whole, the skin faces itself across the wall";
-  const std::vector<FaceSplit> splits = findMixedFaces(cad, before);
-  ASSERT_EQ(splits.size(), 1u);
-  const CadSolid split = splitFaces(cad, splits);
-  ASSERT_EQ(split.faces.Extent(), cad.faces.Extent() + 1);
-  EXPECT_NEAR(split.volume, cad.volume, 2e-3 * cad.volume);
-  const WallSides after = classifyWallSides(split);
-  EXPECT_TRUE(after.ownSideFaces.empty());
-  int top = 0, bottom = 0, lateral = 0, pieces = 0;
-  for (int f = 0; f < split.faces.Extent(); ++f) {
-    const FaceSide& s = after.faces[f];
-    (s.side == Side::Top ? top : s.side == Side::Bottom ? bottom : lateral)++;
-    if (inputFaceOf(split, f) != inputFaceOf(cad, splits[0].face)) continue;
-    ++pieces;
-    if (s.side == Side::Lateral)
-      EXPECT_NEAR(s.area, M_PI * 20, 0.05) << "the half cylinder";
-    else
-      EXPECT_NEAR(s.area, 40 * 20, 0.05) << "the flat wall";
-  }
-  EXPECT_EQ(pieces, 2);
-  EXPECT_EQ(top, 1);
-  EXPECT_EQ(bottom, 1);
-  EXPECT_EQ(lateral, 4);
-  EXPECT_EQ(inputFaceName(split, 0), inputFaceName(cad, splits[0].face));
-}
-
-// strip_skin_wrap: the same strip whose top wall, round end and bottom wall are one face. It is split on two
-// knots at once (x = 40 on the top and on the bottom): three pieces named as the one input face, the half
-// cylinder between two flat walls of 40 x 20; then one top, one bottom and three rim faces (the square end, the
-// sides and the half cylinder: the box's two sides are one each).
-TEST(MixedFaces, SkinOverBothWallsAndTheirRimIsSplitTwice) {
-  const CadSolid cad = readSample("Resources/samples/rims/strip_skin_wrap.step");
+// A skin strip (40 x 20 x 2, its round end r = 1) split on `lines` parameter lines of its one skin face: as many
+// FaceSplits, all of that face; the pieces (lines + 1) named as the input face, each the half cylinder of the
+// round end (pi x 20, a rim) or a flat wall of 40 x 20; then one top, one bottom, `lateral` rim faces, no
+// junction, and the strip's volume.
+void expectSkinSplit(const std::string& sample, int lines, int lateral) {
+  SCOPED_TRACE(sample);
+  const CadSolid cad = readSample("Resources/samples/rims/" + sample);
   const std::vector<FaceSplit> splits = findMixedFaces(cad, classifyWallSides(cad));
-  ASSERT_EQ(splits.size(), 2u);
-  EXPECT_EQ(splits[0].face, splits[1].face);
+  ASSERT_EQ(static_cast<int>(splits.size()), lines);
+  for (const FaceSplit& f : splits) EXPECT_EQ(f.face, splits[0].face);
   const CadSolid split = splitFaces(cad, splits);
-  ASSERT_EQ(split.faces.Extent(), cad.faces.Extent() + 2);
+  ASSERT_EQ(split.faces.Extent(), cad.faces.Extent() + lines);
+  const double exact = (40 * 2 + M_PI / 2) * 20;  // the profile's area x 20 (OpenCASCADE's volume: to ~1e-3)
+  EXPECT_NEAR(split.volume, exact, 2e-3 * exact);
   const WallSides after = classifyWallSides(split);
   EXPECT_TRUE(after.ownSideFaces.empty());
-  int top = 0, bottom = 0, lateral = 0, pieces = 0;
+  const int skin = inputFaceOf(cad, splits[0].face);
+  int top = 0, bottom = 0, rims = 0, pieces = 0;
   for (int f = 0; f < split.faces.Extent(); ++f) {
     const FaceSide& s = after.faces[f];
-    (s.side == Side::Top ? top : s.side == Side::Bottom ? bottom : lateral)++;
-    if (inputFaceOf(split, f) != inputFaceOf(cad, splits[0].face)) continue;
+    (s.side == Side::Top ? top : s.side == Side::Bottom ? bottom : rims)++;
+    if (inputFaceOf(split, f) != skin) continue;
     ++pieces;
+    EXPECT_EQ(inputFaceName(split, f), inputFaceName(cad, splits[0].face));
     if (s.side == Side::Lateral)
       EXPECT_NEAR(s.area, M_PI * 20, 0.05) << "the half cylinder";
     else
       EXPECT_NEAR(s.area, 40 * 20, 0.05) << "a flat wall";
   }
-  EXPECT_EQ(pieces, 3);
+  EXPECT_EQ(pieces, lines + 1);
   EXPECT_EQ(top, 1);
   EXPECT_EQ(bottom, 1);
-  EXPECT_EQ(lateral, split.faces.Extent() - 2);
+  EXPECT_EQ(rims, lateral);
 }
+
+}  // namespace
+
+// strip_skin_round: the top wall and the half-round end one face (Face1), which whole faces itself across the
+// wall. It is split once, on the knot where the line meets the circle (x = 40); then four rim faces.
+TEST(MixedFaces, SkinOverAWallAndRoundItsEdgeIsSplitWhereTheWallEnds) {
+  const CadSolid cad = readSample("Resources/samples/rims/strip_skin_round.step");
+  EXPECT_FALSE(classifyWallSides(cad).ownSideFaces.empty()) << "whole, the skin faces itself across the wall";
+  expectSkinSplit("strip_skin_round.step", 1, 4);
+}
+
+// strip_skin_wrap: the top wall, the round end and the bottom wall one face. It is split on two knots at once
+// (x = 40 on the top and on the bottom); then three rim faces (the square end and the two sides) and the half
+// cylinder.
+TEST(MixedFaces, SkinOverBothWallsAndTheirRimIsSplitTwice) { expectSkinSplit("strip_skin_wrap.step", 2, 4); }
 
 // Faces that are wall or rim whole are not split: a thin box (whose top's samples near its rims do not cross
 // the wall, but do not turn away from it either), a bent sheet with round ends, a cylinder shell segment.
