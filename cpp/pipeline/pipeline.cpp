@@ -22,6 +22,7 @@
 #include "geometry/wall_projector.hpp"
 #include "geometry/wall_rays.hpp"
 #include "geometry/wall_sides.hpp"
+#include "pipeline/report.hpp"
 #include "pipeline/surface_groups.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_stage.hpp"
@@ -98,8 +99,7 @@ void requireMemory(const MeshOptions& o, const WallSides& sides, double unit, nl
   for (const FaceSide& f : sides.faces) topArea += f.side == Side::Top ? f.area : 0;
   const double size = plannedSize(o, sides);
   const MemoryEstimate m = estimateMemory(topArea, size, o.layers, o.order, machineBytes());
-  r["memory_estimate"] = {
-      {"quads", m.quads}, {"hexes", m.hexes}, {"bytes", m.bytes}, {"machine_bytes", m.machineBytes}};
+  r["memory_estimate"] = report::memory(m);
   if (m.fits()) return;
   std::ostringstream msg;
   msg << std::setprecision(3) << "quad size " << size / unit << " would need about " << m.quads << " quads, " << m.hexes
@@ -183,51 +183,16 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohman
   throw geometryError(msg.str());
 }
 
-nlohmann::json faceSideCounts(const WallSides& sides) {
-  int top = 0, bottom = 0, lateral = 0;
-  for (const FaceSide& f : sides.faces) (f.side == Side::Top ? top : f.side == Side::Bottom ? bottom : lateral)++;
-  return {{"top", top}, {"bottom", bottom}, {"lateral", lateral}};
-}
-
 // Order 2: 20-node hexes whose wall mid-edge nodes lie on the CAD walls (π_t, π_b of §3).
 nlohmann::json makeQuadratic(HexMesh& mesh, const WallProjector& walls) {
-  const QuadraticStats s = addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) { return walls.project(side, p); });
-  return {{"mid_edge_nodes", s.midNodes},
-          {"wall_mid_edge_nodes", s.wallNodes},
-          {"projected_onto_cad", s.projected},
-          {"rim_mid_edge_nodes", s.rimNodes},
-          {"rim_projected_onto_lateral_faces", s.rimProjected},
-          {"max_projection_move", s.maxProjectionMove}};
+  return report::quadratic(addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) { return walls.project(side, p); }));
 }
 
 // Writes the quality numbers into the report and returns the scaled Jacobian of every hex.
 std::vector<double> reportQuality(const HexMesh& mesh, double cadVolume, nlohmann::json& r) {
   QualityReport q = measureQuality(mesh);  // on the corners, also for 20-node hexes
-  r["order"] = mesh.quadratic() ? 2 : 1;
-  r["hexes"] = mesh.hexes.size();
-  r["nodes"] = mesh.nodes.size();
-  r["layers"] = mesh.layers;
-  r["inverted_hexes"] = q.inverted;
-  r["worst_hex_at"] = {q.worstAt.x(), q.worstAt.y(), q.worstAt.z()};
-  r["scaled_jacobian"] = {
-      {"min", q.sjMin},
-      {"avg", q.sjAvg},
-      {"histogram", {{"lo", q.sjHistogram.lo}, {"hi", q.sjHistogram.hi}, {"counts", q.sjHistogram.counts}}}};
-  r["aspect_ratio"] = {{"min", q.arMin}, {"avg", q.arAvg}, {"max", q.arMax}};
-  r["volume"] = {{"cad", cadVolume}, {"mesh", q.volume}, {"relative_error", (q.volume - cadVolume) / cadVolume}};
   const BoundaryCheck b = checkBoundary(mesh);
-  r["boundary"] = {{"faces", b.faces},
-                   {"open_edges", b.openEdges},
-                   {"non_manifold_edges", b.nonManifoldEdges},
-                   {"watertight", b.watertight()},
-                   {"euler_characteristic", b.eulerCharacteristic}};
-  r["validation"] = {{"passed", true}, {"failures", nlohmann::json::array()}};
-  for (const ValidationFailure& f : validateMesh(mesh, q, b, cadVolume)) {
-    nlohmann::json one = {{"check", f.check}, {"count", f.count}, {"message", f.message}};
-    if (f.at) one["at"] = {f.at->x(), f.at->y(), f.at->z()};
-    r["validation"]["passed"] = false;
-    r["validation"]["failures"].push_back(one);
-  }
+  report::writeMesh(mesh, q, b, cadVolume, validateMesh(mesh, q, b, cadVolume), r);
   return std::move(q.scaledJacobian);
 }
 
@@ -382,39 +347,27 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   r["faces_split"] = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r);
   r["thickness"] = sides.thickness;
-  r["faces"] = faceSideCounts(sides);
+  r["faces"] = report::faces(sides);
   requireMemory(o, sides, cad.unit, r);
   const auto nodes = clock.run("bubbles", [&] { return packBubbles(cad, sides, BubbleOptions{}); });
   r["bubbles"] = nodes.size();
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
   const TetFilterCounts dropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
-  r["tets"] = {{"delaunay", dropped.delaunay},
-               {"outside", dropped.outside},
-               {"flat", dropped.flat},
-               {"coplanar_kept", dropped.coplanar},
-               {"kept", tets.tets.size()}};
+  r["tets"] = report::tets(dropped, tets.tets.size());
   ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets, cad.unit); });
   r["tet_classes"] = classifyTets(tets);
-  r["chordal_surface"] = {{"triangles", cut.triangles},
-                          {"quads", cut.quads},
-                          {"vertices", cut.vertices.size()},
-                          {"pinched_facets_dropped", cut.pinchedFacetsDropped}};
+  r["chordal_surface"] = report::chordal(cut);
   const WallProjector walls(cad, sides);
   const RimSnapStats snap = clock.run("chordal_rim", [&] {
     return snapRimBetweenWallEdges(
         cut, [&](const Vec3& p) { return walls.rimMiddle(p); }, sides.thickness);
   });
-  r["chordal_surface"]["rim"] = {{"vertices", snap.rimVertices},
-                                 {"moved", snap.moved},
-                                 {"spikes_dropped", snap.spikesDropped},
-                                 {"largest_move", snap.largestMove / cad.unit}};
+  r["chordal_surface"]["rim"] = report::chordalRim(snap, cad.unit);
   const double size = chooseSize(o, sides, chordalArea(cut), r);
   r["size"] = size;
   r["sizing"] = o.sizing;
   const SmallFeatures small = findSmallFeatures(cad, sides, size);
-  r["small_features"] = {{"edges_shorter_than_size", small.shortEdges},
-                         {"narrow_faces", small.narrowFaces},
-                         {"first_at", {small.firstAt.x(), small.firstAt.y(), small.firstAt.z()}}};
+  r["small_features"] = report::smallFeatures(small);
   QuadStageOptions qo;
   qo.size = size, qo.adaptive = o.sizing == "adaptive", qo.sizing = {size, o.minSize, o.maxSize};
   qo.knifeEdges = !sides.knifeEdges.empty(), qo.progress = o.progress;
@@ -422,35 +375,17 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   const QuadMesh& quads = stage.quads;
   r["chordal_surface"]["fairing_iterations"] = stage.fairingIterations;
   r["chordal_surface"]["knife_edge_facets_dropped"] = stage.knifeFacets;
-  r["quad_mesh"] = {{"quads", quads.quads.size()},
-                    {"nodes", quads.nodes.size()},
-                    {"triangles_paired", quads.pairedTriangles},
-                    {"triangles_split", quads.splitTriangles},
-                    {"unpaired_triangles", quads.holes},
-                    {"doublets_removed", quads.doubletsRemoved},
-                    {"structured_patches", quads.structuredPatches},
-                    {"layout", layoutName(quads.layout)}};
+  r["quad_mesh"] = report::quadMesh(quads);
   const ChordalLocator locator(stage.chordal);
   SweepResult swept = clock.run("sweep", [&] { return sweepToWalls(quads, locator, cad, sides, o.layers); });
-  r["sweep"] = {{"untangled_regions", swept.untangled.regions},
-                {"untangling_rounds_kept", swept.untangled.improved},
-                {"worst_column_before_untangling", swept.untangled.worstBefore}};
   result.mesh = std::move(swept.mesh);
   const RimProjectionStats rim =
       clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, kRimReach * sides.thickness); });
-  r["sweep"]["rim_nodes"] = rim.rimNodes;
-  r["sweep"]["rim_nodes_on_lateral_faces"] = rim.onLateralFaces;
-  r["sweep"]["rim_columns_left_unprojected"] = rim.columnsKept;
+  r["sweep"] = report::sweep(swept.untangled, rim);
   const RimCapStats cap = clock.run("rim_cap", [&] { return capRims(result.mesh, cad, sides, walls); });
-  r["rim_cap"] = {{"rim_edges", cap.rimEdges},
-                  {"capped_edges", cap.cappedEdges},
-                  {"columns", cap.capColumns},
-                  {"hexes", cap.capHexes}};
+  r["rim_cap"] = report::rimCap(cap);
   const SmoothingStats smooth = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
-  r["smoothing"] = {{"poor_hexes", smooth.poorHexes},
-                    {"moves", smooth.nodesMoved},
-                    {"worst_before", smooth.worstBefore},
-                    {"worst_after", smooth.worstAfter}};
+  r["smoothing"] = report::smoothing(smooth);
   if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   result.chordalSurface = std::move(stage.chordal);

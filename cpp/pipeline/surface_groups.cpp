@@ -141,7 +141,7 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
 #pragma omp parallel
   {
     CadFaceProbe probe(faces);
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(static)
     for (long k = 0; k < nBoundary; ++k) {
       const int i = boundary[k];
       FacesAtPoint at = probe.facesAt(mesh.nodeFace[i], mesh.nodes[i]);
@@ -160,7 +160,7 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
 #pragma omp parallel
   {
     CadFaceProbe probe(faces);
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(static)
     for (long k = 0; k < nQuads; ++k) {
       std::size_t a = 0;
       faceOf[k] = faceOfQuad(mesh, probe, quads[k], facesOf, a);

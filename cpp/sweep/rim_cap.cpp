@@ -275,7 +275,7 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
   const int rows = capRows(layers);
 // Which edges lose enough of their profile for a cap to be worth it: their profile at their middle.
-#pragma omp parallel for schedule(dynamic, 8)
+#pragma omp parallel for schedule(static)
   for (long i = 0; i < static_cast<long>(edges.size()); ++i) {
     RimEdge& e = edges[i];
     const Column a = ends(mesh, columns[e.a]), b = ends(mesh, columns[e.b]);
@@ -295,7 +295,7 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
       const Vec3 ab = (middle(ends(mesh, columns[e.b])) - middle(ends(mesh, columns[e.a]))).normalized();
       along[e.a] += ab, along[e.b] -= ab;  // cancels where both edges are capped
     }
-#pragma omp parallel for schedule(dynamic, 8)
+#pragma omp parallel for schedule(static)
     for (long c = 0; c < static_cast<long>(columns.size()); ++c)
       caps[c] = outward[c].norm() > 0 ? layCap(rays[threadIndex()], walls, nudged(ends(mesh, columns[c]), along[c]),
                                                outward[c], layers, rows)

@@ -354,7 +354,7 @@ RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSide
   std::vector<std::vector<std::optional<FacePoint>>> to(columns.size());
   std::deque<WallRays> rays;
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
-#pragma omp parallel for schedule(dynamic, 8)
+#pragma omp parallel for schedule(static)
   for (long c = 0; c < static_cast<long>(columns.size()); ++c) {
     to[c] = layColumn(mesh, columns[c], rimFrame(mesh, columns[c], normal), rays[threadIndex()], walls, reach);
   }

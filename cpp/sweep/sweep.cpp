@@ -91,7 +91,7 @@ SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, 
   std::vector<Vec3> normal(dir.size());
   for (size_t i = 0; i < dir.size(); ++i) normal[i] = dir[i].normal;
   auto place = [&](int i) { placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, walls); };
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(static)
   for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) place(i);
   result.untangled =
       untangleSweep(q, normal, kUntangleTarget, place, [&](int j) { return columnQuality(result.mesh, j); });

@@ -144,7 +144,7 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
 #pragma omp parallel
   {
     std::optional<BRepClass3d_SolidClassifier> exact;
-#pragma omp for schedule(dynamic, 256)
+#pragma omp for schedule(static)
     for (long i = 0; i < static_cast<long>(mesh.tets.size()); ++i) {
       const auto& t = mesh.tets[i];
       int top = 0;
