@@ -24,6 +24,14 @@ bool spoiled(const Vec3& before, const Vec3& after) {
   return after.dot(before) <= kMinAreaShare * before.squaredNorm();
 }
 
+// The rim's edges (in one facet only), lower vertex first.
+std::set<std::pair<int, int>> rimEdges(const ChordalSurface& s) {
+  std::set<std::pair<int, int>> rim;
+  for (const auto& [edge, uses] : facetEdgeUses(s))
+    if (uses == 1) rim.insert(edge);
+  return rim;
+}
+
 // The rim's edges in the direction of their facets (the surface on their left seen from the top): per
 // vertex, the next and the previous rim vertex (-1 if none, or if the rim passes it twice).
 struct RimWalk {
@@ -31,15 +39,13 @@ struct RimWalk {
 };
 
 RimWalk rimWalk(const ChordalSurface& s) {
-  std::set<std::pair<int, int>> rimEdges;
-  for (const auto& [edge, uses] : facetEdgeUses(s))
-    if (uses == 1) rimEdges.insert(edge);
+  const std::set<std::pair<int, int>> rim = rimEdges(s);
   RimWalk w{std::vector<int>(s.vertices.size(), -1), std::vector<int>(s.vertices.size(), -1)};
   std::vector<int> passes(s.vertices.size(), 0);
   for (const auto& f : s.facets) {
     const int n = f[3] < 0 ? 3 : 4;
     for (int k = 0; k < n; ++k)
-      if (const int a = f[k], b = f[(k + 1) % n]; rimEdges.count(std::minmax(a, b)))
+      if (const int a = f[k], b = f[(k + 1) % n]; rim.count(std::minmax(a, b)))
         w.next[a] = b, w.previous[b] = a, ++passes[a];
   }
   for (std::size_t v = 0; v < passes.size(); ++v)
@@ -69,15 +75,13 @@ std::vector<std::optional<Vec3>> rimTargets(const ChordalSurface& s, const RimWa
 // The facets on the rim (with an edge of no other facet) that the moves of the rim vertices turn over or
 // shrink: they lie in the rim's profile, beyond where the rim goes.
 std::vector<char> spoiledRimFacets(const ChordalSurface& s, const std::vector<Vec3>& before) {
-  std::set<std::pair<int, int>> rimEdges;
-  for (const auto& [edge, uses] : facetEdgeUses(s))
-    if (uses == 1) rimEdges.insert(edge);
+  const std::set<std::pair<int, int>> rim = rimEdges(s);
   std::vector<char> spoilt(s.facets.size(), 0);
   for (std::size_t f = 0; f < s.facets.size(); ++f) {
     if (!spoiled(before[f], areaVector(s, s.facets[f]))) continue;
     const auto& facet = s.facets[f];
     const int n = facet[3] < 0 ? 3 : 4;
-    for (int k = 0; k < n; ++k) spoilt[f] |= rimEdges.count(std::minmax(facet[k], facet[(k + 1) % n])) > 0;
+    for (int k = 0; k < n; ++k) spoilt[f] |= rim.count(std::minmax(facet[k], facet[(k + 1) % n])) > 0;
   }
   return spoilt;
 }
@@ -120,7 +124,7 @@ std::size_t dropRimSpikes(ChordalSurface& s) {
     if (spikes == 0) break;
     dropped += spikes + dropPinchedFacets(s);
   }
-  dropUnusedVertices(s);
+  if (dropped) dropUnusedVertices(s);
   return dropped;
 }
 
@@ -168,11 +172,11 @@ RimSnapStats snapRimBetweenWallEdges(ChordalSurface& s, const RimMiddle& middle,
           if (to[v]) back(v), changed = true;
       }
     }
-    stats.spikesDropped += dropRimSpikes(s);
-    for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+    for (std::size_t v = 0; v < s.vertices.size(); ++v) {  // before the spikes go: they renumber the vertices
       stats.rimVertices += walk.next[v] >= 0;
       if (to[v]) ++stats.moved, stats.largestMove = std::max(stats.largestMove, (s.vertices[v] - original[v]).norm());
     }
+    stats.spikesDropped += dropRimSpikes(s);
     return stats;
   }
 }

@@ -2,10 +2,7 @@
 
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <iomanip>
-#include <iterator>
-#include <optional>
 #include <sstream>
 
 #include "bubbles/bubble_packing.hpp"
@@ -13,14 +10,11 @@
 #include "chordal/chordal_surface.hpp"
 #include "core/append.hpp"
 #include "core/error.hpp"
-#include "core/groups.hpp"
 #include "core/memory.hpp"
-#include "core/threads.hpp"
 #include "geometry/cad_faces.hpp"
 #include "geometry/mixed_faces.hpp"
 #include "geometry/sheet_junctions.hpp"
 #include "geometry/wall_projector.hpp"
-#include "geometry/wall_rays.hpp"
 #include "geometry/wall_sides.hpp"
 #include "pipeline/report.hpp"
 #include "pipeline/surface_groups.hpp"

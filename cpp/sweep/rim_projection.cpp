@@ -207,16 +207,25 @@ RimHexes rimHexes(const HexMesh& mesh, const std::vector<std::vector<int>>& colu
   return r;
 }
 
-// Every column of the mesh (layer 0 to the top), indexed by its bottom node (empty for other nodes).
+// Every column of the mesh (layer 0 to the top: the nodes above one another in the hexes, corners k, k + 4),
+// indexed by its bottom node (empty for the other nodes).
 std::vector<std::vector<int>> columnsByBottom(const HexMesh& mesh) {
   std::vector<int> above(mesh.nodes.size(), -1);
   for (const auto& h : mesh.hexes)
     for (int k = 0; k < 4; ++k) above[h[k]] = h[k + 4];
   std::vector<std::vector<int>> columns(mesh.nodes.size());
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
-    if (mesh.nodeLayer[i] == 0 && above[i] >= 0)
+    if (mesh.nodeLayer[i] == 0)
       for (int v = static_cast<int>(i); v >= 0; v = above[v]) columns[i].push_back(v);
   return columns;
+}
+
+// The rim columns among them, in the order of their bottom nodes.
+std::vector<std::vector<int>> rimColumnsOf(const HexMesh& mesh, const std::vector<std::vector<int>>& columns) {
+  std::vector<std::vector<int>> rim;
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (mesh.nodeOnRim[i] && !columns[i].empty()) rim.push_back(columns[i]);
+  return rim;
 }
 
 // The move of a rim column's wall nodes, fading over `rows` rows of the walls beside it.
@@ -273,12 +282,12 @@ std::vector<std::optional<FacePoint>> movedColumn(const HexMesh& mesh, const std
 // it: by its move times 1 - j / (rows + 1) in the j-th row (rows enough that an edge along the wall keeps
 // kKeptEdge of its length), their wall nodes projected back onto the walls (onto the walls' rim edges on another rim),
 // their inner nodes evenly on the line between. A rim column leans when its wall nodes move more than kLean of the
-// edges beside it. [in,out] mesh: the nodes of columns off the rim moved; [in] rim: the rim columns; [in,out] to: their
-// places.
-void spreadRimMoves(HexMesh& mesh, const std::vector<std::vector<int>>& rim,
-                    std::vector<std::vector<std::optional<FacePoint>>>& to, const WallProjector& walls) {
+// edges beside it. [in,out] mesh: the nodes of columns off the rim moved; [in] columns: every column
+// (columnsByBottom); [in] rim: the rim columns; [in,out] to: their places.
+void spreadRimMoves(HexMesh& mesh, const std::vector<std::vector<int>>& columns,
+                    const std::vector<std::vector<int>>& rim, std::vector<std::vector<std::optional<FacePoint>>>& to,
+                    const WallProjector& walls) {
   const std::vector<std::vector<int>> next = bottomNeighbours(mesh);
-  const std::vector<std::vector<int>> columns = columnsByBottom(mesh);
   std::vector<int> rimOf(mesh.nodes.size(), -1);
   for (std::size_t c = 0; c < rim.size(); ++c) rimOf[rim[c].front()] = static_cast<int>(c);
   std::vector<WallMove> move(mesh.nodes.size());
@@ -331,23 +340,12 @@ void spreadRimMoves(HexMesh& mesh, const std::vector<std::vector<int>>& rim,
 
 }  // namespace
 
-std::vector<std::vector<int>> rimColumns(const HexMesh& mesh) {
-  std::vector<int> above(mesh.nodes.size(), -1);
-  for (const auto& h : mesh.hexes)
-    for (int k = 0; k < 4; ++k) above[h[k]] = h[k + 4];
-  std::vector<std::vector<int>> columns;
-  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
-    if (mesh.nodeOnRim[i] && mesh.nodeLayer[i] == 0) {
-      std::vector<int> column{static_cast<int>(i)};
-      while (above[column.back()] >= 0) column.push_back(above[column.back()]);
-      columns.push_back(std::move(column));
-    }
-  return columns;
-}
+std::vector<std::vector<int>> rimColumns(const HexMesh& mesh) { return rimColumnsOf(mesh, columnsByBottom(mesh)); }
 
 RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, const WallProjector& walls,
                               double reach) {
-  const std::vector<std::vector<int>> columns = rimColumns(mesh);
+  const std::vector<std::vector<int>> all = columnsByBottom(mesh);
+  const std::vector<std::vector<int>> columns = rimColumnsOf(mesh, all);
   const std::vector<Vec3> normal = sideFaceNormals(mesh);
   // The new places first, in parallel (one ray caster per thread: OpenCASCADE's keeps state); a column's
   // depend only on where the sweep put it.
@@ -361,7 +359,7 @@ RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSide
   layCorners(cornerEdges(cad, sides, walls), mesh, columns, to, reach);
   // Then all columns at once, and back where the sweep put them those that spoil a hex (below a scaled
   // Jacobian of 0.2 and worse than before), until none does: the result does not depend on the order.
-  spreadRimMoves(mesh, columns, to, walls);
+  spreadRimMoves(mesh, all, columns, to, walls);
   RimProjectionStats stats;
   const RimHexes around = rimHexes(mesh, columns);
   std::vector<double> before(mesh.hexes.size(), 1.0);
