@@ -158,7 +158,18 @@ Vec3 alongPolyline(const std::vector<Vec3>& points, double t) {
   return points.back();
 }
 
-// Each corner edge takes the rim column whose ends are nearest to its ends (within reach): that column is laid
+// How far a rim column lies from a corner edge: the mean distance of its nodes from the points of the edge at
+// the same shares of its length (the column it would be laid as). Its nodes, not only its ends: where the swept
+// rim lies half on a face cut across it, the ends of two columns can be as near the edge's ends.
+double distanceToCorner(const HexMesh& mesh, const std::vector<int>& column, const CornerEdge& corner) {
+  const std::size_t m = column.size() - 1;
+  double sum = 0;
+  for (std::size_t k = 0; k <= m; ++k)
+    sum += (mesh.nodes[column[k]] - alongPolyline(corner.points, static_cast<double>(k) / m)).norm();
+  return sum / (m + 1);
+}
+
+// Each corner edge takes the rim column nearest to it (distanceToCorner, within reach): that column is laid
 // along the edge, its nodes at even arc lengths.
 // [in,out] to: the places of the rim columns.
 void layCorners(const std::vector<CornerEdge>& corners, const HexMesh& mesh,
@@ -166,12 +177,10 @@ void layCorners(const std::vector<CornerEdge>& corners, const HexMesh& mesh,
                 double reach) {
   for (const CornerEdge& corner : corners) {
     int best = -1;
-    double nearest = 2 * reach;
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      const double d = (mesh.nodes[columns[c].front()] - corner.points.front()).norm() +
-                       (mesh.nodes[columns[c].back()] - corner.points.back()).norm();
-      if (d < nearest) nearest = d, best = static_cast<int>(c);
-    }
+    double nearest = reach;
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      if (const double d = distanceToCorner(mesh, columns[c], corner); d < nearest)
+        nearest = d, best = static_cast<int>(c);
     if (best < 0) continue;
     const std::size_t m = columns[best].size() - 1;
     for (std::size_t k = 0; k <= m; ++k)

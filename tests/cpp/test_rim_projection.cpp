@@ -1,8 +1,10 @@
 // The rim onto the lateral faces (sweep/rim_projection.hpp) on strips whose ends are cut obliquely: every rim
 // column lies on the cut (its last hexes sheared by the cut's angle, the best a hex can do at that edge), the
 // columns beside it lean with it, and the columns at the corners with the strip's sides lie on the CAD edges
-// there, so the mesh fills the part exactly. Run on the parts as drawn and scaled by 1e-3 and 1e3.
+// there, so the mesh fills the part exactly. Run on the parts as drawn and scaled by 1e-3 and 1e3, each with its
+// planes as drawn and turned into B-spline surfaces (as many exporters and scalings write them).
 #include <gtest/gtest.h>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <TopoDS.hxx>
 #include <gp_Trsf.hxx>
@@ -17,12 +19,14 @@ using namespace hexlayer;
 
 namespace {
 
-TopoDS_Solid scaled(const std::string& sample, double factor) {
+// The sample scaled by factor, its faces B-spline surfaces if bspline.
+TopoDS_Solid scaled(const std::string& sample, double factor, bool bspline) {
   const TopoDS_Solid solid =
       readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/rims/" + sample + ".step").at(0);
   gp_Trsf scale;
   scale.SetScale(gp_Pnt(0, 0, 0), factor);
-  return TopoDS::Solid(BRepBuilderAPI_Transform(solid, scale, true).Shape());
+  const TopoDS_Shape shape = BRepBuilderAPI_Transform(solid, scale, true).Shape();
+  return TopoDS::Solid(bspline ? BRepBuilderAPI_NurbsConvert(shape, true).Shape() : shape);
 }
 
 struct Oblique {
@@ -38,16 +42,17 @@ struct Oblique {
 // node is on a lateral face, and the mesh's volume is the part's (all its boundary faces are planes).
 TEST(RimProjection, ObliqueCutsAreMeshedToTheirEdges) {
   for (const Oblique& part : {Oblique{"strip_oblique_45", M_PI / 4}, Oblique{"strip_oblique_3x", std::acos(1.0 / 3)}})
-    for (double factor : {1.0, 1e-3, 1e3}) {
-      SCOPED_TRACE(std::string(part.sample) + " x " + std::to_string(factor));
-      MeshOptions o;
-      o.layers = 2;
-      const MeshResult r = meshSolid(scaled(part.sample, factor), o);
-      EXPECT_EQ(r.report["faces"]["lateral"].get<int>(), 4) << "the cut ends are rims";
-      EXPECT_EQ(r.report["sweep"]["rim_columns_left_unprojected"].get<int>(), 0);
-      EXPECT_EQ(r.report["sweep"]["rim_nodes_on_lateral_faces"], r.report["sweep"]["rim_nodes"]);
-      EXPECT_NEAR(r.report["volume"]["relative_error"].get<double>(), 0, 1e-6);
-      EXPECT_GE(r.report["scaled_jacobian"]["min"].get<double>(), std::cos(part.tilt) - 1e-3);
-      EXPECT_EQ(r.report["inverted_hexes"].get<int>(), 0);
-    }
+    for (double factor : {1.0, 1e-3, 1e3})
+      for (bool bspline : {false, true}) {
+        SCOPED_TRACE(std::string(part.sample) + " x " + std::to_string(factor) + (bspline ? " B-spline" : ""));
+        MeshOptions o;
+        o.layers = 2;
+        const MeshResult r = meshSolid(scaled(part.sample, factor, bspline), o);
+        EXPECT_EQ(r.report["faces"]["lateral"].get<int>(), 4) << "the cut ends are rims";
+        EXPECT_EQ(r.report["sweep"]["rim_columns_left_unprojected"].get<int>(), 0);
+        EXPECT_EQ(r.report["sweep"]["rim_nodes_on_lateral_faces"], r.report["sweep"]["rim_nodes"]);
+        EXPECT_NEAR(r.report["volume"]["relative_error"].get<double>(), 0, 1e-6);
+        EXPECT_GE(r.report["scaled_jacobian"]["min"].get<double>(), std::cos(part.tilt) - 1e-3);
+        EXPECT_EQ(r.report["inverted_hexes"].get<int>(), 0);
+      }
 }
