@@ -49,6 +49,8 @@ std::string lowerExtension(const std::string& path) {
 
 // A reader gets this long, plus kReadSecondsPerMB per MB of file, before it is taken for hung.
 constexpr double kReadSeconds = 10, kReadSecondsPerMB = 20;
+// The CAD volume (the mesh's reference) to this relative error.
+constexpr double kVolumeTolerance = 1e-7;
 
 enum class Format { Step, Iges, Brep };
 
@@ -195,8 +197,8 @@ CadSolid prepareSolid(const TopoDS_Solid& input, double unit) {
   TopExp::MapShapes(cad.solid, TopAbs_FACE, cad.faces);
   TopExp::MapShapes(cad.solid, TopAbs_EDGE, cad.edges);
   TopExp::MapShapes(cad.solid, TopAbs_VERTEX, cad.vertices);
-  GProp_GProps props;
-  BRepGProp::VolumeProperties(cad.solid, props);
+  GProp_GProps props;  // adaptive, to a relative error of kVolumeTolerance: the default rule is 1 % off on B-splines
+  BRepGProp::VolumePropertiesGK(cad.solid, props, kVolumeTolerance, false, true);
   cad.volume = props.Mass();
   if (!(cad.volume > 0)) throw inputError("the solid has no positive volume (inside out or empty)");
   Bnd_Box box;

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <tuple>
 
@@ -60,6 +61,12 @@ struct Candidate {
   double misplaced;  // sample area on the wrong side of the lines (non-crossing in a wall piece, crossing in the rim
                      // piece)
   std::vector<FaceSplit> splits;  // one line, or two round a rim piece between two wall pieces
+  bool alongV;                    // the rim piece: the band [from, to) of u (alongV) or v
+  double from, to;
+  bool inRim(const RayMark& m) const {
+    const double c = alongV ? m.u : m.v;
+    return c >= from && c < to;
+  }
 };
 
 double angleDegrees(const Vec3& a, const Vec3& b) {
@@ -92,7 +99,7 @@ std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV,
       rim.normal.norm() < kOneWay * rim.area)
     return {};
   if (below.area + above.area <= 0) return {};
-  Candidate c{rim.crossing, {}};
+  Candidate c{rim.crossing, {}, alongV, from, to};
   for (const auto& [wall, beside, at] : {std::tuple{below, besideBelow, from}, std::tuple{above, besideAbove, to}}) {
     if (wall.area <= 0) continue;
     // Each piece must face one way (a band round a tube faces every way), and the two ways differ.
@@ -102,6 +109,22 @@ std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV,
     c.splits.push_back({face, alongV, at});
   }
   return c;
+}
+
+// The largest turn (degrees) from a rim sample's normal to the normal of the wall sample nearest to it in the
+// face's parameters. A rim turns away from its wall (a half-round by 180 degrees); a curved wall's band whose rays
+// leave through an oblique rim face does not (a sphere's by a few degrees), though its mean normal may.
+double largestTurn(const std::vector<RayMark>& marks, const Candidate& c) {
+  double largest = 0;
+  for (const RayMark& m : marks) {
+    if (!c.inRim(m)) continue;
+    const RayMark* nearest = nullptr;
+    double best = std::numeric_limits<double>::infinity();
+    for (const RayMark& w : marks)
+      if (const double d = std::hypot(w.u - m.u, w.v - m.v); !c.inRim(w) && d < best) best = d, nearest = &w;
+    if (nearest) largest = std::max(largest, angleDegrees(m.normal, nearest->normal));
+  }
+  return largest;
 }
 
 void keepBetter(std::optional<Candidate>& best, std::optional<Candidate> c) {
@@ -131,10 +154,9 @@ std::optional<std::vector<FaceSplit>> bestSplit(const CadSolid& cad, const FaceS
         keepBetter(bestKnot, tryBand(fs.marks, alongV, inner[i], inner[j], thickness, f));
     }
   }
-  if (bestKnot && best && bestKnot->misplaced <= best->misplaced + kKnotSlack * fs.area) return bestKnot->splits;
-  if (bestKnot && !best) return bestKnot->splits;
-  if (best) return best->splits;
-  return std::nullopt;
+  if (bestKnot && (!best || bestKnot->misplaced <= best->misplaced + kKnotSlack * fs.area)) best = bestKnot;
+  if (!best || largestTurn(fs.marks, *best) < kRimTurn) return std::nullopt;
+  return best->splits;
 }
 
 }  // namespace

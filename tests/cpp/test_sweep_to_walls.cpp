@@ -122,24 +122,6 @@ TEST(Untangle, LeavesAGoodSweepAlone) {
   for (size_t i = 0; i < dir.size(); ++i) EXPECT_EQ(dir[i], sheet.normal[i]);
 }
 
-TEST(WallRays, RaysFromTheMidPlaneEndOnTopAndBottomOnlyThroughThem) {
-  const CadSolid cad = prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40, 30, 2).Solid());
-  const WallSides sides = classifyWallSides(cad);
-  WallRays rays(cad, sides);
-  const Vec3 mid(10, 10, 1), tilted = Vec3(1, 0, 1).normalized();
-  const auto top = rays.cast(Side::Top, mid, Vec3::UnitZ(), 5),
-             bottom = rays.cast(Side::Bottom, mid, -Vec3::UnitZ(), 5);
-  ASSERT_TRUE(top && bottom);
-  EXPECT_NEAR((top->point - Vec3(10, 10, 2)).norm(), 0, 1e-9);
-  EXPECT_NEAR((bottom->point - Vec3(10, 10, 0)).norm(), 0, 1e-9);
-  EXPECT_EQ(top->face, 5) << "Face6, z = 2";
-  EXPECT_EQ(bottom->face, 4) << "Face5, z = 0";
-  EXPECT_NEAR((rays.cast(Side::Top, mid, tilted, 5)->point - Vec3(11, 10, 2)).norm(), 0, 1e-9);
-  EXPECT_FALSE(rays.cast(Side::Bottom, mid, Vec3::UnitZ(), 5)) << "the first wall up is the top";
-  EXPECT_FALSE(rays.cast(Side::Top, mid, Vec3::UnitZ(), 0.5)) << "beyond the reach";
-  EXPECT_FALSE(rays.cast(Side::Top, Vec3(39.5, 10, 1), Vec3(1, 0, 0.2).normalized(), 5)) << "out through the rim";
-}
-
 TEST(ChordalFairing, RemovesNoiseKeepsTheRimAndDoesNotShrinkACylinder) {
   // A noisy cylinder patch of radius 10 (angle 0..90°, z 0..10), grid 31 x 11, as quads.
   ChordalSurface s;
