@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "pipeline/pipeline.hpp"
+#include "pipeline/report.hpp"
 #include "pipeline/result_file.hpp"
 #include "writers/writers.hpp"
 
@@ -24,30 +25,32 @@ struct MeshCommand {
   hexlayer::MeshOptions options;
 };
 
-std::string summary(const nlohmann::json& r, const std::string& output) {
+// The quad size and the small features of one solid's report.
+void describeSizing(const hexlayer::MeshReport& r, std::ostream& s) {
+  s << " Quad size " << r.size << " (" << r.sizeSource << ").";
+  const hexlayer::SmallFeatures& f = r.smallFeatures;
+  if (f.shortEdges + f.narrowFaces > 0)
+    s << " " << f.shortEdges << " CAD edges shorter than the quad size and " << f.narrowFaces
+      << " faces narrower (the first at (" << f.firstAt.x() << ", " << f.firstAt.y() << ", " << f.firstAt.z()
+      << ")): features that small may be smoothed over.";
+}
+
+std::string summary(const hexlayer::MeshReport& r, const std::string& output) {
   std::ostringstream s;
-  const auto& sj = r["scaled_jacobian"];
-  const auto& vol = r["volume"];
-  s << std::setprecision(4) << "Wrote " << output << ": " << r["hexes"].get<size_t>() << " hexes, "
-    << r["nodes"].get<size_t>() << " nodes, " << r["layers"].get<int>() << " layers. Scaled Jacobian min "
-    << sj["min"].get<double>() << ", avg " << sj["avg"].get<double>() << ". Volume " << vol["mesh"].get<double>()
-    << " vs CAD " << vol["cad"].get<double>() << " (" << std::showpos << 100 * vol["relative_error"].get<double>()
+  const hexlayer::MeshMeasures& m = r.mesh;
+  s << std::setprecision(4) << "Wrote " << output << ": " << m.hexes << " hexes, " << m.nodes << " nodes, " << m.layers
+    << " layers. Scaled Jacobian min " << m.quality.sjMin << ", avg " << m.quality.sjAvg << ". Volume "
+    << m.quality.volume << " vs CAD " << m.cadVolume << " (" << std::showpos << 100 * m.relativeVolumeError()
     << std::noshowpos << " %).";
-  if (r.contains("size"))
-    s << " Quad size " << r["size"].get<double>() << " (" << r["size_source"].get<std::string>() << ").";
-  if (r.contains("solids")) s << " " << r["solids"].size() << " solids, each meshed on its own.";
-  if (r.contains("small_features")) {
-    const auto& f = r["small_features"];
-    if (const int n = f["edges_shorter_than_size"].get<int>() + f["narrow_faces"].get<int>(); n > 0)
-      s << " " << f["edges_shorter_than_size"].get<int>() << " CAD edges shorter than the quad size and "
-        << f["narrow_faces"].get<int>() << " faces narrower (the first at (" << f["first_at"][0].get<double>() << ", "
-        << f["first_at"][1].get<double>() << ", " << f["first_at"][2].get<double>()
-        << ")): features that small may be smoothed over.";
+  if (!r.solids.empty()) {
+    s << " " << r.solids.size() << " solids, each meshed on its own.";
+    return s.str();
   }
-  if (r.contains("timings_s")) {
+  describeSizing(r, s);
+  if (!r.stages.empty()) {
     s << " Time:";
-    for (const auto& [stage, t] : r["timings_s"].items())
-      s << " " << stage << " " << std::fixed << std::setprecision(2) << t.get<double>() << " s" << std::defaultfloat;
+    for (const auto& [stage, t] : r.stages)
+      s << " " << stage << " " << std::fixed << std::setprecision(2) << t.seconds << " s" << std::defaultfloat;
     s << ".";
   }
   return s.str();
@@ -89,15 +92,15 @@ int runMesh(MeshCommand& c) {
   std::vector<hexlayer::CellField> fields;
   if (!result.mesh.hexes.empty()) fields.push_back({"scaled_jacobian", result.scaledJacobian});
   hexlayer::writeMesh(c.output, result.mesh, {result.nodeSets, result.surfaceGroups, fields});
-  if (!c.report.empty()) writeReport(c.report, result.report);
+  if (!c.report.empty()) writeReport(c.report, hexlayer::toJson(result.report));
   if (!c.quiet && !c.machine) std::cout << summary(result.report, c.output) << std::endl;
-  for (const auto& f : result.report["validation"]["failures"])  // only with --force: else meshFile threw
-    std::cerr << "hexlayer: warning: validation failed (written because of --force): "
-              << f["message"].get<std::string>() << std::endl;
-  if (const auto& b = result.report["boundary"]; !b["same_topology_as_cad"].get<bool>())
-    std::cerr << "hexlayer: warning: the mesh boundary has Euler characteristic " << b["euler_characteristic"]
-              << " but the part " << b["cad_euler_characteristic"]
-              << ": the mesh has a hole the part does not have, or fills one it has" << std::endl;
+  const hexlayer::MeshMeasures& m = result.report.mesh;
+  for (const hexlayer::ValidationFailure& f : m.failures)  // only with --force: else meshFile threw
+    std::cerr << "hexlayer: warning: validation failed (written because of --force): " << f.message << std::endl;
+  if (!m.sameTopologyAsCad())
+    std::cerr << "hexlayer: warning: the mesh boundary has Euler characteristic " << m.boundary.eulerCharacteristic
+              << " but the part " << m.cadEuler << ": the mesh has a hole the part does not have, or fills one it has"
+              << std::endl;
   return 0;
 }
 

@@ -16,7 +16,7 @@
 #include "geometry/sheet_junctions.hpp"
 #include "geometry/wall_projector.hpp"
 #include "geometry/wall_sides.hpp"
-#include "pipeline/report.hpp"
+#include "pipeline/mesh_report.hpp"
 #include "pipeline/surface_groups.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_stage.hpp"
@@ -41,18 +41,18 @@ constexpr double kMaxAutoQuads = 250000;
 // (wall_sides.hpp), with room.
 constexpr double kRimReach = 1.6;
 
-// Runs one stage, records its wall time in report["timings_s"][name] and the process's peak memory
-// at its end in report["peak_memory_mib"][name], and reports progress.
+// Runs one stage, records its wall time and the process's peak memory at its end in stages[name], and reports
+// progress.
 class StageClock {
  public:
-  StageClock(nlohmann::json& report, const MeshOptions& options) : report_(report), options_(options) {}
+  StageClock(std::map<std::string, StageTime>& stages, const MeshOptions& options)
+      : stages_(stages), options_(options) {}
   template <class F>
   auto run(const std::string& name, F&& stage) {
     const auto start = std::chrono::steady_clock::now();
     auto result = stage();
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    report_["timings_s"][name] = s;
-    report_["peak_memory_mib"][name] = peakMemoryMiB();
+    stages_[name] = {s, peakMemoryMiB()};
     if (options_.progress) {
       std::ostringstream line;
       line << name << ": " << std::fixed << std::setprecision(2) << s << " s";
@@ -62,7 +62,7 @@ class StageClock {
   }
 
  private:
-  nlohmann::json& report_;
+  std::map<std::string, StageTime>& stages_;
   const MeshOptions& options_;
 };
 
@@ -75,26 +75,26 @@ double plannedSize(const MeshOptions& o, const WallSides& sides) {
 }
 
 // The quad size used: the planned one, made coarser by default if the part would need too many quads.
-double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalArea, nlohmann::json& report) {
+// [out] source: how it was chosen.
+double chooseSize(const MeshOptions& o, const WallSides& sides, double chordalArea, std::string& source) {
   const double planned = plannedSize(o, sides);
   if (o.size > 0 || o.aspect > 0) {
-    report["size_source"] = o.size > 0 ? "given" : "aspect x wall thickness / layers";
+    source = o.size > 0 ? "given" : "aspect x wall thickness / layers";
     return planned;
   }
-  report["size_source"] = "auto: wall thickness (at most " + std::to_string(int(kMaxAutoQuads)) + " quads)";
+  source = "auto: wall thickness (at most " + std::to_string(int(kMaxAutoQuads)) + " quads)";
   return std::max(planned, std::sqrt(chordalArea / kMaxAutoQuads));
 }
 
 // Refuses, before meshing, a size that would need more memory than the machine has (estimateMemory: quads
-// from the top wall's area).
+// from the top wall's area); returns the estimate.
 // unit: pipeline lengths per input length (CadSolid::unit), for the message.
-void requireMemory(const MeshOptions& o, const WallSides& sides, double unit, nlohmann::json& r) {
+MemoryEstimate requireMemory(const MeshOptions& o, const WallSides& sides, double unit) {
   double topArea = 0;
   for (const FaceSide& f : sides.faces) topArea += f.side == Side::Top ? f.area : 0;
   const double size = plannedSize(o, sides);
   const MemoryEstimate m = estimateMemory(topArea, size, o.layers, o.order, machineBytes());
-  r["memory_estimate"] = report::memory(m);
-  if (m.fits()) return;
+  if (m.fits()) return m;
   std::ostringstream msg;
   msg << std::setprecision(3) << "quad size " << size / unit << " would need about " << m.quads << " quads, " << m.hexes
       << " hexes and " << m.bytes / 1e9 << " GB of memory (estimated), more than this machine's "
@@ -138,29 +138,25 @@ std::string describeSheet(const CadSolid& cad, const Sheet& s) {
   return out.str();
 }
 
-nlohmann::json junctionReport(const CadSolid& cad, const Sheet& s) {
-  return {{"at", {s.centre.x(), s.centre.y(), s.centre.z()}},
-          {"faces", faceNames(cad, s)},
-          {"area", s.area},
-          {"volume", s.volume}};
+JunctionRecord junctionRecord(const CadSolid& cad, const Sheet& s) {
+  return {s.centre, faceNames(cad, s), s.area, s.volume};
 }
 
 // Ribs, bosses and flanges standing on the sheet (T-junctions, where the chordal surface would be
 // non-manifold), found two ways: sheets that meet only along concave edges, and walls whose rays cross to
-// a wall on their own side. Refused, or left out with dropJunctions; they are listed in the report.
-// Returns the estimated volume left out.
-double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohmann::json& report) {
-  report["junctions"] = nlohmann::json::array();
+// a wall on their own side. Refused, or left out with dropJunctions. [in,out] sides: the junctions' faces made
+// lateral; [out] junctions: each listed. Returns the estimated volume left out.
+double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, std::vector<JunctionRecord>& junctions) {
   double leftOut = 0;
   if (!sides.ownSideFaces.empty()) {
     if (!drop) throw ownSideError(cad, sides);
     const Sheet branch = sheetOf(cad, sides, sides.ownSideFaces);
-    report["junctions"].push_back(junctionReport(cad, branch));
+    junctions.push_back(junctionRecord(cad, branch));
     leftOut += branch.volume;
     for (int f : sides.ownSideFaces) sides.faces[f].side = Side::Lateral;
   }
   const std::vector<Sheet> sheets = findSheets(cad, sides);
-  for (std::size_t s = 1; s < sheets.size(); ++s) report["junctions"].push_back(junctionReport(cad, sheets[s]));
+  for (std::size_t s = 1; s < sheets.size(); ++s) junctions.push_back(junctionRecord(cad, sheets[s]));
   if (sheets.size() < 2) return leftOut;
   if (drop) {
     keepFirstSheet(sheets, sides);
@@ -178,23 +174,38 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, nlohman
 }
 
 // Order 2: 20-node hexes whose wall mid-edge nodes lie on the CAD walls (π_t, π_b of §3).
-nlohmann::json makeQuadratic(HexMesh& mesh, const WallProjector& walls) {
-  return report::quadratic(addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) { return walls.project(side, p); }));
+QuadraticStats makeQuadratic(HexMesh& mesh, const WallProjector& walls) {
+  return addMidEdgeNodes(mesh, [&](Side side, const Vec3& p) { return walls.project(side, p); });
 }
 
-// Writes the quality numbers into the report and returns the scaled Jacobian of every hex.
-std::vector<double> reportQuality(const HexMesh& mesh, double cadVolume, nlohmann::json& r) {
-  QualityReport q = measureQuality(mesh);  // on the corners, also for 20-node hexes
-  const BoundaryCheck b = checkBoundary(mesh);
-  report::writeMesh(mesh, q, b, cadVolume, validateMesh(mesh, q, b, cadVolume), r);
-  return std::move(q.scaledJacobian);
+// The mesh's counts, quality (on the corners, also for 20-node hexes) and boundary, without the CAD's numbers
+// and validation. [out] scaledJacobian: of every hex.
+MeshMeasures measureMesh(const HexMesh& mesh, std::vector<double>& scaledJacobian) {
+  MeshMeasures m;
+  m.order = mesh.quadratic() ? 2 : 1;
+  m.hexes = mesh.hexes.size(), m.nodes = mesh.nodes.size(), m.layers = mesh.layers;
+  m.quality = measureQuality(mesh);
+  m.boundary = checkBoundary(mesh);
+  scaledJacobian = std::move(m.quality.scaledJacobian);
+  m.quality.scaledJacobian.clear();
+  return m;
+}
+
+// One solid's mesh measured and validated against the CAD's volume and Euler characteristic.
+// [out] scaledJacobian: of every hex.
+MeshMeasures measureSolidMesh(const HexMesh& mesh, double cadVolume, long cadEuler,
+                              std::vector<double>& scaledJacobian) {
+  MeshMeasures m = measureMesh(mesh, scaledJacobian);
+  m.cadVolume = cadVolume, m.cadEuler = cadEuler;
+  m.failures = validateMesh(mesh, m.quality, m.boundary, cadVolume);
+  return m;
 }
 
 // A mesh that failed a validation check is not handed on, unless the caller forces it.
-void enforceValidation(const nlohmann::json& r, const MeshOptions& o) {
-  if (o.force || r["validation"]["passed"].get<bool>()) return;
+void enforceValidation(const MeshMeasures& m, const MeshOptions& o) {
+  if (o.force || m.passed()) return;
   std::string message = "the mesh failed validation, nothing written (--force writes it anyway):";
-  for (const auto& f : r["validation"]["failures"]) message += " " + f["message"].get<std::string>() + ";";
+  for (const ValidationFailure& f : m.failures) message += " " + f.message + ";";
   message.back() = '.';
   throw validationError(message);
 }
@@ -205,13 +216,6 @@ double aspectHit(const HexMesh& mesh, double aspect) {
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
     hit += std::abs(hexAspectRatio(hexCorners(mesh, h)) - aspect) <= 0.1 * aspect;
   return mesh.hexes.empty() ? 0 : static_cast<double>(hit) / mesh.hexes.size();
-}
-
-// A mesh with a hole the part does not have (or without one it has) differs from the CAD in the
-// Euler characteristic of its boundary.
-void compareTopology(nlohmann::json& r, long cadEuler) {
-  r["boundary"]["cad_euler_characteristic"] = cadEuler;
-  r["boundary"]["same_topology_as_cad"] = r["boundary"]["euler_characteristic"].get<long>() == cadEuler;
 }
 
 std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
@@ -244,16 +248,17 @@ std::vector<SurfaceGroup> groupsOfInputFaces(std::vector<SurfaceGroup> pieces, c
   return merged;
 }
 
-// The mesh's boundary on the CAD faces (FreeCAD's FaceN): surface groups and boundary deviation in the report.
+// The mesh's boundary on the CAD faces (FreeCAD's FaceN). [in,out] mesh: every boundary node given a CAD face;
+// [out] r: the surface groups' statistics and the boundary deviation.
 std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, const WallProjector& walls,
-                                         nlohmann::json& r) {
+                                         MeshReport& r) {
   const std::vector<BoundaryFace> quads = boundaryFaces(mesh);  // sorted by hex, then local face
   const std::vector<int> boundary = boundaryNodes(mesh, quads);
   const std::size_t unplaced = faceUnplacedNodes(mesh, walls, boundary);
   SurfaceGroups s = surfaceGroups(mesh, CadFaces(cad), quads, boundary);
-  r["surface_groups"] = std::move(s.surfaceReport);
-  r["surface_groups"]["nodes_not_put_on_cad"] = unplaced;
-  r["boundary_deviation"] = std::move(s.deviationReport);
+  r.surfaceGroups = s.stats;
+  r.surfaceGroups.nodesNotPutOnCad = unplaced;
+  r.boundaryDeviation = std::move(s.deviation);
   if (cad.inputFace.empty()) return std::move(s.groups);
   // Faces split into pieces (mixed_faces.hpp): the input's faces, as the user's part has them.
   for (int& f : mesh.nodeFace) f = inputFaceOf(cad, f);
@@ -270,19 +275,6 @@ void appendStages(MeshResult& all, const MeshResult& part) {
   q.nodes.insert(q.nodes.end(), part.quadMesh.nodes.begin(), part.quadMesh.nodes.end());
 }
 
-// Several solids are separate bodies (nodes where two touch are not shared): their validations,
-// each failure prefixed with its solid.
-nlohmann::json validationOfSolids(const nlohmann::json& solids) {
-  nlohmann::json v = {{"passed", true}, {"failures", nlohmann::json::array()}};
-  for (std::size_t i = 0; i < solids.size(); ++i)
-    for (nlohmann::json f : solids[i]["validation"]["failures"]) {
-      f["message"] = "solid " + std::to_string(i + 1) + ": " + f["message"].get<std::string>();
-      v["passed"] = false;
-      v["failures"].push_back(f);
-    }
-  return v;
-}
-
 // The options' lengths in the pipeline's units (CadSolid::unit per input length).
 MeshOptions inPipelineUnits(MeshOptions o, double unit) {
   o.size *= unit, o.minSize *= unit, o.maxSize *= unit;
@@ -290,26 +282,13 @@ MeshOptions inPipelineUnits(MeshOptions o, double unit) {
 }
 
 // The mesh, the chordal surface, the quad mesh and the report's lengths so far back in the input's units.
-void toInputUnits(MeshResult& result, nlohmann::json& r, double unit) {
+void toInputUnits(MeshResult& result, double unit) {
+  toInputUnits(result.report, unit);
   if (unit == 1) return;
   for (Vec3& p : result.mesh.nodes) p /= unit;
   for (Vec3& p : result.chordalSurface.vertices) p /= unit;
   for (double& radius : result.chordalSurface.radius) radius /= unit;
   for (Vec3& p : result.quadMesh.nodes) p /= unit;
-  auto length = [&](nlohmann::json& j, double power) {
-    if (j.is_number())
-      j = j.get<double>() / std::pow(unit, power);
-    else if (j.is_array())
-      for (auto& x : j) x = x.get<double>() / unit;  // a point
-  };
-  length(r["thickness"], 1);
-  length(r["size"], 1);
-  length(r["small_features"]["first_at"], 1);
-  for (auto& j : r["junctions"]) length(j["at"], 1), length(j["area"], 2), length(j["volume"], 3);
-  nlohmann::json& deviation = r["boundary_deviation"];
-  for (const char* key : {"max", "mean", "worst_at"})
-    if (deviation.contains(key)) length(deviation[key], 1);
-  if (r.contains("quadratic")) length(r["quadratic"]["max_projection_move"], 1);
 }
 
 }  // namespace
@@ -332,68 +311,64 @@ void validateOptions(const MeshOptions& o) {
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   validateOptions(given);
   MeshResult result;
-  nlohmann::json& r = result.report;
-  StageClock clock(r, given);
+  MeshReport& r = result.report;
+  StageClock clock(r.stages, given);
   // Every stage up to the surface groups works on the part scaled to one size (normalizingUnit).
   CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid, normalizingUnit(solid)); });
   const MeshOptions o = inPipelineUnits(given, cad.unit);
   WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
-  r["faces_split"] = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
-  const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r);
-  r["thickness"] = sides.thickness;
-  r["faces"] = report::faces(sides);
-  requireMemory(o, sides, cad.unit, r);
+  r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
+  const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r.junctions);
+  r.thickness = sides.thickness;
+  r.faces = countFaces(sides);
+  r.memory = requireMemory(o, sides, cad.unit);
   const auto nodes = clock.run("bubbles", [&] { return packBubbles(cad, sides, BubbleOptions{}); });
-  r["bubbles"] = nodes.size();
+  r.bubbles = nodes.size();
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
-  const TetFilterCounts dropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
-  r["tets"] = report::tets(dropped, tets.tets.size());
+  r.tetsDropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
+  r.tetsKept = tets.tets.size();
   ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets, cad.unit); });
-  r["tet_classes"] = classifyTets(tets);
-  r["chordal_surface"] = report::chordal(cut);
+  r.tetClasses = classifyTets(tets);
+  r.chordal = countChordal(cut);
   const WallProjector walls(cad, sides);
-  const RimSnapStats snap = clock.run("chordal_rim", [&] {
+  r.chordal.rim = clock.run("chordal_rim", [&] {
     return snapRimBetweenWallEdges(
         cut, [&](const Vec3& p) { return walls.rimMiddle(p); }, sides.thickness);
   });
-  r["chordal_surface"]["rim"] = report::chordalRim(snap, cad.unit);
-  const double size = chooseSize(o, sides, chordalArea(cut), r);
-  r["size"] = size;
-  r["sizing"] = o.sizing;
-  const SmallFeatures small = findSmallFeatures(cad, sides, size);
-  r["small_features"] = report::smallFeatures(small);
+  r.size = chooseSize(o, sides, chordalArea(cut), r.sizeSource);
+  r.sizing = o.sizing;
+  r.smallFeatures = findSmallFeatures(cad, sides, r.size);
   QuadStageOptions qo;
-  qo.size = size, qo.adaptive = o.sizing == "adaptive", qo.sizing = {size, o.minSize, o.maxSize};
+  qo.size = r.size, qo.adaptive = o.sizing == "adaptive", qo.sizing = {r.size, o.minSize, o.maxSize};
   qo.knifeEdges = !sides.knifeEdges.empty(), qo.progress = o.progress;
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
   const QuadMesh& quads = stage.quads;
-  r["chordal_surface"]["fairing_iterations"] = stage.fairingIterations;
-  r["chordal_surface"]["knife_edge_facets_dropped"] = stage.knifeFacets;
-  r["quad_mesh"] = report::quadMesh(quads);
+  r.chordal.fairingIterations = stage.fairingIterations;
+  r.chordal.knifeFacetsDropped = stage.knifeFacets;
+  r.quadMesh = countQuadMesh(quads);
   const ChordalLocator locator(stage.chordal);
   SweepResult swept = clock.run("sweep", [&] { return sweepToWalls(quads, locator, cad, sides, o.layers); });
   result.mesh = std::move(swept.mesh);
-  const RimProjectionStats rim =
+  r.untangled = swept.untangled;
+  r.rimProjection =
       clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, kRimReach * sides.thickness); });
-  r["sweep"] = report::sweep(swept.untangled, rim);
-  const RimCapStats cap = clock.run("rim_cap", [&] { return capRims(result.mesh, cad, sides, walls); });
-  r["rim_cap"] = report::rimCap(cap);
-  const SmoothingStats smooth = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
-  r["smoothing"] = report::smoothing(smooth);
-  if (o.order == 2) r["quadratic"] = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
+  r.rimCap = clock.run("rim_cap", [&] { return capRims(result.mesh, cad, sides, walls); });
+  r.smoothing = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
+  if (o.order == 2) r.quadratic = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   result.chordalSurface = std::move(stage.chordal);
   result.quadMesh = std::move(stage.quads);
   // From here on, the input's units.
-  toInputUnits(result, r, cad.unit);
+  toInputUnits(result, cad.unit);
   const double unit3 = cad.unit * cad.unit * cad.unit;
-  result.scaledJacobian =
-      clock.run("quality", [&] { return reportQuality(result.mesh, (cad.volume - leftOut) / unit3, r); });
-  r["volume"]["junctions_left_out"] = leftOut / unit3;  // "cad" is the part's volume without them
-  compareTopology(r, eulerCharacteristic(cad));
-  if (o.aspect > 0) r["aspect_ratio_hit"] = aspectHit(result.mesh, o.aspect);
+  const long cadEuler = eulerCharacteristic(cad);
+  r.mesh = clock.run("quality", [&] {
+    return measureSolidMesh(result.mesh, (cad.volume - leftOut) / unit3, cadEuler, result.scaledJacobian);
+  });
+  r.junctionsLeftOut = leftOut / unit3;  // the mesh's CAD volume is the part's without them
+  if (o.aspect > 0) r.aspectRatioHit = aspectHit(result.mesh, o.aspect);
   result.nodeSets = surfaceNodeSets(result.mesh);
-  enforceValidation(r, o);
+  enforceValidation(r.mesh, o);
   return result;
 }
 
@@ -402,7 +377,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
   const std::vector<TopoDS_Solid> solids = readSolids(path);
   if (solids.size() == 1) return meshSolid(solids[0], o);
   MeshResult all;  // several solids: mesh each, one report per solid plus the totals
-  double cad = 0;
+  std::vector<MeshReport> reports;
   for (size_t i = 0; i < solids.size(); ++i) {
     const std::string which = "solid " + std::to_string(i + 1) + " of " + std::to_string(solids.size());
     if (o.progress) o.progress(which);
@@ -412,18 +387,14 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
     } catch (const Error& e) {
       throw Error(e.code(), which + ": " + e.what());
     }
-    cad += one.report["volume"]["cad"].get<double>();
-    all.report["solids"].push_back(one.report);
+    reports.push_back(std::move(one.report));
     appendSurfaceGroups(all.surfaceGroups, one.surfaceGroups, static_cast<int>(all.mesh.nodes.size()),
                         static_cast<int>(all.mesh.hexes.size()));
     appendHexMesh(all.mesh, one.mesh);
     appendStages(all, one);
   }
-  all.scaledJacobian = reportQuality(all.mesh, cad, all.report);
-  long cadEuler = 0;
-  for (const auto& one : all.report["solids"]) cadEuler += one["boundary"]["cad_euler_characteristic"].get<long>();
-  compareTopology(all.report, cadEuler);
-  all.report["validation"] = validationOfSolids(all.report["solids"]);
+  // Separate bodies (nodes where two touch are not shared): validated each on its own, not together.
+  all.report = mergeSolids(std::move(reports), measureMesh(all.mesh, all.scaledJacobian));
   all.nodeSets = surfaceNodeSets(all.mesh);
   return all;
 }

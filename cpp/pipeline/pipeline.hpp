@@ -2,13 +2,13 @@
 // surface -> quad mesh -> sweep -> quality. Each stage is a call into its own folder.
 #pragma once
 #include <functional>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "chordal/chordal_surface.hpp"
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
+#include "pipeline/mesh_report.hpp"
 #include "quadmesh/quad_mesh.hpp"
 
 namespace hexlayer {
@@ -29,7 +29,7 @@ struct MeshResult {
   HexMesh mesh;                             // all solids of the input, one conformal mesh per solid
   std::vector<NodeSet> nodeSets;            // TOP, BOTTOM, RIM
   std::vector<SurfaceGroup> surfaceGroups;  // one per CAD face, Face1..FaceN as FreeCAD numbers them
-  nlohmann::json report;                    // numbers of every stage, see README "Report"
+  MeshReport report;                        // numbers of every stage; toJson (report.hpp) writes them
   std::vector<double> scaledJacobian;       // per hex, as measured for the report
   // The stages as used (§5-6), for looking at them: the (faired) chordal surface the quad mesh was made on,
   // and that quad mesh, which the sweep turned into the hexes (mesh.nodeLayer: each node's layer).

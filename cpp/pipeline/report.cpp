@@ -1,17 +1,11 @@
 #include "pipeline/report.hpp"
 
-namespace hexlayer::report {
+namespace hexlayer {
 namespace {
 
 nlohmann::json point(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
-}  // namespace
-
-nlohmann::json faces(const WallSides& sides) {
-  int top = 0, bottom = 0, lateral = 0;
-  for (const FaceSide& f : sides.faces) (f.side == Side::Top ? top : f.side == Side::Bottom ? bottom : lateral)++;
-  return {{"top", top}, {"bottom", bottom}, {"lateral", lateral}};
-}
+nlohmann::json faces(const FaceCounts& f) { return {{"top", f.top}, {"bottom", f.bottom}, {"lateral", f.lateral}}; }
 
 nlohmann::json memory(const MemoryEstimate& m) {
   return {{"quads", m.quads}, {"hexes", m.hexes}, {"bytes", m.bytes}, {"machine_bytes", m.machineBytes}};
@@ -25,33 +19,36 @@ nlohmann::json tets(const TetFilterCounts& dropped, std::size_t kept) {
           {"kept", kept}};
 }
 
-nlohmann::json chordal(const ChordalSurface& cut) {
-  return {{"triangles", cut.triangles},
-          {"quads", cut.quads},
-          {"vertices", cut.vertices.size()},
-          {"pinched_facets_dropped", cut.pinchedFacetsDropped}};
-}
-
-nlohmann::json chordalRim(const RimSnapStats& s, double unit) {
+nlohmann::json chordalRim(const RimSnapStats& s) {
   return {{"vertices", s.rimVertices},
           {"moved", s.moved},
           {"spikes_dropped", s.spikesDropped},
-          {"largest_move", s.largestMove / unit}};
+          {"largest_move", s.largestMove}};
+}
+
+nlohmann::json chordal(const ChordalRecord& c) {
+  return {{"triangles", c.triangles},
+          {"quads", c.quads},
+          {"vertices", c.vertices},
+          {"pinched_facets_dropped", c.pinchedFacetsDropped},
+          {"rim", chordalRim(c.rim)},
+          {"fairing_iterations", c.fairingIterations},
+          {"knife_edge_facets_dropped", c.knifeFacetsDropped}};
 }
 
 nlohmann::json smallFeatures(const SmallFeatures& s) {
   return {{"edges_shorter_than_size", s.shortEdges}, {"narrow_faces", s.narrowFaces}, {"first_at", point(s.firstAt)}};
 }
 
-nlohmann::json quadMesh(const QuadMesh& q) {
-  return {{"quads", q.quads.size()},
-          {"nodes", q.nodes.size()},
+nlohmann::json quadMesh(const QuadMeshCounts& q) {
+  return {{"quads", q.quads},
+          {"nodes", q.nodes},
           {"triangles_paired", q.pairedTriangles},
           {"triangles_split", q.splitTriangles},
           {"unpaired_triangles", q.holes},
           {"doublets_removed", q.doubletsRemoved},
           {"structured_patches", q.structuredPatches},
-          {"layout", layoutName(q.layout)}};
+          {"layout", q.layout}};
 }
 
 nlohmann::json sweep(const UntangleResult& u, const RimProjectionStats& rim) {
@@ -83,6 +80,39 @@ nlohmann::json quadratic(const QuadraticStats& s) {
           {"max_projection_move", s.maxProjectionMove}};
 }
 
+nlohmann::json surfaceGroups(const SurfaceGroupStats& s) {
+  return {{"cad_faces", s.cadFaces},
+          {"meshed_cad_faces", s.meshedCadFaces},
+          {"boundary_nodes", s.boundaryNodes},
+          {"nodes_on_several_faces", s.nodesOnSeveralFaces},
+          {"element_faces", s.elementFaces},
+          {"element_faces_across_cad_edges", s.elementFacesAcrossCadEdges},
+          {"nodes_not_put_on_cad", s.nodesNotPutOnCad}};
+}
+
+nlohmann::json deviation(const BoundaryDeviation& d) {
+  const OffFaceCounts& off = d.offFaceTolerance;
+  nlohmann::json r = {{"nodes", d.nodes},
+                      {"max", d.max},
+                      {"mean", d.mean},
+                      {"max_relative", d.maxRelative},
+                      {"mean_relative", d.meanRelative},
+                      {"off_face_tolerance",
+                       {{"wall_corners", off.wallCorners},
+                        {"rim_corners", off.rimCorners},
+                        {"wall_mid_edge", off.wallMidEdge},
+                        {"rim_mid_edge", off.rimMidEdge}}}};
+  if (d.worstAt) r["worst_at"] = point(*d.worstAt), r["worst_face"] = d.worstFace;
+  return r;
+}
+
+nlohmann::json junctions(const std::vector<JunctionRecord>& list) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const JunctionRecord& j : list)
+    all.push_back({{"at", point(j.at)}, {"faces", j.faces}, {"area", j.area}, {"volume", j.volume}});
+  return all;
+}
+
 nlohmann::json validation(const std::vector<ValidationFailure>& failures) {
   nlohmann::json v = {{"passed", failures.empty()}, {"failures", nlohmann::json::array()}};
   for (const ValidationFailure& f : failures) {
@@ -93,26 +123,80 @@ nlohmann::json validation(const std::vector<ValidationFailure>& failures) {
   return v;
 }
 
-void writeMesh(const HexMesh& mesh, const QualityReport& q, const BoundaryCheck& b, double cadVolume,
-               const std::vector<ValidationFailure>& failures, nlohmann::json& r) {
-  r["order"] = mesh.quadratic() ? 2 : 1;
-  r["hexes"] = mesh.hexes.size();
-  r["nodes"] = mesh.nodes.size();
-  r["layers"] = mesh.layers;
-  r["inverted_hexes"] = q.inverted;
-  r["worst_hex_at"] = point(q.worstAt);
-  r["scaled_jacobian"] = {
-      {"min", q.sjMin},
-      {"avg", q.sjAvg},
-      {"histogram", {{"lo", q.sjHistogram.lo}, {"hi", q.sjHistogram.hi}, {"counts", q.sjHistogram.counts}}}};
-  r["aspect_ratio"] = {{"min", q.arMin}, {"avg", q.arAvg}, {"max", q.arMax}};
-  r["volume"] = {{"cad", cadVolume}, {"mesh", q.volume}, {"relative_error", (q.volume - cadVolume) / cadVolume}};
-  r["boundary"] = {{"faces", b.faces},
-                   {"open_edges", b.openEdges},
-                   {"non_manifold_edges", b.nonManifoldEdges},
-                   {"watertight", b.watertight()},
-                   {"euler_characteristic", b.eulerCharacteristic}};
-  r["validation"] = validation(failures);
+nlohmann::json boundary(const MeshMeasures& m) {
+  const BoundaryCheck& b = m.boundary;
+  return {{"faces", b.faces},
+          {"open_edges", b.openEdges},
+          {"non_manifold_edges", b.nonManifoldEdges},
+          {"watertight", b.watertight()},
+          {"euler_characteristic", b.eulerCharacteristic},
+          {"cad_euler_characteristic", m.cadEuler},
+          {"same_topology_as_cad", m.sameTopologyAsCad()}};
 }
 
-}  // namespace hexlayer::report
+// The mesh's own numbers, the keys of a report of one solid and of several.
+nlohmann::json measures(const MeshMeasures& m) {
+  const QualityReport& q = m.quality;
+  const Histogram& h = q.sjHistogram;
+  return {{"order", m.order},
+          {"hexes", m.hexes},
+          {"nodes", m.nodes},
+          {"layers", m.layers},
+          {"inverted_hexes", q.inverted},
+          {"worst_hex_at", point(q.worstAt)},
+          {"scaled_jacobian",
+           {{"min", q.sjMin}, {"avg", q.sjAvg}, {"histogram", {{"lo", h.lo}, {"hi", h.hi}, {"counts", h.counts}}}}},
+          {"aspect_ratio", {{"min", q.arMin}, {"avg", q.arAvg}, {"max", q.arMax}}},
+          {"volume", {{"cad", m.cadVolume}, {"mesh", q.volume}, {"relative_error", m.relativeVolumeError()}}},
+          {"boundary", boundary(m)},
+          {"validation", validation(m.failures)}};
+}
+
+// Every stage's time and peak memory.
+void stageTimes(const std::map<std::string, StageTime>& stages, nlohmann::json& r) {
+  r["timings_s"] = nlohmann::json::object();
+  r["peak_memory_mib"] = nlohmann::json::object();
+  for (const auto& [name, t] : stages) r["timings_s"][name] = t.seconds, r["peak_memory_mib"][name] = t.peakMemoryMiB;
+}
+
+// The keys of one solid's stages.
+void stages(const MeshReport& s, nlohmann::json& r) {
+  stageTimes(s.stages, r);
+  r["faces_split"] = s.facesSplit;
+  r["junctions"] = junctions(s.junctions);
+  r["thickness"] = s.thickness;
+  r["faces"] = faces(s.faces);
+  r["memory_estimate"] = memory(s.memory);
+  r["bubbles"] = s.bubbles;
+  r["tets"] = tets(s.tetsDropped, s.tetsKept);
+  r["tet_classes"] = s.tetClasses;
+  r["chordal_surface"] = chordal(s.chordal);
+  r["size"] = s.size;
+  r["size_source"] = s.sizeSource;
+  r["sizing"] = s.sizing;
+  r["small_features"] = smallFeatures(s.smallFeatures);
+  r["quad_mesh"] = quadMesh(s.quadMesh);
+  r["sweep"] = sweep(s.untangled, s.rimProjection);
+  r["rim_cap"] = rimCap(s.rimCap);
+  r["smoothing"] = smoothing(s.smoothing);
+  if (s.quadratic) r["quadratic"] = quadratic(*s.quadratic);
+  r["surface_groups"] = surfaceGroups(s.surfaceGroups);
+  r["boundary_deviation"] = deviation(s.boundaryDeviation);
+  r["volume"]["junctions_left_out"] = s.junctionsLeftOut;  // "cad" is the part's volume without them
+  if (s.aspectRatioHit) r["aspect_ratio_hit"] = *s.aspectRatioHit;
+}
+
+}  // namespace
+
+nlohmann::json toJson(const MeshReport& report) {
+  nlohmann::json r = measures(report.mesh);
+  if (report.solids.empty()) {
+    stages(report, r);
+    return r;
+  }
+  r["solids"] = nlohmann::json::array();
+  for (const MeshReport& one : report.solids) r["solids"].push_back(toJson(one));
+  return r;
+}
+
+}  // namespace hexlayer

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "pipeline/report.hpp"
 
 namespace hexlayer {
 namespace {
@@ -87,7 +88,7 @@ void writeResult(const std::string& path, const MeshResult& r) {
   std::ofstream header(path);
   if (!header) throw inputError("cannot write the result '" + path + "'");
   const std::string name = binary.substr(binary.find_last_of('/') + 1);
-  header << nlohmann::json{{"report", r.report}, {"binary", name}, {"arrays", a.index()}} << "\n";
+  header << nlohmann::json{{"report", toJson(r.report)}, {"binary", name}, {"arrays", a.index()}} << "\n";
 }
 
 }  // namespace hexlayer

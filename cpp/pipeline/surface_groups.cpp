@@ -70,34 +70,32 @@ NodeKinds nodeKinds(const HexMesh& mesh, const std::vector<BoundaryFace>& quads)
   return k;
 }
 
+// The off-face count of a boundary node's kind: on the rim or a wall, corner or mid-edge node.
+int& offFaceCount(OffFaceCounts& c, bool rim, bool midEdge) {
+  if (rim) return midEdge ? c.rimMidEdge : c.rimCorners;
+  return midEdge ? c.wallMidEdge : c.wallCorners;
+}
+
 // Max and mean distance of the boundary nodes to their faces, and per kind of node how many are not on
 // their face to its tolerance (FreeCAD's getNodesByFace would not find them).
-nlohmann::json deviationReport(const HexMesh& mesh, const CadFaces& faces, const std::vector<int>& boundary,
-                               const std::vector<double>& distance, const NodeKinds& kinds) {
-  double max = 0, sum = 0, maxRelative = 0, sumRelative = 0;
+BoundaryDeviation measureDeviation(const HexMesh& mesh, const CadFaces& faces, const std::vector<int>& boundary,
+                                   const std::vector<double>& distance, const NodeKinds& kinds) {
+  BoundaryDeviation r;
+  double sum = 0, sumRelative = 0;
   int worst = boundary.empty() ? -1 : boundary[0];
-  nlohmann::json above = {{"wall_corners", 0}, {"rim_corners", 0}, {"wall_mid_edge", 0}, {"rim_mid_edge", 0}};
   for (int i : boundary) {
     const double d = distance[i], relative = kinds.thickness[i] > 0 ? d / kinds.thickness[i] : 0;
     sum += d, sumRelative += relative;
-    if (d > max) max = d, worst = i;
-    maxRelative = std::max(maxRelative, relative);
-    if (d >= faces.tolerance(mesh.nodeFace[i])) {
-      const std::string kind =
-          std::string(mesh.nodeOnRim[i] ? "rim" : "wall") + (kinds.midEdge[i] ? "_mid_edge" : "_corners");
-      above[kind] = above[kind].get<int>() + 1;
-    }
+    if (d > r.max) r.max = d, worst = i;
+    r.maxRelative = std::max(r.maxRelative, relative);
+    if (d >= faces.tolerance(mesh.nodeFace[i])) ++offFaceCount(r.offFaceTolerance, mesh.nodeOnRim[i], kinds.midEdge[i]);
   }
   const double n = boundary.empty() ? 1 : static_cast<double>(boundary.size());
-  nlohmann::json r = {{"nodes", boundary.size()},
-                      {"max", max},
-                      {"mean", sum / n},
-                      {"max_relative", maxRelative},
-                      {"mean_relative", sumRelative / n},
-                      {"off_face_tolerance", above}};
+  r.nodes = boundary.size();
+  r.mean = sum / n, r.meanRelative = sumRelative / n;
   if (worst >= 0) {
-    r["worst_at"] = {mesh.nodes[worst].x(), mesh.nodes[worst].y(), mesh.nodes[worst].z()};
-    r["worst_face"] = faces.face(mesh.nodeFace[worst]).name;
+    r.worstAt = mesh.nodes[worst];
+    r.worstFace = faces.face(mesh.nodeFace[worst]).name;
   }
   return r;
 }
@@ -172,12 +170,11 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
     out.groups[faceOf[k]].hexFaces.push_back({quads[k].hex, quads[k].localFace});
     across += isAcross[k];
   }
-  std::size_t nonEmpty = 0;
-  for (const SurfaceGroup& g : out.groups) nonEmpty += !g.hexFaces.empty();
-  out.surfaceReport = {{"cad_faces", faces.count()},        {"meshed_cad_faces", nonEmpty},
-                       {"boundary_nodes", boundary.size()}, {"nodes_on_several_faces", several},
-                       {"element_faces", quads.size()},     {"element_faces_across_cad_edges", across}};
-  out.deviationReport = deviationReport(mesh, faces, boundary, distance, nodeKinds(mesh, quads));
+  SurfaceGroupStats& stats = out.stats;
+  for (const SurfaceGroup& g : out.groups) stats.meshedCadFaces += !g.hexFaces.empty();
+  stats.cadFaces = faces.count(), stats.boundaryNodes = boundary.size(), stats.nodesOnSeveralFaces = several;
+  stats.elementFaces = quads.size(), stats.elementFacesAcrossCadEdges = across;
+  out.deviation = measureDeviation(mesh, faces, boundary, distance, nodeKinds(mesh, quads));
   return out;
 }
 

@@ -1,7 +1,8 @@
 // Surface groups (issue 3): every boundary node and boundary hex face of the mesh on the CAD face it
 // lies on, numbered like FreeCAD (FaceN), and how far the boundary nodes are from their faces.
 #pragma once
-#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
@@ -20,10 +21,36 @@ std::vector<int> boundaryNodes(const HexMesh& mesh, const std::vector<BoundaryFa
 // moved: boundary_deviation says how far off it is. Returns how many nodes got a face this way.
 std::size_t faceUnplacedNodes(HexMesh& mesh, const WallProjector& walls, const std::vector<int>& boundary);
 
+// How the boundary was grouped (report "surface_groups").
+struct SurfaceGroupStats {
+  int cadFaces = 0;                            // groups, one per CAD face
+  std::size_t meshedCadFaces = 0;              // of them with element faces
+  std::size_t boundaryNodes = 0;               // nodes of the boundary faces
+  std::size_t nodesOnSeveralFaces = 0;         // on a CAD edge or vertex: in several groups
+  std::size_t elementFaces = 0;                // boundary hex faces
+  std::size_t elementFacesAcrossCadEdges = 0;  // whose corners share no CAD face
+  std::size_t nodesNotPutOnCad = 0;            // faceUnplacedNodes (not counted by surfaceGroups)
+};
+
+// Boundary nodes farther from their CAD face than its tolerance, per kind of node.
+struct OffFaceCounts {
+  int wallCorners = 0, rimCorners = 0, wallMidEdge = 0, rimMidEdge = 0;
+};
+
+// How far the boundary nodes are from their CAD faces (report "boundary_deviation"); relative: over the local wall
+// thickness.
+struct BoundaryDeviation {
+  std::size_t nodes = 0;  // boundary nodes
+  double max = 0, mean = 0, maxRelative = 0, meanRelative = 0;
+  OffFaceCounts offFaceTolerance;
+  std::optional<Vec3> worstAt;  // the farthest node (none without boundary nodes)
+  std::string worstFace;        // its face's name (FaceN)
+};
+
 struct SurfaceGroups {
   std::vector<SurfaceGroup> groups;  // one per CAD face, Face1..FaceN in order (a group may be empty)
-  nlohmann::json surfaceReport;      // report["surface_groups"]
-  nlohmann::json deviationReport;    // report["boundary_deviation"]
+  SurfaceGroupStats stats;
+  BoundaryDeviation deviation;
 };
 
 // The groups of a mesh whose boundary nodes all have a nodeFace. A node is in the group of its

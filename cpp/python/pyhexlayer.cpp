@@ -16,6 +16,7 @@
 
 #include "core/error.hpp"
 #include "pipeline/pipeline.hpp"
+#include "pipeline/report.hpp"
 
 namespace py = pybind11;
 
@@ -137,7 +138,7 @@ PyMeshResult toPython(const hexlayer::MeshResult& r) {
     for (std::size_t i = 0; i < g.hexFaces.size(); ++i) v(i, 0) = g.hexFaces[i].hex, v(i, 1) = g.hexFaces[i].localFace;
     p.faceElements[py::str(g.name)] = faces;
   }
-  p.report = toPython(r.report);
+  p.report = toPython(hexlayer::toJson(r.report));
   p.chordalVertices = nodeArray(r.chordalSurface.vertices);
   p.chordalFacets = cellArray(r.chordalSurface.facets);
   p.quadNodes = nodeArray(r.quadMesh.nodes);

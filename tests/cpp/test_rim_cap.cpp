@@ -25,22 +25,22 @@ TEST(RimCap, RoundEndsGetACapOnTheHalfCircle) {
   o.layers = 2;
   const MeshResult r =
       meshFile(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/rims/lbracket_round_ends.step", o);
-  const auto& cap = r.report["rim_cap"];
-  ASSERT_GT(cap["capped_edges"].get<int>(), 0);
-  EXPECT_EQ(cap["hexes"].get<int>(), 2 * cap["capped_edges"].get<int>());
-  EXPECT_EQ(cap["columns"].get<int>(), cap["capped_edges"].get<int>() + 2) << "two open rows of edges, one per end";
-  int capNodes = 0;
+  const RimCapStats& cap = r.report.rimCap;
+  ASSERT_GT(cap.cappedEdges, 0u);
+  EXPECT_EQ(cap.capHexes, 2 * cap.cappedEdges);
+  EXPECT_EQ(cap.capColumns, cap.cappedEdges + 2) << "two open rows of edges, one per end";
+  std::size_t capNodes = 0;
   for (std::size_t i = 0; i < r.mesh.nodes.size(); ++i) {
     if (r.mesh.nodeOnRim[i] != kRimCap) continue;
     ++capNodes;
     EXPECT_GE(r.mesh.nodeFace[i], 0);
   }
-  EXPECT_EQ(capNodes, 3 * cap["columns"].get<int>());
+  EXPECT_EQ(capNodes, 3 * cap.capColumns);
   const double uncapped = 0.571 * 2 * 20;  // both ends, 20 wide, r = 1
-  const double lost = r.report["volume"]["cad"].get<double>() - r.report["volume"]["mesh"].get<double>();
+  const double lost = r.report.mesh.cadVolume - r.report.mesh.quality.volume;
   EXPECT_LT(lost, 0.7 * uncapped) << "the caps' chords and the bend's";
   EXPECT_GT(lost, 0);
-  EXPECT_GE(r.report["scaled_jacobian"]["min"].get<double>(), 0.7);  // a cap hex's 135 degree corner: 0.707
+  EXPECT_GE(r.report.mesh.quality.sjMin, 0.7);  // a cap hex's 135 degree corner: 0.707
 }
 
 // A 3 x 3 x 2 block of unit hexes in a box, its inner node (1, 1, 1) pushed 0.7 along x and y: the four hexes

@@ -48,11 +48,11 @@ TEST(RimProjection, ObliqueCutsAreMeshedToTheirEdges) {
         MeshOptions o;
         o.layers = 2;
         const MeshResult r = meshSolid(scaled(part.sample, factor, bspline), o);
-        EXPECT_EQ(r.report["faces"]["lateral"].get<int>(), 4) << "the cut ends are rims";
-        EXPECT_EQ(r.report["sweep"]["rim_columns_left_unprojected"].get<int>(), 0);
-        EXPECT_EQ(r.report["sweep"]["rim_nodes_on_lateral_faces"], r.report["sweep"]["rim_nodes"]);
-        EXPECT_NEAR(r.report["volume"]["relative_error"].get<double>(), 0, 1e-6);
-        EXPECT_GE(r.report["scaled_jacobian"]["min"].get<double>(), std::cos(part.tilt) - 1e-3);
-        EXPECT_EQ(r.report["inverted_hexes"].get<int>(), 0);
+        EXPECT_EQ(r.report.faces.lateral, 4) << "the cut ends are rims";
+        EXPECT_EQ(r.report.rimProjection.columnsKept, 0u);
+        EXPECT_EQ(r.report.rimProjection.onLateralFaces, r.report.rimProjection.rimNodes);
+        EXPECT_NEAR(r.report.mesh.relativeVolumeError(), 0, 1e-6);
+        EXPECT_GE(r.report.mesh.quality.sjMin, std::cos(part.tilt) - 1e-3);
+        EXPECT_EQ(r.report.mesh.quality.inverted, 0u);
       }
 }
