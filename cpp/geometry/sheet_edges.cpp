@@ -21,24 +21,42 @@ bool hasKind(const BRepOffset_Analyse& edges, const TopoDS_Edge& edge, ChFiDS_Ty
   return false;
 }
 
-}  // namespace
-
-std::vector<SheetJoin> sheetJoins(const CadSolid& cad) {
+// Calls visit(edge, a, b, kinds) for every edge between two distinct faces a < b (0-based), with the edge's
+// BRepOffset_Analyse kinds.
+template <class Visit>
+void forEachFacePairEdge(const CadSolid& cad, Visit&& visit) {
   const BRepOffset_Analyse edgeTypes(cad.solid, kTangentAngle);
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
-  std::vector<SheetJoin> joins;
   for (int e = 1; e <= edgeFaces.Extent(); ++e) {
     std::vector<int> faces;
     for (const TopoDS_Shape& f : edgeFaces(e))
       if (const int i = cad.faces.FindIndex(f) - 1; std::find(faces.begin(), faces.end(), i) == faces.end())
         faces.push_back(i);
+    if (faces.size() != 2) continue;
     const TopoDS_Edge edge = TopoDS::Edge(edgeFaces.FindKey(e));
-    if (faces.size() != 2 || hasKind(edgeTypes, edge, ChFiDS_Concave)) continue;
     const auto [a, b] = std::minmax(faces[0], faces[1]);
-    joins.push_back({a, b, !hasKind(edgeTypes, edge, ChFiDS_Convex)});
+    visit(cad.edges.FindIndex(edge) - 1, a, b,
+          [&](ChFiDS_TypeOfConcavity kind) { return hasKind(edgeTypes, edge, kind); });
   }
+}
+
+}  // namespace
+
+std::vector<SheetJoin> sheetJoins(const CadSolid& cad) {
+  std::vector<SheetJoin> joins;
+  forEachFacePairEdge(cad, [&](int, int a, int b, auto has) {
+    if (!has(ChFiDS_Concave)) joins.push_back({a, b, !has(ChFiDS_Convex)});
+  });
   return joins;
+}
+
+std::vector<ConcaveEdge> concaveEdges(const CadSolid& cad) {
+  std::vector<ConcaveEdge> concave;
+  forEachFacePairEdge(cad, [&](int edge, int a, int b, auto has) {
+    if (has(ChFiDS_Concave)) concave.push_back({edge, a, b});
+  });
+  return concave;
 }
 
 }  // namespace hexlayer

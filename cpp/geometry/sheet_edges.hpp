@@ -17,4 +17,13 @@ struct SheetJoin {
 // [in] cad: the solid. Returns the pairs of distinct faces sharing an edge that is smooth or convex.
 std::vector<SheetJoin> sheetJoins(const CadSolid& cad);
 
+// An edge along which a rib, boss or flange may stand on a sheet: concave and sharp.
+struct ConcaveEdge {
+  int edge = -1;       // 0-based in CadSolid::edges
+  int a = -1, b = -1;  // its two distinct faces, 0-based, a < b
+};
+
+// [in] cad: the solid. Returns its concave sharp edges between two distinct faces.
+std::vector<ConcaveEdge> concaveEdges(const CadSolid& cad);
+
 }  // namespace hexlayer

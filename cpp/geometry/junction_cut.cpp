@@ -1,0 +1,216 @@
+#include "geometry/junction_cut.hpp"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Splitter.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepGProp.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <ShapeAnalysis_FreeBounds.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_HSequenceOfShape.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "geometry/sheet_edges.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr double kJoin = 1e-7;  // times the part's diagonal: ends of foot edges this close are one point
+
+double areaOf(const TopoDS_Shape& face) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(face, props);
+  return props.Mass();
+}
+
+// Per face (0-based), the sheet it belongs to: a sheet's walls, and the rim faces beside a standing sheet's walls
+// (a rib's end face); -1 for the other rim faces.
+std::vector<int> sheetOfFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
+  std::vector<int> sheet(sides.faces.size(), -1);
+  for (std::size_t s = 0; s < sheets.size(); ++s)
+    for (int f : sheets[s].faces) sheet[f] = static_cast<int>(s);
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  std::vector<int> rimSheet(sheet);
+  for (int e = 1; e <= edgeFaces.Extent(); ++e) {
+    std::vector<int> faces;
+    for (const TopoDS_Shape& f : edgeFaces(e)) faces.push_back(cad.faces.FindIndex(f) - 1);
+    for (int a : faces)
+      for (int b : faces)
+        if (sides.faces[a].side == Side::Lateral && sheet[b] > 0) rimSheet[a] = sheet[b];
+  }
+  return rimSheet;
+}
+
+// Per base wall face, the concave edges between it and the faces of standing sheet s.
+std::map<int, std::vector<TopoDS_Edge>> footEdges(const CadSolid& cad, const WallSides& sides,
+                                                  const std::vector<int>& sheetOf, int s) {
+  std::map<int, std::vector<TopoDS_Edge>> edges;
+  for (const ConcaveEdge& c : concaveEdges(cad))
+    for (const auto [base, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
+      if (sheetOf[base] == 0 && sides.faces[base].side != Side::Lateral && sheetOf[other] == s)
+        edges[base].push_back(TopoDS::Edge(cad.edges(c.edge + 1)));
+  return edges;
+}
+
+gp_Pnt endPoint(const TopoDS_Wire& wire, bool first) {
+  TopoDS_Vertex a, b;
+  TopExp::Vertices(wire, a, b);
+  return BRep_Tool::Pnt(first ? a : b);
+}
+
+// The foot edges joined into closed wires: open chains (a foot running to the wall's edge, a partition's two
+// edges between walls) are closed by straight segments between their nearest free ends.
+std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, double tolerance) {
+  Handle(TopTools_HSequenceOfShape) in = new TopTools_HSequenceOfShape, wires;
+  for (const TopoDS_Edge& e : edges) in->Append(e);
+  ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, wires);
+  std::vector<gp_Pnt> ends;
+  for (int i = 1; i <= wires->Length(); ++i) {
+    const TopoDS_Wire w = TopoDS::Wire(wires->Value(i));
+    if (BRep_Tool::IsClosed(w) || endPoint(w, true).Distance(endPoint(w, false)) <= tolerance) continue;
+    ends.push_back(endPoint(w, true)), ends.push_back(endPoint(w, false));
+  }
+  std::vector<char> used(ends.size(), 0);
+  for (std::size_t k = 0; k + 1 < ends.size(); k += 2) {  // nearest pairs first
+    std::size_t bi = 0, bj = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < ends.size(); ++i)
+      for (std::size_t j = i + 1; j < ends.size(); ++j)
+        if (!used[i] && !used[j] && ends[i].Distance(ends[j]) < best) best = ends[i].Distance(ends[j]), bi = i, bj = j;
+    used[bi] = used[bj] = 1;
+    in->Append(BRepBuilderAPI_MakeEdge(ends[bi], ends[bj]).Edge());
+  }
+  Handle(TopTools_HSequenceOfShape) closed;
+  ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, closed);
+  std::vector<TopoDS_Wire> out;
+  for (int i = 1; i <= closed->Length(); ++i) out.push_back(TopoDS::Wire(closed->Value(i)));
+  return out;
+}
+
+std::string place(const CadSolid& cad, const Sheet& s) {
+  std::ostringstream out;
+  const Vec3 c = s.centre / cad.unit;
+  out << "(" << c.x() << ", " << c.y() << ", " << c.z() << ")";
+  return out.str();
+}
+
+// The foot edges of standing sheet s grouped by the plane of the base wall they lie on (a rib running across a
+// plate splits its top into two faces, one plane).
+struct PlaneEdges {
+  gp_Pln plane;
+  int face;  // the first base face on it
+  std::vector<TopoDS_Edge> edges;
+};
+
+std::vector<PlaneEdges> footEdgesByPlane(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
+                                         const std::vector<int>& sheetOf, int s) {
+  const double tolerance = kJoin * cad.diagonal;
+  std::vector<PlaneEdges> planes;
+  for (const auto& [base, edges] : footEdges(cad, sides, sheetOf, s)) {
+    const BRepAdaptor_Surface surface(TopoDS::Face(cad.faces(base + 1)));
+    if (surface.GetType() != GeomAbs_Plane)
+      throw geometryError("T-junction: the sheet at " + place(cad, sheets[s]) + " stands on a curved wall (" +
+                          inputFaceName(cad, base) + "), which junction meshing does not cut yet");
+    const gp_Pln plane = surface.Plane();
+    auto same = [&](const PlaneEdges& p) {
+      return p.plane.Axis().IsParallel(plane.Axis(), 1e-9) && p.plane.Distance(plane.Location()) <= tolerance;
+    };
+    auto at = std::find_if(planes.begin(), planes.end(), same);
+    if (at == planes.end()) at = planes.insert(planes.end(), PlaneEdges{plane, base, {}});
+    at->edges.insert(at->edges.end(), edges.begin(), edges.end());
+  }
+  return planes;
+}
+
+// The feet of standing sheet s: faces on the planes of the base's walls under it, bounded by its foot edges.
+std::vector<Foot> footFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
+                            const std::vector<int>& sheetOf, int s) {
+  std::vector<Foot> feet;
+  for (const PlaneEdges& p : footEdgesByPlane(cad, sides, sheets, sheetOf, s))
+    for (const TopoDS_Wire& wire : closedWires(p.edges, kJoin * cad.diagonal)) {
+      BRepBuilderAPI_MakeFace face(p.plane, wire, true);
+      if (!face.IsDone()) continue;
+      feet.push_back({s, p.face, face.Face(), areaOf(face.Face())});
+    }
+  if (feet.empty())
+    throw geometryError("T-junction: no foot found for the sheet at " + place(cad, sheets[s]) +
+                        " on the sheet it stands on");
+  return feet;
+}
+
+// The images of `face` in the split result: itself if the split left it whole, else its pieces.
+std::vector<TopoDS_Shape> imagesOf(BRepAlgoAPI_Splitter& split, const TopoDS_Shape& face) {
+  const TopTools_ListOfShape& modified = split.Modified(face);
+  if (modified.IsEmpty()) return {face};
+  return std::vector<TopoDS_Shape>(modified.cbegin(), modified.cend());
+}
+
+}  // namespace
+
+JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
+  if (sheets.size() < 2) return {{cad.solid}, {}};
+  const std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets);
+  JunctionCut cut;
+  TopTools_ListOfShape arguments, tools;
+  arguments.Append(cad.solid);
+  std::vector<Foot> cutters;
+  for (int s = 1; s < static_cast<int>(sheets.size()); ++s)
+    for (Foot& f : footFaces(cad, sides, sheets, sheetOf, s)) tools.Append(f.face), cutters.push_back(std::move(f));
+  BRepAlgoAPI_Splitter split;
+  split.SetArguments(arguments);
+  split.SetTools(tools);
+  split.SetFuzzyValue(kJoin * cad.diagonal);
+  split.Build();
+  std::vector<TopoDS_Solid> solids;
+  for (TopExp_Explorer it(split.Shape(), TopAbs_SOLID); it.More(); it.Next())
+    solids.push_back(TopoDS::Solid(it.Current()));
+  if (solids.size() != sheets.size())
+    throw geometryError("T-junction: cutting the sheets off the one they stand on gave " +
+                        std::to_string(solids.size()) + " pieces for " + std::to_string(sheets.size()) + " sheets");
+  // Each sheet's piece: the solid holding (the image of) its first wall face.
+  for (const Sheet& s : sheets) {
+    const TopoDS_Shape wall = imagesOf(split, cad.faces(s.faces.front() + 1)).front();
+    for (const TopoDS_Solid& solid : solids) {
+      TopTools_IndexedMapOfShape faces;
+      TopExp::MapShapes(solid, TopAbs_FACE, faces);
+      if (faces.Contains(wall)) {
+        cut.pieces.push_back(solid);
+        break;
+      }
+    }
+    if (cut.pieces.size() != static_cast<std::size_t>(&s - sheets.data() + 1))
+      throw geometryError("T-junction: no piece holds the sheet at " + place(cad, s) + " after the cut");
+  }
+  // The feet as they are in the pieces: the pieces of each cutting face that the base's piece shares with its
+  // sheet's piece (a foot across a bore keeps the ring round it).
+  TopTools_IndexedMapOfShape baseFaces;
+  TopExp::MapShapes(cut.pieces[0], TopAbs_FACE, baseFaces);
+  for (const Foot& f : cutters) {
+    TopTools_IndexedMapOfShape pieceFaces;
+    TopExp::MapShapes(cut.pieces[f.sheet], TopAbs_FACE, pieceFaces);
+    for (const TopoDS_Shape& image : imagesOf(split, f.face))
+      if (baseFaces.Contains(image) && pieceFaces.Contains(image))
+        cut.feet.push_back({f.sheet, f.baseFace, TopoDS::Face(image), areaOf(image)});
+    if (cut.feet.empty() || cut.feet.back().sheet != f.sheet)
+      throw geometryError("T-junction: the foot of the sheet at " + place(cad, sheets[f.sheet]) +
+                          " is not a face of both pieces after the cut");
+  }
+  return cut;
+}
+
+}  // namespace hexlayer

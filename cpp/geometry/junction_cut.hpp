@@ -1,0 +1,39 @@
+// Junctions, first step (issue 18; ../shared/design/junctions.md): the part cut into pieces of one sheet each, as
+// an analyst cuts a ribbed part by hand before sweeping it. Every sheet that stands on the base sheet (a rib on a
+// plate, a boss, a partition on a floor) is cut off along the base's wall under it: the cut face, its foot, lies
+// in that wall's surface; it is a rim face of the standing piece and a piece of the base piece's wall. Each piece
+// is then a part the one-sheet method meshes (its chordal surface is 2-manifold).
+#pragma once
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include <vector>
+
+#include "geometry/cad_solid.hpp"
+#include "geometry/sheet_junctions.hpp"
+#include "geometry/wall_sides.hpp"
+
+namespace hexlayer {
+
+// Where a standing sheet meets the base: one cut face.
+struct Foot {
+  int sheet = -1;     // the standing sheet (index into the sheets given; its piece has the same index)
+  int baseFace = -1;  // 0-based face of the base's wall the foot lies on
+  TopoDS_Face face;   // the foot, shared (IsSame) by the base's piece and the standing sheet's piece
+  double area = 0;
+};
+
+struct JunctionCut {
+  std::vector<TopoDS_Solid> pieces;  // per sheet given, in their order: pieces[0] is the base
+  std::vector<Foot> feet;
+};
+
+// [in] cad: the solid; [in] sides: its faces' sides (classifyWallSides); [in] sheets: findSheets's, the first
+// the base. Every other sheet is cut off along the base's wall faces it stands on (the concave edges between
+// its faces, walls and their rim faces, and the base's walls bound its foot; a foot running to the wall's
+// edge is closed along it). The base's walls under a foot must be planar.
+// Throws geometryError naming the sheet's place if a foot is not on a plane, or the cut does not give one
+// piece per sheet.
+JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets);
+
+}  // namespace hexlayer
