@@ -1,6 +1,7 @@
 """Reads back what the end-to-end tests need of a CalculiX/Abaqus .inp written by hexlayer: the
 nodes, the elements (a data line ending with a comma continues on the next line), the node sets and
 the element-face surfaces."""
+import numpy as np
 
 
 def read_inp(path):
@@ -33,6 +34,14 @@ def read_inp(path):
         elif block == "set":
             sets[name] += [int(x) for x in fields]
     return nodes, elements, sets
+
+
+def hex_arrays(nodes, elements):
+    """read_inp's nodes and elements as arrays: (coordinates (N, 3), elements as rows of indices into them, the
+    index {node id: row})."""
+    ids = sorted(nodes)
+    index = {n: i for i, n in enumerate(ids)}
+    return np.array([nodes[n] for n in ids]), np.array([[index[n] for n in e] for _, e in elements]), index
 
 
 def read_surfaces(path):

@@ -12,6 +12,7 @@ import tempfile
 import unittest
 
 import harness
+from cad import cad_volume
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
 from hex_geometry import hex_scaled_jacobians, hex_volumes  # noqa: E402
@@ -25,18 +26,6 @@ FLAT_AND_BENT = ["plate", "plate_holes", "cantilever", "lbracket", "uchannel", "
 # 0.71 %.
 EXPECTED = {"plate": (0.999, 0.999, 1e-9), "cantilever": (0.999, 0.999, 1e-9), "plate_holes": (0.9, 0.985, 0.002),
             "lbracket": (0.88, 0.985, 0.006), "uchannel": (0.87, 0.985, 0.007), "hat_holes": (0.85, 0.982, 0.009)}
-
-
-def cad_volume(step):
-    import gmsh
-    gmsh.initialize(readConfigFiles=False)
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.model.occ.importShapes(step)
-        gmsh.model.occ.synchronize()
-        return sum(gmsh.model.occ.getMass(3, tag) for _, tag in gmsh.model.getEntities(3))
-    finally:
-        gmsh.finalize()
 
 
 def measured(vtu):

@@ -32,7 +32,7 @@ import unittest
 import numpy as np
 
 import harness
-from inp import read_inp
+from inp import hex_arrays, read_inp
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
 from hex_geometry import hex_scaled_jacobians, hex_volumes  # noqa: E402
@@ -123,12 +123,9 @@ class Rims(unittest.TestCase):
 
     def check(self, part, layers):
         step, (nodes, elements, sets) = self.meshes[(part, layers)]
-        ids = sorted(nodes)
-        index = {n: i for i, n in enumerate(ids)}
-        x = np.array([nodes[n] for n in ids])
         self.assertTrue(elements)
         self.assertTrue(all(len(e) == 8 for _, e in elements), "every element an 8-node hex")
-        hexes = np.array([[index[n] for n in e] for _, e in elements])
+        x, hexes, index = hex_arrays(nodes, elements)
         volumes = hex_volumes(x, hexes)
         sj = hex_scaled_jacobians(x, hexes)
         self.assertGreater(volumes.min(), 0)

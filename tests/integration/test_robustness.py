@@ -5,19 +5,24 @@ files are made by scripts/make_bad_inputs.py into tests/data/robustness.
 Run by CTest as: /usr/bin/python3 test_robustness.py --hexlayer PATH --source DIR
 """
 import json
+import math
 import os
 import subprocess
 import tempfile
 import unittest
 
 import harness
+from cad import face_group, junctions_named
 
 SECONDS = 120  # every row is done in a few seconds; a hang is cut off here and fails its row
 
 # (name, input file, extra arguments, exit code, fragment of stderr (or of stdout for exit 0)).
 # Inputs: "data/X" is tests/data/robustness/X, "sample/X" is Resources/samples/X, "fuzz/X" is an input the
 # fuzzer found (tests/fuzz/findings/X), "tmp/X" a path in
-# the run's temporary folder (empty.step is made there empty, folder.step as a folder).
+# the run's temporary folder (empty.step is made there empty, folder.step as a folder). Numbers in the fragments
+# come from how scripts/make_bad_inputs.py builds the part (plate(): a 60 x 40 x 2 box), not from hexlayer's output.
+RIB = ((0, 19, 2), (60, 21, 14))  # t_junction.step: a 60 x 2 x 12 box standing on the plate, its corners
+RIB_CENTRE = "({:g}, {:g}, {:g})".format(*((a + b) / 2 for a, b in zip(*RIB)))
 TABLE = [
     # files that cannot be read
     ("missing file", "tmp/missing.step", [], 3, "does not exist"),
@@ -38,14 +43,18 @@ TABLE = [
     ("open shell (STEP)", "data/open_shell.step", [], 3, "1 open shell(s) of 5 face(s) in all, not closed"),
     ("open shell (BREP)", "data/open_shell.brep", [], 3, "1 open shell(s) of 5 face(s) in all, not closed"),
     # geometry the method does not handle
-    ("thick block", "data/thick_block.step", [], 4, "not a thin section: measured thickness 20 over part size (diagonal) 39.05"),
-    ("cube", "sample/thick_block.step", [], 4, "= 0.57735 (a thin section has at most 0.25)"),
+    # a 30 x 20 x 15 box (which of its sides the mesher takes for the thickness is its own choice), a cube
+    ("thick block", "data/thick_block.step", [], 4, f"over part size (diagonal) {math.hypot(30, 20, 15):.6g} = "),
+    ("cube", "sample/thick_block.step", [], 4, f"= {1 / math.sqrt(3):.6g} (a thin section has at most 0.25)"),
     ("rib (T-junction)", "data/t_junction.step", [], 4, "T-junction: 1 sheet(s) (rib, boss or flange) stand on the main sheet"),
-    ("rib: where and which faces", "data/t_junction.step", [], 4, "(30, 20, 8) [Face6 Face8]; --drop-junctions meshes"),
-    ("rib left out", "data/t_junction.step", ["--drop-junctions"], 0, "Volume 4800 vs CAD 4800"),
+    ("rib: where", "data/t_junction.step", [], 4, RIB_CENTRE + " ["),  # its faces: test_rib_junction_names_its_walls
+    ("rib left out", "data/t_junction.step", ["--drop-junctions"], 0, f"Volume {60 * 40 * 2} vs CAD {60 * 40 * 2}"),
     # several solids and small features: a valid mesh
     ("two solids", "data/two_plates.step", [], 0, "2 solids, each meshed on its own"),
-    ("hole below the size", "data/small_hole.step", [], 0, "2 CAD edges shorter than the quad size and 1 faces narrower (the first at (29.75, 20, 2))"),
+    # a hole of radius 0.25 at (30, 20): its two circles shorter than the quad size, its wall narrower; the first
+    # at a point of its top circle
+    ("hole below the size", "data/small_hole.step", [], 0,
+     f"2 CAD edges shorter than the quad size and 1 faces narrower (the first at ({30 - 0.25:g}, 20, 2))"),
     ("fillets below the size", "data/small_fillets.step", [], 0, "features that small may be smoothed over"),
     ("chamfers below the size", "data/small_chamfers.step", [], 0, "features that small may be smoothed over"),
     ("short edge", "data/short_edge.step", [], 0, "features that small may be smoothed over"),
@@ -61,7 +70,8 @@ TABLE = [
     ("NaN size", "data/plate.brep", ["--size", "nan"], 2, "--size must be a positive length"),
     ("infinite size", "data/plate.brep", ["--size", "inf"], 2, "--size must be a positive length"),
     ("size needing terabytes", "data/plate.brep", ["--size", "1e-4"], 2, "GB of memory (estimated), more than this machine's"),
-    ("64 layers of tiny quads", "data/plate.brep", ["--layers", "64", "--size", "0.01"], 2, "quads, 1.54e+09 hexes"),
+    ("64 layers of tiny quads", "data/plate.brep", ["--layers", "64", "--size", "0.01"], 2,
+     f"quads, {64 * 60 * 40 / 0.01 ** 2:.3g} hexes"),
     ("size larger than the part", "data/plate.brep", ["--size", "1e6"], 0, "Wrote"),
     ("negative aspect", "data/plate.brep", ["--aspect=-1"], 2, "--aspect must be a positive ratio"),
     ("size and aspect", "data/plate.brep", ["--size", "1", "--aspect", "2"], 2, "give --size or --aspect, not both"),
@@ -131,6 +141,22 @@ class BadAndHardInputs(unittest.TestCase):
                 validation = json.load(f)["validation"]
             self.assertFalse(validation["passed"])
             self.assertIn("volume", [f["check"] for f in validation["failures"]])
+
+    def test_rib_junction_names_its_walls(self):
+        """The faces the T-junction message names, read from the CAD with Gmsh, are the rib's two walls (inside
+        its box, twice 60 x 12 mm^2), and the place it gives is their centre."""
+        with tempfile.TemporaryDirectory() as tmp:
+            step = resolve("data/t_junction.step", tmp)
+            done = self.run_row("data/t_junction.step", [], tmp)
+        named = junctions_named(done.stderr)
+        self.assertEqual(len(named), 1, done.stderr)
+        at, faces = named[0]
+        self.assertEqual(len(faces), 2)
+        group = face_group(step, faces)
+        self.assertAlmostEqual(group["area"], 2 * 60 * 12, places=6)
+        self.assertLessEqual(group["diagonal"], math.dist(*RIB) + 1e-6)
+        self.assertLess(math.dist(group["centre"], [(a + b) / 2 for a, b in zip(*RIB)]), 1e-6)
+        self.assertLess(math.dist(at, group["centre"]), 1e-3)
 
     def test_memory_estimate_is_in_the_report(self):
         with tempfile.TemporaryDirectory() as tmp:

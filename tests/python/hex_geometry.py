@@ -29,3 +29,21 @@ def hex_scaled_jacobians(nodes, hexes):
         e = [v / np.linalg.norm(v, axis=1)[:, None] for v in e]
         worst = np.minimum(worst, np.einsum("ij,ij->i", e[0], np.cross(e[1], e[2])))
     return worst
+
+
+# A hex's six faces (C3D8 corner order).
+HEX_FACES = ((0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
+
+
+def boundary_quads(hexes):
+    """The faces used by one hex only (rows of 4 node indices): the mesh's boundary."""
+    faces = np.asarray(hexes)[:, HEX_FACES].reshape(-1, 4)
+    _, first, count = np.unique(np.sort(faces, axis=1), axis=0, return_index=True, return_counts=True)
+    return faces[first[count == 1]]
+
+
+def boundary_euler_characteristic(hexes):
+    """V - E + F of the mesh's boundary quads (2 - 2 g for a closed surface of genus g)."""
+    quads = boundary_quads(hexes)
+    edges = np.sort(np.stack([quads, np.roll(quads, -1, axis=1)], axis=2).reshape(-1, 2), axis=1)
+    return len(np.unique(quads)) - len(np.unique(edges, axis=0)) + len(quads)
