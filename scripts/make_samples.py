@@ -1517,7 +1517,7 @@ def make_part(name, builder, outdir):
     nfaces = check_closed(tag)
     check_volume(name + " (read back)", mass_back, expected, tolerance)
     print(f"  wrote {path} ({size} bytes, {nfaces} faces)")
-    return dict(name=name, volume=mass, faces=nfaces, size=size, **info)
+    return dict(name=name, volume=expected, faces=nfaces, size=size, **info)  # the analytic volume, checked above
 
 
 def write_readme(outdir, rows, head=None, notes=None):

@@ -84,3 +84,16 @@ def surface_euler_characteristic(step, size):
         raise AssertionError(f"Gmsh's triangulation at size {size} is not a closed surface: edge uses "
                              f"{dict(collections.Counter(uses.values()))}")
     return len(np.unique(triangles)) - len(uses) + len(triangles)
+
+
+def face_distances(gmsh, x, index, sets):
+    """Per CAD face N, the largest distance of the mesh's nodes grouped on it (the .inp's FACE<N> node sets)
+    from that face, by Gmsh's closest point: {N: distance}. x: node coordinates; index: node label -> row of x."""
+    worst = {}
+    for name, labels in sets.items():
+        if not name.startswith("FACE") or not labels:
+            continue
+        points = x[[index[n] for n in labels]]
+        closest, _ = gmsh.model.getClosestPoint(2, int(name[4:]), points.ravel().tolist())
+        worst[int(name[4:])] = float(np.linalg.norm(np.reshape(closest, (-1, 3)) - points, axis=1).max())
+    return worst
