@@ -9,12 +9,12 @@ Face2.
 FreeCAD 0.20 writes every hexa8 as C3D8 (fully integrated): with 2 layers it locks in shear and comes out
 stiff. The same written .inp is therefore also run with C3D8I (incompatible modes), and the converged
 reference is C3D8I on a finer mesh (1 mm quads, 4 layers) with the same FreeCAD constraints. Measured on
-Debian 12 (FreeCAD 0.20.2, CalculiX 2.20): reference 1.1715 mm (beam theory PL^3/3EI 1.1905 mm: the clamp
-holding every DOF of Face1, Poisson contraction too, stiffens it by 1.6 %); C3D8I on the 2-layer mesh 0.994 of
-it; C3D8 on the 2-layer mesh 0.793 of it.
+Debian 12 (FreeCAD 0.20.2, CalculiX 2.20), 2026-12-02: reference 1.1681 mm (beam theory PL^3/3EI 1.1905 mm:
+the clamp holding every DOF of Face1, Poisson contraction too, stiffens it); C3D8I on the 2-layer mesh 0.9985
+of it; C3D8 on the 2-layer mesh 0.695 of it.
 
 Order 2 (hexa20, which FreeCAD writes as C3D20, solved by its own tools unchanged): the plate in 2 layers of
-2 mm quads 1.1680 mm, 0.9970 of the reference.
+2 mm quads 0.9996 of the reference.
 
 The bent part, an L-bracket built with Part (2 mm wall, 3 mm inner bend radius, legs 40 x 30 mm, 20 mm wide;
 Fixed on the upright leg's end face, 10 N in -z on the flat leg's end face), meshed by HexLayer in 2 layers of
