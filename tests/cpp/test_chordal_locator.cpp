@@ -1,5 +1,6 @@
 // Point location on the chordal surface (chordal/chordal_locator.hpp): the weights of a point on a facet (Eq. 4-7:
-// barycentric on triangles, inverse bilinear on quads).
+// barycentric on triangles, inverse bilinear on quads), and the nearest facet, point, normal and radius of points
+// around a small folded surface.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -13,6 +14,30 @@ namespace {
 
 Vec3 bilinear(const std::array<Vec3, 4>& p, double u, double v) {
   return (1 - u) * (1 - v) * p[0] + u * (1 - v) * p[1] + u * v * p[2] + (1 - u) * v * p[3];
+}
+
+// A tiny chordal surface folded along x = 2: the quad facet 0 (vertices 0 1 2 3) on z = 0 over [0, 2] x [0, 1],
+// and the triangle facet 1 (vertices 1 4 2) rising from its edge x = 2 to vertex 4 at (3, 0, 1), in the plane
+// x - z = 2. Vertex normals: +z on the flat side, the triangle's normal at 4, between the two on the fold;
+// radii 1 to 5.
+ChordalSurface foldedSurface() {
+  ChordalSurface s;
+  s.vertices = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 1, 0), Vec3(3, 0, 1)};
+  const Vec3 up = Vec3::UnitZ(), tilted = Vec3(-1, 0, 1).normalized(), fold = (up + tilted).normalized();
+  s.normals = {up, fold, fold, up, tilted};
+  s.radius = {1, 2, 3, 4, 5};
+  s.tetEdge.assign(s.vertices.size(), {0, 0});
+  s.facets = {{0, 1, 2, 3}, {1, 4, 2, -1}};
+  s.quads = 1, s.triangles = 1;
+  return s;
+}
+
+// The radius function at a located point: the facet corners' radii by the point's weights (Eq. 4-7).
+double radiusAt(const ChordalSurface& s, const ChordalPoint& at) {
+  double r = 0;
+  for (int k = 0; k < 4; ++k)
+    if (s.facets[at.facet][k] >= 0) r += at.weights[k] * s.radius[s.facets[at.facet][k]];
+  return r;
 }
 
 }  // namespace
@@ -84,4 +109,40 @@ TEST(ChordalLocator, InverseBilinearRecoversParameters) {
     const Eigen::Vector2d got = inverseBilinear(trapezoid, bilinear(trapezoid, uv.x(), uv.y()) + Vec3(0, 0, 0.8));
     EXPECT_LT((got - uv).norm(), 1e-9) << uv.transpose();
   }
+}
+
+// Points above the quad, off the triangle along its normal and beyond the surface's edge: each is located on
+// the facet nearest to it, at its foot there, with the weights, normal and radius of that foot.
+TEST(ChordalLocator, LocatesPointsOnTheNearestFacetOfAFoldedSurface) {
+  const ChordalSurface s = foldedSurface();
+  const ChordalLocator locator(s);
+  const Vec3 up = Vec3::UnitZ(), tilted = Vec3(-1, 0, 1).normalized(), fold = (up + tilted).normalized();
+
+  // 0.7 above (0.5, 0.25) of the quad: u = 0.25 along 0-1, v = 0.25 along 0-3.
+  const ChordalPoint onQuad = locator.locate(Vec3(0.5, 0.25, 0.7));
+  ASSERT_EQ(onQuad.facet, 0);
+  const std::array<double, 4> w{0.75 * 0.75, 0.25 * 0.75, 0.25 * 0.25, 0.75 * 0.25};
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(onQuad.weights[k], w[k], 1e-12) << "corner " << k;
+  EXPECT_LT((onQuad.point - Vec3(0.5, 0.25, 0)).norm(), 1e-12);
+  EXPECT_LT((normalAt(s, onQuad) - ((w[0] + w[3]) * up + (w[1] + w[2]) * fold)).norm(), 1e-12);
+  EXPECT_LT(normalAt(s, onQuad).norm(), 1) << "the normals differ: their mean is shorter";
+  EXPECT_NEAR(radiusAt(s, onQuad), w[0] * 1 + w[1] * 2 + w[2] * 3 + w[3] * 4, 1e-12);
+
+  // 0.4 off the triangle's point 0.2 v1 + 0.5 v4 + 0.3 v2 = (2.5, 0.3, 0.5), along its normal: 0.81 from the quad.
+  const Vec3 foot(2.5, 0.3, 0.5);
+  const ChordalPoint onTriangle = locator.locate(foot + 0.4 * tilted);
+  ASSERT_EQ(onTriangle.facet, 1);
+  const std::array<double, 4> barycentric{0.2, 0.5, 0.3, 0};
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(onTriangle.weights[k], barycentric[k], 1e-12) << "corner " << k;
+  EXPECT_LT((onTriangle.point - foot).norm(), 1e-12);
+  EXPECT_LT((normalAt(s, onTriangle) - (0.5 * fold + 0.5 * tilted)).norm(), 1e-12);
+  EXPECT_NEAR(radiusAt(s, onTriangle), 0.2 * 2 + 0.5 * 5 + 0.3 * 3, 1e-12);
+
+  // Beyond the quad's edge x = 0: the middle of that edge, halfway between vertices 0 and 3.
+  const ChordalPoint beyond = locator.locate(Vec3(-1, 0.5, 0.3));
+  ASSERT_EQ(beyond.facet, 0);
+  EXPECT_LT((beyond.point - Vec3(0, 0.5, 0)).norm(), 1e-12);
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(beyond.weights[k], k == 0 || k == 3 ? 0.5 : 0, 1e-12) << "corner " << k;
+  EXPECT_LT((normalAt(s, beyond) - up).norm(), 1e-12);
+  EXPECT_NEAR(radiusAt(s, beyond), 2.5, 1e-12);
 }

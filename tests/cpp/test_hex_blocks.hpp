@@ -1,5 +1,6 @@
 // Hex meshes built by hand for the unit tests of quality/ (header-only, no test of its own): one hex, a
-// structured block of hexes, shared by test_quality.cpp and test_validation.cpp.
+// structured block of hexes, two hexes side by side, shared by test_quality.cpp, test_validation.cpp,
+// test_writers.cpp and test_result_file.cpp.
 #pragma once
 #include <array>
 #include <vector>
@@ -43,6 +44,21 @@ inline HexMesh singleHex(const Hex& x) {
   m.nodes.assign(x.begin(), x.end());
   m.hexes.push_back({0, 1, 2, 3, 4, 5, 6, 7});
   m.nodeLayer = {0, 0, 0, 0, 1, 1, 1, 1};
+  m.layers = 1;
+  return m;
+}
+
+// 2 x 1 x 1 unit hexes, one layer: 12 nodes, node (i,j,k) has id i + 3*(j + 2*k) and layer k.
+inline HexMesh twoHexBlock() {
+  HexMesh m;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) {
+        m.nodes.emplace_back(i, j, k);
+        m.nodeLayer.push_back(k);
+        m.nodeOnRim.push_back(0);
+      }
+  for (int i = 0; i < 2; ++i) m.hexes.push_back({i, i + 1, i + 4, i + 3, i + 6, i + 7, i + 10, i + 9});
   m.layers = 1;
   return m;
 }

@@ -17,27 +17,14 @@
 #include "core/error.hpp"
 #include "quality/quality.hpp"
 #include "sweep/quadratic.hpp"
+#include "test_hex_blocks.hpp"
 #include "writers/writers.hpp"
 
 using namespace hexlayer;
+using hexlayer::test_hex_blocks::twoHexBlock;
 namespace fs = std::filesystem;
 
 namespace {
-
-// 2 x 1 x 1 unit hexes, one layer: 12 nodes, node (i,j,k) has id i + 3*(j + 2*k) and layer k.
-HexMesh twoHexBlock() {
-  HexMesh m;
-  for (int k = 0; k < 2; ++k)
-    for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 3; ++i) {
-        m.nodes.emplace_back(i, j, k);
-        m.nodeLayer.push_back(k);
-        m.nodeOnRim.push_back(0);
-      }
-  for (int i = 0; i < 2; ++i) m.hexes.push_back({i, i + 1, i + 4, i + 3, i + 6, i + 7, i + 10, i + 9});
-  m.layers = 1;
-  return m;
-}
 
 std::vector<NodeSet> layerSets(const HexMesh& m) {
   std::vector<NodeSet> sets{{"TOP", {}}, {"bottom", {}}};
