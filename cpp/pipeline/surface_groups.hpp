@@ -19,6 +19,8 @@ std::vector<int> boundaryNodes(const HexMesh& mesh, const std::vector<BoundaryFa
 // wall, a rim node kept off its lateral face to save a hex) the nearest face of its side: the
 // lateral faces for rim nodes, else the bottom (layer 0) or top (last layer) wall. The node is not
 // moved: boundary_deviation says how far off it is. Returns how many nodes got a face this way.
+// [in,out] mesh: nodeFace set for those nodes; [in] walls: the nearest-point projector; [in] boundary: the mesh's
+// boundaryNodes.
 std::size_t faceUnplacedNodes(HexMesh& mesh, const WallProjector& walls, const std::vector<int>& boundary);
 
 // How the boundary was grouped (report "surface_groups").
@@ -65,6 +67,7 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
 // The groups of `part` appended to `all`, for a mesh made of several solids: node and hex ids shifted
 // by the part mesh's offsets, faces renumbered after the groups already there (FreeCAD's numbering
 // of a compound of disjoint solids).
+// [in,out] all: the groups so far, part's appended; [in] part, nodeOffset, hexOffset.
 void appendSurfaceGroups(std::vector<SurfaceGroup>& all, const std::vector<SurfaceGroup>& part, int nodeOffset,
                          int hexOffset);
 

@@ -17,6 +17,7 @@ double quadScaledJacobian(const std::array<Vec3, 4>& corners);
 double quadSmoothingQuality(const std::array<Vec3, 4>& corners);
 
 // Drops the nodes no quad uses and renumbers the rest in their order.
+// [in,out] nodes: the unused ones dropped; [in,out] quads: their node ids renumbered.
 void dropUnusedNodes(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& quads);
 
 // Removes the doublets: an interior node in just two quads, which share two of its edges, gives

@@ -36,6 +36,8 @@ struct QuadraticStats {
 //    projected onto the lateral CAD faces (ω_l) under the same quarter-edge limit; on a rim wall edge
 //    that puts it on the CAD edge between wall and lateral face.
 // Requires a linear mesh with nodeLayer and nodeOnRim.
+// [in,out] mesh: the mid-edge nodes appended (nodes, nodeLayer, nodeOnRim, nodeFace if sized), midEdges filled;
+// [in] project: the projection onto the CAD walls.
 QuadraticStats addMidEdgeNodes(HexMesh& mesh, const WallProjection& project);
 
 }  // namespace hexlayer

@@ -32,11 +32,13 @@ void writeMesh(const std::string& path, const HexMesh& mesh, const MeshGroups& g
 // CalculiX/Abaqus: *NODE (NSET=NALL), *ELEMENT TYPE=C3D8I (C3D20R for 20-node hexes) ELSET=EALL,
 // one *NSET per node set; per non-empty surface group FaceN an *NSET FACEN of its nodes and an
 // element-face *SURFACE FACEN_S (lines "element, Sk", k = localFace + 1: CalculiX's S1..S6).
+// [out] out: the file's text written to it; [in] mesh, groups.
 void writeInp(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 
 // VTK XML UnstructuredGrid (VTK_HEXAHEDRON = 12, VTK_QUADRATIC_HEXAHEDRON = 25): point data "layer",
 // one 0/1 array per node set and, with surface groups, "cad_face": N of the node's first group FaceN
 // (the lowest N; a node on a CAD edge is in several groups), 0 for a node on no face; cell data per field.
+// [out] out: the file's text written to it; [in] mesh, groups.
 void writeVtu(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 
 // Gmsh 4.1: volume 1 ("solid") with the hexes (type 5, or 17 with 20 nodes) and the boundary quads
@@ -45,6 +47,7 @@ void writeVtu(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 // class most of its quads have by nodeLayer); without, three surfaces "top", "bottom", "rim" (all
 // "rim" if nodeLayer is not sized). Cell fields as $ElementData. Node sets are not written: the
 // surface physical groups carry the same information.
+// [out] out: the file's text written to it; [in] mesh, groups.
 void writeMsh(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 
 // The node ids of one element or face, at most 20, held without a heap allocation (the writers

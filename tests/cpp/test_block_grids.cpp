@@ -1,6 +1,5 @@
-// Structured block grids of the chordal surface (block_grids, surface_map): the map onto the plane
-// folds no triangle, the rim's corners are found, and the grids are all-quad, square and keep the
-// surface's topology and extent.
+// Structured block grids of the chordal surface (quadmesh/block_grids.hpp): the grids are all-quad, square and
+// keep the surface's topology and extent.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,44 +9,12 @@
 #include "core/union_find.hpp"
 #include "quadmesh/block_grids.hpp"
 #include "quadmesh/quad_smoothing.hpp"
+#include "test_flat_surfaces.hpp"
 
 using namespace hexlayer;
+using hexlayer::test_flat_surfaces::rectangle;
 
 namespace {
-
-// The surface without the vertices no facet uses.
-ChordalSurface withoutUnusedVertices(const ChordalSurface& s) {
-  ChordalSurface out;
-  std::vector<int> index(s.vertices.size(), -1);
-  for (auto f : s.facets) {
-    for (int& v : f)
-      if (v >= 0) {
-        if (index[v] < 0)
-          index[v] = static_cast<int>(out.vertices.size()), out.vertices.push_back(s.vertices[v]),
-          out.normals.push_back(s.normals[v]);
-        v = index[v];
-      }
-    out.facets.push_back(f);
-  }
-  return out;
-}
-
-// A flat nx x ny rectangle of unit quads, normal +z, without the cells whose lower left corner is
-// in [hx0, hx1) x [hy0, hy1) for each hole (hx0, hx1, hy0, hy1).
-ChordalSurface rectangle(int nx, int ny, const std::vector<std::array<int, 4>>& holes = {}) {
-  ChordalSurface s;
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) s.vertices.emplace_back(i, j, 0), s.normals.push_back(Vec3::UnitZ());
-  auto v = [&](int i, int j) { return j * (nx + 1) + i; };
-  auto inHole = [&](int i, int j) {
-    return std::any_of(holes.begin(), holes.end(),
-                       [&](const auto& h) { return i >= h[0] && i < h[1] && j >= h[2] && j < h[3]; });
-  };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      if (!inHole(i, j)) s.facets.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
-  return withoutUnusedVertices(s);
-}
 
 // A flat disc of radius `rings`: a fan round the centre, then rings of `around` quads.
 ChordalSurface disc(int rings, int around) {
@@ -62,11 +29,6 @@ ChordalSurface disc(int rings, int around) {
   for (int k = 1; k < rings; ++k)
     for (int j = 0; j < around; ++j) s.facets.push_back({v(k, j), v(k + 1, j), v(k + 1, j + 1), v(k, j + 1)});
   return s;
-}
-
-double signedArea(const SurfaceMap& map, const std::array<int, 3>& t) {
-  const Eigen::Vector2d a = map.uv[t[1]] - map.uv[t[0]], b = map.uv[t[2]] - map.uv[t[0]];
-  return 0.5 * (a.x() * b.y() - a.y() * b.x());
 }
 
 long euler(const BlockGrid& g) {
@@ -96,31 +58,6 @@ Quality quality(const BlockGrid& g) {
 const SizeField unit = [](const Vec3&) { return 1.0; };
 
 }  // namespace
-
-TEST(SurfaceMap, RectangleWithAHoleMapsOntoTheSquareWithoutFolds) {
-  const SurfaceMap map = mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0, MapBoundary::Square);
-  ASSERT_FALSE(map.empty());
-  EXPECT_TRUE(map.sharpCorners);
-  EXPECT_EQ(map.holes.size(), 1u);
-  EXPECT_EQ(map.points.size(), 21u * 11u - 9u + 1u);  // the hole's centre added
-  for (const auto& t : map.triangles) EXPECT_GT(signedArea(map, t), 0);
-  std::set<std::pair<double, double>> corners;
-  for (int c : map.corners) corners.insert({map.points[map.rim[c]].x(), map.points[map.rim[c]].y()});
-  EXPECT_EQ(corners, (std::set<std::pair<double, double>>{{0, 0}, {20, 0}, {0, 10}, {20, 10}}));
-  for (const auto& uv : map.uv) EXPECT_LE(uv.cwiseAbs().maxCoeff(), 1 + 1e-12);
-}
-
-TEST(SurfaceMap, RefusesWhatIsNotASphereWithHoles) {
-  ChordalSurface two = rectangle(4, 4);
-  const ChordalSurface other = rectangle(4, 4);
-  const int offset = static_cast<int>(two.vertices.size());
-  for (const Vec3& p : other.vertices) two.vertices.push_back(p + Vec3(10, 0, 0)), two.normals.push_back(Vec3::UnitZ());
-  for (auto f : other.facets) {
-    for (int& v : f) v += offset;
-    two.facets.push_back(f);
-  }
-  EXPECT_TRUE(mapToPlane(two, 1.0, MapBoundary::Square).empty());  // not connected
-}
 
 TEST(BlockGrids, GridWithAPocketRoundTheHole) {
   const SurfaceMap map = mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0, MapBoundary::Square);

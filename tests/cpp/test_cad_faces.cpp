@@ -1,17 +1,14 @@
-// Distances to the CAD faces (geometry/cad_faces, uv_boundary): CadFaceProbe's distance to a trimmed
+// Distances to the CAD faces (geometry/cad_faces.hpp): CadFaceProbe's distance to a trimmed
 // face is BRepExtrema_DistShapeShape's to the last bit, on the faces (inside, at and near their edges
 // and vertices), just off them and far away, on samples with planes, cylinders, spheres and B-splines.
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
-#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Tool.hxx>
-#include <ElSLib.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
@@ -145,31 +142,4 @@ TEST(CadFaces, NearlyEquidistantVerticesAreBRepExtremas) {
           << "k " << k << " face " << f << ": " << fast << " against " << exact;
     }
   }
-}
-
-TEST(UvBoundary, PlateWithAHoleDecidesAwayFromItsEdges) {
-  const TopoDS_Shape plate =
-      BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(40, 30, 2).Shape(),
-                      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 15, -1), gp_Dir(0, 0, 1)), 5, 4).Shape())
-          .Shape();
-  for (TopExp_Explorer e(plate, TopAbs_FACE); e.More(); e.Next()) {
-    const TopoDS_Face face = TopoDS::Face(e.Current());
-    BRepAdaptor_Surface s(face);
-    if (s.GetType() != GeomAbs_Plane || std::abs(s.Plane().Location().Z() - 2) > 1e-9) continue;
-    const UvBoundary boundary(face, 1e-3, 1e-3);
-    const gp_Pln plane = s.Plane();
-    auto side = [&](double x, double y) {  // of the point (x, y, 2)
-      double u = 0, v = 0;
-      ElSLib::Parameters(plane, gp_Pnt(x, y, 2), u, v);
-      return boundary.side(u, v);
-    };
-    EXPECT_EQ(side(5, 5), UvBoundary::Side::Inside);
-    EXPECT_EQ(side(20, 15), UvBoundary::Side::Outside) << "the hole";
-    EXPECT_EQ(side(50, 15), UvBoundary::Side::Outside);
-    EXPECT_EQ(side(25 + 2e-4, 15), UvBoundary::Side::Undecided) << "by the hole's edge";
-    EXPECT_EQ(side(5, 1e-4), UvBoundary::Side::Undecided) << "by the rim";
-    EXPECT_EQ(side(25.01, 15), UvBoundary::Side::Inside);
-    return;
-  }
-  FAIL() << "no top face";
 }

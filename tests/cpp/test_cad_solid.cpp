@@ -1,15 +1,20 @@
 // The CAD solid as the pipeline reads it (geometry/cad_solid.hpp): its volume, the mesh's reference, exact also
-// on B-spline faces (OpenCASCADE's default rule is 1 % off there); run at scales 1, 1e-3 and 1e3.
+// on B-spline faces (OpenCASCADE's default rule is 1 % off there), run at scales 1, 1e-3 and 1e3; and a file that
+// holds only a closed shell, read as the solid it bounds.
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepTools.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "geometry/cad_solid.hpp"
 
@@ -37,4 +42,17 @@ TEST(CadSolid, VolumeIsExactOnAnalyticAndBSplineFaces) {
       const double exact = 2.0 / 3 * M_PI * (12 * 12 * 12 - 10 * 10 * 10) * s * s * s;
       EXPECT_NEAR(cad.volume / exact, 1, 1e-6);
     }
+}
+
+// A file holding only the closed shell of a part (as sheet-metal exports often do) gives its solid.
+TEST(CadSolid, ClosedShellFileIsReadAsTheSolidItBounds) {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(40, 30, 2).Solid();
+  TopExp_Explorer shell(box, TopAbs_SHELL);
+  ASSERT_TRUE(shell.More());
+  const std::string path = ::testing::TempDir() + "hexlayer_shell_only.brep";
+  ASSERT_TRUE(BRepTools::Write(shell.Current(), path.c_str()));
+  const std::vector<TopoDS_Solid> solids = readSolids(path);
+  std::remove(path.c_str());
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(prepareSolid(solids[0]).volume, 2400.0, 1e-6);
 }

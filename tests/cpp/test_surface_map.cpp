@@ -1,14 +1,20 @@
-// The map of the chordal surface onto the plane (quadmesh/surface_map.hpp), here its annulus map for rings and
+// The map of the chordal surface onto the plane (quadmesh/surface_map.hpp): a rectangle with a hole onto the square
+// without folds, its corners found, what is not a sphere with holes refused; and the annulus map for rings and
 // tubes: conformal, against the analytic map of a flat ring (log-polar coordinates).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <set>
+#include <utility>
 
 #include "quadmesh/block_grids.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 #include "quadmesh/surface_map.hpp"
+#include "test_flat_surfaces.hpp"
 
 using namespace hexlayer;
+using hexlayer::test_flat_surfaces::rectangle;
 
 namespace {
 
@@ -29,6 +35,11 @@ ChordalSurface ring(double r0, double r1, int rings, int around, double squash =
 }
 
 double wrap(double a) { return std::remainder(a, 2 * M_PI); }
+
+double signedArea(const SurfaceMap& map, const std::array<int, 3>& t) {
+  const Eigen::Vector2d a = map.uv[t[1]] - map.uv[t[0]], b = map.uv[t[2]] - map.uv[t[0]];
+  return 0.5 * (a.x() * b.y() - a.y() * b.x());
+}
 
 }  // namespace
 
@@ -69,4 +80,29 @@ TEST(SurfaceMap, RingGridOfAnEllipticRingHasSquareQuads) {
   }
   EXPECT_GT(worst, 0.85);
   EXPECT_GT(mean, 0.97);
+}
+
+TEST(SurfaceMap, RectangleWithAHoleMapsOntoTheSquareWithoutFolds) {
+  const SurfaceMap map = mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0, MapBoundary::Square);
+  ASSERT_FALSE(map.empty());
+  EXPECT_TRUE(map.sharpCorners);
+  EXPECT_EQ(map.holes.size(), 1u);
+  EXPECT_EQ(map.points.size(), 21u * 11u - 9u + 1u);  // the hole's centre added
+  for (const auto& t : map.triangles) EXPECT_GT(signedArea(map, t), 0);
+  std::set<std::pair<double, double>> corners;
+  for (int c : map.corners) corners.insert({map.points[map.rim[c]].x(), map.points[map.rim[c]].y()});
+  EXPECT_EQ(corners, (std::set<std::pair<double, double>>{{0, 0}, {20, 0}, {0, 10}, {20, 10}}));
+  for (const auto& uv : map.uv) EXPECT_LE(uv.cwiseAbs().maxCoeff(), 1 + 1e-12);
+}
+
+TEST(SurfaceMap, RefusesWhatIsNotASphereWithHoles) {
+  ChordalSurface two = rectangle(4, 4);
+  const ChordalSurface other = rectangle(4, 4);
+  const int offset = static_cast<int>(two.vertices.size());
+  for (const Vec3& p : other.vertices) two.vertices.push_back(p + Vec3(10, 0, 0)), two.normals.push_back(Vec3::UnitZ());
+  for (auto f : other.facets) {
+    for (int& v : f) v += offset;
+    two.facets.push_back(f);
+  }
+  EXPECT_TRUE(mapToPlane(two, 1.0, MapBoundary::Square).empty());  // not connected
 }

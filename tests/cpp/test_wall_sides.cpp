@@ -4,19 +4,24 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
+#include <GProp_GProps.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include <cmath>
 #include <string>
 
+#include "core/error.hpp"
 #include "geometry/cad_solid.hpp"
 #include "geometry/sheet_junctions.hpp"
 #include "geometry/wall_sides.hpp"
+#include "test_parts.hpp"
 
 using namespace hexlayer;
+using hexlayer::test_parts::box;
 
 namespace {
 
@@ -32,6 +37,13 @@ int count(const WallSides& w, Side side) {
   int n = 0;
   for (const FaceSide& f : w.faces) n += f.side == side;
   return n;
+}
+
+Vec3 faceCentre(const CadSolid& cad, int f) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(cad.faces(f + 1), props);
+  const gp_Pnt c = props.CentreOfMass();
+  return {c.X(), c.Y(), c.Z()};
 }
 
 }  // namespace
@@ -127,4 +139,56 @@ TEST(WallSides, RibOnAPlateIsStillAJunction) {
   const WallSides w = classifyWallSides(cad);
   const std::vector<Sheet> sheets = findSheets(cad, w);
   EXPECT_TRUE(sheets.size() >= 2 || !w.ownSideFaces.empty());
+}
+
+// A 40 x 30 x 2 plate: 2 mm thick, z = 2 is Top, z = 0 Bottom, the four rim faces Lateral.
+TEST(WallSides, ThinBoxHasOneTopOneBottomAndFourLateralFaces) {
+  const CadSolid cad = box(40, 30, 2);
+  EXPECT_NEAR(cad.volume, 2400.0, 1e-9 * 2400);
+  EXPECT_EQ(cad.faces.Extent(), 6);
+  EXPECT_NEAR(cad.diagonal, std::sqrt(40.0 * 40 + 30 * 30 + 2 * 2), 1e-6);
+  const WallSides w = classifyWallSides(cad);
+  ASSERT_EQ(w.faces.size(), 6u);
+  EXPECT_NEAR(w.thickness, 2.0, 2e-6);
+  EXPECT_NEAR(w.sheetAreaShare, 2400.0 / (2400 + 2 * (40 * 2 + 30 * 2)), 1e-6);
+  int top = -1, bottom = -1, lateral = 0;
+  for (int f = 0; f < 6; ++f) {
+    const Vec3 c = faceCentre(cad, f);
+    switch (w.faces[f].side) {
+      case Side::Top:
+        EXPECT_EQ(top, -1) << "two Top faces";
+        top = f;
+        EXPECT_NEAR(c.z(), 2.0, 1e-9);
+        break;
+      case Side::Bottom:
+        EXPECT_EQ(bottom, -1) << "two Bottom faces";
+        bottom = f;
+        EXPECT_NEAR(c.z(), 0.0, 1e-9);
+        break;
+      case Side::Lateral:
+        ++lateral;
+        EXPECT_NEAR(c.z(), 1.0, 1e-9);
+        break;
+    }
+  }
+  ASSERT_GE(top, 0);
+  ASSERT_GE(bottom, 0);
+  EXPECT_EQ(lateral, 4);
+  EXPECT_NEAR(w.faces[top].thickness, 2.0, 2e-6);
+  EXPECT_NEAR(w.faces[bottom].thickness, 2.0, 2e-6);
+  EXPECT_EQ(w.faces[top].opposite, bottom);
+  EXPECT_EQ(w.faces[bottom].opposite, top);
+  EXPECT_NEAR(w.faces[top].area, 1200.0, 1e-6);
+}
+
+TEST(WallSides, CubeIsNotAThinSection) {
+  const CadSolid cad = box(20, 20, 20);
+  EXPECT_NEAR(cad.volume, 8000.0, 1e-9 * 8000);
+  try {
+    classifyWallSides(cad);
+    FAIL() << "a cube was classified as a thin wall";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
+    EXPECT_NE(std::string(e.what()).find("not a thin section"), std::string::npos) << e.what();
+  }
 }

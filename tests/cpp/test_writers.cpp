@@ -1,4 +1,5 @@
-// Writers: each format is read back by another program (Gmsh API, meshio) or parsed as CalculiX would.
+// Writers (writers/writers.hpp): each format is read back by another program (Gmsh API, meshio) or parsed as
+// CalculiX would.
 #include <gmsh.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -16,27 +17,14 @@
 #include "core/error.hpp"
 #include "quality/quality.hpp"
 #include "sweep/quadratic.hpp"
+#include "test_hex_blocks.hpp"
 #include "writers/writers.hpp"
 
 using namespace hexlayer;
+using hexlayer::test_hex_blocks::twoHexBlock;
 namespace fs = std::filesystem;
 
 namespace {
-
-// 2 x 1 x 1 unit hexes, one layer: 12 nodes, node (i,j,k) has id i + 3*(j + 2*k) and layer k.
-HexMesh twoHexBlock() {
-  HexMesh m;
-  for (int k = 0; k < 2; ++k)
-    for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 3; ++i) {
-        m.nodes.emplace_back(i, j, k);
-        m.nodeLayer.push_back(k);
-        m.nodeOnRim.push_back(0);
-      }
-  for (int i = 0; i < 2; ++i) m.hexes.push_back({i, i + 1, i + 4, i + 3, i + 6, i + 7, i + 10, i + 9});
-  m.layers = 1;
-  return m;
-}
 
 std::vector<NodeSet> layerSets(const HexMesh& m) {
   std::vector<NodeSet> sets{{"TOP", {}}, {"bottom", {}}};
@@ -143,7 +131,7 @@ ExitCode codeOf(const std::function<void()>& f) {
   return ExitCode::Ok;
 }
 
-class WriterTest : public ::testing::Test {
+class Writers : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("hexlayer_writer_" + std::to_string(::getpid()) + "_" +
@@ -170,7 +158,7 @@ class WriterTest : public ::testing::Test {
 
 }  // namespace
 
-TEST_F(WriterTest, MshReadsBackThroughGmsh) {
+TEST_F(Writers, MshReadsBackThroughGmsh) {
   const fs::path p = write("block.msh");
   gmsh::initialize();
   gmsh::option::setNumber("General.Terminal", 0);
@@ -206,7 +194,7 @@ TEST_F(WriterTest, MshReadsBackThroughGmsh) {
   gmsh::finalize();
 }
 
-TEST_F(WriterTest, MshOmitsEmptySurfacesAndPutsAllQuadsInRimWithoutLayers) {
+TEST_F(Writers, MshOmitsEmptySurfacesAndPutsAllQuadsInRimWithoutLayers) {
   mesh_.nodeLayer.clear();
   const std::string text = readText(write("nolayers.msh"));
   EXPECT_NE(text.find("2 3 \"rim\""), std::string::npos);
@@ -215,7 +203,7 @@ TEST_F(WriterTest, MshOmitsEmptySurfacesAndPutsAllQuadsInRimWithoutLayers) {
   EXPECT_NE(text.find("\n2 1 3 10\n"), std::string::npos);  // one block of 10 quads in surface entity 1 (physical 3)
 }
 
-TEST_F(WriterTest, MshHasOnePhysicalGroupPerCadFaceReadBackThroughGmsh) {
+TEST_F(Writers, MshHasOnePhysicalGroupPerCadFaceReadBackThroughGmsh) {
   surfaces_ = boxSurfaces(mesh_);
   const fs::path p = write("faces.msh");
   gmsh::initialize();
@@ -229,7 +217,7 @@ TEST_F(WriterTest, MshHasOnePhysicalGroupPerCadFaceReadBackThroughGmsh) {
   EXPECT_EQ(elementsPerGroup, expected) << "Face7 has no mesh faces: no group";
 }
 
-TEST_F(WriterTest, InpHasANodeSetAndAnElementFaceSurfacePerCadFace) {
+TEST_F(Writers, InpHasANodeSetAndAnElementFaceSurfacePerCadFace) {
   surfaces_ = boxSurfaces(mesh_);
   const std::vector<std::string> all = lines(readText(write("faces.inp")));
   EXPECT_EQ(inpBlock(all, "*NSET, NSET=FACE1"), (std::vector<std::string>{"1, 4, 7, 10"}));
@@ -245,7 +233,7 @@ TEST_F(WriterTest, InpHasANodeSetAndAnElementFaceSurfacePerCadFace) {
   EXPECT_EQ(inpBlock(all, "*NSET, NSET=FACE7"), std::vector<std::string>{});
 }
 
-TEST_F(WriterTest, VtuHasTheCadFaceOfEveryNode) {
+TEST_F(Writers, VtuHasTheCadFaceOfEveryNode) {
   surfaces_ = boxSurfaces(mesh_);
   const fs::path p = write("faces.vtu");
   const fs::path script = dir_ / "check.py";
@@ -257,7 +245,7 @@ TEST_F(WriterTest, VtuHasTheCadFaceOfEveryNode) {
   expectPythonPasses(script, p);
 }
 
-TEST_F(WriterTest, InpHasNodesC3D8IElementsAndNodeSets) {
+TEST_F(Writers, InpHasNodesC3D8IElementsAndNodeSets) {
   const std::vector<std::string> all = lines(readText(write("block.inp")));
   ASSERT_FALSE(all.empty());
   EXPECT_EQ(all[0], "*HEADING");
@@ -273,7 +261,7 @@ TEST_F(WriterTest, InpHasNodesC3D8IElementsAndNodeSets) {
   EXPECT_EQ(inpBlock(all, "*NSET, NSET=BOTTOM"), (std::vector<std::string>{"1, 2, 3, 4, 5, 6"}));
 }
 
-TEST_F(WriterTest, InpWrapsLongNodeSetsAt16Ids) {
+TEST_F(Writers, InpWrapsLongNodeSetsAt16Ids) {
   sets_ = {{"all nodes", {}}};
   for (int r = 0; r < 3; ++r)
     for (int i = 0; i < 12; ++i) sets_[0].nodes.push_back(i);  // 36 ids
@@ -283,7 +271,7 @@ TEST_F(WriterTest, InpWrapsLongNodeSetsAt16Ids) {
   EXPECT_EQ(splitCommas(set[2]).size(), 4u);
 }
 
-TEST_F(WriterTest, InpCoordinatesFitCalculiXTwentyCharacterFields) {
+TEST_F(Writers, InpCoordinatesFitCalculiXTwentyCharacterFields) {
   for (Vec3& p : mesh_.nodes) p = -p * 1.2345678901234567e-5 - Vec3(1.0 / 3.0, 2e-300, 7e123);
   const std::vector<std::string> nodes = inpBlock(lines(readText(write("tiny.inp"))), "*NODE");
   ASSERT_EQ(nodes.size(), 12u);
@@ -297,7 +285,7 @@ TEST_F(WriterTest, InpCoordinatesFitCalculiXTwentyCharacterFields) {
   }
 }
 
-TEST_F(WriterTest, VtuLoadsInMeshio) {
+TEST_F(Writers, VtuLoadsInMeshio) {
   const fs::path p = write("Block.VTU");  // extension in any case
   const fs::path script = dir_ / "check.py";
   std::ofstream(script) << "import sys, meshio\n"
@@ -314,7 +302,7 @@ TEST_F(WriterTest, VtuLoadsInMeshio) {
   expectPythonPasses(script, p);
 }
 
-TEST_F(WriterTest, InpWritesC3D20RWithAContinuationLine) {
+TEST_F(Writers, InpWritesC3D20RWithAContinuationLine) {
   mesh_ = quadratic(mesh_);
   const std::vector<std::string> all = lines(readText(write("quadratic.inp")));
   ASSERT_EQ(inpBlock(all, "*NODE").size(), 32u);
@@ -335,7 +323,7 @@ TEST_F(WriterTest, InpWritesC3D20RWithAContinuationLine) {
   }
 }
 
-TEST_F(WriterTest, VtuWritesQuadraticHexahedraThatMeshioReads) {
+TEST_F(Writers, VtuWritesQuadraticHexahedraThatMeshioReads) {
   mesh_ = quadratic(mesh_);
   const fs::path p = write("quadratic.vtu");
   EXPECT_NE(readText(p).find("25 25\n"), std::string::npos);  // VTK_QUADRATIC_HEXAHEDRON
@@ -353,7 +341,7 @@ for c in cells:
   expectPythonPasses(script, p);
 }
 
-TEST_F(WriterTest, MshWrites20NodeHexesAnd8NodeQuadsInGmshOrder) {
+TEST_F(Writers, MshWrites20NodeHexesAnd8NodeQuadsInGmshOrder) {
   mesh_ = quadratic(mesh_);
   const fs::path p = write("quadratic.msh");
   gmsh::initialize();
@@ -387,7 +375,7 @@ TEST_F(WriterTest, MshWrites20NodeHexesAnd8NodeQuadsInGmshOrder) {
   gmsh::finalize();
 }
 
-TEST_F(WriterTest, OutputIsDeterministic) {
+TEST_F(Writers, OutputIsDeterministic) {
   for (const std::string ext : {".inp", ".vtu", ".msh"}) {
     const std::string a = readText(write("a" + ext)), b = readText(write("b" + ext));
     EXPECT_FALSE(a.empty());
@@ -395,7 +383,7 @@ TEST_F(WriterTest, OutputIsDeterministic) {
   }
 }
 
-TEST_F(WriterTest, UnknownExtensionIsUsageError) {
+TEST_F(Writers, UnknownExtensionIsUsageError) {
   EXPECT_EQ(codeOf([&] { write("block.stl"); }), ExitCode::BadUsage);
   EXPECT_EQ(codeOf([&] { write("block"); }), ExitCode::BadUsage);
   EXPECT_FALSE(fs::exists(dir_ / "block.stl"));
@@ -406,7 +394,7 @@ TEST_F(WriterTest, UnknownExtensionIsUsageError) {
   }
 }
 
-TEST_F(WriterTest, UnwritablePathIsInputError) {
+TEST_F(Writers, UnwritablePathIsInputError) {
   const std::string path = (dir_ / "missing_dir" / "block.inp").string();
   try {
     writeMesh(path, mesh_, {sets_, {}, {}});
@@ -417,7 +405,7 @@ TEST_F(WriterTest, UnwritablePathIsInputError) {
   }
 }
 
-TEST_F(WriterTest, CellFieldOfWrongSizeIsRejected) {
+TEST_F(Writers, CellFieldOfWrongSizeIsRejected) {
   fields_.push_back({"short", {1.0}});
   EXPECT_EQ(codeOf([&] { write("bad.vtu"); }), ExitCode::Internal);
 }

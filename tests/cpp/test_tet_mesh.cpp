@@ -1,27 +1,22 @@
-// Bubbles and tets (paper §3-4, §5.4): the bubble force, TetGen's Delaunay tets and their filter,
-// the wall sides of a thin box, and bubble nodes that land on the top and bottom faces only.
+// Tets (tets/tet_mesh.hpp, paper §4, §5.4): TetGen's Delaunay tets and their filter (flat, outside and coplanar
+// tets), and the tets of a thin box's bubbles cut at its mid plane.
 #include <gtest/gtest.h>
-#include <BRepGProp.hxx>
-#include <BRepPrimAPI_MakeBox.hxx>
-#include <BRepTools.hxx>
-#include <GProp_GProps.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <cstdio>
-#include <limits>
-#include <string>
+#include <vector>
 
 #include "bubbles/bubble_packing.hpp"
 #include "chordal/chordal_surface.hpp"
 #include "core/error.hpp"
 #include "geometry/cad_solid.hpp"
 #include "geometry/wall_sides.hpp"
+#include "test_parts.hpp"
 #include "tets/tet_mesh.hpp"
 
 using namespace hexlayer;
+using hexlayer::test_parts::box;
 
 namespace {
 
@@ -51,17 +46,6 @@ double convexHullVolume(const std::vector<Vec3>& p) {
   return volume;
 }
 
-CadSolid box(double dx, double dy, double dz) {
-  return prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), dx, dy, dz).Solid());
-}
-
-Vec3 faceCentre(const CadSolid& cad, int f) {
-  GProp_GProps props;
-  BRepGProp::SurfaceProperties(cad.faces(f + 1), props);
-  const gp_Pnt c = props.CentreOfMass();
-  return {c.X(), c.Y(), c.Z()};
-}
-
 SurfaceNode node(const Vec3& p, Side side) {
   SurfaceNode n;
   n.point = p;
@@ -71,22 +55,8 @@ SurfaceNode node(const Vec3& p, Side side) {
 
 }  // namespace
 
-// Shimada's force f(w) = 1.25 w^3 - 2.375 w^2 + 1.125 on [0, 1.5], 0 beyond.
-TEST(Bubbles, BubbleForceRepelsBelowStableDistanceAndAttractsUpTo1Point5) {
-  EXPECT_DOUBLE_EQ(bubbleForce(0.0), 1.125);
-  EXPECT_NEAR(bubbleForce(1.0), 0.0, 1e-15);
-  EXPECT_NEAR(bubbleForce(1.5), 0.0, 1e-14) << "continuous where it is cut off";
-  EXPECT_NEAR(bubbleForce(0.5), 1.25 * 0.125 - 2.375 * 0.25 + 1.125, 1e-15);
-  for (double w : {0.1, 0.4, 0.7, 0.95, 0.999}) EXPECT_GT(bubbleForce(w), 0) << "w = " << w;
-  for (double w : {1.001, 1.1, 1.25, 1.4, 1.499}) EXPECT_LT(bubbleForce(w), 0) << "w = " << w;
-  EXPECT_NEAR(bubbleForce(1.25), 1.25 * 1.953125 - 2.375 * 1.5625 + 1.125, 1e-15);
-  for (double w : {1.5001, 1.6, 2.0, 10.0}) EXPECT_EQ(bubbleForce(w), 0.0) << "w = " << w;
-  // Repulsion weakens monotonically up to the stable distance.
-  for (double w = 0.05; w <= 1.0; w += 0.05) EXPECT_LT(bubbleForce(w), bubbleForce(w - 0.05)) << "w = " << w;
-}
-
 // TetGen tetrahedralizes the convex hull of the nodes: 8 corners of a perturbed box.
-TEST(Tets, DelaunayTetsFillTheConvexHull) {
+TEST(TetMesh, DelaunayTetsFillTheConvexHull) {
   const std::vector<Vec3> corners = {Vec3(0, 0, 0),   Vec3(3.1, 0, 0.05), Vec3(3, 2.2, 0),  Vec3(0.1, 2, -0.03),
                                      Vec3(0, 0.1, 1), Vec3(2.9, 0, 1.1),  Vec3(3, 2, 0.97), Vec3(-0.1, 2.05, 0.95)};
   std::vector<SurfaceNode> nodes;
@@ -117,7 +87,7 @@ TEST(Tets, DelaunayTetsFillTheConvexHull) {
   EXPECT_NEAR(volume, hull, 1e-9 * hull) << "the tets tile the hull without gaps or overlaps";
 }
 
-TEST(Tets, DelaunayTetsNeedFourNodes) {
+TEST(TetMesh, DelaunayTetsNeedFourNodes) {
   const std::vector<SurfaceNode> three = {node(Vec3(0, 0, 0), Side::Bottom), node(Vec3(1, 0, 0), Side::Bottom),
                                           node(Vec3(0, 1, 1), Side::Top)};
   EXPECT_THROW(delaunayTets(three), Error);
@@ -129,7 +99,7 @@ void addTetNode(TetMesh& m, const Vec3& p, Side s) {
 }
 
 // §5.4: flat tets (all four nodes on one side) are dropped, so are tets outside; coplanar ones are kept.
-TEST(Tets, KeepSpanningTetsInsideDropsFlatAndOutsideTetsAndKeepsCoplanarOnes) {
+TEST(TetMesh, KeepSpanningTetsInsideDropsFlatAndOutsideTetsAndKeepsCoplanarOnes) {
   const CadSolid cad = box(10, 10, 2);
   TetMesh m;
   auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
@@ -170,7 +140,7 @@ TEST(Tets, KeepSpanningTetsInsideDropsFlatAndOutsideTetsAndKeepsCoplanarOnes) {
 
 // The same coplanar tet with tets on one side only (in front): it stands on the hull of the tets, in the
 // plane where they end, as at a round rim (the hull plane runs inside the solid, far from its boundary).
-TEST(Tets, CoplanarTetOnTheHullIsDropped) {
+TEST(TetMesh, CoplanarTetOnTheHullIsDropped) {
   const CadSolid cad = box(10, 10, 2);
   TetMesh m;
   auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
@@ -193,7 +163,7 @@ TEST(Tets, CoplanarTetOnTheHullIsDropped) {
 
 // Two top and two bottom bubbles on the rim edges of a rounded corner, a little off the rim face (as
 // sheet_metal_54's at (-3.4, 28, 3.4)): a sliver of the hull, dropped; a tet inside is not.
-TEST(Tets, RimSliverSlightlyOffTheRimFaceIsDropped) {
+TEST(TetMesh, RimSliverSlightlyOffTheRimFaceIsDropped) {
   const CadSolid cad = box(10, 10, 2);
   TetMesh m;
   auto add = [&](const Vec3& p, Side s) { addTetNode(m, p, s); };
@@ -215,7 +185,7 @@ TEST(Tets, RimSliverSlightlyOffTheRimFaceIsDropped) {
 }
 
 // Coplanar: height over the shortest edge, so a thin tet is flat but one with a tiny edge is not.
-TEST(Tets, CoplanarTetIsFlatForItsShortestEdge) {
+TEST(TetMesh, CoplanarTetIsFlatForItsShortestEdge) {
   const Vec3 a(0, 0, 0), b(1.5, 0, 0), c(0, 1.5, 0), d(1.5, 1.5, 0);
   EXPECT_TRUE(isCoplanarTet({a, b, c, d})) << "four nodes in one plane";
   EXPECT_TRUE(isCoplanarTet({a, b, c, Vec3(1.5, 1.5, 1e-5)})) << "1e-5 off over 1.5 mm edges";
@@ -226,104 +196,9 @@ TEST(Tets, CoplanarTetIsFlatForItsShortestEdge) {
       isCoplanarTet({Vec3(1.5, 0.002, 1.5), Vec3(1.502, 0.002, 0), Vec3(1.502, 0.002, 1.5), Vec3(1.502, 0, 0)}));
 }
 
-// A 40 x 30 x 2 plate: 2 mm thick, z = 2 is Top, z = 0 Bottom, the four rim faces Lateral.
-// A file holding only the closed shell of a part (as sheet-metal exports often do) gives its solid.
-TEST(Geometry, ClosedShellFileIsReadAsTheSolidItBounds) {
-  const TopoDS_Shape box = BRepPrimAPI_MakeBox(40, 30, 2).Solid();
-  TopExp_Explorer shell(box, TopAbs_SHELL);
-  ASSERT_TRUE(shell.More());
-  const std::string path = ::testing::TempDir() + "hexlayer_shell_only.brep";
-  ASSERT_TRUE(BRepTools::Write(shell.Current(), path.c_str()));
-  const std::vector<TopoDS_Solid> solids = readSolids(path);
-  std::remove(path.c_str());
-  ASSERT_EQ(solids.size(), 1u);
-  EXPECT_NEAR(prepareSolid(solids[0]).volume, 2400.0, 1e-6);
-}
-
-TEST(WallSides, ThinBoxHasOneTopOneBottomAndFourLateralFaces) {
-  const CadSolid cad = box(40, 30, 2);
-  EXPECT_NEAR(cad.volume, 2400.0, 1e-9 * 2400);
-  EXPECT_EQ(cad.faces.Extent(), 6);
-  EXPECT_NEAR(cad.diagonal, std::sqrt(40.0 * 40 + 30 * 30 + 2 * 2), 1e-6);
-  const WallSides w = classifyWallSides(cad);
-  ASSERT_EQ(w.faces.size(), 6u);
-  EXPECT_NEAR(w.thickness, 2.0, 2e-6);
-  EXPECT_NEAR(w.sheetAreaShare, 2400.0 / (2400 + 2 * (40 * 2 + 30 * 2)), 1e-6);
-  int top = -1, bottom = -1, lateral = 0;
-  for (int f = 0; f < 6; ++f) {
-    const Vec3 c = faceCentre(cad, f);
-    switch (w.faces[f].side) {
-      case Side::Top:
-        EXPECT_EQ(top, -1) << "two Top faces";
-        top = f;
-        EXPECT_NEAR(c.z(), 2.0, 1e-9);
-        break;
-      case Side::Bottom:
-        EXPECT_EQ(bottom, -1) << "two Bottom faces";
-        bottom = f;
-        EXPECT_NEAR(c.z(), 0.0, 1e-9);
-        break;
-      case Side::Lateral:
-        ++lateral;
-        EXPECT_NEAR(c.z(), 1.0, 1e-9);
-        break;
-    }
-  }
-  ASSERT_GE(top, 0);
-  ASSERT_GE(bottom, 0);
-  EXPECT_EQ(lateral, 4);
-  EXPECT_NEAR(w.faces[top].thickness, 2.0, 2e-6);
-  EXPECT_NEAR(w.faces[bottom].thickness, 2.0, 2e-6);
-  EXPECT_EQ(w.faces[top].opposite, bottom);
-  EXPECT_EQ(w.faces[bottom].opposite, top);
-  EXPECT_NEAR(w.faces[top].area, 1200.0, 1e-6);
-}
-
-TEST(WallSides, CubeIsNotAThinSection) {
-  const CadSolid cad = box(20, 20, 20);
-  EXPECT_NEAR(cad.volume, 8000.0, 1e-9 * 8000);
-  try {
-    classifyWallSides(cad);
-    FAIL() << "a cube was classified as a thin wall";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
-    EXPECT_NE(std::string(e.what()).find("not a thin section"), std::string::npos) << e.what();
-  }
-}
-
-// §4: bubbles larger than the wall thickness, on the top and bottom faces and their edges only.
-TEST(Bubbles, PackBubblesOnThinBoxPutsSpacedNodesOnTopAndBottomOnly) {
-  const CadSolid cad = box(40, 30, 2);
-  const WallSides w = classifyWallSides(cad);
-  const std::vector<SurfaceNode> nodes = packBubbles(cad, w, BubbleOptions{});
-  ASSERT_GT(nodes.size(), 50u);
-  int onTop = 0, onBottom = 0, corners = 0;
-  for (size_t i = 0; i < nodes.size(); ++i) {
-    const SurfaceNode& n = nodes[i];
-    const Vec3& p = n.point;
-    const bool top = std::abs(p.z() - 2) < 1e-9, bottom = std::abs(p.z()) < 1e-9;
-    ASSERT_TRUE(top || bottom) << "node " << i << " at " << p.transpose() << " is inside a lateral face";
-    EXPECT_EQ(n.side, top ? Side::Top : Side::Bottom) << "node " << i;
-    EXPECT_GE(p.x(), -1e-9);
-    EXPECT_LE(p.x(), 40 + 1e-9);
-    EXPECT_GE(p.y(), -1e-9);
-    EXPECT_LE(p.y(), 30 + 1e-9);
-    EXPECT_EQ((n.face >= 0) + (n.edge >= 0) + (n.vertex >= 0), 1) << "node " << i << " on one CAD entity";
-    if (n.face >= 0) EXPECT_EQ(w.faces[n.face].side, n.side) << "node " << i << " on a face of the other side";
-    onTop += top, onBottom += bottom, corners += n.vertex >= 0;
-  }
-  EXPECT_EQ(corners, 8);
-  EXPECT_GT(onTop, 20);
-  EXPECT_GT(onBottom, 20);
-  double closest = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < nodes.size(); ++i)
-    for (size_t j = i + 1; j < nodes.size(); ++j) closest = std::min(closest, (nodes[i].point - nodes[j].point).norm());
-  EXPECT_GT(closest, 0.5 * w.thickness);
-}
-
 // The thin box end to end up to the chordal surface: Delaunay tets of the bubble nodes, filtered,
 // fill the plate exactly, and their chordal surface is the mid plane z = 1 with radius 1.
-TEST(Tets, ThinBoxTetsFillThePlateAndCutAtMidPlane) {
+TEST(TetMesh, ThinBoxTetsFillThePlateAndCutAtMidPlane) {
   const CadSolid cad = box(40, 30, 2);
   const WallSides w = classifyWallSides(cad);
   TetMesh tets = delaunayTets(packBubbles(cad, w, BubbleOptions{}));

@@ -1,0 +1,93 @@
+// Validation of a finished hex mesh (quality/validation.hpp): the checks that refuse a mesh (inverted hexes,
+// conformity, watertight boundary, volume against the CAD, repeated nodes), each named with its place.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "quality/quality.hpp"
+#include "quality/validation.hpp"
+#include "test_hex_blocks.hpp"
+
+using namespace hexlayer;
+using hexlayer::test_hex_blocks::block;
+using hexlayer::test_hex_blocks::box;
+using hexlayer::test_hex_blocks::singleHex;
+
+namespace {
+
+std::vector<ValidationFailure> validate(const HexMesh& m, double cadVolume) {
+  return validateMesh(m, measureQuality(m), checkBoundary(m), cadVolume);
+}
+
+// The failure of that check in `failures` (which must outlive the pointer), or nullptr.
+const ValidationFailure* find(const std::vector<ValidationFailure>& failures, const std::string& check) {
+  for (const ValidationFailure& f : failures)
+    if (f.check == check) return &f;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(Validation, BlockOfGoodHexesPasses) { EXPECT_TRUE(validate(block({0, 1, 2}, {0, 1}, {0, 0.5, 1}), 2.0).empty()); }
+
+TEST(Validation, InvertedHexIsNamedWithItsPlace) {
+  HexMesh m = singleHex(box(2, 1, 1));
+  std::swap(m.nodes[1], m.nodes[3]);  // mirrored: every corner inverted, volume -2
+  const auto failures = validate(m, 2.0);
+  const ValidationFailure* f = find(failures, "inverted");
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->count, 1u);
+  ASSERT_TRUE(f->at);
+  EXPECT_TRUE(f->at->isApprox(Vec3(1, 0.5, 0.5)));  // the mirrored box's centroid
+  EXPECT_EQ(f->message, "inverted: 1 inverted hexes (scaled Jacobian <= 0), the worst at (1, 0.5, 0.5)");
+  EXPECT_NE(find(failures, "volume"), nullptr);  // -2 against +2
+}
+
+TEST(Validation, DuplicateNodesAreNotConformal) {
+  HexMesh m = singleHex(box(1, 1, 1));
+  for (int i = 0; i < 8; ++i) m.nodes.push_back(m.nodes[i] + Vec3(1, 0, 0));
+  m.hexes.push_back({8, 9, 10, 11, 12, 13, 14, 15});
+  const auto failures = validate(m, 2.0);
+  ASSERT_EQ(failures.size(), 1u);  // two closed shells of good hexes, the right volume
+  EXPECT_EQ(failures[0].check, "conformal");
+  EXPECT_EQ(failures[0].count, 4u);
+  EXPECT_TRUE(failures[0].at->isApprox(Vec3(1, 0, 0)));  // node 8, the first to close a pair (with node 1)
+}
+
+TEST(Validation, OpenBoundaryIsNotWatertight) {
+  HexMesh m = block({0, 1, 2}, {0, 1}, {0, 1});
+  m.hexes.push_back(m.hexes[1]);  // the face x=1 used three times: hex 0 is an open box
+  const auto failures = validate(m, 3.0);
+  const ValidationFailure* f = find(failures, "watertight");
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->count, 4u);
+  EXPECT_DOUBLE_EQ(f->at->x(), 1.0);  // an edge of the x=1 face
+  EXPECT_NE(f->message.find("(4 open, 0 non-manifold, 0 flipped)"), std::string::npos) << f->message;
+}
+
+TEST(Validation, VolumeFarFromTheCadIsRefused) {
+  const HexMesh m = block({0, 1}, {0, 1}, {0, 1});
+  EXPECT_TRUE(validate(m, 1.04).empty());  // within 5 %
+  const auto failures = validate(m, 1.25);
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].check, "volume");
+  EXPECT_FALSE(failures[0].at);
+  EXPECT_EQ(failures[0].message, "volume: the mesh's 1 differs from the CAD's 1.25 by -20 % (at most 5 %)");
+}
+
+TEST(Validation, ElementWithARepeatedNodeIsNotAHex) {
+  HexMesh m = singleHex(box(1, 1, 1));
+  m.hexes[0][7] = 4;  // a wedge written as a hex
+  const auto failures = validate(m, 1.0);
+  const ValidationFailure* f = find(failures, "hexes");
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->count, 1u);
+}
+
+TEST(Validation, EmptyMeshFails) {
+  const auto failures = validate(HexMesh{}, 1.0);
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].check, "hexes");
+}
