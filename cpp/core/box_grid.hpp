@@ -32,7 +32,7 @@ class BoxGrid {
   // empty), the lowest id on a tie. An item spanning several cells may be offered more than once.
   template <class Distance>
   int nearest(const Vec3& p, Distance&& distance) const {
-    if (!p.allFinite()) return -1;
+    if (!p.allFinite() || cells_.empty()) return -1;  // empty: lo_ > hi_, the rings would run to INT_MAX
     const Eigen::Vector3i c = cellOf(p);
     // Rings closer than the grid's box are empty, rings beyond it too: scan only those between.
     const int firstRing = std::max({0, (lo_ - c).maxCoeff(), (c - hi_).maxCoeff()});
