@@ -1,0 +1,71 @@
+// The quad mesh of the chordal surface (quadmesh/quad_mesh.hpp): meshChordalSurface on flat chordal surfaces built
+// by hand, a rectangle and a rectangle with a hole, checked on the quads themselves (they tile the surface, lie
+// on it, are squares of the size asked), and rimEdgeNeighbours on a strip of two quads.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "chordal/chordal_locator.hpp"
+#include "quadmesh/quad_mesh.hpp"
+#include "quadmesh/quad_smoothing.hpp"
+#include "test_flat_surfaces.hpp"
+
+using namespace hexlayer;
+using hexlayer::test_flat_surfaces::rectangle;
+
+namespace {
+
+double quadArea(const QuadMesh& q, const std::array<int, 4>& quad) {
+  const auto& x = q.nodes;
+  return 0.5 * (x[quad[2]] - x[quad[0]]).cross(x[quad[3]] - x[quad[1]]).norm();
+}
+
+// The quads of the flat nx x ny rectangle `surface` (with holes of total area `holeArea`) at size 1: they
+// cover its area exactly, every node lies in its plane and box, every quad's scaled Jacobian is at least `lowest`.
+void expectTiling(const ChordalSurface& surface, int nx, int ny, double holeArea, double lowest) {
+  const ChordalLocator chordal(surface);
+  QuadMeshOptions o;
+  o.size = 1;
+  const QuadMesh q = meshChordalSurface(chordal, o);
+  ASSERT_FALSE(q.quads.empty());
+  EXPECT_NE(q.layout, QuadLayout::Gmsh) << "a structured grid on a rectangle";
+  EXPECT_EQ(q.holes, 0u);
+  double area = 0, worst = 1;
+  for (const auto& quad : q.quads) {
+    area += quadArea(q, quad);
+    worst =
+        std::min(worst, quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]}));
+  }
+  EXPECT_NEAR(area, nx * ny - holeArea, 1e-9);
+  EXPECT_GE(worst, lowest);
+  for (const Vec3& p : q.nodes) {
+    EXPECT_NEAR(p.z(), 0, 1e-12);
+    EXPECT_TRUE(p.x() > -1e-9 && p.x() < nx + 1e-9 && p.y() > -1e-9 && p.y() < ny + 1e-9);
+  }
+}
+
+}  // namespace
+
+TEST(QuadMesh, RectangleGetsUnitSquares) { expectTiling(rectangle(20, 10), 20, 10, 0, 0.999); }
+
+// Round the hole a pocket of four blocks, whose corners on the diagonals are 45 degree quads (1 / sqrt 2).
+TEST(QuadMesh, RectangleWithAHoleKeepsTheHole) {
+  expectTiling(rectangle(20, 10, {{8, 12, 4, 6}}), 20, 10, 8, std::sqrt(0.5) - 1e-9);
+}
+
+// Two quads side by side: every node is on the rim; the middle nodes' rim neighbours are along the long sides.
+TEST(QuadMesh, RimEdgeNeighboursOfAStrip) {
+  QuadMesh q;
+  for (int j = 0; j <= 1; ++j)
+    for (int i = 0; i <= 2; ++i) q.nodes.emplace_back(i, j, 0);
+  q.quads = {{0, 1, 4, 3}, {1, 2, 5, 4}};
+  std::vector<std::vector<int>> next = rimEdgeNeighbours(q);
+  for (auto& n : next) std::sort(n.begin(), n.end());
+  EXPECT_EQ(next[0], (std::vector<int>{1, 3}));
+  EXPECT_EQ(next[1], (std::vector<int>{0, 2})) << "the shared edge 1-4 is not on the rim";
+  EXPECT_EQ(next[4], (std::vector<int>{3, 5}));
+  EXPECT_EQ(next[2], (std::vector<int>{1, 5}));
+}
