@@ -1,0 +1,90 @@
+// The driver (pipeline/pipeline.hpp): options checked before anything runs, each bad one named; a box meshed end
+// to end into the bricks it must be (counts, node sets, volume and quality measured on the mesh, every stage
+// timed); and the same box drawn in metres meshed into the same hexes, scaled.
+#include <gtest/gtest.h>
+
+#include <BRepPrimAPI_MakeBox.hxx>
+
+#include <string>
+
+#include "core/error.hpp"
+#include "pipeline/pipeline.hpp"
+#include "quality/quality.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+TopoDS_Solid box(double s) { return BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40 * s, 30 * s, 2 * s).Solid(); }
+
+// validateOptions's error for `o`, which must be a usage error (exit 2).
+std::string usageMessage(const MeshOptions& o) {
+  try {
+    validateOptions(o);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::BadUsage);
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted";
+  return "";
+}
+
+}  // namespace
+
+TEST(Pipeline, BadOptionsAreNamed) {
+  MeshOptions o;
+  validateOptions(o);  // the defaults are good
+  o.layers = 0;
+  EXPECT_NE(usageMessage(o).find("--layers"), std::string::npos);
+  o = MeshOptions{}, o.order = 3;
+  EXPECT_NE(usageMessage(o).find("--order"), std::string::npos);
+  o = MeshOptions{}, o.sizing = "fine";
+  EXPECT_NE(usageMessage(o).find("--sizing"), std::string::npos);
+  o = MeshOptions{}, o.size = 2, o.aspect = 3;
+  EXPECT_NE(usageMessage(o).find("not both"), std::string::npos);
+  o = MeshOptions{}, o.minSize = 3, o.maxSize = 1;
+  EXPECT_NE(usageMessage(o).find("--min-size"), std::string::npos);
+  o = MeshOptions{}, o.size = -1;
+  EXPECT_NE(usageMessage(o).find("--size"), std::string::npos);
+}
+
+// 40 x 30 x 2 at size 2 in 3 layers: 20 x 15 x 3 bricks of 2 x 2 x 2/3, filling the box.
+TEST(Pipeline, BoxIsMeshedIntoBricks) {
+  MeshOptions o;
+  o.layers = 3, o.size = 2;
+  const MeshResult r = meshSolid(box(1), o);
+  ASSERT_EQ(r.mesh.hexes.size(), 900u);
+  double volume = 0;
+  for (std::size_t h = 0; h < r.mesh.hexes.size(); ++h) {
+    EXPECT_GT(hexScaledJacobian(hexCorners(r.mesh, h)), 0.999);
+    volume += hexVolume(hexCorners(r.mesh, h));
+  }
+  EXPECT_NEAR(volume, 40 * 30 * 2, 1e-9);
+  ASSERT_EQ(r.nodeSets.size(), 3u);
+  EXPECT_EQ(r.nodeSets[0].name, "TOP");
+  EXPECT_EQ(r.nodeSets[0].nodes.size(), 21u * 16u);
+  EXPECT_EQ(r.nodeSets[1].nodes.size(), 21u * 16u);
+  EXPECT_EQ(r.nodeSets[2].nodes.size(), 2u * (20 + 15) * 4);  // the rim's nodes in the 4 node layers
+  EXPECT_EQ(r.surfaceGroups.size(), 6u);
+  EXPECT_TRUE(r.report.mesh.passed());
+  for (const char* stage : {"geometry", "wall_sides", "bubbles", "tets", "chordal_surface", "quad_mesh", "sweep", "rim",
+                            "surface_groups", "quality"})
+    EXPECT_TRUE(r.report.stages.count(stage)) << stage;
+}
+
+// The box drawn in metres gives the box's mesh in millimetres, scaled: the same hexes (connectivity), each node
+// within 1 % of the diagonal of its place at a thousandth (not bit for bit: 0.001 is not a binary fraction, and
+// the bubble packing and the map of the chordal surface carry the last bits on; measured 0.27 %), near bricks
+// (measured min 0.990 against 0.999 in millimetres).
+TEST(Pipeline, MetresGiveTheSameMeshScaled) {
+  MeshOptions mm, m;
+  mm.layers = m.layers = 2;
+  mm.size = 2, m.size = 2e-3;
+  const MeshResult a = meshSolid(box(1), mm), b = meshSolid(box(1e-3), m);
+  ASSERT_EQ(a.mesh.hexes, b.mesh.hexes);
+  ASSERT_EQ(a.mesh.nodes.size(), b.mesh.nodes.size());
+  const double diagonal = 50e-3;  // metres
+  for (std::size_t v = 0; v < a.mesh.nodes.size(); ++v)
+    EXPECT_LT((a.mesh.nodes[v] * 1e-3 - b.mesh.nodes[v]).norm(), 0.01 * diagonal);
+  for (std::size_t h = 0; h < b.mesh.hexes.size(); ++h) EXPECT_GT(hexScaledJacobian(hexCorners(b.mesh, h)), 0.98);
+}
