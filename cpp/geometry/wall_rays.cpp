@@ -1,6 +1,5 @@
 #include "geometry/wall_rays.hpp"
 
-#include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_IntCS.hxx>
 #include <Geom_Line.hxx>
@@ -25,20 +24,15 @@ gp_Lin lineOf(const Vec3& from, const Vec3& dir) {
   return gp_Lin(gp_Pnt(from.x(), from.y(), from.z()), gp_Dir(dir.x(), dir.y(), dir.z()));
 }
 
-// The outward unit normal of hit i's face at the hit.
-Vec3 outwardNormal(const IntCurvesFace_ShapeIntersector& rays, int i) {
-  gp_Pnt p;
-  gp_Vec du, dv;
-  BRepAdaptor_Surface(rays.Face(i)).D1(rays.UParameter(i), rays.VParameter(i), p, du, dv);
-  const gp_Vec n = du.Crossed(dv);
-  const Vec3 normal = Vec3(n.X(), n.Y(), n.Z()).normalized();
-  return rays.Face(i).Orientation() == TopAbs_REVERSED ? Vec3(-normal) : normal;
+// The outward unit normal of hit i's face at the hit (zero where the surface has none, a pole).
+Vec3 hitNormal(const IntCurvesFace_ShapeIntersector& rays, int i) {
+  return outwardNormal(rays.Face(i), rays.UParameter(i), rays.VParameter(i));
 }
 
 // Hit i of a ray along dir crosses its face (in or out), it does not run along it: OpenCASCADE reports a line
 // lying in a face as tangent points or as crossings at the start of the range cast, by the surface's kind.
 bool crosses(const IntCurvesFace_ShapeIntersector& rays, int i, const Vec3& dir) {
-  return rays.Transition(i) != IntCurveSurface_Tangent && std::abs(outwardNormal(rays, i).dot(dir)) > kGrazing;
+  return rays.Transition(i) != IntCurveSurface_Tangent && std::abs(hitNormal(rays, i).dot(dir)) > kGrazing;
 }
 
 // The nearest hit of the ray that crosses a face (0: none) and, if the ray runs along a face before it, that
@@ -53,7 +47,7 @@ Crossing nearestCrossing(IntCurvesFace_ShapeIntersector& rays, const Vec3& from,
   rays.PerformNearest(lineOf(from, dir), minDistance, maxDistance);
   if (!rays.IsDone() || rays.NbPnt() == 0) return {};
   if (crosses(rays, 1, dir)) return {1, std::nullopt};
-  const Vec3 inward = -outwardNormal(rays, 1);
+  const Vec3 inward = -hitNormal(rays, 1);
   rays.Perform(lineOf(from, dir), minDistance, maxDistance);  // rare: every hit, for the nearest crossing
   Crossing c{0, inward};
   for (int i = 1; i <= rays.NbPnt(); ++i)
