@@ -57,16 +57,19 @@ struct Piece {
   double share() const { return area > 0 ? crossing / area : 0; }
 };
 
+// A rim piece: the band [from, to) of the face's u (alongV: its lines run along v) or v.
+struct Band {
+  bool alongV;
+  double from, to;
+  double coord(const RayMark& m) const { return alongV ? m.u : m.v; }
+  bool holds(const RayMark& m) const { return coord(m) >= from && coord(m) < to; }
+};
+
 struct Candidate {
   double misplaced;  // sample area on the wrong side of the lines (non-crossing in a wall piece, crossing in the rim
                      // piece)
   std::vector<FaceSplit> splits;  // one line, or two round a rim piece between two wall pieces
-  bool alongV;                    // the rim piece: the band [from, to) of u (alongV) or v
-  double from, to;
-  bool inRim(const RayMark& m) const {
-    const double c = alongV ? m.u : m.v;
-    return c >= from && c < to;
-  }
+  Band rim;
 };
 
 double angleDegrees(const Vec3& a, const Vec3& b) {
@@ -80,26 +83,26 @@ double angleDegrees(const Vec3& a, const Vec3& b) {
 // curved wall's band along a flat rim is not taken for a rim.
 std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV, double from, double to,
                                  double thickness, int face) {
-  auto coord = [&](const RayMark& m) { return alongV ? m.u : m.v; };
-  auto inRim = [&](const RayMark& m) { return coord(m) >= from && coord(m) < to; };
+  const Band band{alongV, from, to};
   Piece below, above, rim, besideBelow, besideAbove;
   double first = to, last = from;  // the rim samples' extent in the parameter
   for (const RayMark& m : marks) {
-    Piece& p = inRim(m) ? rim : coord(m) < from ? below : above;
+    Piece& p = band.holds(m) ? rim : band.coord(m) < from ? below : above;
     p.area += m.area, p.crossing += m.crossing ? m.area : 0, p.normal += m.area * m.normal;
-    if (inRim(m)) first = std::min(first, coord(m)), last = std::max(last, coord(m));
+    if (band.holds(m)) first = std::min(first, band.coord(m)), last = std::max(last, band.coord(m));
   }
   const double width = std::max(last - first, 0.0);
   for (const RayMark& m : marks) {
-    if (coord(m) < from && coord(m) >= from - width)
+    if (band.coord(m) < from && band.coord(m) >= from - width)
       besideBelow.area += m.area, besideBelow.normal += m.area * m.normal;
-    if (coord(m) >= to && coord(m) < to + width) besideAbove.area += m.area, besideAbove.normal += m.area * m.normal;
+    if (band.coord(m) >= to && band.coord(m) < to + width)
+      besideAbove.area += m.area, besideAbove.normal += m.area * m.normal;
   }
   if (rim.share() >= kRimPiece || rim.area < kMinRimArea * thickness * thickness ||
       rim.normal.norm() < kOneWay * rim.area)
     return {};
   if (below.area + above.area <= 0) return {};
-  Candidate c{rim.crossing, {}, alongV, from, to};
+  Candidate c{rim.crossing, {}, band};
   for (const auto& [wall, beside, at] : {std::tuple{below, besideBelow, from}, std::tuple{above, besideAbove, to}}) {
     if (wall.area <= 0) continue;
     // Each piece must face one way (a band round a tube faces every way), and the two ways differ.
@@ -117,11 +120,11 @@ std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV,
 double largestTurn(const std::vector<RayMark>& marks, const Candidate& c) {
   double largest = 0;
   for (const RayMark& m : marks) {
-    if (!c.inRim(m)) continue;
+    if (!c.rim.holds(m)) continue;
     const RayMark* nearest = nullptr;
     double best = std::numeric_limits<double>::infinity();
     for (const RayMark& w : marks)
-      if (const double d = std::hypot(w.u - m.u, w.v - m.v); !c.inRim(w) && d < best) best = d, nearest = &w;
+      if (const double d = std::hypot(w.u - m.u, w.v - m.v); !c.rim.holds(w) && d < best) best = d, nearest = &w;
     if (nearest) largest = std::max(largest, angleDegrees(m.normal, nearest->normal));
   }
   return largest;
