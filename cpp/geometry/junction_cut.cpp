@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <limits>
 #include <map>
-#include <sstream>
 
 #include "core/error.hpp"
 #include "geometry/sheet_edges.hpp"
@@ -56,14 +55,22 @@ std::vector<int> sheetOfFaces(const CadSolid& cad, const WallSides& sides, const
   return rimSheet;
 }
 
+// What the feet are found from, worked out once for every standing sheet.
+struct Junctions {
+  const CadSolid& cad;
+  const WallSides& sides;
+  const std::vector<Sheet>& sheets;
+  std::vector<int> sheetOf;          // sheetOfFaces
+  std::vector<ConcaveEdge> concave;  // concaveEdges
+};
+
 // Per base wall face, the concave edges between it and the faces of standing sheet s.
-std::map<int, std::vector<TopoDS_Edge>> footEdges(const CadSolid& cad, const WallSides& sides,
-                                                  const std::vector<int>& sheetOf, int s) {
+std::map<int, std::vector<TopoDS_Edge>> footEdges(const Junctions& j, int s) {
   std::map<int, std::vector<TopoDS_Edge>> edges;
-  for (const ConcaveEdge& c : concaveEdges(cad))
+  for (const ConcaveEdge& c : j.concave)
     for (const auto [base, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
-      if (sheetOf[base] == 0 && sides.faces[base].side != Side::Lateral && sheetOf[other] == s)
-        edges[base].push_back(TopoDS::Edge(cad.edges(c.edge + 1)));
+      if (j.sheetOf[base] == 0 && j.sides.faces[base].side != Side::Lateral && j.sheetOf[other] == s)
+        edges[base].push_back(TopoDS::Edge(j.cad.edges(c.edge + 1)));
   return edges;
 }
 
@@ -102,13 +109,6 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, doub
   return out;
 }
 
-std::string place(const CadSolid& cad, const Sheet& s) {
-  std::ostringstream out;
-  const Vec3 c = s.centre / cad.unit;
-  out << "(" << c.x() << ", " << c.y() << ", " << c.z() << ")";
-  return out.str();
-}
-
 // The foot edges of standing sheet s grouped by the plane of the base wall they lie on (a rib running across a
 // plate splits its top into two faces, one plane).
 struct PlaneEdges {
@@ -117,15 +117,14 @@ struct PlaneEdges {
   std::vector<TopoDS_Edge> edges;
 };
 
-std::vector<PlaneEdges> footEdgesByPlane(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
-                                         const std::vector<int>& sheetOf, int s) {
-  const double tolerance = kJoin * cad.diagonal;
+std::vector<PlaneEdges> footEdgesByPlane(const Junctions& j, int s) {
+  const double tolerance = kJoin * j.cad.diagonal;
   std::vector<PlaneEdges> planes;
-  for (const auto& [base, edges] : footEdges(cad, sides, sheetOf, s)) {
-    const BRepAdaptor_Surface surface(TopoDS::Face(cad.faces(base + 1)));
+  for (const auto& [base, edges] : footEdges(j, s)) {
+    const BRepAdaptor_Surface surface(TopoDS::Face(j.cad.faces(base + 1)));
     if (surface.GetType() != GeomAbs_Plane)
-      throw geometryError("T-junction: the sheet at " + place(cad, sheets[s]) + " stands on a curved wall (" +
-                          inputFaceName(cad, base) + "), which junction meshing does not cut yet");
+      throw geometryError("T-junction: the sheet at " + sheetPlace(j.cad, j.sheets[s]) + " stands on a curved wall (" +
+                          inputFaceName(j.cad, base) + "), which junction meshing does not cut yet");
     const gp_Pln plane = surface.Plane();
     auto same = [&](const PlaneEdges& p) {
       return p.plane.Axis().IsParallel(plane.Axis(), 1e-9) && p.plane.Distance(plane.Location()) <= tolerance;
@@ -138,17 +137,16 @@ std::vector<PlaneEdges> footEdgesByPlane(const CadSolid& cad, const WallSides& s
 }
 
 // The feet of standing sheet s: faces on the planes of the base's walls under it, bounded by its foot edges.
-std::vector<Foot> footFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
-                            const std::vector<int>& sheetOf, int s) {
+std::vector<Foot> footFaces(const Junctions& j, int s) {
   std::vector<Foot> feet;
-  for (const PlaneEdges& p : footEdgesByPlane(cad, sides, sheets, sheetOf, s))
-    for (const TopoDS_Wire& wire : closedWires(p.edges, kJoin * cad.diagonal)) {
+  for (const PlaneEdges& p : footEdgesByPlane(j, s))
+    for (const TopoDS_Wire& wire : closedWires(p.edges, kJoin * j.cad.diagonal)) {
       BRepBuilderAPI_MakeFace face(p.plane, wire, true);
       if (!face.IsDone()) continue;
       feet.push_back({s, p.face, face.Face(), areaOf(face.Face())});
     }
   if (feet.empty())
-    throw geometryError("T-junction: no foot found for the sheet at " + place(cad, sheets[s]) +
+    throw geometryError("T-junction: no foot found for the sheet at " + sheetPlace(j.cad, j.sheets[s]) +
                         " on the sheet it stands on");
   return feet;
 }
@@ -164,13 +162,13 @@ std::vector<TopoDS_Shape> imagesOf(BRepAlgoAPI_Splitter& split, const TopoDS_Sha
 
 JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
   if (sheets.size() < 2) return {{cad.solid}, {}};
-  const std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets);
+  const Junctions junctions{cad, sides, sheets, sheetOfFaces(cad, sides, sheets), concaveEdges(cad)};
   JunctionCut cut;
   TopTools_ListOfShape arguments, tools;
   arguments.Append(cad.solid);
   std::vector<Foot> cutters;
   for (int s = 1; s < static_cast<int>(sheets.size()); ++s)
-    for (Foot& f : footFaces(cad, sides, sheets, sheetOf, s)) tools.Append(f.face), cutters.push_back(std::move(f));
+    for (Foot& f : footFaces(junctions, s)) tools.Append(f.face), cutters.push_back(std::move(f));
   BRepAlgoAPI_Splitter split;
   split.SetArguments(arguments);
   split.SetTools(tools);
@@ -194,7 +192,7 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
       }
     }
     if (cut.pieces.size() != static_cast<std::size_t>(&s - sheets.data() + 1))
-      throw geometryError("T-junction: no piece holds the sheet at " + place(cad, s) + " after the cut");
+      throw geometryError("T-junction: no piece holds the sheet at " + sheetPlace(cad, s) + " after the cut");
   }
   // The feet as they are in the pieces: the pieces of each cutting face that the base's piece shares with its
   // sheet's piece (a foot across a bore keeps the ring round it).
@@ -207,7 +205,7 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
       if (baseFaces.Contains(image) && pieceFaces.Contains(image))
         cut.feet.push_back({f.sheet, f.baseFace, TopoDS::Face(image), areaOf(image)});
     if (cut.feet.empty() || cut.feet.back().sheet != f.sheet)
-      throw geometryError("T-junction: the foot of the sheet at " + place(cad, sheets[f.sheet]) +
+      throw geometryError("T-junction: the foot of the sheet at " + sheetPlace(cad, sheets[f.sheet]) +
                           " is not a face of both pieces after the cut");
   }
   return cut;

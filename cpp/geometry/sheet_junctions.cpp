@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 #include "core/union_find.hpp"
 #include "geometry/face_sampling.hpp"
@@ -17,6 +18,13 @@ Vec3 faceCentre(const TopoDS_Shape& face, double area) {
 }
 
 }  // namespace
+
+std::string sheetPlace(const CadSolid& cad, const Sheet& s) {
+  std::ostringstream out;
+  const Vec3 c = s.centre / cad.unit;
+  out << "(" << c.x() << ", " << c.y() << ", " << c.z() << ")";
+  return out.str();
+}
 
 Sheet sheetOf(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces) {
   Sheet s;

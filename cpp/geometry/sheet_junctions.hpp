@@ -3,6 +3,7 @@
 // the chordal surface would be non-manifold (the paper's open case, §9). Such a sheet is found
 // here from the CAD faces, before any node is placed, so that the user learns where it is.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
@@ -23,6 +24,9 @@ struct Sheet {
 // stand on each other. The first sheet is the largest (the one that is meshed), the others follow
 // by decreasing area.
 std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides);
+
+// "(x, y, z)": the sheet's centre in the input's units (CadSolid::unit), for messages.
+std::string sheetPlace(const CadSolid& cad, const Sheet& s);
 
 // The given wall faces as one sheet (area, estimated volume, centre), e.g. to report them.
 Sheet sheetOf(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces);

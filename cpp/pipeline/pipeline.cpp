@@ -126,12 +126,10 @@ std::vector<std::string> faceNames(const CadSolid& cad, const Sheet& s) {
   return names;
 }
 
-// unit: pipeline lengths per input length (CadSolid::unit); the centre is given in the input's units.
+// The sheet's place (in the input's units) and faces.
 std::string describeSheet(const CadSolid& cad, const Sheet& s) {
-  const double unit = cad.unit;
   std::ostringstream out;
-  const Vec3 c = s.centre / unit;
-  out << "(" << c.x() << ", " << c.y() << ", " << c.z() << ") [";
+  out << sheetPlace(cad, s) << " [";
   const std::vector<std::string> names = faceNames(cad, s);
   for (std::size_t k = 0; k < names.size(); ++k) out << (k ? " " : "") << names[k];
   out << "]";
