@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/box_tree.hpp"
 #include "core/types.hpp"
 
 namespace hexlayer {
@@ -24,19 +25,8 @@ class TriangleTree {
   std::optional<int> crossings(const Vec3& p, const Vec3& dir) const;
 
  private:
-  struct Node {
-    Vec3 lo, hi;    // bounding box of the node's triangles
-    int first = 0;  // leaf: its triangles are order_[first, first + count)
-    int count = 0;  // 0 for an inner node
-    int right = 0;  // inner node: index of the second child (the first follows the node)
-  };
-  int build(int first, int count);
-  template <class Visit, class Enter>
-  void traverse(Enter&& enter, Visit&& visit) const;
-
   std::vector<Triangle> triangles_;
-  std::vector<int> order_;
-  std::vector<Node> nodes_;
+  BoxTree tree_;  // over the triangles' boxes
 };
 
 // Squared distance from p to the triangle (its closest point, edges and corners included).

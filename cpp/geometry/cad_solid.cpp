@@ -5,12 +5,12 @@
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
-#include <BRepGProp_Face.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_Surface.hxx>
 #include <IGESControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Solid.hxx>
@@ -215,10 +215,16 @@ double largestTolerance(const TopoDS_Shape& shape) {
 }
 
 Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {
-  BRepGProp_Face prop(TopoDS::Face(face));  // applies the face orientation
+  // The surface's derivatives, placed as the face is, crossed and turned with the face's orientation (as
+  // BRepGProp_Face does, without its adaptor's parameter bounds: those walk every edge of the face).
+  TopLoc_Location place;
+  const Handle(Geom_Surface)& surface = BRep_Tool::Surface(TopoDS::Face(face), place);
   gp_Pnt p;
-  gp_Vec n;
-  prop.Normal(u, v, p, n);
+  gp_Vec du, dv;
+  surface->D1(u, v, p, du, dv);
+  du.Transform(place.Transformation()), dv.Transform(place.Transformation());
+  gp_Vec n = du.Crossed(dv);
+  if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
   const double len = n.Magnitude();
   if (!(len > 0)) return Vec3::Zero();
   return Vec3(n.X(), n.Y(), n.Z()) / len;

@@ -9,9 +9,8 @@
 
 namespace hexlayer {
 
-WallRays::WallRays(const CadSolid& cad, const WallSides& sides) : cad_(cad), sides_(sides) {
-  rays_.Load(cad.solid, 1e-7 * cad.diagonal);
-}
+WallRays::WallRays(const CadSolid& cad, const WallSides& sides)
+    : cad_(cad), sides_(sides), rays_(cad, 1e-7 * cad.diagonal) {}
 
 namespace {
 
@@ -24,34 +23,29 @@ gp_Lin lineOf(const Vec3& from, const Vec3& dir) {
   return gp_Lin(gp_Pnt(from.x(), from.y(), from.z()), gp_Dir(dir.x(), dir.y(), dir.z()));
 }
 
-// The outward unit normal of hit i's face at the hit (zero where the surface has none, a pole).
-Vec3 hitNormal(const IntCurvesFace_ShapeIntersector& rays, int i) {
-  return outwardNormal(rays.Face(i), rays.UParameter(i), rays.VParameter(i));
-}
+// The outward unit normal of the hit's face at the hit (zero where the surface has none, a pole).
+Vec3 hitNormal(const RayCaster& rays, const RayHit& h) { return outwardNormal(rays.face(h.face), h.u, h.v); }
 
-// Hit i of a ray along dir crosses its face (in or out), it does not run along it: OpenCASCADE reports a line
+// The hit of a ray along dir crosses its face (in or out), it does not run along it: OpenCASCADE reports a line
 // lying in a face as tangent points or as crossings at the start of the range cast, by the surface's kind.
-bool crosses(const IntCurvesFace_ShapeIntersector& rays, int i, const Vec3& dir) {
-  return rays.Transition(i) != IntCurveSurface_Tangent && std::abs(hitNormal(rays, i).dot(dir)) > kGrazing;
+bool crosses(const RayCaster& rays, const RayHit& h, const Vec3& dir) {
+  return h.transition != IntCurveSurface_Tangent && std::abs(hitNormal(rays, h).dot(dir)) > kGrazing;
 }
 
-// The nearest hit of the ray that crosses a face (0: none) and, if the ray runs along a face before it, that
-// face's inward normal there.
+// The nearest hit of the ray that crosses a face (none: nullopt) and, if the ray runs along a face before it,
+// that face's inward normal there.
 struct Crossing {
-  int hit = 0;
+  std::optional<RayHit> hit;
   std::optional<Vec3> alongInward;
 };
 
-Crossing nearestCrossing(IntCurvesFace_ShapeIntersector& rays, const Vec3& from, const Vec3& dir, double minDistance,
-                         double maxDistance) {
-  rays.PerformNearest(lineOf(from, dir), minDistance, maxDistance);
-  if (!rays.IsDone() || rays.NbPnt() == 0) return {};
-  if (crosses(rays, 1, dir)) return {1, std::nullopt};
-  const Vec3 inward = -hitNormal(rays, 1);
-  rays.Perform(lineOf(from, dir), minDistance, maxDistance);  // rare: every hit, for the nearest crossing
-  Crossing c{0, inward};
-  for (int i = 1; i <= rays.NbPnt(); ++i)
-    if (crosses(rays, i, dir) && (c.hit == 0 || rays.WParameter(i) < rays.WParameter(c.hit))) c.hit = i;
+Crossing nearestCrossing(RayCaster& rays, const Vec3& from, const Vec3& dir, double minDistance, double maxDistance) {
+  const std::optional<RayHit> first = rays.nearest(from, dir, minDistance, maxDistance);
+  if (!first) return {};
+  if (crosses(rays, *first, dir)) return {first, std::nullopt};
+  Crossing c{std::nullopt, -hitNormal(rays, *first)};
+  for (const RayHit& h : rays.all(from, dir, minDistance, maxDistance))  // rare: every hit, for the nearest crossing
+    if (crosses(rays, h, dir)) return c.hit = h, c;
   return c;
 }
 
@@ -78,28 +72,19 @@ std::optional<FacePoint> WallRays::cast(Side side, const Vec3& from, const Vec3&
   // them: cast from just inside instead, and take the point where the line itself meets the face hit.
   const bool along = c.alongInward.has_value();
   if (along) c = nearestCrossing(rays_, from + kNudge * maxDistance * *c.alongInward, dir, minDistance, maxDistance);
-  if (c.hit == 0) return std::nullopt;
-  const int face = cad_.faces.FindIndex(rays_.Face(c.hit)) - 1;
-  if (face < 0 || (sides_.faces[face].side != side && !(orRim && sides_.faces[face].side == Side::Lateral)))
-    return std::nullopt;
-  const gp_Pnt& p = rays_.Pnt(c.hit);
-  const Vec3 hit(p.X(), p.Y(), p.Z());
-  return FacePoint{along ? onLine(rays_.Face(c.hit), from, dir, hit) : hit, face};
+  if (!c.hit) return std::nullopt;
+  const int face = c.hit->face;
+  if (sides_.faces[face].side != side && !(orRim && sides_.faces[face].side == Side::Lateral)) return std::nullopt;
+  return FacePoint{along ? onLine(rays_.face(face), from, dir, c.hit->point) : c.hit->point, face};
 }
 
 std::optional<FacePoint> WallRays::nearestOnLine(Side side, const Vec3& p, const Vec3& dir, double reach) {
-  rays_.Perform(lineOf(p, dir), -reach, reach);
-  if (!rays_.IsDone()) return std::nullopt;
   std::optional<FacePoint> best;
   double bestAlong = reach;
-  for (int i = 1; i <= rays_.NbPnt(); ++i) {
-    const int face = cad_.faces.FindIndex(rays_.Face(i)) - 1;
-    if (face < 0 || !crosses(rays_, i, dir) || sides_.faces[face].side != side ||
-        std::abs(rays_.WParameter(i)) > bestAlong)
-      continue;
-    bestAlong = std::abs(rays_.WParameter(i));
-    const gp_Pnt& q = rays_.Pnt(i);
-    best = FacePoint{Vec3(q.X(), q.Y(), q.Z()), face};
+  for (const RayHit& h : rays_.all(p, dir, -reach, reach)) {
+    if (!crosses(rays_, h, dir) || sides_.faces[h.face].side != side || std::abs(h.w) > bestAlong) continue;
+    bestAlong = std::abs(h.w);
+    best = FacePoint{h.point, h.face};
   }
   return best;
 }

@@ -1,12 +1,11 @@
 // The two-way mapping π_t, π_b of the paper (§3): where a line through a point of the chordal
 // surface meets the top (ω_t) or the bottom (ω_b) wall of the CAD solid.
 #pragma once
-#include <IntCurvesFace_ShapeIntersector.hxx>
-
 #include <optional>
 
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
+#include "geometry/ray_caster.hpp"
 #include "geometry/wall_sides.hpp"
 
 namespace hexlayer {
@@ -29,7 +28,7 @@ class WallRays {
  private:
   const CadSolid& cad_;
   const WallSides& sides_;
-  IntCurvesFace_ShapeIntersector rays_;
+  RayCaster rays_;
 };
 
 }  // namespace hexlayer

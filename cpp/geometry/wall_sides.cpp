@@ -2,14 +2,12 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
-#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
-#include <gp_Lin.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +18,7 @@
 #include "core/error.hpp"
 #include "geometry/boundary_triangles.hpp"
 #include "geometry/face_sampling.hpp"
+#include "geometry/ray_caster.hpp"
 #include "geometry/sheet_edges.hpp"
 
 namespace hexlayer {
@@ -94,8 +93,7 @@ bool crossesWall(const BoundaryTriangles& boundary, const Vec3& p, const Vec3& i
 }
 
 // Casts rays from the face's samples inward and records how far the boundary is and which face it is.
-FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, IntCurvesFace_ShapeIntersector& rays,
-                        int f) {
+FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, RayCaster& rays, int f) {
   const TopoDS_Shape& face = cad.faces(f + 1);
   const double spacing = std::sqrt(std::max(triangulatedArea(face), 1e-30) / kRaysPerFace);
   const double skip = 1e-5 * cad.diagonal;
@@ -103,12 +101,10 @@ FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, 
   for (const FaceSample& s : sampleFace(face, spacing)) {
     out.meanNormal += s.area * s.normal;
     out.sampledArea += s.area;
-    const gp_Lin line(gp_Pnt(s.point.x(), s.point.y(), s.point.z()),
-                      gp_Dir(-s.normal.x(), -s.normal.y(), -s.normal.z()));
-    rays.PerformNearest(line, skip, 2 * cad.diagonal);
+    const std::optional<RayHit> hit = rays.nearest(s.point, -s.normal, skip, 2 * cad.diagonal);
     out.marks.push_back({s.u, s.v, s.area, s.normal, false});
-    if (!rays.IsDone() || rays.NbPnt() == 0) continue;
-    const Ray ray{rays.WParameter(1), cad.faces.FindIndex(rays.Face(1)) - 1, s.area};
+    if (!hit) continue;
+    const Ray ray{hit->w, hit->face, s.area};
     out.all.push_back(ray);
     if (crossesWall(boundary, s.point, -s.normal, ray.length))
       out.crossing.push_back(ray), out.marks.back().crossing = true;
@@ -285,8 +281,7 @@ WallSides classifyWallSides(const CadSolid& cad) {
   const int n = cad.faces.Extent();
   WallSides w;
   w.faces.resize(n);
-  IntCurvesFace_ShapeIntersector rays;
-  rays.Load(cad.solid, 1e-7 * cad.diagonal);
+  RayCaster rays(cad, 1e-7 * cad.diagonal);
   const BoundaryTriangles boundary(cad);
   std::vector<Vec3> meanNormal(n);
   std::vector<std::map<int, double>> across(n);  // per face: ray area crossing the wall to each face

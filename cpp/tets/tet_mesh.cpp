@@ -15,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "geometry/boundary_triangles.hpp"
+#include "geometry/ray_caster.hpp"
 
 namespace hexlayer {
 
@@ -54,12 +55,16 @@ bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Sha
   return distance.IsDone() && distance.Value() < 0.25 * shortest;
 }
 
-// Whether p is inside the solid: the triangulation decides where it can, OpenCASCADE's classifier
-// (made on first use: one per thread, as it keeps state) near the boundary.
-bool insideSolid(const Vec3& p, const BoundaryTriangles& triangles, const CadSolid& cad,
+// Whether p is inside the solid: the triangulation decides where it can, rays on the exact faces near the
+// boundary, and OpenCASCADE's classifier where no ray gives a clean count (each made on first use: one per
+// thread, as they keep state).
+bool insideSolid(const Vec3& p, const BoundaryTriangles& triangles, const CadSolid& cad, std::optional<RayCaster>& rays,
                  std::optional<BRepClass3d_SolidClassifier>& exact) {
   const Containment quick = triangles.classify(p);
   if (quick != Containment::kUndecided) return quick == Containment::kInside;
+  const double tolerance = 1e-7 * cad.diagonal;
+  if (!rays) rays.emplace(cad, tolerance);
+  if (const std::optional<bool> in = rays->inside(p, tolerance, 2 * cad.diagonal)) return *in;
   if (!exact) exact.emplace(cad.solid);
   exact->Perform(gp_Pnt(p.x(), p.y(), p.z()), 1e-7 * cad.diagonal);
   return exact->State() == TopAbs_IN;
@@ -143,6 +148,7 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
   const BoundaryTriangles triangles(cad);
 #pragma omp parallel
   {
+    std::optional<RayCaster> rays;
     std::optional<BRepClass3d_SolidClassifier> exact;
 #pragma omp for schedule(static)
     for (long i = 0; i < static_cast<long>(mesh.tets.size()); ++i) {
@@ -152,7 +158,7 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
       const Vec3 c = 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
       if (top == 0 || top == 4)
         verdict[i] = kFlat;
-      else if (!insideSolid(c, triangles, cad, exact))
+      else if (!insideSolid(c, triangles, cad, rays, exact))
         verdict[i] = kOutside;
       else
         verdict[i] = isCoplanar(mesh, t) ? kKeptCoplanar : kKept;

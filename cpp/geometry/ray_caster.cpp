@@ -1,0 +1,106 @@
+#include "geometry/ray_caster.hpp"
+
+#include <BRepBndLib.hxx>
+#include <TopoDS.hxx>
+#include <gp_Lin.hxx>
+
+#include <algorithm>
+
+namespace hexlayer {
+
+namespace {
+
+// Face f's box, grown by the tolerance and by the box's rounding.
+Box faceBox(const TopoDS_Shape& face, double tolerance) {
+  Bnd_Box b;
+  BRepBndLib::Add(face, b, false);  // from the surface, not the triangulation (which may lie inside it)
+  b.Enlarge(tolerance);
+  Box box;
+  if (b.IsVoid()) return box;
+  double x0, y0, z0, x1, y1, z1;
+  b.Get(x0, y0, z0, x1, y1, z1);
+  box.add(Vec3(x0, y0, z0)), box.add(Vec3(x1, y1, z1));
+  return box;
+}
+
+std::vector<Box> faceBoxes(const CadSolid& cad, double tolerance) {
+  std::vector<Box> boxes;
+  for (int f = 1; f <= cad.faces.Extent(); ++f) boxes.push_back(faceBox(cad.faces(f), tolerance));
+  return boxes;
+}
+
+// Directions of the inside test's rays: no two in a plane with a coordinate axis, so that rays from points of a
+// grid do not run along the faces of a part drawn on the axes.
+const Vec3 kInsideRays[] = {Vec3(0.5774, 0.5919, 0.5629), Vec3(-0.7071, 0.4082, 0.5774), Vec3(0.2673, -0.8018, 0.5345)};
+
+// The count of faces the ray crosses, if every hit is clean.
+std::optional<int> cleanCrossings(const std::vector<RayHit>& hits, double tolerance) {
+  for (std::size_t i = 0; i < hits.size(); ++i)
+    if (hits[i].onBoundary || hits[i].transition == IntCurveSurface_Tangent ||
+        (i > 0 && hits[i].w - hits[i - 1].w <= tolerance))
+      return std::nullopt;
+  return static_cast<int>(hits.size());
+}
+
+bool before(const RayHit& a, const RayHit& b) { return a.w < b.w || (a.w == b.w && a.face < b.face); }
+
+}  // namespace
+
+RayCaster::RayCaster(const CadSolid& cad, double tolerance) : boxes_(faceBoxes(cad, tolerance)), tree_(boxes_) {
+  for (int f = 1; f <= cad.faces.Extent(); ++f)
+    faces_.push_back(std::make_unique<IntCurvesFace_Intersector>(TopoDS::Face(cad.faces(f)), tolerance));
+}
+
+std::vector<std::pair<double, int>> RayCaster::candidates(const Vec3& from, const Vec3& dir, double wMin,
+                                                          double wMax) const {
+  std::vector<std::pair<double, int>> found;
+  tree_.traverse([&](const Box& b) { return rayEntersBox(from, dir, b, wMin, wMax) < INFINITY; },
+                 [&](int f) {
+                   if (const double w = rayEntersBox(from, dir, boxes_[f], wMin, wMax); w < INFINITY)
+                     found.emplace_back(w, f);
+                   return false;
+                 });
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+void RayCaster::hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax,
+                           std::vector<RayHit>& hits) {
+  IntCurvesFace_Intersector& on = *faces_[f];
+  on.Perform(gp_Lin(gp_Pnt(from.x(), from.y(), from.z()), gp_Dir(dir.x(), dir.y(), dir.z())), wMin, wMax);
+  for (int i = 1; on.IsDone() && i <= on.NbPnt(); ++i) {
+    const gp_Pnt& p = on.Pnt(i);
+    hits.push_back(
+        {on.WParameter(i), f, Vec3(p.X(), p.Y(), p.Z()), on.UParameter(i), on.VParameter(i), on.Transition(i)});
+  }
+}
+
+std::vector<RayHit> RayCaster::all(const Vec3& from, const Vec3& dir, double wMin, double wMax) {
+  std::vector<RayHit> hits;
+  for (const auto& [enter, f] : candidates(from, dir, wMin, wMax)) hitsOnFace(f, from, dir, wMin, wMax, hits);
+  std::sort(hits.begin(), hits.end(), before);
+  return hits;
+}
+
+std::optional<RayHit> RayCaster::nearest(const Vec3& from, const Vec3& dir, double wMin, double wMax) {
+  std::vector<RayHit> hits;
+  double reach = wMax;  // no face entered beyond the nearest hit so far can hold a nearer one
+  for (const auto& [enter, f] : candidates(from, dir, wMin, wMax)) {
+    if (enter > reach) break;
+    hitsOnFace(f, from, dir, wMin, reach, hits);
+    for (const RayHit& h : hits) reach = std::min(reach, h.w);
+  }
+  if (hits.empty()) return std::nullopt;
+  return *std::min_element(hits.begin(), hits.end(), before);
+}
+
+std::optional<bool> RayCaster::inside(const Vec3& p, double tolerance, double reach) {
+  for (const Vec3& d : kInsideRays) {
+    const std::vector<RayHit> hits = all(p, d.normalized(), -tolerance, reach);
+    if (!hits.empty() && std::abs(hits.front().w) <= tolerance) return false;  // on a face
+    if (const std::optional<int> n = cleanCrossings(hits, tolerance)) return *n % 2 == 1;
+  }
+  return std::nullopt;
+}
+
+}  // namespace hexlayer

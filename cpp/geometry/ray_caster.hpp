@@ -1,0 +1,58 @@
+// Where a line meets the faces of a CAD solid, with only the faces whose boxes the line passes looked at (a
+// box tree built once), where OpenCASCADE's IntCurvesFace_ShapeIntersector tries every face for every ray: the
+// side classification and the sweep cast a few rays per sample or node, so that was rays x faces.
+#pragma once
+#include <IntCurveSurface_TransitionOnCurve.hxx>
+#include <IntCurvesFace_Intersector.hxx>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/box_tree.hpp"
+#include "core/types.hpp"
+#include "geometry/cad_solid.hpp"
+
+namespace hexlayer {
+
+struct RayHit {
+  double w = 0;   // parameter along the line (the distance from its origin for a unit direction)
+  int face = -1;  // 0-based, in cad.faces
+  Vec3 point;
+  double u = 0, v = 0;  // on the face's surface
+  IntCurveSurface_TransitionOnCurve transition = IntCurveSurface_Tangent;
+  bool onBoundary = false;  // within the tolerance of the face's boundary (an edge, a vertex)
+};
+
+class RayCaster {
+ public:
+  // [in] cad: its faces, kept by reference; [in] tolerance: the intersectors' (a point within it of a face's
+  // boundary is on the face).
+  RayCaster(const CadSolid& cad, double tolerance);
+
+  // [in] from, dir: the line from + w dir (dir unit); [in] wMin, wMax: the range of w looked at.
+  // Every hit in the range, by increasing w (equal w: by face). Not thread-safe (the intersectors keep state).
+  std::vector<RayHit> all(const Vec3& from, const Vec3& dir, double wMin, double wMax);
+
+  // The hit of least w in the range (equal w: the lowest face), as the first of all()'s.
+  std::optional<RayHit> nearest(const Vec3& from, const Vec3& dir, double wMin, double wMax);
+
+  // Whether p lies inside the solid, by the parity of the faces a ray from p crosses (three directions tried);
+  // nullopt if no ray gave a clean count: each passed a face's boundary, touched a face, or two hits fell within
+  // `tolerance` of each other. A point within `tolerance` of a face along the ray is on the boundary: not inside.
+  std::optional<bool> inside(const Vec3& p, double tolerance, double reach);
+
+  const TopoDS_Face& face(int f) const { return faces_[f]->Face(); }
+
+ private:
+  // The faces whose boxes the line meets in the range, by where it enters them, with that w.
+  std::vector<std::pair<double, int>> candidates(const Vec3& from, const Vec3& dir, double wMin, double wMax) const;
+  // Face f's hits in [wMin, wMax], appended to hits.
+  void hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax, std::vector<RayHit>& hits);
+
+  std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces_;  // per face
+  std::vector<Box> boxes_;
+  BoxTree tree_;
+};
+
+}  // namespace hexlayer

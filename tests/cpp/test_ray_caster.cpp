@@ -1,0 +1,103 @@
+// RayCaster (geometry/ray_caster.hpp): the hits of a line on a solid's faces, the nearest one, and inside or
+// outside by the parity of a ray's crossings, against OpenCASCADE's intersector and classifier that try every face,
+// on a plate with a grid of holes (many faces), its faces planes and B-splines, scaled by 1, 1e-3 and 1e3.
+#include <gtest/gtest.h>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax2.hxx>
+
+#include <string>
+
+#include "geometry/ray_caster.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+// A 60 x 40 x 2 plate with a 5 x 3 grid of Ø4 through holes at 10 pitch, all lengths times s.
+TopoDS_Solid holedPlate(double s, bool bspline) {
+  TopoDS_Shape plate = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60 * s, 40 * s, 2 * s).Shape();
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 3; ++j)
+      plate = BRepAlgoAPI_Cut(
+                  plate, BRepPrimAPI_MakeCylinder(
+                             gp_Ax2(gp_Pnt((10 + 10 * i) * s, (10 + 10 * j) * s, -s), gp_Dir(0, 0, 1)), 2 * s, 4 * s)
+                             .Shape())
+                  .Shape();
+  if (bspline) plate = BRepBuilderAPI_NurbsConvert(plate, true).Shape();
+  TopExp_Explorer solid(plate, TopAbs_SOLID);
+  return TopoDS::Solid(solid.Current());
+}
+
+gp_Lin lineOf(const Vec3& p, const Vec3& d) { return gp_Lin(gp_Pnt(p.x(), p.y(), p.z()), gp_Dir(d.x(), d.y(), d.z())); }
+
+}  // namespace
+
+TEST(RayCaster, HitsAndTheNearestAsOpenCascadesIntersectorOfEveryFace) {
+  for (double s : {1.0, 1e-3, 1e3})
+    for (bool bspline : {false, true}) {
+      SCOPED_TRACE("x " + std::to_string(s) + (bspline ? " B-spline" : ""));
+      const CadSolid cad = prepareSolid(holedPlate(s, bspline));
+      ASSERT_GE(cad.faces.Extent(), 6 + 15);
+      const double tolerance = 1e-7 * cad.diagonal;
+      RayCaster rays(cad, tolerance);
+      IntCurvesFace_ShapeIntersector every;
+      every.Load(cad.solid, tolerance);
+      int compared = 0;
+      for (int k = 0; k < 40; ++k) {  // lines through the plate at many angles, some through holes
+        const Vec3 p = Vec3(3 + 1.37 * k, 2 + 0.91 * k, 1) * s;
+        const Vec3 d = Vec3(std::cos(0.7 * k), std::sin(0.7 * k), 0.2 * std::sin(1.3 * k)).normalized();
+        const std::vector<RayHit> hits = rays.all(p, d, -100 * s, 100 * s);
+        every.Perform(lineOf(p, d), -100 * s, 100 * s);
+        ASSERT_EQ(static_cast<int>(hits.size()), every.NbPnt());
+        for (int i = 1; i <= every.NbPnt(); ++i) {
+          EXPECT_NEAR(hits[i - 1].w, every.WParameter(i), 1e-9 * s);
+          EXPECT_EQ(hits[i - 1].face, cad.faces.FindIndex(every.Face(i)) - 1);
+        }
+        const std::optional<RayHit> nearest = rays.nearest(p, d, 0, 100 * s);
+        every.PerformNearest(lineOf(p, d), 0, 100 * s);
+        ASSERT_EQ(nearest.has_value(), every.NbPnt() > 0);
+        if (nearest) {
+          EXPECT_NEAR(nearest->w, every.WParameter(1), 1e-9 * s);
+          EXPECT_EQ(nearest->face, cad.faces.FindIndex(every.Face(1)) - 1);
+          ++compared;
+        }
+      }
+      EXPECT_GT(compared, 30);
+    }
+}
+
+TEST(RayCaster, InsideAsOpenCascadesClassifier) {
+  for (double s : {1.0, 1e-3, 1e3})
+    for (bool bspline : {false, true}) {
+      SCOPED_TRACE("x " + std::to_string(s) + (bspline ? " B-spline" : ""));
+      const CadSolid cad = prepareSolid(holedPlate(s, bspline));
+      const double tolerance = 1e-7 * cad.diagonal;
+      RayCaster rays(cad, tolerance);
+      BRepClass3d_SolidClassifier exact(cad.solid);
+      int inside = 0, outside = 0, unsure = 0;
+      for (int i = 0; i <= 61; i += 2)  // a grid through the plate, its holes and beside it
+        for (int j = 0; j <= 41; j += 4)
+          for (double z : {-0.5, 0.3, 1.0, 1.9, 2.5}) {
+            const Vec3 p = Vec3(i - 0.5, j + 0.25, z) * s;
+            const std::optional<bool> in = rays.inside(p, tolerance, 2 * cad.diagonal);
+            if (!in) {
+              ++unsure;
+              continue;
+            }
+            exact.Perform(gp_Pnt(p.x(), p.y(), p.z()), tolerance);
+            EXPECT_EQ(*in, exact.State() == TopAbs_IN) << p.transpose() / s;
+            (*in ? inside : outside) += 1;
+          }
+      EXPECT_GT(inside, 150);
+      EXPECT_GT(outside, 150);
+      EXPECT_LT(unsure, 10);
+    }
+}
