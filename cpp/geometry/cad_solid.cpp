@@ -5,11 +5,13 @@
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRepLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_Plane.hxx>
 #include <Geom_Surface.hxx>
 #include <IGESControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
@@ -145,6 +147,17 @@ std::string contents(const TopoDS_Shape& shape) {
   return s.str();
 }
 
+// The edges of planar faces given their curves in the plane, which STEP files often leave out: OpenCASCADE
+// would project them again at every point classified on the face (every ray hit, every distance to it).
+void storePlanarCurves(const TopTools_IndexedMapOfShape& faces) {
+  for (int f = 1; f <= faces.Extent(); ++f) {
+    const TopoDS_Face& face = TopoDS::Face(faces(f));
+    if (!BRep_Tool::Surface(face)->IsKind(STANDARD_TYPE(Geom_Plane))) continue;
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
+      BRepLib::BuildPCurveForEdgeOnPlane(TopoDS::Edge(e.Current()), face);
+  }
+}
+
 }  // namespace
 
 std::vector<TopoDS_Solid> readSolids(const std::string& path) {
@@ -195,6 +208,7 @@ CadSolid prepareSolid(const TopoDS_Solid& input, double unit) {
   for (TopExp_Explorer it(cad.solid, TopAbs_SHELL); it.More(); it.Next())
     if (!BRep_Tool::IsClosed(it.Current())) throw inputError("the solid's shell is not closed");
   TopExp::MapShapes(cad.solid, TopAbs_FACE, cad.faces);
+  storePlanarCurves(cad.faces);
   TopExp::MapShapes(cad.solid, TopAbs_EDGE, cad.edges);
   TopExp::MapShapes(cad.solid, TopAbs_VERTEX, cad.vertices);
   GProp_GProps props;  // adaptive, to a relative error of kVolumeTolerance: the default rule is 1 % off on B-splines
