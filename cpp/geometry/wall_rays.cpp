@@ -66,7 +66,7 @@ Vec3 onLine(const TopoDS_Face& face, const Vec3& from, const Vec3& dir, const Ve
 }  // namespace
 
 std::optional<FacePoint> WallRays::cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance, bool orRim,
-                                        double minDistance) {
+                                        double minDistance, Vec3* normal) {
   Crossing c = nearestCrossing(rays_, from, dir, minDistance, maxDistance);
   // Along a face (a sweep line in a rim face), the faces it crosses at that face's edges may count it as outside
   // them: cast from just inside instead, and take the point where the line itself meets the face hit.
@@ -75,6 +75,7 @@ std::optional<FacePoint> WallRays::cast(Side side, const Vec3& from, const Vec3&
   if (!c.hit) return std::nullopt;
   const int face = c.hit->face;
   if (sides_.faces[face].side != side && !(orRim && sides_.faces[face].side == Side::Lateral)) return std::nullopt;
+  if (normal) *normal = hitNormal(rays_, *c.hit);
   return FacePoint{along ? onLine(rays_.face(face), from, dir, c.hit->point) : c.hit->point, face};
 }
 

@@ -18,8 +18,12 @@ class WallRays {
   // through a lateral face, or a gap between faces, reaches no wall), with the face it hit; hits closer than
   // minDistance are passed by (a ray along a face it starts on). Not thread-safe (OpenCASCADE's intersector
   // keeps state).
+  // [out] normal: if given, the hit face's outward unit normal at the hit.
   std::optional<FacePoint> cast(Side side, const Vec3& from, const Vec3& dir, double maxDistance, bool orRim = false,
-                                double minDistance = 0);
+                                double minDistance = 0, Vec3* normal = nullptr);
+
+  // The side of face f (0-based), as classified.
+  Side sideOf(int f) const { return sides_.faces[f].side; }
 
   // Where the line through p along the unit vector dir meets a face of the `side` wall nearest to p, on
   // either side of p and at most `reach` away; nullopt if it meets none there. Not thread-safe either.
