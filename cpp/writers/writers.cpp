@@ -75,24 +75,59 @@ ElementNodes elementNodes(const HexMesh& mesh, std::size_t h) {
   return ids;
 }
 
+ElementNodes shellElementNodes(const ShellMesh& shell, std::size_t e) {
+  ElementNodes nodes;
+  for (int n : shell.quads[e]) nodes.push_back(n);
+  if (shell.quadratic())
+    for (int n : shell.midSides[e]) nodes.push_back(n);
+  return nodes;
+}
+
 std::string formatDouble(double v) {
   char buf[32];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 
-void writeMesh(const std::string& path, const HexMesh& mesh, const MeshGroups& groups) {
-  const std::string ext = lowerExtension(path);
+namespace {
+
+// The output stream of `path`, whose extension is .inp, .vtu or .msh (returned in ext).
+std::ofstream openMeshFile(const std::string& path, std::string& ext) {
+  ext = lowerExtension(path);
   if (ext != ".inp" && ext != ".vtu" && ext != ".msh")
     throw usageError("unknown output format '" + ext + "' of '" + path + "': use .inp, .vtu or .msh");
-  checkFits(mesh, groups);
   std::ofstream out(path);
   if (!out) throw inputError("cannot open the output file '" + path + "' for writing");
+  return out;
+}
+
+void closeMeshFile(std::ofstream& out, const std::string& path) {
+  out.close();
+  if (!out) throw inputError("failed writing the output file '" + path + "'");
+}
+
+}  // namespace
+
+void writeMesh(const std::string& path, const HexMesh& mesh, const MeshGroups& groups) {
+  checkFits(mesh, groups);
+  std::string ext;
+  std::ofstream out = openMeshFile(path, ext);
   if (ext == ".inp") writeInp(out, mesh, groups);
   if (ext == ".vtu") writeVtu(out, mesh, groups);
   if (ext == ".msh") writeMsh(out, mesh, groups);
-  out.close();
-  if (!out) throw inputError("failed writing the output file '" + path + "'");
+  closeMeshFile(out, path);
+}
+
+void writeShellMesh(const std::string& path, const ShellMesh& shell) {
+  if (shell.thickness.size() != shell.nodes.size() ||
+      (shell.quadratic() && shell.midSides.size() != shell.quads.size()))
+    throw Error(ExitCode::Internal, "the shell's thickness or mid-side nodes do not fit its nodes and elements");
+  std::string ext;
+  std::ofstream out = openMeshFile(path, ext);
+  if (ext == ".inp") writeShellInp(out, shell);
+  if (ext == ".vtu") writeShellVtu(out, shell);
+  if (ext == ".msh") writeShellMsh(out, shell);
+  closeMeshFile(out, path);
 }
 
 }  // namespace hexlayer
