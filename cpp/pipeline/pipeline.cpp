@@ -381,8 +381,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   if (o.order == 2) r.quadratic = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   if (o.shell)
-    result.shell =
-        clock.run("shell", [&] { return midSurfaceShell(result.mesh, quads, result.surfaceGroups, locator); });
+    result.shell = clock.run("shell", [&] { return midSurfaceShell(result.mesh, quads, result.surfaceGroups); });
   result.chordalSurface = std::move(stage.chordal);
   result.quadMesh = std::move(stage.quads);
   // From here on, the input's units.

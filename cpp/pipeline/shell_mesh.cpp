@@ -44,22 +44,20 @@ void addCorners(const HexMesh& mesh, const QuadMesh& quads, ShellMesh& shell, Co
     for (int c = 0; c < 4; ++c) shell.quads[j][c] = mesh.hexes[j * m][c] / stride;
 }
 
-// The mid-side node of edge e of quad j: the edge's midpoint on the chordal surface; its column the mid-edge nodes
-// of that edge in every layer (edge e of the bottom face, e + 4 of the last layer's top face: kHexEdges).
-void addMidSide(const HexMesh& mesh, std::size_t j, int e, const ChordalLocator& chordal, ShellEdge& edge,
-                ShellMesh& shell, Columns& columns) {
+// The mid-side node of edge e of quad j: its column the mid-edge nodes of that edge in every layer (edge e of the
+// bottom face, e + 4 of the last layer's top face: kHexEdges), the node midway between the column's wall ends.
+void addMidSide(const HexMesh& mesh, std::size_t j, int e, ShellEdge& edge, ShellMesh& shell, Columns& columns) {
   const std::size_t m = static_cast<std::size_t>(mesh.layers);
-  edge.node = static_cast<int>(shell.nodes.size());
-  shell.nodes.push_back(chordal.locate(0.5 * (shell.nodes[edge.a] + shell.nodes[edge.b])).point);
   std::vector<int> column;
   for (std::size_t k = 0; k < m; ++k) column.push_back(mesh.midEdges[j * m + k][e]);
   column.push_back(mesh.midEdges[j * m + m - 1][e + 4]);
+  edge.node = static_cast<int>(shell.nodes.size());
+  shell.nodes.push_back(0.5 * (mesh.nodes[column.front()] + mesh.nodes[column.back()]));
   columns.push_back(std::move(column));
 }
 
 // Every quad edge once, in the order the quads meet them; order 2 gives each a mid-side node.
-std::vector<ShellEdge> addEdges(const HexMesh& mesh, const ChordalLocator& chordal, ShellMesh& shell,
-                                Columns& columns) {
+std::vector<ShellEdge> addEdges(const HexMesh& mesh, ShellMesh& shell, Columns& columns) {
   std::vector<ShellEdge> edges;
   std::unordered_map<long long, int> index;
   const long long n = static_cast<long long>(shell.nodes.size());
@@ -72,7 +70,7 @@ std::vector<ShellEdge> addEdges(const HexMesh& mesh, const ChordalLocator& chord
       ShellEdge& edge = edges[at->second];
       ++edge.uses;
       if (!mesh.quadratic()) continue;
-      if (added) addMidSide(mesh, j, e, chordal, edge, shell, columns);
+      if (added) addMidSide(mesh, j, e, edge, shell, columns);
       shell.midSides[j][e] = edge.node;
     }
   return edges;
@@ -132,13 +130,12 @@ std::vector<SurfaceGroup> faceNodes(const HexMesh& mesh, const Columns& columns,
 
 }  // namespace
 
-ShellMesh midSurfaceShell(const HexMesh& mesh, const QuadMesh& quads, const std::vector<SurfaceGroup>& groups,
-                          const ChordalLocator& chordal) {
+ShellMesh midSurfaceShell(const HexMesh& mesh, const QuadMesh& quads, const std::vector<SurfaceGroup>& groups) {
   requireSweepLayout(mesh, quads);
   ShellMesh shell;
   Columns columns;
   addCorners(mesh, quads, shell, columns);
-  const std::vector<ShellEdge> edges = addEdges(mesh, chordal, shell, columns);
+  const std::vector<ShellEdge> edges = addEdges(mesh, shell, columns);
   shell.nodeSets = {rimNodes(edges, shell.nodes.size())};
   shell.thickness = columnThickness(mesh, columns, nodeNormals(shell, edges));
   shell.faces = faceNodes(mesh, columns, groups);

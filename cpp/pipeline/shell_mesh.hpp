@@ -4,7 +4,6 @@
 #pragma once
 #include <vector>
 
-#include "chordal/chordal_locator.hpp"
 #include "core/types.hpp"
 #include "quadmesh/quad_mesh.hpp"
 
@@ -12,17 +11,17 @@ namespace hexlayer {
 
 // [in] mesh: the hexes swept from `quads` (sweep.hpp's layout: quad node i's column is hex nodes i (m + 1) + k,
 //   k = 0..m, quad j's hexes j m + k; rim caps and mid-edge nodes after them), 20-node hexes for order 2;
-// [in] quads: the quad mesh; [in] groups: the hex mesh's surface groups (one per CAD face);
-// [in] chordal: the chordal surface the quads lie on, in the same units.
-// Returns the shell: corner i is quad node i; for 20-node hexes a mid-side node per quad edge, the edge's midpoint
-// put on the chordal surface (S8R). Thickness at a node: t = |(π_t - π_b) · n| (π_t, π_b: its sweep column's ends on
-// the walls, the top and bottom hex nodes or mid-edge nodes; n: the shell's unit normal there, the mean of its
-// quads' normals), which follows the CAD walls rather than the radius function interpolated from the tets (2 r, Eq. 3)
-// and is the wall's thickness also where a rim column leans. A node is in FaceN's set when a node of its column
-// lies on FaceN (the walls its sweep line ends on; a rim face its column lies on), in RIM when it is on the
+// [in] quads: the quad mesh; [in] groups: the hex mesh's surface groups (one per CAD face).
+// Returns the shell: corner i is quad node i, on the chordal surface; for 20-node hexes a mid-side node per quad edge
+// (S8R), midway between the hexes' mid-edge nodes of that edge on the two walls (on the CAD walls: on the mid-surface
+// that the chordal surface approximates; a point located on the faceted chordal surface was up to 3 % of the wall
+// off the mid-plane of a plate drawn in metres). Thickness at a node: t = |(π_t - π_b) · n| (π_t, π_b: its sweep
+// column's ends on the walls, the top and bottom hex nodes or mid-edge nodes; n: the shell's unit normal there, the
+// mean of its quads' normals), which follows the CAD walls rather than the radius function interpolated from the tets
+// (2 r, Eq. 3) and is the wall's thickness also where a rim column leans. A node is in FaceN's set when a node of its
+// column lies on FaceN (the walls its sweep line ends on; a rim face its column lies on), in RIM when it is on the
 // boundary of the quad mesh.
-ShellMesh midSurfaceShell(const HexMesh& mesh, const QuadMesh& quads, const std::vector<SurfaceGroup>& groups,
-                          const ChordalLocator& chordal);
+ShellMesh midSurfaceShell(const HexMesh& mesh, const QuadMesh& quads, const std::vector<SurfaceGroup>& groups);
 
 // Area of the shell: the sum of its quads' vector areas |(p2 - p0) x (p3 - p1)| / 2 (on the corners).
 double shellArea(const ShellMesh& shell);
