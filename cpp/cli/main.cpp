@@ -60,7 +60,7 @@ std::string summary(const hexlayer::MeshReport& r, const std::string& output) {
 std::string shellSummary(const hexlayer::ShellRecord& s, const std::string& output) {
   std::ostringstream out;
   out << std::setprecision(4) << "Wrote " << output << ": mid-surface shell, " << s.elements << " "
-      << (s.order == 2 ? "S8R" : "S4R") << " elements, " << s.nodes << " nodes. Thickness min " << s.thicknessMin
+      << (s.order == 2 ? "S8R" : "S4") << " elements, " << s.nodes << " nodes. Thickness min " << s.thicknessMin
       << ", median " << s.thicknessMedian << ", max " << s.thicknessMax << ". Area " << s.area;
   if (s.cadMidSurfaceArea > 0)
     out << " vs the walls' mean " << s.cadMidSurfaceArea << " (" << std::showpos << 100 * s.relativeAreaError()
@@ -92,7 +92,7 @@ void addMeshOptions(CLI::App* command, MeshCommand& c) {
   command->add_option("--order", c.options.order,
                       "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
   command->add_flag("--shell", c.options.shell,
-                    "Write the mid-surface shell instead of the hexes: S4R (S8R with --order 2) with the nodal "
+                    "Write the mid-surface shell instead of the hexes: S4 (S8R with --order 2) with the nodal "
                     "thickness, node sets per CAD face");
   command->add_flag("--force", c.options.force,
                     "Write the mesh even if it fails validation (with a warning per failed check)");

@@ -107,7 +107,7 @@ nlohmann::json deviation(const BoundaryDeviation& d) {
 }
 
 nlohmann::json shell(const ShellRecord& s) {
-  return {{"element_type", s.order == 2 ? "S8R" : "S4R"},
+  return {{"element_type", s.order == 2 ? "S8R" : "S4"},
           {"elements", s.elements},
           {"nodes", s.nodes},
           {"thickness", {{"min", s.thicknessMin}, {"median", s.thicknessMedian}, {"max", s.thicknessMax}}},

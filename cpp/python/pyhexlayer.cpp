@@ -354,7 +354,7 @@ PYBIND11_MODULE(pyhexlayer, m) {
                     "nodes of order 2), on the chordal surface; else (0, 3)")
       .def_readonly("shell_elements", &PyMeshResult::shellElements,
                     "int64 (E, 4) or, order 2, (E, 8) 0-based rows of shell_nodes: corners counter-clockwise seen "
-                    "from the top wall, then the mid-side nodes of edges 0-1, 1-2, 2-3, 3-0 (S4R / S8R)")
+                    "from the top wall, then the mid-side nodes of edges 0-1, 1-2, 2-3, 3-0 (S4 / S8R)")
       .def_readonly("shell_thickness", &PyMeshResult::shellThickness,
                     "float64 (S,): the wall thickness at each shell node (its sweep line's wall ends along the normal)")
       .def_readonly("shell_node_sets", &PyMeshResult::shellNodeSets,

@@ -107,7 +107,7 @@ void writeShellInp(std::ostream& out, const ShellMesh& shell) {
   out << "*HEADING\n";
   out << "HexLayer mid-surface shell: " << shell.nodes.size() << " nodes, " << shell.quads.size() << " elements\n";
   writeNodes(out, shell.nodes);
-  writeElements(out, shell.quadratic() ? "S8R" : "S4R", shell.quads.size(),
+  writeElements(out, shell.quadratic() ? "S8R" : "S4", shell.quads.size(),
                 [&](std::size_t e) { return shellElementNodes(shell, e); });
   for (const NodeSet& s : shell.nodeSets) writeNodeSet(out, s);
   for (const SurfaceGroup& g : shell.faces) writeNodeSet(out, {g.name, g.nodes});

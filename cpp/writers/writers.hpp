@@ -56,7 +56,8 @@ void writeShellMesh(const std::string& path, const ShellMesh& shell);
 // The material name the shell's *SHELL SECTION refers to: the deck including the mesh defines it first.
 inline constexpr const char* kShellMaterial = "SHELL_MATERIAL";
 
-// CalculiX/Abaqus: *NODE (NSET=NALL), *ELEMENT TYPE=S4R (S8R for 8-node quads) ELSET=EALL, one *NSET per node set
+// CalculiX/Abaqus: *NODE (NSET=NALL), *ELEMENT TYPE=S4 (S8R for 8-node quads) ELSET=EALL (S4, which CalculiX expands
+// into C3D8I, not S4R: its C3D8R hourglass, a 100 x 20 x 2 cantilever bent 28 times too far), one *NSET per node set
 // (RIM) and per CAD face (FACEN), *NODAL THICKNESS (node, thickness) and *SHELL SECTION, ELSET=EALL,
 // MATERIAL=SHELL_MATERIAL, NODAL THICKNESS. [out] out: the file's text written to it; [in] shell.
 void writeShellInp(std::ostream& out, const ShellMesh& shell);

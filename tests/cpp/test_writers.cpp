@@ -457,11 +457,11 @@ TEST_F(Writers, ShellInpHasS8RNodalThicknessSectionAndFaceSets) {
             all.end());
 }
 
-TEST_F(Writers, ShellInpWritesS4RForLinearQuads) {
+TEST_F(Writers, ShellInpWritesS4ForLinearQuads) {
   const fs::path p = dir_ / "shell4.inp";
   writeShellMesh(p.string(), twoQuadShell(false));
   const std::vector<std::string> all = lines(readText(p));
-  EXPECT_EQ(inpBlock(all, "*ELEMENT, TYPE=S4R, ELSET=EALL"),
+  EXPECT_EQ(inpBlock(all, "*ELEMENT, TYPE=S4, ELSET=EALL"),
             (std::vector<std::string>{"1, 1, 2, 5, 4", "2, 2, 3, 6, 5"}));
   EXPECT_EQ(inpBlock(all, "*NODAL THICKNESS").size(), 6u);
 }

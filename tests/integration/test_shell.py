@@ -1,4 +1,4 @@
-"""The mid-surface shell (`hexlayer mesh --shell`, issue 20): the quad mesh of the chordal surface written as S4R /
+"""The mid-surface shell (`hexlayer mesh --shell`, issue 20): the quad mesh of the chordal surface written as S4 /
 S8R shell elements with *NODAL THICKNESS, node sets per CAD face; solved by CalculiX against references HexLayer
 takes no part in (tests/python/ccx_tet10.py: the same CAD meshed by Gmsh in tet10 and solved as C3D10).
 
@@ -100,7 +100,7 @@ class Shell:
 
 def edge_weights(shell, on_edge):
     """{node: length share} of the shell's boundary edges whose nodes are all in on_edge: consistent nodal weights
-    of a uniform line load (S8R: 1/6, 2/3, 1/6 of the edge's length; S4R: 1/2, 1/2)."""
+    of a uniform line load (S8R: 1/6, 2/3, 1/6 of the edge's length; S4: 1/2, 1/2)."""
     weights = {}
     for _, ids in shell.elements:
         corners, mids = ids[:4], ids[4:]
@@ -150,7 +150,7 @@ class CantileverPlate(unittest.TestCase):
         with tempfile.TemporaryDirectory() as tmp:
             shell = Shell(tmp, self.step, "--order", str(order))
             self.assertEqual(shell.returncode, 0, shell.stderr[-2000:])
-            self.assertEqual(element_types(shell.inp), {"S8R" if order == 2 else "S4R"})
+            self.assertEqual(element_types(shell.inp), {"S8R" if order == 2 else "S4"})
             root, tip = shell.set_at(0, 0.0), shell.set_at(0, PLATE[0])
             return solve_shell(tmp, shell, root, tip, (0.0, 0.0, -F))[2]
 
@@ -163,11 +163,12 @@ class CantileverPlate(unittest.TestCase):
         self.assertLess(reference, 0)
         self.assertAlmostEqual(delta / reference, 1.0, delta=0.02)
 
-    def test_s4r_bends_the_same_way(self):
+    def test_s4_tip_deflection_within_2_percent(self):
+        # S4, not S4R: CalculiX expands S4R into C3D8R, whose hourglass modes bent this plate 28 times too far
         delta = self.deflection(1)
-        print("\nS4R shell: tip deflection {:.5f} mm, ratio to tet10 {:.4f}".format(
+        print("\nS4 shell: tip deflection {:.5f} mm, ratio to tet10 {:.4f}".format(
             delta, delta / self.reference.area_mean[2]))
-        self.assertAlmostEqual(delta / self.reference.area_mean[2], 1.0, delta=0.05)
+        self.assertAlmostEqual(delta / self.reference.area_mean[2], 1.0, delta=0.02)
 
 
 class WedgePlate(unittest.TestCase):
@@ -215,7 +216,8 @@ class Samples(unittest.TestCase):
                 self.assertTrue(all(len(ids) == 8 for _, ids in shell.elements))
                 self.assertEqual(sorted(shell.thickness), sorted(shell.nodes), "a thickness at every node")
                 self.assertGreater(min(shell.thickness.values()), 0)
-                self.assertAlmostEqual(s["thickness"]["median"] / r["thickness"], 1.0, delta=0.1)
+                if name != "wedge_plate":  # 1 -> 4: WedgePlate checks every node against the wedge's law
+                    self.assertAlmostEqual(s["thickness"]["median"] / r["thickness"], 1.0, delta=0.1)
                 faces = r["surface_groups"]["cad_faces"]
                 empty = [k for k in range(1, faces + 1) if not shell.sets.get("FACE{}".format(k))]
                 self.assertEqual(empty, [], "a node set on every CAD face")
