@@ -29,18 +29,23 @@ makeExplodedLayers = stage_views.make_exploded_layers
 makeQualityView = stage_views.make_quality_view
 
 
-def makeMesh(doc, part=None, name="HexLayerMesh", **properties):
-    """Adds a Hex-Layer mesh of `part` to `doc` and returns it, not yet meshed (recompute meshes it).
-    `properties` sets any of Layers, Size (mm), Sizing, Aspect, Order, Force."""
-    unknown = sorted(set(properties) - set(mesh_object.MeshHexLayer.OPTIONS))
+def _make_mesh_object(doc, part, name, proxy_class, properties, maker):
+    """A Fem::FemMeshObjectPython with proxy_class's proxy on `part`, `properties` (of proxy_class.OPTIONS) set."""
+    unknown = sorted(set(properties) - set(proxy_class.OPTIONS))
     if unknown:
-        raise TypeError("makeMesh: unknown properties {}; use {}".format(
-            unknown, ", ".join(mesh_object.MeshHexLayer.OPTIONS)))
+        raise TypeError("{}: unknown properties {}; use {}".format(maker, unknown, ", ".join(proxy_class.OPTIONS)))
     obj = doc.addObject("Fem::FemMeshObjectPython", name)
-    mesh_object.MeshHexLayer(obj)
+    proxy_class(obj)
     obj.Part = part
     for key, value in properties.items():
         setattr(obj, key, value)
+    return obj
+
+
+def makeMesh(doc, part=None, name="HexLayerMesh", **properties):
+    """Adds a Hex-Layer mesh of `part` to `doc` and returns it, not yet meshed (recompute meshes it).
+    `properties` sets any of Layers, Size (mm), Sizing, Aspect, Order, Force."""
+    obj = _make_mesh_object(doc, part, name, mesh_object.MeshHexLayer, properties, "makeMesh")
     if FreeCAD.GuiUp:
         from hexlayer_fem import view_provider
         view_provider.VPMeshHexLayer(obj.ViewObject)
@@ -52,15 +57,10 @@ def makeShellMesh(doc, part=None, name="HexLayerShell", **properties):
     ElementGeometry2D it sets to the measured median thickness (mesh.ElementGeometry); returns the mesh, not yet meshed
     (recompute meshes it). `properties` sets any of Order, Size (mm), Sizing, DropJunctions."""
     import ObjectsFem
-    unknown = sorted(set(properties) - set(shell_object.ShellMeshHexLayer.OPTIONS))
-    if unknown:
-        raise TypeError("makeShellMesh: unknown properties {}; use {}".format(
-            unknown, ", ".join(shell_object.ShellMeshHexLayer.OPTIONS)))
-    obj = doc.addObject("Fem::FemMeshObjectPython", name)
-    shell_object.ShellMeshHexLayer(obj)
-    obj.Part = part
-    for key, value in properties.items():
-        setattr(obj, key, value)
+    obj = _make_mesh_object(doc, part, name, shell_object.ShellMeshHexLayer, properties, "makeShellMesh")
+    if FreeCAD.GuiUp:
+        from hexlayer_fem import view_provider
+        view_provider.VPShellHexLayer(obj.ViewObject)
     obj.ElementGeometry = ObjectsFem.makeElementGeometry2D(doc, 1.0, name + "Thickness")
     return obj
 

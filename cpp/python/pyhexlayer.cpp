@@ -350,8 +350,8 @@ PYBIND11_MODULE(pyhexlayer, m) {
                     "int64 (N,): layer of each node, 0 = bottom surface .. layers = top surface; -1 = a mid-edge node "
                     "between two layers (order 2). A hex's layer is the lowest of its corners'")
       .def_readonly("shell_nodes", &PyMeshResult::shellNodes,
-                    "float64 (S, 3), shell=True: the mid-surface shell's nodes (the quad mesh's, then the mid-side "
-                    "nodes of order 2), on the chordal surface; else (0, 3)")
+                    "float64 (S, 3), shell=True: the mid-surface shell's nodes: the quad mesh's (on the chordal "
+                    "surface), then order 2's mid-side nodes (midway between the walls); else (0, 3)")
       .def_readonly("shell_elements", &PyMeshResult::shellElements,
                     "int64 (E, 4) or, order 2, (E, 8) 0-based rows of shell_nodes: corners counter-clockwise seen "
                     "from the top wall, then the mid-side nodes of edges 0-1, 1-2, 2-3, 3-0 (S4 / S8R)")

@@ -144,20 +144,25 @@ class PlateMesh(unittest.TestCase):
         self.assertEqual(peaks, sorted(peaks), "the peak so far never falls")
 
 
+def two_plates(**options):
+    """The 60 x 40 x 2 plate and a 30 x 40 x 2 plate 10 above it, two solids of one BREP file, meshed."""
+    import gmsh
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.occ.addBox(0, 0, 0, 60, 40, 2)
+        gmsh.model.occ.addBox(0, 0, 10, 30, 40, 2)
+        gmsh.model.occ.synchronize()
+        with tempfile.TemporaryDirectory() as tmp:
+            gmsh.write(os.path.join(tmp, "two.brep"))
+            return pyhexlayer.mesh_file(os.path.join(tmp, "two.brep"), layers=2, **options)
+    finally:
+        gmsh.finalize()
+
+
 class TwoSolids(unittest.TestCase):
     def test_stages_of_each_solid_follow_each_other(self):
-        import gmsh
-        gmsh.initialize()
-        try:
-            gmsh.option.setNumber("General.Terminal", 0)
-            gmsh.model.occ.addBox(0, 0, 0, 60, 40, 2)
-            gmsh.model.occ.addBox(0, 0, 10, 30, 40, 2)
-            gmsh.model.occ.synchronize()
-            with tempfile.TemporaryDirectory() as tmp:
-                gmsh.write(os.path.join(tmp, "two.brep"))
-                both = pyhexlayer.mesh_file(os.path.join(tmp, "two.brep"), layers=2)
-        finally:
-            gmsh.finalize()
+        both = two_plates()
         solids = both.report["solids"]
         self.assertEqual(len(both.quads), sum(s["quad_mesh"]["quads"] for s in solids))
         self.assertEqual(len(both.quad_nodes), sum(s["quad_mesh"]["nodes"] for s in solids))
@@ -168,18 +173,7 @@ class TwoSolids(unittest.TestCase):
         self.assertEqual(len(both.node_layer), len(both.nodes))
 
     def test_shells_of_two_solids_are_one_with_faces_numbered_on(self):
-        import gmsh
-        gmsh.initialize()
-        try:
-            gmsh.option.setNumber("General.Terminal", 0)
-            gmsh.model.occ.addBox(0, 0, 0, 60, 40, 2)
-            gmsh.model.occ.addBox(0, 0, 10, 30, 40, 2)
-            gmsh.model.occ.synchronize()
-            with tempfile.TemporaryDirectory() as tmp:
-                gmsh.write(os.path.join(tmp, "two.brep"))
-                both = pyhexlayer.mesh_file(os.path.join(tmp, "two.brep"), layers=2, shell=True)
-        finally:
-            gmsh.finalize()
+        both = two_plates(shell=True)
         self.assertEqual(len(both.shell_elements), len(both.quads))
         self.assertEqual(len(np.unique(both.shell_elements)), len(both.shell_nodes), "each solid's own nodes")
         self.assertEqual(sorted(both.shell_node_sets), sorted(["RIM"] + ["Face{}".format(k) for k in range(1, 13)]))

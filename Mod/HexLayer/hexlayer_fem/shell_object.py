@@ -64,6 +64,7 @@ class ShellMeshHexLayer(Stateless):
         obj.Thickness, obj.ThicknessMin, obj.ThicknessMax = thickness["median"], thickness["min"], thickness["max"]
         if obj.ElementGeometry is not None:
             obj.ElementGeometry.Thickness = thickness["median"]
+            obj.ElementGeometry.purgeTouched()  # set from here: nothing of its own to recompute
         obj.Status = meshing.shell_summary(result.report, time.perf_counter() - start)
 
     @staticmethod

@@ -39,3 +39,16 @@ class VPMeshHexLayer(Stateless):
         else:
             guidoc.setEdit(vobj.Object.Name)
         return True
+
+
+class VPShellHexLayer(Stateless):
+    """View provider of the mid-surface shell: FEM's display modes and its icon (no task panel: its properties)."""
+
+    def __init__(self, vobj):
+        vobj.Proxy = self
+
+    def attach(self, vobj):
+        self.Object = vobj.Object
+
+    def getIcon(self):
+        return icon("HexLayer_QuadMesh")
