@@ -9,7 +9,8 @@ takes no part in (tests/python/ccx_tet10.py: the same CAD meshed by Gmsh in tet1
  - The wedge plate (80 x 40, thickness 1 at x = 0 to 4 at x = 80) clamped at its thick end and loaded at its thin
    end: the nodal thickness follows 1 + 3 x / 80, and the deflection is compared with the tet10 model.
  - Every sample part that meshes as hexes gives a shell: one element per quad, a thickness near the wall's, a node
-   set on every CAD face, the plate's and the cylinder segment's area within 0.5 % of their mid-surface's.
+   set on every CAD face, the plate's and the cylinder segment's area within 0.5 % of their mid-surface's; so do the
+   real parts that mesh as hexes (the Ender-3 L-bracket without its bosses, the AnalysisSitus sheet-metal part).
 
 Run by CTest as: /usr/bin/python3 test_shell.py --hexlayer PATH --source DIR
 """
@@ -228,6 +229,24 @@ class Samples(unittest.TestCase):
                                           s["area"]["relative_error"]))
                 if name in ("plate", "plate_holes", "cantilever", "cylinder_shell"):
                     self.assertLess(abs(s["area"]["relative_error"]), 0.005)
+
+    def test_real_parts_give_a_shell(self):
+        # the real parts that mesh as hexes (test_real_parts.py): the LCD support without its bosses, the sheet-metal
+        # part with rounded flange corners
+        parts = (("ender3_lcd_support_Lbracket.step", 2.0), ("analysissitus_sheet_metal_54_SHELLONLY.brep", 1.2))
+        for name, wall in parts:
+            with self.subTest(name), tempfile.TemporaryDirectory() as tmp:
+                part = os.path.join(harness.args.source, "..", "shared", "parts", "real", name)
+                shell = Shell(tmp, part, "--order", "2", "--drop-junctions")
+                self.assertEqual(shell.returncode, 0, shell.stderr[-2000:])
+                s = shell.report["shell"]
+                print("\n{}: {} S8R, thickness {:.3f} / {:.3f} / {:.3f}, area {:+.3%} vs the walls' mean".format(
+                    name, s["elements"], *[s["thickness"][k] for k in ("min", "median", "max")],
+                    s["area"]["relative_error"]))
+                self.assertEqual(s["elements"], shell.report["quad_mesh"]["quads"])
+                self.assertAlmostEqual(s["thickness"]["median"] / wall, 1.0, delta=0.01)
+                self.assertLess(abs(s["area"]["relative_error"]), 0.01)
+                self.assertTrue(shell.sets["RIM"])
 
     def test_vtu_and_msh_hold_8_node_quads_and_the_thickness(self):
         import meshio
