@@ -106,28 +106,31 @@ void closeMeshFile(std::ofstream& out, const std::string& path) {
   if (!out) throw inputError("failed writing the output file '" + path + "'");
 }
 
+// Opens `path` and writes it with the writer of its extension (each takes the stream), then closes it.
+template <class Inp, class Vtu, class Msh>
+void writeByExtension(const std::string& path, Inp&& inp, Vtu&& vtu, Msh&& msh) {
+  std::string ext;
+  std::ofstream out = openMeshFile(path, ext);
+  ext == ".inp" ? inp(out) : ext == ".vtu" ? vtu(out) : msh(out);
+  closeMeshFile(out, path);
+}
+
 }  // namespace
 
 void writeMesh(const std::string& path, const HexMesh& mesh, const MeshGroups& groups) {
   checkFits(mesh, groups);
-  std::string ext;
-  std::ofstream out = openMeshFile(path, ext);
-  if (ext == ".inp") writeInp(out, mesh, groups);
-  if (ext == ".vtu") writeVtu(out, mesh, groups);
-  if (ext == ".msh") writeMsh(out, mesh, groups);
-  closeMeshFile(out, path);
+  writeByExtension(
+      path, [&](std::ostream& o) { writeInp(o, mesh, groups); }, [&](std::ostream& o) { writeVtu(o, mesh, groups); },
+      [&](std::ostream& o) { writeMsh(o, mesh, groups); });
 }
 
 void writeShellMesh(const std::string& path, const ShellMesh& shell) {
   if (shell.thickness.size() != shell.nodes.size() ||
       (shell.quadratic() && shell.midSides.size() != shell.quads.size()))
     throw Error(ExitCode::Internal, "the shell's thickness or mid-side nodes do not fit its nodes and elements");
-  std::string ext;
-  std::ofstream out = openMeshFile(path, ext);
-  if (ext == ".inp") writeShellInp(out, shell);
-  if (ext == ".vtu") writeShellVtu(out, shell);
-  if (ext == ".msh") writeShellMsh(out, shell);
-  closeMeshFile(out, path);
+  writeByExtension(
+      path, [&](std::ostream& o) { writeShellInp(o, shell); }, [&](std::ostream& o) { writeShellVtu(o, shell); },
+      [&](std::ostream& o) { writeShellMsh(o, shell); });
 }
 
 }  // namespace hexlayer
