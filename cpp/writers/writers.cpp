@@ -56,6 +56,16 @@ int hexEdge(int a, int b) {
   return -1;
 }
 
+// An element's corners, then its mid nodes (none if mids is null).
+template <std::size_t C, std::size_t M>
+ElementNodes cornersThenMids(const std::array<int, C>& corners, const std::array<int, M>* mids) {
+  ElementNodes nodes;
+  for (int n : corners) nodes.push_back(n);
+  if (mids)
+    for (int n : *mids) nodes.push_back(n);
+  return nodes;
+}
+
 }  // namespace
 
 ElementNodes boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& f) {
@@ -68,19 +78,11 @@ ElementNodes boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& f) {
 }
 
 ElementNodes elementNodes(const HexMesh& mesh, std::size_t h) {
-  ElementNodes ids;
-  for (int n : mesh.hexes[h]) ids.push_back(n);
-  if (mesh.quadratic())
-    for (int n : mesh.midEdges[h]) ids.push_back(n);
-  return ids;
+  return cornersThenMids(mesh.hexes[h], mesh.quadratic() ? &mesh.midEdges[h] : nullptr);
 }
 
 ElementNodes shellElementNodes(const ShellMesh& shell, std::size_t e) {
-  ElementNodes nodes;
-  for (int n : shell.quads[e]) nodes.push_back(n);
-  if (shell.quadratic())
-    for (int n : shell.midSides[e]) nodes.push_back(n);
-  return nodes;
+  return cornersThenMids(shell.quads[e], shell.quadratic() ? &shell.midSides[e] : nullptr);
 }
 
 std::string formatDouble(double v) {
