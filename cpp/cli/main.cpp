@@ -1,6 +1,6 @@
 // hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H | --aspect A] [--sizing
 // uniform|adaptive]
-// [--min-size H] [--max-size H] [--order 1|2] [--report R] [--force] [--quiet]`
+// [--min-size H] [--max-size H] [--order 1|2] [--shell] [--report R] [--force] [--quiet]`
 #include <CLI/CLI.hpp>
 
 #include <fstream>
@@ -56,6 +56,19 @@ std::string summary(const hexlayer::MeshReport& r, const std::string& output) {
   return s.str();
 }
 
+// With --shell: what was written instead of the hexes.
+std::string shellSummary(const hexlayer::ShellRecord& s, const std::string& output) {
+  std::ostringstream out;
+  out << std::setprecision(4) << "Wrote " << output << ": mid-surface shell, " << s.elements << " "
+      << (s.order == 2 ? "S8R" : "S4") << " elements, " << s.nodes << " nodes. Thickness min " << s.thicknessMin
+      << ", median " << s.thicknessMedian << ", max " << s.thicknessMax << ". Area " << s.area;
+  if (s.cadMidSurfaceArea > 0)
+    out << " vs the walls' mean " << s.cadMidSurfaceArea << " (" << std::showpos << 100 * s.relativeAreaError()
+        << std::noshowpos << " %)";
+  out << ".";
+  return out.str();
+}
+
 void writeReport(const std::string& path, const nlohmann::json& report) {
   std::ofstream out(path);
   if (!out) throw hexlayer::inputError("cannot write the report '" + path + "'");
@@ -78,6 +91,9 @@ void addMeshOptions(CLI::App* command, MeshCommand& c) {
   command->add_option("--max-size", c.options.maxSize, "Largest adaptive quad size (default: 4 x the size)");
   command->add_option("--order", c.options.order,
                       "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
+  command->add_flag("--shell", c.options.shell,
+                    "Write the mid-surface shell instead of the hexes: S4 (S8R with --order 2) with the nodal "
+                    "thickness, node sets per CAD face");
   command->add_flag("--force", c.options.force,
                     "Write the mesh even if it fails validation (with a warning per failed check)");
 }
@@ -91,9 +107,14 @@ int runMesh(MeshCommand& c) {
   if (!c.result.empty()) hexlayer::writeResult(c.result, result);
   std::vector<hexlayer::CellField> fields;
   if (!result.mesh.hexes.empty()) fields.push_back({"scaled_jacobian", result.scaledJacobian});
-  hexlayer::writeMesh(c.output, result.mesh, {result.nodeSets, result.surfaceGroups, fields});
+  if (c.options.shell)
+    hexlayer::writeShellMesh(c.output, result.shell);
+  else
+    hexlayer::writeMesh(c.output, result.mesh, {result.nodeSets, result.surfaceGroups, fields});
   if (!c.report.empty()) writeReport(c.report, hexlayer::toJson(result.report));
-  if (!c.quiet && !c.machine) std::cout << summary(result.report, c.output) << std::endl;
+  if (!c.quiet && !c.machine)
+    std::cout << (c.options.shell ? shellSummary(*result.report.shell, c.output) : summary(result.report, c.output))
+              << std::endl;
   const hexlayer::MeshMeasures& m = result.report.mesh;
   for (const hexlayer::ValidationFailure& f : m.failures)  // only with --force: else meshFile threw
     std::cerr << "hexlayer: warning: validation failed (written because of --force): " << f.message << std::endl;

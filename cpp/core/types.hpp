@@ -85,4 +85,18 @@ struct SurfaceGroup {
   std::vector<HexFace> hexFaces;  // sorted by hex, then local face
 };
 
+// A mid-surface shell mesh (issue 20): the quad mesh of the chordal surface as shell elements, each node with the
+// wall thickness there. Order 2 adds one mid-side node per quad edge (CalculiX S8R, Gmsh's and VTK's 8-node quad).
+// `faces`: per CAD face FaceN the shell nodes whose sweep line ends on it (a wall) or whose sweep column lies on it
+// (a rim face: the shell's edge on its mid-line); their hexFaces are empty.
+struct ShellMesh {
+  std::vector<Vec3> nodes;                   // the quad mesh's nodes, then the mid-side nodes (order 2)
+  std::vector<std::array<int, 4>> quads;     // corners, counter-clockwise seen from the top wall
+  std::vector<std::array<int, 4>> midSides;  // order 2: the node of edge k (corners k, k + 1) of each quad
+  std::vector<double> thickness;             // per node: the wall thickness through it
+  std::vector<NodeSet> nodeSets;             // RIM: the nodes on the shell's boundary
+  std::vector<SurfaceGroup> faces;           // one per CAD face, Face1..FaceN as FreeCAD numbers them
+  bool quadratic() const { return !midSides.empty(); }
+};
+
 }  // namespace hexlayer

@@ -12,6 +12,7 @@
 #include "core/memory.hpp"
 #include "core/types.hpp"
 #include "geometry/wall_sides.hpp"
+#include "pipeline/shell_mesh.hpp"
 #include "pipeline/surface_groups.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quality/quality.hpp"
@@ -104,6 +105,7 @@ struct MeshReport {
   SurfaceGroupStats surfaceGroups;
   BoundaryDeviation boundaryDeviation;
   std::optional<double> aspectRatioHit;  // with --aspect: share of the hexes within 10 % of it
+  std::optional<ShellRecord> shell;      // with MeshOptions::shell (of all the solids together, also in each solid's)
   MeshMeasures mesh;
   // Several solids, each meshed on its own: their reports; the fields above are then unused but `mesh` (of them
   // all together).

@@ -17,6 +17,7 @@
 #include "geometry/wall_projector.hpp"
 #include "geometry/wall_sides.hpp"
 #include "pipeline/mesh_report.hpp"
+#include "pipeline/shell_mesh.hpp"
 #include "pipeline/surface_groups.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_stage.hpp"
@@ -287,6 +288,31 @@ void toInputUnits(MeshResult& result, double unit) {
   for (Vec3& p : result.chordalSurface.vertices) p /= unit;
   for (double& radius : result.chordalSurface.radius) radius /= unit;
   for (Vec3& p : result.quadMesh.nodes) p /= unit;
+  for (Vec3& p : result.shell.nodes) p /= unit;
+  for (double& t : result.shell.thickness) t /= unit;
+}
+
+// The mean of the top and bottom walls' areas (a plate's, a cylinder segment's mid-surface area), in the pipeline's
+// units.
+double wallMeanArea(const WallSides& sides) {
+  double area = 0;
+  for (const FaceSide& f : sides.faces) area += f.side == Side::Lateral ? 0 : 0.5 * f.area;
+  return area;
+}
+
+// The shells of several solids as one, each solid's node ids after those already there; the CAD faces numbered on.
+void appendShell(ShellMesh& all, const ShellMesh& part) {
+  const int offset = static_cast<int>(all.nodes.size());
+  appendCells(all.quads, part.quads, offset);
+  appendCells(all.midSides, part.midSides, offset);
+  all.nodes.insert(all.nodes.end(), part.nodes.begin(), part.nodes.end());
+  all.thickness.insert(all.thickness.end(), part.thickness.begin(), part.thickness.end());
+  all.nodeSets.resize(part.nodeSets.size());
+  for (std::size_t k = 0; k < part.nodeSets.size(); ++k) {
+    all.nodeSets[k].name = part.nodeSets[k].name;
+    for (int n : part.nodeSets[k].nodes) all.nodeSets[k].nodes.push_back(n + offset);
+  }
+  appendSurfaceGroups(all.faces, part.faces, offset, 0);
 }
 
 }  // namespace
@@ -354,6 +380,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   r.smoothing = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
   if (o.order == 2) r.quadratic = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
+  if (o.shell)
+    result.shell = clock.run("shell", [&] { return midSurfaceShell(result.mesh, quads, result.surfaceGroups); });
   result.chordalSurface = std::move(stage.chordal);
   result.quadMesh = std::move(stage.quads);
   // From here on, the input's units.
@@ -366,6 +394,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   r.junctionsLeftOut = leftOut / unit3;  // the mesh's CAD volume is the part's without them
   if (o.aspect > 0) r.aspectRatioHit = aspectHit(result.mesh, o.aspect);
   result.nodeSets = surfaceNodeSets(result.mesh);
+  if (o.shell) r.shell = measureShell(result.shell, wallMeanArea(sides) / (cad.unit * cad.unit));
   enforceValidation(r.mesh, o);
   return result;
 }
@@ -376,6 +405,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
   if (solids.size() == 1) return meshSolid(solids[0], o);
   MeshResult all;  // several solids: mesh each, one report per solid plus the totals
   std::vector<MeshReport> reports;
+  double cadMidArea = 0;
   for (size_t i = 0; i < solids.size(); ++i) {
     const std::string which = "solid " + std::to_string(i + 1) + " of " + std::to_string(solids.size());
     if (o.progress) o.progress(which);
@@ -385,7 +415,9 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
     } catch (const Error& e) {
       throw Error(e.code(), which + ": " + e.what());
     }
+    cadMidArea += one.report.shell ? one.report.shell->cadMidSurfaceArea : 0;
     reports.push_back(std::move(one.report));
+    appendShell(all.shell, one.shell);
     appendSurfaceGroups(all.surfaceGroups, one.surfaceGroups, static_cast<int>(all.mesh.nodes.size()),
                         static_cast<int>(all.mesh.hexes.size()));
     appendHexMesh(all.mesh, one.mesh);
@@ -394,6 +426,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
   // Separate bodies (nodes where two touch are not shared): validated each on its own, not together.
   all.report = mergeSolids(std::move(reports), measureMesh(all.mesh, all.scaledJacobian));
   all.nodeSets = surfaceNodeSets(all.mesh);
+  if (o.shell) all.report.shell = measureShell(all.shell, cadMidArea);
   return all;
 }
 

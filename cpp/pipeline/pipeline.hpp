@@ -22,6 +22,7 @@ struct MeshOptions {
   double minSize = 0, maxSize = 0;  // bounds of the adaptive size; 0 = a quarter and 4 x the size
   bool dropJunctions = false;       // mesh the largest sheet and leave out ribs/bosses standing on it (else refuse)
   bool force = false;               // hand on a mesh that failed validation (report "validation") instead of throwing
+  bool shell = false;               // also the mid-surface shell (MeshResult::shell, report "shell")
   std::function<void(const std::string&)> progress;  // one line per finished stage (may be empty)
 };
 
@@ -35,6 +36,7 @@ struct MeshResult {
   // and that quad mesh, which the sweep turned into the hexes (mesh.nodeLayer: each node's layer).
   ChordalSurface chordalSurface;
   QuadMesh quadMesh;
+  ShellMesh shell;  // with MeshOptions::shell: the quad mesh as shell elements (shell_mesh.hpp), else empty
 };
 
 // Checks the options; throws usageError naming the bad one.

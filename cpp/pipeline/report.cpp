@@ -106,6 +106,15 @@ nlohmann::json deviation(const BoundaryDeviation& d) {
   return r;
 }
 
+nlohmann::json shell(const ShellRecord& s) {
+  return {{"element_type", s.order == 2 ? "S8R" : "S4"},
+          {"elements", s.elements},
+          {"nodes", s.nodes},
+          {"thickness", {{"min", s.thicknessMin}, {"median", s.thicknessMedian}, {"max", s.thicknessMax}}},
+          {"area",
+           {{"shell", s.area}, {"cad_mid_surface", s.cadMidSurfaceArea}, {"relative_error", s.relativeAreaError()}}}};
+}
+
 nlohmann::json junctions(const std::vector<JunctionRecord>& list) {
   nlohmann::json all = nlohmann::json::array();
   for (const JunctionRecord& j : list)
@@ -190,6 +199,7 @@ void stages(const MeshReport& s, nlohmann::json& r) {
 
 nlohmann::json toJson(const MeshReport& report) {
   nlohmann::json r = measures(report.mesh);
+  if (report.shell) r["shell"] = shell(*report.shell);
   if (report.solids.empty()) {
     stages(report, r);
     return r;

@@ -62,6 +62,21 @@ std::vector<int> hexRows(const HexMesh& mesh) {
   return v;
 }
 
+// The mid-surface shell: shell_nodes, shell_elements (K, 4 or 8), shell_thickness, shell_node_sets/RIM,
+// shell_face_nodes/FaceK.
+void addShell(Arrays& a, const ShellMesh& s) {
+  a.add("shell_nodes", flat(s.nodes), {s.nodes.size(), 3});
+  std::vector<int> elements;
+  for (std::size_t e = 0; e < s.quads.size(); ++e) {
+    elements.insert(elements.end(), s.quads[e].begin(), s.quads[e].end());
+    if (s.quadratic()) elements.insert(elements.end(), s.midSides[e].begin(), s.midSides[e].end());
+  }
+  a.add("shell_elements", elements, {s.quads.size(), s.quadratic() ? 8u : 4u});
+  a.add("shell_thickness", s.thickness, {s.thickness.size()});
+  for (const NodeSet& n : s.nodeSets) a.add("shell_node_sets/" + n.name, n.nodes, {n.nodes.size()});
+  for (const SurfaceGroup& g : s.faces) a.add("shell_face_nodes/" + g.name, g.nodes, {g.nodes.size()});
+}
+
 }  // namespace
 
 void writeResult(const std::string& path, const MeshResult& r) {
@@ -84,6 +99,7 @@ void writeResult(const std::string& path, const MeshResult& r) {
   a.add("quad_nodes", flat(r.quadMesh.nodes), {r.quadMesh.nodes.size(), 3});
   a.add("quads", flatCells(r.quadMesh.quads), {r.quadMesh.quads.size(), 4});
   a.add("node_layer", r.mesh.nodeLayer, {r.mesh.nodeLayer.size()});
+  if (!r.shell.quads.empty()) addShell(a, r.shell);
   if (!out.flush()) throw inputError("cannot write the result '" + binary + "'");
   std::ofstream header(path);
   if (!header) throw inputError("cannot write the result '" + path + "'");

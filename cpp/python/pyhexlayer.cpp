@@ -39,8 +39,9 @@ Options makeOptions(int layers, double size, const std::string& sizing, double a
   return o;
 }
 
-Options forced(Options o, bool force) {
-  o.force = force;
+// The options of one run besides the meshing ones: force and shell.
+Options forRun(Options o, bool force, bool shell) {
+  o.force = force, o.shell = shell;
   return o;
 }
 
@@ -86,6 +87,11 @@ struct PyMeshResult {
   py::array_t<double> quadNodes;         // (Q, 3)
   py::array_t<long long> quads;          // (K, 4)
   py::array_t<long long> nodeLayer;      // (N,)
+  // shell=True: the mid-surface shell (hexlayer::ShellMesh), else empty
+  py::array_t<double> shellNodes;        // (S, 3)
+  py::array_t<long long> shellElements;  // (E, 4) or (E, 8): corners, then the mid-side nodes (S8R)
+  py::array_t<double> shellThickness;    // (S,)
+  py::dict shellNodeSets;                // "RIM", "Face1".."FaceN" -> shell node ids (0-based)
 };
 
 py::array_t<double> nodeArray(const std::vector<hexlayer::Vec3>& nodes) {
@@ -124,15 +130,32 @@ py::array_t<T> vectorArray(const std::vector<T>& values) {
   return py::array_t<T>(static_cast<py::ssize_t>(values.size()), values.data());
 }
 
+// 0-based node ids as int64.
+py::array_t<long long> idArray(const std::vector<int>& ids) {
+  return vectorArray(std::vector<long long>(ids.begin(), ids.end()));
+}
+
+// The shell's elements, one row each: 4 corners, then (S8R) the mid-side nodes of edges 0-1, 1-2, 2-3, 3-0.
+void addShell(PyMeshResult& p, const hexlayer::ShellMesh& s) {
+  p.shellNodes = nodeArray(s.nodes);
+  const int width = s.quadratic() ? 8 : 4;
+  p.shellElements = py::array_t<long long>({static_cast<py::ssize_t>(s.quads.size()), py::ssize_t(width)});
+  auto v = p.shellElements.mutable_unchecked<2>();
+  for (std::size_t e = 0; e < s.quads.size(); ++e)
+    for (int k = 0; k < width; ++k) v(e, k) = k < 4 ? s.quads[e][k] : s.midSides[e][k - 4];
+  p.shellThickness = vectorArray(s.thickness);
+  for (const hexlayer::NodeSet& set : s.nodeSets) p.shellNodeSets[py::str(set.name)] = idArray(set.nodes);
+  for (const hexlayer::SurfaceGroup& g : s.faces) p.shellNodeSets[py::str(g.name)] = idArray(g.nodes);
+}
+
 PyMeshResult toPython(const hexlayer::MeshResult& r) {
   PyMeshResult p;
   p.nodes = nodeArray(r.mesh.nodes);
   p.hexes = hexArray(r.mesh);
   p.scaledJacobian = vectorArray(r.scaledJacobian);
-  for (const hexlayer::NodeSet& set : r.nodeSets)
-    p.nodeSets[py::str(set.name)] = vectorArray(std::vector<long long>(set.nodes.begin(), set.nodes.end()));
+  for (const hexlayer::NodeSet& set : r.nodeSets) p.nodeSets[py::str(set.name)] = idArray(set.nodes);
   for (const hexlayer::SurfaceGroup& g : r.surfaceGroups) {
-    p.faceNodes[py::str(g.name)] = vectorArray(std::vector<long long>(g.nodes.begin(), g.nodes.end()));
+    p.faceNodes[py::str(g.name)] = idArray(g.nodes);
     py::array_t<long long> faces({static_cast<py::ssize_t>(g.hexFaces.size()), py::ssize_t(2)});
     auto v = faces.mutable_unchecked<2>();
     for (std::size_t i = 0; i < g.hexFaces.size(); ++i) v(i, 0) = g.hexFaces[i].hex, v(i, 1) = g.hexFaces[i].localFace;
@@ -144,6 +167,7 @@ PyMeshResult toPython(const hexlayer::MeshResult& r) {
   p.quadNodes = nodeArray(r.quadMesh.nodes);
   p.quads = cellArray(r.quadMesh.quads);
   p.nodeLayer = vectorArray(std::vector<long long>(r.mesh.nodeLayer.begin(), r.mesh.nodeLayer.end()));
+  addShell(p, r.shell);
   return p;
 }
 
@@ -285,7 +309,8 @@ constexpr const char* kOptionsDoc =
     "GeometryError); "
     "progress: callable taking one line per finished stage, or None "
     "(an exception it raises ends the run); force: return a mesh that failed validation instead of raising "
-    "ValidationError.";
+    "ValidationError; shell: also the mid-surface shell (shell_nodes, shell_elements, shell_thickness, "
+    "shell_node_sets, report['shell']).";
 
 }  // namespace
 
@@ -324,6 +349,17 @@ PYBIND11_MODULE(pyhexlayer, m) {
       .def_readonly("node_layer", &PyMeshResult::nodeLayer,
                     "int64 (N,): layer of each node, 0 = bottom surface .. layers = top surface; -1 = a mid-edge node "
                     "between two layers (order 2). A hex's layer is the lowest of its corners'")
+      .def_readonly("shell_nodes", &PyMeshResult::shellNodes,
+                    "float64 (S, 3), shell=True: the mid-surface shell's nodes: the quad mesh's (on the chordal "
+                    "surface), then order 2's mid-side nodes (midway between the walls); else (0, 3)")
+      .def_readonly("shell_elements", &PyMeshResult::shellElements,
+                    "int64 (E, 4) or, order 2, (E, 8) 0-based rows of shell_nodes: corners counter-clockwise seen "
+                    "from the top wall, then the mid-side nodes of edges 0-1, 1-2, 2-3, 3-0 (S4 / S8R)")
+      .def_readonly("shell_thickness", &PyMeshResult::shellThickness,
+                    "float64 (S,): the wall thickness at each shell node (its sweep line's wall ends along the normal)")
+      .def_readonly("shell_node_sets", &PyMeshResult::shellNodeSets,
+                    "dict: 'RIM' (the shell's boundary) and 'Face1'..'FaceN' (the shell nodes whose sweep line ends on "
+                    "the wall FaceN, or whose column lies on the rim face FaceN) -> int64 ids (0-based)")
       .def("__repr__", [](const PyMeshResult& r) {
         return "<pyhexlayer.MeshResult " + std::to_string(r.hexes.shape(0)) + " hexes, " +
                std::to_string(r.nodes.shape(0)) + " nodes>";
@@ -332,18 +368,22 @@ PYBIND11_MODULE(pyhexlayer, m) {
   m.def(
       "mesh_file",
       [](const std::string& path, int layers, double size, const std::string& sizing, double aspect, int order,
-         bool dropJunctions, const py::object& progress, bool force) {
-        return meshFile(path, forced(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force), progress);
+         bool dropJunctions, const py::object& progress, bool force, bool shell) {
+        return meshFile(path, forRun(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force, shell),
+                        progress);
       },
       py::arg("path"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(), py::arg("force") = false,
+      py::arg("shell") = false,
       (std::string("Meshes every solid of a STEP, IGES or BREP file. ") + kOptionsDoc).c_str());
   m.def(
       "mesh_brep",
       [](const std::string& text, int layers, double size, const std::string& sizing, double aspect, int order,
-         bool dropJunctions, const py::object& progress, bool force) {
-        return meshBrep(text, forced(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force), progress);
+         bool dropJunctions, const py::object& progress, bool force, bool shell) {
+        return meshBrep(text, forRun(makeOptions(layers, size, sizing, aspect, order, dropJunctions), force, shell),
+                        progress);
       },
       py::arg("brep"), HEXLAYER_OPTION_ARGS, py::arg("progress") = py::none(), py::arg("force") = false,
+      py::arg("shell") = false,
       (std::string("Meshes every solid of a shape in OpenCASCADE's BREP text (FreeCAD: Shape.exportBrepToString()). ") +
        kOptionsDoc)
           .c_str());

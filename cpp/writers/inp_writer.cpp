@@ -32,25 +32,26 @@ std::string inpName(const std::string& name) {
 }
 
 // Each line composed in a local buffer and written at once (no formatting through the stream).
-void writeNodes(std::ostream& out, const HexMesh& mesh) {
+void writeNodes(std::ostream& out, const std::vector<Vec3>& nodes) {
   out << "*NODE, NSET=NALL\n";
   char line[160];
-  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
     char* at = inpInteger(i + 1, line);
-    for (int k = 0; k < 3; ++k) *at++ = ',', *at++ = ' ', at = inpNumber(mesh.nodes[i][k], at);
+    for (int k = 0; k < 3; ++k) *at++ = ',', *at++ = ' ', at = inpNumber(nodes[i][k], at);
     *at++ = '\n';
     out.write(line, at - line);
   }
 }
 
-// Incompatible-mode C3D8I for 8-node hexes (bending-accurate), reduced-integration C3D20R for 20-node
-// ones, whose 21 entries continue on a second line after the first 16 (the line ends with a comma).
-void writeElements(std::ostream& out, const HexMesh& mesh) {
-  out << "*ELEMENT, TYPE=" << (mesh.quadratic() ? "C3D20R" : "C3D8I") << ", ELSET=EALL\n";
+// count elements of one type in ELSET=EALL, element e's nodes nodesOf(e); more than 16 entries continue on a second
+// line after the first 16 (the line ends with a comma).
+template <class NodesOf>
+void writeElements(std::ostream& out, const char* type, std::size_t count, NodesOf&& nodesOf) {
+  out << "*ELEMENT, TYPE=" << type << ", ELSET=EALL\n";
   char line[512];
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-    char* at = inpInteger(h + 1, line);
-    const ElementNodes nodes = elementNodes(mesh, h);
+  for (std::size_t e = 0; e < count; ++e) {
+    char* at = inpInteger(e + 1, line);
+    const ElementNodes nodes = nodesOf(e);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       *at++ = ',';
       *at++ = (i + 1) % kIdsPerLine == 0 ? '\n' : ' ';
@@ -94,10 +95,32 @@ void writeInp(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups) 
   out << "*HEADING\n";
   out << "HexLayer layered all-hex mesh: " << mesh.nodes.size() << " nodes, " << mesh.hexes.size() << " hexes, "
       << mesh.layers << " layers\n";
-  writeNodes(out, mesh);
-  writeElements(out, mesh);
+  writeNodes(out, mesh.nodes);
+  // Incompatible-mode C3D8I for 8-node hexes (bending-accurate), reduced-integration C3D20R for 20-node ones.
+  writeElements(out, mesh.quadratic() ? "C3D20R" : "C3D8I", mesh.hexes.size(),
+                [&](std::size_t h) { return elementNodes(mesh, h); });
   for (const NodeSet& s : groups.nodeSets) writeNodeSet(out, s);
   for (const SurfaceGroup& g : groups.surfaces) writeSurfaceGroup(out, g);
+}
+
+void writeShellInp(std::ostream& out, const ShellMesh& shell) {
+  out << "*HEADING\n";
+  out << "HexLayer mid-surface shell: " << shell.nodes.size() << " nodes, " << shell.quads.size() << " elements\n";
+  writeNodes(out, shell.nodes);
+  writeElements(out, shell.quadratic() ? "S8R" : "S4", shell.quads.size(),
+                [&](std::size_t e) { return shellElementNodes(shell, e); });
+  for (const NodeSet& s : shell.nodeSets) writeNodeSet(out, s);
+  for (const SurfaceGroup& g : shell.faces) writeNodeSet(out, {g.name, g.nodes});
+  out << "*NODAL THICKNESS\n";
+  char line[64];
+  for (std::size_t i = 0; i < shell.thickness.size(); ++i) {
+    char* at = inpInteger(i + 1, line);
+    *at++ = ',', *at++ = ' ', at = inpNumber(shell.thickness[i], at);
+    *at++ = '\n';
+    out.write(line, at - line);
+  }
+  out << "** The deck defines *MATERIAL, NAME=" << kShellMaterial << " before it includes this file.\n";
+  out << "*SHELL SECTION, ELSET=EALL, MATERIAL=" << kShellMaterial << ", NODAL THICKNESS\n1.\n";
 }
 
 }  // namespace hexlayer

@@ -144,13 +144,14 @@ void writeEntities(std::ostream& out, const HexMesh& mesh, const std::vector<Pat
   out << "\n$EndEntities\n";
 }
 
-void writeNodes(std::ostream& out, const HexMesh& mesh) {
-  const std::size_t n = mesh.nodes.size();
+// Every node in entity 1 of dimension dim.
+void writeNodes(std::ostream& out, const std::vector<Vec3>& nodes, int dim) {
+  const std::size_t n = nodes.size();
   out << "$Nodes\n" << (n ? 1 : 0) << " " << n << " " << (n ? 1 : 0) << " " << n << "\n";
   if (n) {
-    out << "3 1 0 " << n << "\n";
+    out << dim << " 1 0 " << n << "\n";
     for (std::size_t i = 1; i <= n; ++i) out << i << "\n";
-    for (const Vec3& p : mesh.nodes)
+    for (const Vec3& p : nodes)
       out << formatDouble(p.x()) << " " << formatDouble(p.y()) << " " << formatDouble(p.z()) << "\n";
   }
   out << "$EndNodes\n";
@@ -187,11 +188,11 @@ void writeElements(std::ostream& out, const HexMesh& mesh, const std::vector<Pat
   out << "$EndElements\n";
 }
 
-// One scalar per hex (element tags 1..H), step 0, time 0.
-void writeElementData(std::ostream& out, const CellField& f) {
-  out << "$ElementData\n1\n" << quoted(f.name) << "\n1\n0\n3\n0\n1\n" << f.values.size() << "\n";
-  for (std::size_t h = 0; h < f.values.size(); ++h) out << h + 1 << " " << formatDouble(f.values[h]) << "\n";
-  out << "$EndElementData\n";
+// One scalar per element (kind "ElementData", tags 1..H) or node ("NodeData", tags 1..N), step 0, time 0.
+void writeData(std::ostream& out, const std::string& kind, const std::string& name, const std::vector<double>& values) {
+  out << "$" << kind << "\n1\n" << quoted(name) << "\n1\n0\n3\n0\n1\n" << values.size() << "\n";
+  for (std::size_t i = 0; i < values.size(); ++i) out << i + 1 << " " << formatDouble(values[i]) << "\n";
+  out << "$End" << kind << "\n";
 }
 
 }  // namespace
@@ -201,9 +202,26 @@ void writeMsh(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups) 
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
   writePhysicalNames(out, patches);
   writeEntities(out, mesh, patches);
-  writeNodes(out, mesh);
+  writeNodes(out, mesh.nodes, 3);
   writeElements(out, mesh, patches);
-  for (const CellField& f : groups.cellFields) writeElementData(out, f);
+  for (const CellField& f : groups.cellFields) writeData(out, "ElementData", f.name, f.values);
+}
+
+void writeShellMsh(std::ostream& out, const ShellMesh& shell) {
+  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  out << "$PhysicalNames\n1\n2 1 \"shell\"\n$EndPhysicalNames\n";
+  Box box;
+  for (const Vec3& p : shell.nodes) box.add(p);
+  out << "$Entities\n0 0 1 0\n1 ";
+  writeBox(out, box);
+  out << "1 1 0\n$EndEntities\n";
+  writeNodes(out, shell.nodes, 2);
+  const std::size_t n = shell.quads.size();
+  out << "$Elements\n1 " << n << " " << (n ? 1 : 0) << " " << n << "\n";
+  out << "2 1 " << (shell.quadratic() ? kGmshQuad8 : kGmshQuad) << " " << n << "\n";
+  for (std::size_t e = 0; e < n; ++e) writeElement(out, e + 1, shellElementNodes(shell, e));
+  out << "$EndElements\n";
+  writeData(out, "NodeData", "thickness", shell.thickness);
 }
 
 }  // namespace hexlayer

@@ -6,7 +6,7 @@
 namespace hexlayer {
 namespace {
 
-constexpr int kVtkHexahedron = 12, kVtkQuadraticHexahedron = 25;
+constexpr int kVtkHexahedron = 12, kVtkQuadraticHexahedron = 25, kVtkQuad = 9, kVtkQuadraticQuad = 23;
 constexpr int kValuesPerLine = 8;
 
 std::string xmlEscape(const std::string& s) {
@@ -39,35 +39,40 @@ void writeValues(std::ostream& out, std::size_t n, Value&& value) {
   out << "</DataArray>\n";
 }
 
-// N of the first surface group FaceN (in the groups' order) holding each node, 0 for none.
-std::vector<int> cadFaceOfNodes(const HexMesh& mesh, const std::vector<SurfaceGroup>& surfaces) {
-  std::vector<int> face(mesh.nodes.size(), 0);
+// N of the first surface group FaceN (in the groups' order) holding each of the `nodes` nodes, 0 for none.
+std::vector<int> cadFaceOfNodes(std::size_t nodes, const std::vector<SurfaceGroup>& surfaces) {
+  std::vector<int> face(nodes, 0);
   for (std::size_t g = surfaces.size(); g-- > 0;)
     for (int n : surfaces[g].nodes) face[n] = static_cast<int>(g) + 1;
   return face;
 }
 
-void writePointData(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups) {
-  const std::vector<NodeSet>& nodeSets = groups.nodeSets;
-  const bool layers = mesh.nodeLayer.size() == mesh.nodes.size();
-  if (!layers && nodeSets.empty() && groups.surfaces.empty()) return;
-  out << "<PointData>\n";
-  if (layers) {
-    openArray(out, "Int32", "layer");
-    writeValues(out, mesh.nodes.size(), [&](std::size_t i) { return mesh.nodeLayer[i]; });
-  }
-  std::vector<int> member(mesh.nodes.size());
+// One 0/1 array per node set, and "cad_face" with surface groups.
+void writeGroupArrays(std::ostream& out, std::size_t nodes, const std::vector<NodeSet>& nodeSets,
+                      const std::vector<SurfaceGroup>& surfaces) {
+  std::vector<int> member(nodes);
   for (const NodeSet& s : nodeSets) {
     std::fill(member.begin(), member.end(), 0);
     for (int n : s.nodes) member[n] = 1;
     openArray(out, "Int32", s.name);
     writeValues(out, member.size(), [&](std::size_t i) { return member[i]; });
   }
-  if (!groups.surfaces.empty()) {
-    const std::vector<int> face = cadFaceOfNodes(mesh, groups.surfaces);
+  if (!surfaces.empty()) {
+    const std::vector<int> face = cadFaceOfNodes(nodes, surfaces);
     openArray(out, "Int32", "cad_face");
     writeValues(out, face.size(), [&](std::size_t i) { return face[i]; });
   }
+}
+
+void writePointData(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups) {
+  const bool layers = mesh.nodeLayer.size() == mesh.nodes.size();
+  if (!layers && groups.nodeSets.empty() && groups.surfaces.empty()) return;
+  out << "<PointData>\n";
+  if (layers) {
+    openArray(out, "Int32", "layer");
+    writeValues(out, mesh.nodes.size(), [&](std::size_t i) { return mesh.nodeLayer[i]; });
+  }
+  writeGroupArrays(out, mesh.nodes.size(), groups.nodeSets, groups.surfaces);
   out << "</PointData>\n";
 }
 
@@ -81,43 +86,64 @@ void writeCellData(std::ostream& out, const std::vector<CellField>& cellFields) 
   out << "</CellData>\n";
 }
 
-void writePoints(std::ostream& out, const HexMesh& mesh) {
+void writePoints(std::ostream& out, const std::vector<Vec3>& nodes) {
   out << "<Points>\n";
   openArray(out, "Float64", "Points", 3);
-  for (const Vec3& p : mesh.nodes)
+  for (const Vec3& p : nodes)
     out << formatDouble(p.x()) << " " << formatDouble(p.y()) << " " << formatDouble(p.z()) << "\n";
   out << "</DataArray>\n</Points>\n";
 }
 
-void writeCells(std::ostream& out, const HexMesh& mesh) {
+// count cells of one VTK type with perCell nodes each, cell c's nodes nodesOf(c).
+template <class NodesOf>
+void writeCells(std::ostream& out, std::size_t count, std::size_t perCell, int type, NodesOf&& nodesOf) {
   out << "<Cells>\n";
   openArray(out, "Int64", "connectivity");
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-    const ElementNodes nodes = elementNodes(mesh, h);
+  for (std::size_t c = 0; c < count; ++c) {
+    const ElementNodes nodes = nodesOf(c);
     for (std::size_t i = 0; i < nodes.size(); ++i) out << nodes[i] << (i + 1 == nodes.size() ? "\n" : " ");
   }
   out << "</DataArray>\n";
-  const std::size_t perCell = mesh.quadratic() ? 20 : 8;
   openArray(out, "Int64", "offsets");
-  writeValues(out, mesh.hexes.size(), [&](std::size_t h) { return perCell * (h + 1); });
+  writeValues(out, count, [&](std::size_t c) { return perCell * (c + 1); });
   openArray(out, "UInt8", "types");
-  const int type = mesh.quadratic() ? kVtkQuadraticHexahedron : kVtkHexahedron;
-  writeValues(out, mesh.hexes.size(), [&](std::size_t) { return type; });
+  writeValues(out, count, [&](std::size_t) { return type; });
   out << "</Cells>\n";
 }
+
+void openPiece(std::ostream& out, std::size_t points, std::size_t cells) {
+  out << "<?xml version=\"1.0\"?>\n";
+  out << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
+  out << "<UnstructuredGrid>\n";
+  out << "<Piece NumberOfPoints=\"" << points << "\" NumberOfCells=\"" << cells << "\">\n";
+}
+
+void closePiece(std::ostream& out) { out << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n"; }
 
 }  // namespace
 
 void writeVtu(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups) {
-  out << "<?xml version=\"1.0\"?>\n";
-  out << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
-  out << "<UnstructuredGrid>\n";
-  out << "<Piece NumberOfPoints=\"" << mesh.nodes.size() << "\" NumberOfCells=\"" << mesh.hexes.size() << "\">\n";
+  openPiece(out, mesh.nodes.size(), mesh.hexes.size());
   writePointData(out, mesh, groups);
   writeCellData(out, groups.cellFields);
-  writePoints(out, mesh);
-  writeCells(out, mesh);
-  out << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  writePoints(out, mesh.nodes);
+  writeCells(out, mesh.hexes.size(), mesh.quadratic() ? 20 : 8,
+             mesh.quadratic() ? kVtkQuadraticHexahedron : kVtkHexahedron,
+             [&](std::size_t h) { return elementNodes(mesh, h); });
+  closePiece(out);
+}
+
+void writeShellVtu(std::ostream& out, const ShellMesh& shell) {
+  openPiece(out, shell.nodes.size(), shell.quads.size());
+  out << "<PointData>\n";
+  openArray(out, "Float64", "thickness");
+  writeValues(out, shell.thickness.size(), [&](std::size_t i) { return formatDouble(shell.thickness[i]); });
+  writeGroupArrays(out, shell.nodes.size(), shell.nodeSets, shell.faces);
+  out << "</PointData>\n";
+  writePoints(out, shell.nodes);
+  writeCells(out, shell.quads.size(), shell.quadratic() ? 8 : 4, shell.quadratic() ? kVtkQuadraticQuad : kVtkQuad,
+             [&](std::size_t e) { return shellElementNodes(shell, e); });
+  closePiece(out);
 }
 
 }  // namespace hexlayer

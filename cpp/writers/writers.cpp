@@ -56,6 +56,16 @@ int hexEdge(int a, int b) {
   return -1;
 }
 
+// An element's corners, then its mid nodes (none if mids is null).
+template <std::size_t C, std::size_t M>
+ElementNodes cornersThenMids(const std::array<int, C>& corners, const std::array<int, M>* mids) {
+  ElementNodes nodes;
+  for (int n : corners) nodes.push_back(n);
+  if (mids)
+    for (int n : *mids) nodes.push_back(n);
+  return nodes;
+}
+
 }  // namespace
 
 ElementNodes boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& f) {
@@ -68,11 +78,11 @@ ElementNodes boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& f) {
 }
 
 ElementNodes elementNodes(const HexMesh& mesh, std::size_t h) {
-  ElementNodes ids;
-  for (int n : mesh.hexes[h]) ids.push_back(n);
-  if (mesh.quadratic())
-    for (int n : mesh.midEdges[h]) ids.push_back(n);
-  return ids;
+  return cornersThenMids(mesh.hexes[h], mesh.quadratic() ? &mesh.midEdges[h] : nullptr);
+}
+
+ElementNodes shellElementNodes(const ShellMesh& shell, std::size_t e) {
+  return cornersThenMids(shell.quads[e], shell.quadratic() ? &shell.midSides[e] : nullptr);
 }
 
 std::string formatDouble(double v) {
@@ -81,18 +91,48 @@ std::string formatDouble(double v) {
   return std::string(buf, r.ptr);
 }
 
-void writeMesh(const std::string& path, const HexMesh& mesh, const MeshGroups& groups) {
-  const std::string ext = lowerExtension(path);
+namespace {
+
+// The output stream of `path`, whose extension is .inp, .vtu or .msh (returned in ext).
+std::ofstream openMeshFile(const std::string& path, std::string& ext) {
+  ext = lowerExtension(path);
   if (ext != ".inp" && ext != ".vtu" && ext != ".msh")
     throw usageError("unknown output format '" + ext + "' of '" + path + "': use .inp, .vtu or .msh");
-  checkFits(mesh, groups);
   std::ofstream out(path);
   if (!out) throw inputError("cannot open the output file '" + path + "' for writing");
-  if (ext == ".inp") writeInp(out, mesh, groups);
-  if (ext == ".vtu") writeVtu(out, mesh, groups);
-  if (ext == ".msh") writeMsh(out, mesh, groups);
+  return out;
+}
+
+void closeMeshFile(std::ofstream& out, const std::string& path) {
   out.close();
   if (!out) throw inputError("failed writing the output file '" + path + "'");
+}
+
+// Opens `path` and writes it with the writer of its extension (each takes the stream), then closes it.
+template <class Inp, class Vtu, class Msh>
+void writeByExtension(const std::string& path, Inp&& inp, Vtu&& vtu, Msh&& msh) {
+  std::string ext;
+  std::ofstream out = openMeshFile(path, ext);
+  ext == ".inp" ? inp(out) : ext == ".vtu" ? vtu(out) : msh(out);
+  closeMeshFile(out, path);
+}
+
+}  // namespace
+
+void writeMesh(const std::string& path, const HexMesh& mesh, const MeshGroups& groups) {
+  checkFits(mesh, groups);
+  writeByExtension(
+      path, [&](std::ostream& o) { writeInp(o, mesh, groups); }, [&](std::ostream& o) { writeVtu(o, mesh, groups); },
+      [&](std::ostream& o) { writeMsh(o, mesh, groups); });
+}
+
+void writeShellMesh(const std::string& path, const ShellMesh& shell) {
+  if (shell.thickness.size() != shell.nodes.size() ||
+      (shell.quadratic() && shell.midSides.size() != shell.quads.size()))
+    throw Error(ExitCode::Internal, "the shell's thickness or mid-side nodes do not fit its nodes and elements");
+  writeByExtension(
+      path, [&](std::ostream& o) { writeShellInp(o, shell); }, [&](std::ostream& o) { writeShellVtu(o, shell); },
+      [&](std::ostream& o) { writeShellMsh(o, shell); });
 }
 
 }  // namespace hexlayer

@@ -50,6 +50,26 @@ void writeVtu(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 // [out] out: the file's text written to it; [in] mesh, groups.
 void writeMsh(std::ostream& out, const HexMesh& mesh, const MeshGroups& groups);
 
+// The mid-surface shell (ShellMesh, issue 20) in the format of the path's extension; throws as writeMesh does.
+void writeShellMesh(const std::string& path, const ShellMesh& shell);
+
+// The material name the shell's *SHELL SECTION refers to: the deck including the mesh defines it first.
+inline constexpr const char* kShellMaterial = "SHELL_MATERIAL";
+
+// CalculiX/Abaqus: *NODE (NSET=NALL), *ELEMENT TYPE=S4 (S8R for 8-node quads) ELSET=EALL (S4, which CalculiX expands
+// into C3D8I, not S4R: its C3D8R hourglass, a 100 x 20 x 2 cantilever bent 28 times too far), one *NSET per node set
+// (RIM) and per CAD face (FACEN), *NODAL THICKNESS (node, thickness) and *SHELL SECTION, ELSET=EALL,
+// MATERIAL=SHELL_MATERIAL, NODAL THICKNESS. [out] out: the file's text written to it; [in] shell.
+void writeShellInp(std::ostream& out, const ShellMesh& shell);
+
+// VTK XML UnstructuredGrid (VTK_QUAD = 9, VTK_QUADRATIC_QUAD = 23): point data "thickness", one 0/1 array per node
+// set and "cad_face" as writeVtu has it. [out] out: the file's text written to it; [in] shell.
+void writeShellVtu(std::ostream& out, const ShellMesh& shell);
+
+// Gmsh 4.1: surface 1 (physical group "shell") with the quads (type 3, or 16 with 8 nodes) and $NodeData
+// "thickness". [out] out: the file's text written to it; [in] shell.
+void writeShellMsh(std::ostream& out, const ShellMesh& shell);
+
 // The node ids of one element or face, at most 20, held without a heap allocation (the writers
 // make one per element).
 struct ElementNodes {
@@ -69,6 +89,10 @@ ElementNodes boundaryFaceNodes(const HexMesh& mesh, const BoundaryFace& face);
 // Node ids of hex h in CalculiX C3D8/C3D20 order (= VTK's): the 8 corners, then for a 20-node hex
 // its 12 mid-edge nodes (kHexEdges order).
 ElementNodes elementNodes(const HexMesh& mesh, std::size_t h);
+
+// Node ids of shell element e: its 4 corners, then for 8-node quads the mid-side nodes of edges 0-1, 1-2, 2-3, 3-0
+// (CalculiX S8R's, Gmsh's type 16's and VTK_QUADRATIC_QUAD's order).
+ElementNodes shellElementNodes(const ShellMesh& shell, std::size_t e);
 
 // Shortest text that reads back to exactly v (std::to_chars).
 std::string formatDouble(double v);

@@ -409,3 +409,107 @@ TEST_F(Writers, CellFieldOfWrongSizeIsRejected) {
   fields_.push_back({"short", {1.0}});
   EXPECT_EQ(codeOf([&] { write("bad.vtu"); }), ExitCode::Internal);
 }
+
+namespace {
+
+// Two unit squares side by side in z = 0 (corners 0-5), thickness 1 + x / 10 at every node; with `quadratic`
+// the 7 mid-side nodes at their edges' midpoints (ids 6..12). RIM: every node but the shared edge's midpoint.
+ShellMesh twoQuadShell(bool quadratic) {
+  ShellMesh s;
+  s.nodes = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
+  s.quads = {{0, 1, 4, 3}, {1, 2, 5, 4}};
+  if (quadratic) {
+    const std::array<std::array<int, 2>, 7> edges = {{{0, 1}, {1, 4}, {4, 3}, {3, 0}, {1, 2}, {2, 5}, {5, 4}}};
+    for (const auto& [a, b] : edges) s.nodes.push_back(0.5 * (s.nodes[a] + s.nodes[b]));
+    s.midSides = {{6, 7, 8, 9}, {10, 11, 12, 7}};
+  }
+  for (const Vec3& p : s.nodes) s.thickness.push_back(1 + p.x() / 10);
+  NodeSet rim{"RIM", {}};
+  for (int n = 0; n < static_cast<int>(s.nodes.size()); ++n)
+    if (n != 7) rim.nodes.push_back(n);
+  s.nodeSets = {rim};
+  s.faces = {{"Face1", {0, 3, 9}, {}}, {"Face2", {2, 5, 11}, {}}};
+  if (!quadratic) s.faces = {{"Face1", {0, 3}, {}}, {"Face2", {2, 5}, {}}};
+  return s;
+}
+
+}  // namespace
+
+TEST_F(Writers, ShellInpHasS8RNodalThicknessSectionAndFaceSets) {
+  const ShellMesh shell = twoQuadShell(true);
+  const fs::path p = dir_ / "shell.inp";
+  writeShellMesh(p.string(), shell);
+  const std::vector<std::string> all = lines(readText(p));
+  EXPECT_EQ(inpBlock(all, "*NODE").size(), 13u);
+  const std::vector<std::string> elements = inpBlock(all, "*ELEMENT, TYPE=S8R, ELSET=EALL");
+  ASSERT_EQ(elements.size(), 2u);
+  EXPECT_EQ(splitCommas(elements[1]), (std::vector<std::string>{"2", "2", "3", "6", "5", "11", "12", "13", "8"}));
+  const std::vector<std::string> thickness = inpBlock(all, "*NODAL THICKNESS");
+  ASSERT_EQ(thickness.size(), 13u);
+  for (std::size_t i = 0; i < thickness.size(); ++i) {
+    const std::vector<std::string> f = splitCommas(thickness[i]);
+    EXPECT_EQ(f[0], std::to_string(i + 1));
+    EXPECT_DOUBLE_EQ(std::stod(f[1]), shell.thickness[i]);
+  }
+  EXPECT_EQ(inpBlock(all, "*NSET, NSET=FACE2"), std::vector<std::string>{"3, 6, 12"});
+  EXPECT_EQ(inpBlock(all, "*NSET, NSET=RIM").size(), 1u);
+  EXPECT_NE(std::find(all.begin(), all.end(), "*SHELL SECTION, ELSET=EALL, MATERIAL=SHELL_MATERIAL, NODAL THICKNESS"),
+            all.end());
+}
+
+TEST_F(Writers, ShellInpWritesS4ForLinearQuads) {
+  const fs::path p = dir_ / "shell4.inp";
+  writeShellMesh(p.string(), twoQuadShell(false));
+  const std::vector<std::string> all = lines(readText(p));
+  EXPECT_EQ(inpBlock(all, "*ELEMENT, TYPE=S4, ELSET=EALL"),
+            (std::vector<std::string>{"1, 1, 2, 5, 4", "2, 2, 3, 6, 5"}));
+  EXPECT_EQ(inpBlock(all, "*NODAL THICKNESS").size(), 6u);
+}
+
+TEST_F(Writers, ShellVtuHas8NodeQuadsAndThicknessThatMeshioReads) {
+  const fs::path p = dir_ / "shell.vtu";
+  writeShellMesh(p.string(), twoQuadShell(true));
+  const fs::path script = dir_ / "check.py";
+  std::ofstream(script) << R"(import sys, meshio, numpy
+m = meshio.read(sys.argv[1])
+cells = m.cells_dict['quad8']
+assert cells.shape == (2, 8), cells.shape
+for c in cells:
+    for e in range(4):
+        assert numpy.allclose(m.points[c[4 + e]], (m.points[c[e]] + m.points[c[(e + 1) % 4]]) / 2), (c, e)
+assert numpy.allclose(m.point_data['thickness'], 1 + m.points[:, 0] / 10)
+assert list(m.point_data['RIM']) == [1] * 7 + [0] + [1] * 5
+assert list(m.point_data['cad_face'][[0, 2, 1]]) == [1, 2, 0]
+)";
+  expectPythonPasses(script, p);
+}
+
+TEST_F(Writers, ShellMshHasQuadsInTheShellGroupAndThicknessNodeData) {
+  for (bool quadratic : {false, true}) {
+    const ShellMesh shell = twoQuadShell(quadratic);
+    const fs::path p = dir_ / (quadratic ? "shell8.msh" : "shell4.msh");
+    writeShellMesh(p.string(), shell);
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::open(p.string());
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> elementTags, elementNodes;
+    gmsh::model::mesh::getElements(types, elementTags, elementNodes, 2);
+    ASSERT_EQ(types, std::vector<int>{quadratic ? 16 : 3});
+    EXPECT_EQ(elementTags[0].size(), 2u);
+    EXPECT_EQ(elementsPerPhysicalGroup(), (std::map<std::string, std::size_t>{{"shell", 2}}));
+    std::vector<int> views;
+    gmsh::view::getTags(views);
+    ASSERT_EQ(views.size(), 1u);
+    std::string dataType;
+    std::vector<std::size_t> tags;
+    std::vector<std::vector<double>> data;
+    double time;
+    int components;
+    gmsh::view::getModelData(views[0], 0, dataType, tags, data, time, components);
+    EXPECT_EQ(dataType, "NodeData");
+    ASSERT_EQ(tags.size(), shell.nodes.size());
+    for (std::size_t i = 0; i < tags.size(); ++i) EXPECT_DOUBLE_EQ(data[i][0], shell.thickness[tags[i] - 1]);
+    gmsh::finalize();
+  }
+}

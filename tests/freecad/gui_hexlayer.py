@@ -116,8 +116,25 @@ class Workbench(GuiTest):
         self.assertEqual(len(toolbars), 1)
         self.assertIn("Hex-Layer mesh", [a.text() for a in toolbars[0].actions()])
         menus = [m for m in window.menuBar().actions() if m.text() == "&Hex-Layer"]
-        self.assertEqual([a.text() for a in menus[0].menu().actions()], ["Hex-Layer mesh"] + STAGE_MENU)
-        self.assertEqual([a.text() for a in toolbars[0].actions()], ["Hex-Layer mesh"] + STAGE_MENU)
+        self.assertEqual([a.text() for a in menus[0].menu().actions()], ["Hex-Layer mesh", "Mid-surface shell"] + STAGE_MENU)
+        self.assertEqual([a.text() for a in toolbars[0].actions()], ["Hex-Layer mesh", "Mid-surface shell"] + STAGE_MENU)
+
+
+class ShellCommand(GuiTest):
+    def test_mid_surface_shell_of_the_selected_solid_joins_the_analysis(self):
+        plate = t.add_plate(self.doc)
+        analysis = self.add_analysis()
+        Gui.Selection.addSelection(self.doc.Name, plate.Name)
+        Gui.runCommand("HexLayer_ShellMesh")
+        settle()
+        shell = [o for o in self.doc.Objects if getattr(o, "ElementGeometry", None) is not None][0]
+        self.assertTrue(shell.isValid(), shell.Status)
+        self.assertGreater(shell.FemMesh.FaceCount, 100)
+        self.assertEqual(shell.FemMesh.VolumeCount, 0)
+        self.assertIn(shell, analysis.Group)
+        self.assertIn(shell.ElementGeometry, analysis.Group)
+        self.assertAlmostEqual(shell.ElementGeometry.Thickness.Value, 2.0, delta=1e-9)
+        shell.ViewObject.DisplayMode = "Faces & Wireframe"  # FEM's display modes (its view provider)
 
 
 class BadSelections(GuiTest):

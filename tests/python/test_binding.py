@@ -144,20 +144,25 @@ class PlateMesh(unittest.TestCase):
         self.assertEqual(peaks, sorted(peaks), "the peak so far never falls")
 
 
+def two_plates(**options):
+    """The 60 x 40 x 2 plate and a 30 x 40 x 2 plate 10 above it, two solids of one BREP file, meshed."""
+    import gmsh
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.occ.addBox(0, 0, 0, 60, 40, 2)
+        gmsh.model.occ.addBox(0, 0, 10, 30, 40, 2)
+        gmsh.model.occ.synchronize()
+        with tempfile.TemporaryDirectory() as tmp:
+            gmsh.write(os.path.join(tmp, "two.brep"))
+            return pyhexlayer.mesh_file(os.path.join(tmp, "two.brep"), layers=2, **options)
+    finally:
+        gmsh.finalize()
+
+
 class TwoSolids(unittest.TestCase):
     def test_stages_of_each_solid_follow_each_other(self):
-        import gmsh
-        gmsh.initialize()
-        try:
-            gmsh.option.setNumber("General.Terminal", 0)
-            gmsh.model.occ.addBox(0, 0, 0, 60, 40, 2)
-            gmsh.model.occ.addBox(0, 0, 10, 30, 40, 2)
-            gmsh.model.occ.synchronize()
-            with tempfile.TemporaryDirectory() as tmp:
-                gmsh.write(os.path.join(tmp, "two.brep"))
-                both = pyhexlayer.mesh_file(os.path.join(tmp, "two.brep"), layers=2)
-        finally:
-            gmsh.finalize()
+        both = two_plates()
         solids = both.report["solids"]
         self.assertEqual(len(both.quads), sum(s["quad_mesh"]["quads"] for s in solids))
         self.assertEqual(len(both.quad_nodes), sum(s["quad_mesh"]["nodes"] for s in solids))
@@ -166,6 +171,47 @@ class TwoSolids(unittest.TestCase):
         self.assertEqual(len(np.unique(both.chordal_facets[both.chordal_facets >= 0])), len(both.chordal_vertices))
         self.assertLess(abs(facet_area(both.quad_nodes, both.quads) - 1.5 * PLATE_AREA) / PLATE_AREA, 0.03)
         self.assertEqual(len(both.node_layer), len(both.nodes))
+
+    def test_shells_of_two_solids_are_one_with_faces_numbered_on(self):
+        both = two_plates(shell=True)
+        self.assertEqual(len(both.shell_elements), len(both.quads))
+        self.assertEqual(len(np.unique(both.shell_elements)), len(both.shell_nodes), "each solid's own nodes")
+        self.assertEqual(sorted(both.shell_node_sets), sorted(["RIM"] + ["Face{}".format(k) for k in range(1, 13)]))
+        top = both.shell_nodes[both.shell_node_sets["Face12"]]  # the second box's top, z = 12
+        self.assertTrue(np.allclose(top[:, 2], 11.0), "the second solid's faces numbered after the first's")
+        self.assertAlmostEqual(both.report["shell"]["area"]["shell"], 1.5 * PLATE_AREA, delta=1e-6 * PLATE_AREA)
+
+
+class ShellPlate(unittest.TestCase):
+    """shell=True: the mid-surface shell of the 60 x 40 x 2 plate (issue 20), S8R with order=2."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.result = pyhexlayer.mesh_file(sample("plate.step"), order=2, shell=True)
+
+    def test_quad8_elements_on_the_mid_plane_with_the_wall_thickness(self):
+        r = self.result
+        self.assertEqual(r.shell_elements.shape, (len(r.quads), 8))
+        self.assertEqual(r.shell_elements.max() + 1, len(r.shell_nodes))
+        self.assertTrue(np.allclose(r.shell_nodes[:, 2], 1.0))
+        self.assertTrue(np.allclose(r.shell_thickness, 2.0))
+        s = r.report["shell"]
+        self.assertEqual((s["element_type"], s["elements"], s["nodes"]), ("S8R", len(r.quads), len(r.shell_nodes)))
+        self.assertAlmostEqual(s["area"]["shell"], PLATE_AREA, delta=1e-6 * PLATE_AREA)
+
+    def test_node_sets_per_face_and_rim(self):
+        sets = self.result.shell_node_sets
+        self.assertEqual(sorted(sets), sorted(["RIM"] + ["Face{}".format(k) for k in range(1, 7)]))
+        x = self.result.shell_nodes[:, 0]
+        self.assertTrue(np.array_equal(sets["Face1"], np.flatnonzero(np.abs(x) < 1e-9)), "the rim face at x = 0")
+        self.assertGreater(len(sets["Face1"]), 4)
+        walls = [k for k in range(1, 7) if len(sets["Face{}".format(k)]) == len(self.result.shell_nodes)]
+        self.assertEqual(len(walls), 2, "every sweep line ends on the two walls")
+
+    def test_without_shell_there_is_none(self):
+        r = pyhexlayer.mesh_file(sample("plate.step"))
+        self.assertEqual(r.shell_elements.shape[0], 0)
+        self.assertNotIn("shell", r.report)
 
 
 class QuadraticPlateMesh(unittest.TestCase):

@@ -1,4 +1,5 @@
-"""The workbench's commands: "Hex-Layer mesh" (FEM_MeshGmshFromShape's conventions) and the stage views."""
+"""The workbench's commands: "Hex-Layer mesh" (FEM_MeshGmshFromShape's conventions), "Mid-surface shell" and the
+stage views."""
 import FreeCAD
 import FreeCADGui
 
@@ -51,6 +52,35 @@ class MeshCommand:
         FreeCAD.ActiveDocument.commitTransaction()
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.doCommand("Gui.ActiveDocument.setEdit(hexlayer_mesh.Name)")
+
+
+class ShellCommand:
+    """Adds the mid-surface shell of the selected solid and its ElementGeometry2D (to the active analysis, if any) and
+    meshes it."""
+
+    def GetResources(self):
+        return {"Pixmap": icon("HexLayer_QuadMesh"),
+                "MenuText": "Mid-surface shell",
+                "ToolTip": "FEM shell mesh (quad8) of the selected thin solid's mid-surface, with an ElementGeometry2D\n"
+                           "holding its measured thickness, added to the active analysis."}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and meshing.part_problem(selected_part()) is None
+
+    def Activated(self):
+        part = selected_part()
+        FreeCAD.ActiveDocument.openTransaction("Mid-surface shell")
+        FreeCADGui.addModule("HexLayer")
+        FreeCADGui.doCommand("hexlayer_shell = HexLayer.makeShellMesh(App.ActiveDocument, "
+                             "App.ActiveDocument.getObject('{}'))".format(part.Name))
+        if active_analysis() is not None:
+            FreeCADGui.addModule("FemGui")
+            FreeCADGui.doCommand("FemGui.getActiveAnalysis().addObject(hexlayer_shell)")
+            FreeCADGui.doCommand("FemGui.getActiveAnalysis().addObject(hexlayer_shell.ElementGeometry)")
+        FreeCAD.ActiveDocument.commitTransaction()
+        # a failed meshing leaves the object empty with the reason in its Status, printed either way
+        FreeCADGui.doCommand("App.ActiveDocument.recompute()")
+        FreeCADGui.doCommand("App.Console.PrintMessage('Mid-surface shell: ' + hexlayer_shell.Status + '\\n')")
 
 
 def selected_mesh():
@@ -107,6 +137,7 @@ STAGE_API = {"ChordalSurface": "makeChordalSurface", "QuadMesh": "makeQuadMesh",
 
 COMMANDS = {
     "HexLayer_Mesh": MeshCommand(),
+    "HexLayer_ShellMesh": ShellCommand(),
     "HexLayer_ChordalSurface": StageViewCommand(
         "ChordalSurface", "Chordal surface", "Show the chordal surface (mid-surface cut through the tets) the quads were made on."),
     "HexLayer_QuadMesh": StageViewCommand(

@@ -64,7 +64,7 @@ def executable():
 
 def option_arguments(opts, force=False):
     """The CLI arguments of the workbench's options (meshing.options: layers, size, sizing, aspect, order,
-    drop_junctions)."""
+    drop_junctions; shell: the mid-surface shell too)."""
     args = ["--layers", str(opts["layers"]), "--sizing", str(opts["sizing"]), "--order", str(opts["order"])]
     if opts.get("size", 0) > 0:
         args += ["--size", repr(float(opts["size"]))]
@@ -72,6 +72,8 @@ def option_arguments(opts, force=False):
         args += ["--aspect", repr(float(opts["aspect"]))]
     if opts.get("drop_junctions"):
         args.append("--drop-junctions")
+    if opts.get("shell"):
+        args.append("--shell")
     if force:
         args.append("--force")
     return args
@@ -155,8 +157,12 @@ def read_result(path):
         return {name[len(prefix):]: array(name) for name in index["arrays"] if name.startswith(prefix)}
 
     names = ("nodes", "hexes", "scaled_jacobian", "chordal_vertices", "chordal_facets", "quad_nodes", "quads", "node_layer")
+    # the mid-surface shell, with --shell: as pyhexlayer's shell_* (shell_node_sets: RIM and Face1..FaceN)
+    shell = ("shell_nodes", "shell_elements", "shell_thickness")
     return types.SimpleNamespace(report=index["report"], node_sets=group("node_sets/"), face_nodes=group("face_nodes/"),
-                                 face_elements=group("face_elements/"), **{name: array(name) for name in names})
+                                 face_elements=group("face_elements/"),
+                                 shell_node_sets=dict(group("shell_node_sets/"), **group("shell_face_nodes/")),
+                                 **{name: array(name) for name in names + shell if name in index["arrays"]})
 
 
 def progress_text(line):

@@ -78,17 +78,39 @@ def femmesh(result):
     FemMesh groups nodes or whole elements, not faces of volumes: the element faces on each CAD face
     (pyhexlayer's face_elements, the .inp's *SURFACE FaceN_S) have no FemMesh group."""
     fem = hexa_femmesh(result.nodes, result.hexes)
-    for name, nodes in list(result.node_sets.items()) + list(result.face_nodes.items()):
+    add_node_groups(fem, list(result.node_sets.items()) + list(result.face_nodes.items()))
+    return fem
+
+
+def add_node_groups(fem, sets):
+    """[(name, 0-based node ids)] as node groups of the FemMesh (1-based ids); empty sets left out."""
+    for name, nodes in sets:
         if len(nodes):
             fem.addGroupElements(fem.addGroup(name, "Node"), (nodes + 1).tolist())
+
+
+def node_femmesh(nodes):
+    """A FemMesh of the (N, 3) nodes, ids 1..N in row order."""
+    fem = Fem.FemMesh()
+    for i, (x, y, z) in enumerate(nodes.tolist(), start=1):
+        fem.addNode(x, y, z, i)
+    return fem
+
+
+def shell_femmesh(result):
+    """A FemMesh of the mid-surface shell's faces: quad4, or quad8 for Order 2 (SMESH's quad8 lists the corners, then
+    the mid-side nodes of edges 0-1, 1-2, 2-3, 3-0, as pyhexlayer's shell_elements do), node groups RIM and Face1..FaceN
+    (the shell nodes whose sweep line ends on that wall, or whose column lies on that rim face)."""
+    fem = node_femmesh(result.shell_nodes)
+    for i, face in enumerate((result.shell_elements + 1).tolist(), start=1):
+        fem.addFace(face, i)
+    add_node_groups(fem, result.shell_node_sets.items())
     return fem
 
 
 def hexa_femmesh(nodes, hexes):
     """A FemMesh of the (N, 3) nodes and the (M, 8) or (M, 20) pyhexlayer hexes (0-based), 1-based ids in row order."""
-    fem = Fem.FemMesh()
-    for i, (x, y, z) in enumerate(nodes.tolist(), start=1):
-        fem.addNode(x, y, z, i)
+    fem = node_femmesh(nodes)
     smesh_order = SMESH_HEXA20 if hexes.shape[1] == 20 else SMESH_HEXA8
     for i, hexa in enumerate((hexes[:, smesh_order] + 1).tolist(), start=1):
         fem.addVolume(hexa, i)
@@ -146,3 +168,25 @@ def summary(report, seconds):
         text += " Validation failed, kept as Force is on: {}. Not fit for a solver there.".format("; ".join(failures))
     warning = order_warning(report["order"])
     return text + (" " + warning if warning else "")
+
+
+# FreeCAD's ElementGeometry2D holds one thickness per shell section: more than this relative spread is worth a warning.
+THICKNESS_SPREAD = 0.05
+
+
+def shell_summary(report, seconds):
+    """One line for people about the mid-surface shell: faces, nodes, thickness min/median/max, area against the walls'
+    mean, time; a warning when the thickness varies by more than THICKNESS_SPREAD around the median."""
+    s = report["shell"]
+    t, area = s["thickness"], s["area"]
+    kind = "quad8" if s["element_type"] == "S8R" else "quad4"
+    text = ("{} {} shell faces, {} nodes. Thickness min {:.4g}, median {:.4g}, max {:.4g} mm (the ElementGeometry2D "
+            "takes the median). Area {:.6g} mm2 ({:+.2f} % vs the walls' mean). {:.1f} s.").format(
+        s["elements"], kind, s["nodes"], t["min"], t["median"], t["max"], area["shell"],
+        100 * area["relative_error"], seconds)
+    spread = max(t["max"] - t["median"], t["median"] - t["min"]) / t["median"] if t["median"] > 0 else 0
+    if spread > THICKNESS_SPREAD:
+        text += (" Warning: the thickness varies by {:.0f} % from the median, and FreeCAD takes one thickness per shell "
+                 "section: split the part, or use the CLI's hexlayer mesh --shell, whose .inp has the thickness of "
+                 "every node (*NODAL THICKNESS).").format(100 * spread)
+    return text

@@ -5,7 +5,10 @@ import FreeCADGui
 from . import Stateless, icon
 
 
-class VPMeshHexLayer(Stateless):
+class IconViewProvider(Stateless):
+    """A view provider with FEM's display modes and the workbench's icon ICON."""
+    ICON = "HexLayer_Mesh"
+
     def __init__(self, vobj):
         vobj.Proxy = self
 
@@ -13,7 +16,10 @@ class VPMeshHexLayer(Stateless):
         self.Object = vobj.Object
 
     def getIcon(self):
-        return icon("HexLayer_Mesh")
+        return icon(self.ICON)
+
+
+class VPMeshHexLayer(IconViewProvider):
 
     def setEdit(self, vobj, mode=0):
         if mode != 0:
@@ -39,3 +45,9 @@ class VPMeshHexLayer(Stateless):
         else:
             guidoc.setEdit(vobj.Object.Name)
         return True
+
+
+
+class VPShellHexLayer(IconViewProvider):
+    """View provider of the mid-surface shell (no task panel: its properties)."""
+    ICON = "HexLayer_QuadMesh"
