@@ -1,11 +1,14 @@
 #include "sweep/sweep.hpp"
 
+#include <cmath>
+
 #include "core/error.hpp"
 #include "quality/quality.hpp"
 
 namespace hexlayer {
 namespace {
 
+const double kTurned = std::cos(1e-5);   // a first line this far from the chordal normal was turned (aimed)
 constexpr double kUntangleTarget = 0.2;  // columns below this scaled Jacobian get their directions smoothed
 
 // §7.3: one hex per quad and layer, quad j's hex of layer k at index j * m + k; hex node of quad
@@ -38,14 +41,15 @@ HexMesh layeredHexes(const QuadMesh& q, const std::vector<SweepDirection>& dir, 
   return mesh;
 }
 
-// Places the m + 1 hex nodes of quad node i on its sweep line along `normal` (§7.2).
-void placeSweepLine(HexMesh& mesh, const Vec3& q, int i, const Vec3& normal, double radius,
-                    const std::vector<double>& offsets, const WallMap& walls) {
+// Places the m + 1 hex nodes of quad node i on its sweep line along `normal` (§7.2); returns the line.
+SweepLine placeSweepLine(HexMesh& mesh, const Vec3& q, int i, const Vec3& normal, double radius,
+                         const std::vector<double>& offsets, const WallMap& walls) {
   const SweepLine line = walls(q, normal, radius);
   const int stride = static_cast<int>(offsets.size());
   for (int k = 0; k < stride; ++k) mesh.nodes[i * stride + k] = layerNode(q, line, offsets[k]);
   mesh.nodes[i * stride] = line.bottom, mesh.nodes[i * stride + stride - 1] = line.top;  // exactly on the walls
   mesh.nodeFace[i * stride] = line.bottomFace, mesh.nodeFace[i * stride + stride - 1] = line.topFace;
+  return line;
 }
 
 double columnQuality(const HexMesh& mesh, int quad) {
@@ -79,7 +83,8 @@ Vec3 layerNode(const Vec3& q, const SweepLine& line, double t) {
   return t >= 0 ? Vec3(q + t * (line.top - q)) : Vec3(q - t * (line.bottom - q));
 }
 
-SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, const WallMap& walls) {
+SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, const WallMap& walls,
+                       const WallMap& aimed) {
   if (m < 1) throw usageError("the number of layers must be at least 1");
   const std::vector<double> offsets = layerOffsets(m);
   std::vector<SweepDirection> dir(q.nodes.size());
@@ -91,8 +96,16 @@ SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, 
   std::vector<Vec3> normal(dir.size());
   for (size_t i = 0; i < dir.size(); ++i) normal[i] = dir[i].normal;
   auto place = [&](int i) { placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, walls); };
+  if (aimed) {
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) place(i);
+    for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) {
+      const SweepLine line = placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, aimed);
+      if (const Vec3 d = (line.top - line.bottom).normalized(); d.dot(normal[i]) < kTurned) normal[i] = d;
+    }
+  } else {
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) place(i);
+  }
   result.untangled =
       untangleSweep(q, normal, kUntangleTarget, place, [&](int j) { return columnQuality(result.mesh, j); });
   return result;

@@ -46,11 +46,14 @@ Vec3 layerNode(const Vec3& q, const SweepLine& line, double t);
 // every hex positively oriented; a quad node shared by quads gives shared hex nodes (conformal).
 // Where sweep lines converge (a bend whose inner radius is smaller than the wall's half-thickness)
 // the directions are untangled (untangle.hpp) before the nodes are placed for good.
+// [in] walls: where each line ends; [in] aimed: if given, the map of the first placement instead, which may turn a
+// line (sweep_to_walls.hpp's aimSweepLine): a turned line's direction then replaces the chordal normal, and the
+// untangling places its lines with `walls`, as it turns them.
 struct SweepResult {
   HexMesh mesh;
   UntangleResult untangled;
 };
 SweepResult sweepQuads(const QuadMesh& quads, const ChordalLocator& chordal, int layers,
-                       const WallMap& walls = radiusSweepLine);
+                       const WallMap& walls = radiusSweepLine, const WallMap& aimed = {});
 
 }  // namespace hexlayer

@@ -53,6 +53,11 @@ Vec3 wallsDirection(const WallRays& rays, const SweepLine& line, const Vec3& n, 
 
 SweepLine castSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r) {
   Vec3 topNormal, bottomNormal;
+  return castAlong(rays, q, n, r, topNormal, bottomNormal);
+}
+
+SweepLine aimSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r) {
+  Vec3 topNormal, bottomNormal;
   const SweepLine line = castAlong(rays, q, n, r, topNormal, bottomNormal);
   // A chordal normal askew to parallel walls (top and bottom bubbles that do not face each other tilt the tets'
   // top-bottom edges) shears the hexes: such a line is cast again along the walls' own direction.
@@ -67,9 +72,10 @@ SweepResult sweepToWalls(const QuadMesh& quads, const ChordalLocator& locator, c
                          const WallSides& sides, int layers) {
   std::deque<WallRays> rays;
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
-  return sweepQuads(quads, locator, layers, [&](const Vec3& q, const Vec3& n, double r) {
-    return castSweepLine(rays[threadIndex()], q, n, r);
-  });
+  return sweepQuads(
+      quads, locator, layers,
+      [&](const Vec3& q, const Vec3& n, double r) { return castSweepLine(rays[threadIndex()], q, n, r); },
+      [&](const Vec3& q, const Vec3& n, double r) { return aimSweepLine(rays[threadIndex()], q, n, r); });
 }
 
 }  // namespace hexlayer

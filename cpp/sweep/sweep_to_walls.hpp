@@ -16,8 +16,15 @@ namespace hexlayer {
 // kMinReach and kMaxReach radii away; else the radius function's end q ± r n (face -1).
 SweepLine castSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r);
 
+// castSweepLine, but a line that ends on both walls where they are parallel within 5° is cast again along their own
+// direction (the bisector of their outward normals there; blended into n as they open to 10°), if that turns it by
+// 1e-4 rad to 30° and it still ends on both walls: top and bottom bubbles that do not face each other (a part
+// turned in space, walls split differently) tilt the chordal normal, and the hexes would shear.
+SweepLine aimSweepLine(WallRays& rays, const Vec3& q, const Vec3& n, double r);
+
 // [in] quads, locator: the quad mesh and the chordal surface it lies on; [in] cad, sides; [in] layers.
-// sweepQuads with every line cast by castSweepLine, in parallel (a ray caster per thread).
+// sweepQuads with every line aimed by aimSweepLine, then untangled with castSweepLine, in parallel (a ray caster
+// per thread).
 SweepResult sweepToWalls(const QuadMesh& quads, const ChordalLocator& locator, const CadSolid& cad,
                          const WallSides& sides, int layers);
 

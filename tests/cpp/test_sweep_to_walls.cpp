@@ -42,9 +42,9 @@ TEST(SweepToWalls, SweepLineEndsOnTheWallsWithinReach) {
   EXPECT_EQ(out.topFace, 1) << "Face2, x = 40";
 }
 
-// A chordal normal askew to parallel walls (bubbles on the top and bottom that do not face each other) would shear
-// the hexes: the line takes the walls' direction, up to a turn of 30°; beyond it, or where the walls are not
-// parallel (a wedge opening at 12°), the chordal normal stays. Scaled by 1, 1e-3 and 1e3.
+// aimSweepLine: a chordal normal askew to parallel walls (bubbles on the top and bottom that do not face each other)
+// would shear the hexes: the line takes the walls' direction, up to a turn of 30°; beyond it, or where the walls are
+// not parallel (a wedge opening at 12°), the chordal normal stays. Scaled by 1, 1e-3 and 1e3.
 TEST(SweepToWalls, SweepLineTakesTheDirectionOfParallelWalls) {
   for (double s : {1.0, 1e-3, 1e3}) {
     SCOPED_TRACE("x " + std::to_string(s));
@@ -54,12 +54,12 @@ TEST(SweepToWalls, SweepLineTakesTheDirectionOfParallelWalls) {
     const Vec3 q = Vec3(20, 15, 1) * s;
     for (double degrees : {3.0, 18.0, 27.0}) {
       const double a = degrees * M_PI / 180;
-      const SweepLine line = castSweepLine(rays, q, Vec3(std::sin(a), 0.3 * std::sin(a), std::cos(a)).normalized(), s);
+      const SweepLine line = aimSweepLine(rays, q, Vec3(std::sin(a), 0.3 * std::sin(a), std::cos(a)).normalized(), s);
       EXPECT_NEAR((line.top - Vec3(20, 15, 2) * s).norm(), 0, 1e-9 * s) << degrees;
       EXPECT_NEAR((line.bottom - Vec3(20, 15, 0) * s).norm(), 0, 1e-9 * s) << degrees;
     }
     const double a = 35 * M_PI / 180;
-    const SweepLine askew = castSweepLine(rays, q, Vec3(std::sin(a), 0, std::cos(a)), s);
+    const SweepLine askew = aimSweepLine(rays, q, Vec3(std::sin(a), 0, std::cos(a)), s);
     EXPECT_NEAR((askew.top - Vec3(20 + std::tan(a), 15, 2) * s).norm(), 0, 1e-9 * s) << "turned too far: kept";
   }
   // A wedge: bottom z = 0, top rising at 12° from the line x = 0 (thickness 2 + x tan 12°), 30 x 60.
@@ -70,7 +70,7 @@ TEST(SweepToWalls, SweepLineTakesTheDirectionOfParallelWalls) {
       TopoDS::Solid(BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(outline.Wire()).Face(), gp_Vec(0, 60, 0)).Shape()));
   const WallSides sides = classifyWallSides(cad);
   WallRays rays(cad, sides);
-  const SweepLine line = castSweepLine(rays, Vec3(15, 30, 2), Vec3::UnitZ(), 2);
+  const SweepLine line = aimSweepLine(rays, Vec3(15, 30, 2), Vec3::UnitZ(), 2);
   EXPECT_NEAR((line.bottom - Vec3(15, 30, 0)).norm(), 0, 1e-9) << "walls 12° apart: the chordal normal kept";
   EXPECT_NEAR((line.top - Vec3(15, 30, 2 + 15 * rise)).norm(), 0, 1e-9);
 }
