@@ -42,22 +42,19 @@ constexpr double kMaxAutoQuads = 250000;
 constexpr double kRimReach = 1.6;
 
 // Runs one stage, records its wall time and the process's peak memory at its end in stages[name], and reports
-// progress.
+// its start and end as progress.
 class StageClock {
  public:
   StageClock(std::map<std::string, StageTime>& stages, const MeshOptions& options)
       : stages_(stages), options_(options) {}
   template <class F>
   auto run(const std::string& name, F&& stage) {
+    reportProgress(options_.progress, progressStart(name));
     const auto start = std::chrono::steady_clock::now();
     auto result = stage();
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stages_[name] = {s, peakMemoryMiB()};
-    if (options_.progress) {
-      std::ostringstream line;
-      line << name << ": " << std::fixed << std::setprecision(2) << s << " s";
-      options_.progress(line.str());
-    }
+    reportProgress(options_.progress, progressFinish(name, s));
     return result;
   }
 
@@ -339,11 +336,13 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   QuadStageOptions qo;
   qo.size = r.size, qo.adaptive = o.sizing == "adaptive", qo.sizing = {r.size, o.minSize, o.maxSize};
   qo.knifeEdges = !sides.knifeEdges.empty(), qo.progress = o.progress;
+  qo.tryBudget = o.quadTryBudget, qo.stageBudget = o.quadStageBudget;
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
   const QuadMesh& quads = stage.quads;
   r.chordal.fairingIterations = stage.fairingIterations;
   r.chordal.knifeFacetsDropped = stage.knifeFacets;
   r.quadMesh = countQuadMesh(quads);
+  r.quadMesh.budgetSeconds = stage.budgetSeconds;
   const ChordalLocator locator(stage.chordal);
   SweepResult swept = clock.run("sweep", [&] { return sweepToWalls(quads, locator, cad, sides, o.layers); });
   result.mesh = std::move(swept.mesh);
@@ -378,7 +377,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
   std::vector<MeshReport> reports;
   for (size_t i = 0; i < solids.size(); ++i) {
     const std::string which = "solid " + std::to_string(i + 1) + " of " + std::to_string(solids.size());
-    if (o.progress) o.progress(which);
+    reportProgress(o.progress, progressNote("", which));
     MeshResult one;
     try {
       one = meshSolid(solids[i], o);
