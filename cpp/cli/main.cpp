@@ -85,6 +85,12 @@ void addMeshOptions(CLI::App* command, MeshCommand& c) {
   command->add_option("--max-size", c.options.maxSize, "Largest adaptive quad size (default: 4 x the size)");
   command->add_option("--order", c.options.order,
                       "Element order: 1 = 8-node hexes (C3D8I), 2 = 20-node hexes (C3D20R) (default 1)");
+  command->add_option("--quad-budget", c.options.quadStageBudget,
+                      "Seconds the quad stage may spend on Gmsh tries before it keeps the best so far (default 0: "
+                      "10 s + 1 s per 1000 quads)");
+  command->add_option("--quad-try-budget", c.options.quadTryBudget,
+                      "Seconds one Gmsh try may take before it is killed as failed (default 0: 3 s + 1 s per 2000 "
+                      "quads)");
   command->add_flag("--force", c.options.force,
                     "Write the mesh even if it fails validation (with a warning per failed check)");
 }

@@ -298,6 +298,9 @@ void validateOptions(const MeshOptions& o) {
     throw usageError("--sizing must be 'uniform' or 'adaptive', got '" + o.sizing + "'");
   if (!(o.aspect >= 0) || !std::isfinite(o.aspect)) throw usageError("--aspect must be a positive ratio (0 = off)");
   if (o.size > 0 && o.aspect > 0) throw usageError("give --size or --aspect, not both");
+  if (!(o.quadStageBudget >= 0) || !(o.quadTryBudget >= 0) || !std::isfinite(o.quadStageBudget) ||
+      !std::isfinite(o.quadTryBudget))
+    throw usageError("--quad-budget and --quad-try-budget must be seconds (0 = from the part's size)");
   if (!(o.minSize >= 0) || !(o.maxSize >= 0) || !std::isfinite(o.minSize) || !std::isfinite(o.maxSize) ||
       (o.maxSize > 0 && o.minSize > o.maxSize))
     throw usageError("--min-size and --max-size must be lengths with --min-size <= --max-size");

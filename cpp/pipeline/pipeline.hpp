@@ -26,8 +26,8 @@ struct MeshOptions {
   // Each stage's start and end, how far a long stage is (the quad stage: its tries) and notes (may be empty).
   // Called on the calling thread, between and inside the stages.
   ProgressCallback progress;
-  // The quad stage's time budgets (quad_stage.hpp), in seconds; 0 = from the part's size. Only for tests and
-  // slow machines: a Gmsh try that runs out of its budget is a failed try.
+  // The quad stage's time budgets (quad_stage.hpp: --quad-budget, --quad-try-budget), in seconds; 0 = from the
+  // part's size. A Gmsh try that runs out of its budget is a failed try; after the stage's no try starts.
   double quadTryBudget = 0, quadStageBudget = 0;
 };
 

@@ -47,6 +47,8 @@ TEST(Pipeline, BadOptionsAreNamed) {
   EXPECT_NE(usageMessage(o).find("--min-size"), std::string::npos);
   o = MeshOptions{}, o.size = -1;
   EXPECT_NE(usageMessage(o).find("--size"), std::string::npos);
+  o = MeshOptions{}, o.quadStageBudget = -1;
+  EXPECT_NE(usageMessage(o).find("--quad-budget"), std::string::npos);
 }
 
 // 40 x 30 x 2 at size 2 in 3 layers: 20 x 15 x 3 bricks of 2 x 2 x 2/3, filling the box.

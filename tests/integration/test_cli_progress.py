@@ -1,7 +1,8 @@
 """The CLI's progress and version (issue 19 item 5): `hexlayer --version` gives package.xml's version; with stderr
 a pipe, plain lines (one per finished stage, no control characters), the same stages as the report's timings;
 with --machine, "@running <stage>" before each "@progress <stage>: <s> s"; with stderr a terminal (a pseudo
-terminal), one status line redrawn in place ("\\r\\033[K"), the finished stages' lines kept.
+terminal), one status line redrawn in place ("\\r\\033[K"), the finished stages' lines kept. The quad stage's
+budgets (--quad-try-budget, --quad-budget): a try out of its budget is a failed try.
 
 Run by CTest as: /usr/bin/python3 test_cli_progress.py --hexlayer PATH --source DIR
 """
@@ -101,6 +102,29 @@ class Progress(unittest.TestCase):
         kept = re.findall(r"hexlayer: (\w+): [0-9.]+ s\r?\n", text)
         self.assertCountEqual(kept, self.stages(report))
         self.assertEqual(text[text.rindex("\n") + 1:].replace(CLEAR, ""), "", "no status line left at the end")
+
+
+class QuadBudget(unittest.TestCase):
+    """The flat motor bracket's quads come from Gmsh (its block grid is not kept): with a millisecond per Gmsh try
+    every try of the three fairing levels runs out of it and fails, and the part is refused (exit 4) saying so;
+    with a spent stage budget no try starts."""
+
+    def run_with(self, *options):
+        part = os.path.join(harness.args.source, "..", "shared", "parts", "real", "ender3_x_motor_bracket_flatplate.step")
+        with tempfile.TemporaryDirectory() as tmp:
+            return subprocess.run([harness.args.hexlayer, "mesh", part, "-o", os.path.join(tmp, "m.inp"), "--quiet",
+                                   *options], capture_output=True, text=True, timeout=600)
+
+    def test_tries_out_of_their_budget_fail(self):
+        done = self.run_with("--quad-try-budget", "0.001")
+        self.assertEqual(done.returncode, 4, done.stderr)
+        self.assertIn("timed out after 0.001 s (36 Gmsh tries, 36 failed, 36 out of their time budget)", done.stderr)
+
+    def test_no_try_after_the_stage_budget(self):
+        done = self.run_with("--quad-budget", "0.001")
+        self.assertEqual(done.returncode, 4, done.stderr)
+        self.assertIn("(0 Gmsh tries, 0 failed, 0 out of their time budget, 12 not started: the stage's budget of "
+                      "0.001 s was spent)", done.stderr)
 
 
 if __name__ == "__main__":
