@@ -24,8 +24,8 @@ BUNDLED = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 PROGRESS = "@progress "
 RUNNING = "@running "
 # The stages the child reports one line each for (pipeline.cpp), for a progress bar; "quadratic" with Order 2.
-STAGES = ("geometry", "wall_sides", "mixed_faces", "bubbles", "tets", "tet_filter", "chordal_surface", "quad_mesh",
-          "sweep", "rim", "rim_cap", "smoothing", "surface_groups", "quality")
+STAGES = ("geometry", "wall_sides", "mixed_faces", "bubbles", "tets", "tet_filter", "chordal_surface", "chordal_rim",
+          "quad_mesh", "sweep", "rim", "rim_cap", "smoothing", "surface_groups", "quality")
 
 
 class HexLayerError(Exception):
