@@ -281,13 +281,15 @@ struct GmshTry {
   bool timedOut = false;  // it ran out of its time budget
 };
 
-// The time budget of the next Gmsh try: its own (given, or from the surface's area and the smallest size), at most
-// what is left before the deadline. [in] chordal, o. Returns seconds (<= 0: none left).
-double tryBudget(const ChordalSurface& chordal, const QuadMeshOptions& o) {
-  const double size = smallestSize(o);
-  const double own = o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTryBudget(chordalArea(chordal) / (size * size));
+// The time budget of the next Gmsh try: at most what is left before the deadline, and the try's own (given, or
+// gmshTryBudget of the surface's area over the size squared) once there are quads to fall back on: until then a
+// try is not an improvement but needed, and may take what the stage has left. [in] chordal, o; [in] needed: no
+// quads yet. Returns seconds (<= 0: none left).
+double tryBudget(const ChordalSurface& chordal, const QuadMeshOptions& o, bool needed) {
+  const double own = o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTryBudget(chordalArea(chordal) / (o.size * o.size));
   if (o.deadline == std::chrono::steady_clock::time_point::max()) return own;
-  return std::min(own, std::chrono::duration<double>(o.deadline - std::chrono::steady_clock::now()).count());
+  const double left = std::chrono::duration<double>(o.deadline - std::chrono::steady_clock::now()).count();
+  return needed && o.timeoutSeconds <= 0 ? left : std::min(own, left);
 }
 
 // One Gmsh run: split the chordal surface into patches, reparametrize, mesh.
@@ -527,16 +529,16 @@ QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, lon
   QuadTries tries;
   const std::size_t splits = o.patchSplits.size();
   for (std::size_t i = 0; i < splits && !(ranked.score.good() && ranked.score.mean >= kStructuredMean); ++i) {
-    const double budget = tryBudget(chordal.surface(), o);
+    const double budget = tryBudget(chordal.surface(), o, ranked.best.quads.empty());
     if (budget <= 0) {  // the stage's budget is spent: the rest are skipped
       tries.skipped = splits - i;
       break;
     }
     GmshTry t = gmshQuads(chordal, o, o.patchSplits[i], budget);
-    ++tries.run, tries.timedOut += t.timedOut;
-    tries.failed += !rankGmshTry(t, chordal, o, chordalEuler, ranked);
+    const bool meshed = rankGmshTry(t, chordal, o, chordalEuler, ranked);
+    ++tries.run, tries.timedOut += t.timedOut, tries.failed += !meshed;
     if (o.tried) o.tried(2 + i, 1 + splits);
-    if (ranked.score.good()) break;
+    if (meshed && ranked.score.good()) break;
   }
   if (ranked.best.quads.empty()) ranked.best.failure = noQuadsReason(ranked, tries);
   return tries;

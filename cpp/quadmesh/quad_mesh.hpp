@@ -70,10 +70,11 @@ struct QuadMeshOptions {
   double acceptableQuad = 0.1;   // quad scaled Jacobian, smoothed
   int smoothingIterations = 10;  // of every try (quad_smoothing)
   // Time budget of one Gmsh try (killed when it runs out: a failed try); 0: gmshTryBudget of the chordal
-  // surface's area and the size.
+  // surface's area over the size squared once a try (or block grid) gave quads, before that what is left of the
+  // deadline (a try that is needed may take what the stage has left).
   double timeoutSeconds = 0;
   // No Gmsh try starts after this (quad_stage.hpp: the stage's budget), and a try gets at most the time left:
-  // the tries not started are skipped, the best so far kept.
+  // the tries not started are skipped, the best so far kept. (The default: none.)
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
   // Called after each try (the block grids as one, then each Gmsh try) with the tries done and the most there
   // can be; may be empty.

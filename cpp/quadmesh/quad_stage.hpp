@@ -22,7 +22,8 @@ struct QuadStageOptions {
   // Progress of stage "quad_mesh": its tries done of the most there can be, and a note per failed fairing level
   // (may be empty).
   ProgressCallback progress;
-  // Time budgets in seconds (0: from the chordal surface's area and the size): of one Gmsh try (gmshTryBudget),
+  // Time budgets in seconds (0: from the chordal surface's area and the size): of one Gmsh try (gmshTryBudget
+  // once there are quads to fall back on, until then what the stage has left; QuadMeshOptions::timeoutSeconds),
   // and of the whole stage (quadStageBudget), after which no Gmsh try starts and the best quads so far are kept.
   // A part whose tries all finish within their budgets gets the same quads on any machine; one that runs out gets
   // the quads of the tries that finished (a slower machine may finish fewer).
