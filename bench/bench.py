@@ -187,7 +187,9 @@ def print_row(case, h, g):
         return
     line = (f"{case['name']:16s} {faces}{h['hexes']:8d} hexes  {h['wall_s']:7.2f} s  {h['peak_mib']:7.0f} MiB  "
             f"{h['hexes_per_s']:9.0f} hex/s  SJ {h['sj_min']:.2f}/{h['sj_avg']:.3f}")
-    if g and g["exit_code"] == 0:
+    if g and g["exit_code"] == 0 and g["tets"] == 0:  # a shell without a volume (Gmsh reads no solid)
+        line += " | gmsh: no volume to mesh"
+    elif g and g["exit_code"] == 0:
         line += (f" | gmsh tets {g['tets']:8d}  {g['wall_s']:7.2f} s  {g['peak_mib']:6.0f} MiB"
                  f" | ratio {h['wall_s'] / g['wall_s']:.2f}")
     elif g:
@@ -245,7 +247,7 @@ def plot_faces(results, path):
     meshed = [r for r in rows if r["hexlayer"]["exit_code"] == 0]
     ax.semilogy([r["gmsh"]["faces"] for r in meshed], [r["hexlayer"]["timings_s"].get("quad_mesh", 0) for r in meshed],
                 "s", mfc="none", ls="", label="HexLayer quad_mesh stage")
-    tets = [r for r in rows if r["gmsh"]["exit_code"] == 0]
+    tets = [r for r in rows if r["gmsh"]["exit_code"] == 0 and r["gmsh"]["tets"] > 0]
     ax.semilogy([r["gmsh"]["faces"] for r in tets], [r["gmsh"]["wall_s"] for r in tets], "^", ls="",
                 label="Gmsh 3D tet mesh, same part and size")
     for r in rows:

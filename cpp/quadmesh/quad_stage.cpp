@@ -101,7 +101,7 @@ QuadStage meshFairedChordalSurface(const ChordalSurface& cut, const TetMesh& tet
       stage.fairingIterations = fairing;
       return stage;
     }
-    failure = q.failure;
+    if (q.tries.run > 0 || failure.empty()) failure = q.failure;  // a level without a try keeps the last's reason
     if (q.tries.skipped > 0) break;  // out of time: a less faired surface would get no try either
     if (level + 1 < std::size(kFairingIterations))
       reportProgress(o.progress, progressNote("quad_mesh", failure + "; trying a less faired chordal surface"));
