@@ -25,8 +25,8 @@ double medianRadius(const ChordalSurface& chordal) {
   return r[r.size() / 2];
 }
 
-// The quad mesh options of every fairing level: the size, the budgets (the stage's deadline from now), and the
-// tries reported as the stage's progress (level k's tries after the k levels before it).
+// The quad mesh options every fairing level starts from: the size and the budgets (a try's, and the stage's
+// deadline, stageBudget seconds from now).
 QuadMeshOptions triesWithin(const QuadStageOptions& o, double stageBudget) {
   QuadMeshOptions qo;
   qo.size = o.size;
@@ -37,6 +37,7 @@ QuadMeshOptions triesWithin(const QuadStageOptions& o, double stageBudget) {
 }
 
 // One fairing level: the chordal surface faired, its normals and radius, knife edges trimmed, its quads tried.
+// Its tries are the stage's progress, level k's after the k levels before it.
 // [in] cut, tets, o; [in] base: the levels' options; [in] fairing: Taubin steps; [in] level: its place in
 // kFairingIterations; [out] stage: the faired surface and its knife facets. Returns the quads (none: q.failure).
 QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const QuadStageOptions& o,
@@ -56,7 +57,8 @@ QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const Q
   return tryQuadMeshes(locator, qo);
 }
 
-// The tries of a failed stage, for its message: " (N Gmsh tries, F failed, T out of time, S not started)".
+// The tries of a failed stage, for its message: " (N Gmsh tries, F failed, T out of their time budget, S not
+// started: ...)". [in] stage. Returns the text.
 std::string triesSummary(const QuadStage& stage) {
   const QuadTries& t = stage.tries;
   std::ostringstream s;
