@@ -8,9 +8,14 @@ each, hexes per second, the time of every HexLayer stage (the report's timings_s
 HexLayer / Gmsh. Writes all numbers as JSON, and optionally a scaling plot.
 
 Usage (Debian's /usr/bin/python3, which has python3-gmsh and matplotlib):
-    bench/bench.py [--hexlayer build/hexlayer] [--suite target|scaling|samples|all]
+    bench/bench.py [--hexlayer build/hexlayer] [--suite target|scaling|samples|many|all]
                    [--threads N] [--out out/bench] [--plot docs/scaling.png]
                    [--no-gmsh-above HEXES] [--timeout SECONDS]
+
+Suite `many` (issue 19): parts with many features, at HexLayer's default size (the wall thickness): the keyboard
+plate and the plate with 200 holes of `scripts/make_samples.py --only many` (written into OUT/many), and every
+part of ../shared/parts/real (with --drop-junctions). Per part it prints the CAD faces too, and its --plot is
+time against the number of CAD faces.
 """
 import argparse
 import json
@@ -37,7 +42,7 @@ start = time.perf_counter()
 gmsh.model.mesh.generate(3)
 seconds = time.perf_counter() - start
 tags, _ = gmsh.model.mesh.getElementsByType(4)
-print(len(tags), seconds)
+print(len(gmsh.model.getEntities(2)), len(tags), seconds)
 gmsh.finalize()
 """
 
@@ -93,7 +98,9 @@ def run_hexlayer(args, case, out_dir):
     report = os.path.join(out_dir, case["name"] + ".json")
     mesh = os.path.join(out_dir, case["name"] + ".inp")
     command = [args.hexlayer, "mesh", case["step"], "-o", mesh, "--report", report, "--quiet",
-               "--layers", str(case["layers"]), "--size", str(case["size"])]
+               "--layers", str(case["layers"]), *case.get("options", [])]
+    if case["size"]:  # else HexLayer's default, the wall thickness
+        command += ["--size", str(case["size"])]
     env = dict(os.environ, OMP_NUM_THREADS=str(args.threads))
     code, _, stderr, wall, peak = run_measured(command, args.timeout, env)
     result = {"exit_code": code, "wall_s": wall, "peak_mib": peak}
@@ -102,7 +109,9 @@ def run_hexlayer(args, case, out_dir):
         return result
     with open(report) as f:
         r = json.load(f)
-    result.update(hexes=r["hexes"], timings_s=r["timings_s"], peak_memory_mib=r.get("peak_memory_mib", {}),
+    result.update(hexes=r["hexes"], size=r["size"], layout=r["quad_mesh"]["layout"],
+                  gmsh_tries=r["quad_mesh"].get("gmsh_tries"), timings_s=r["timings_s"],
+                  peak_memory_mib=r.get("peak_memory_mib", {}),
                   sj_min=r["scaled_jacobian"]["min"],
                   sj_avg=r["scaled_jacobian"]["avg"], inverted=r["inverted_hexes"],
                   volume_error=r["volume"]["relative_error"], hexes_per_s=r["hexes"] / wall)
@@ -111,13 +120,14 @@ def run_hexlayer(args, case, out_dir):
     return result
 
 
-def run_gmsh_tets(args, case):
-    command = [sys.executable, "-c", GMSH_TETS, case["step"], str(case["size"])]
+def run_gmsh_tets(args, case, size):
+    command = [sys.executable, "-c", GMSH_TETS, case["step"], str(size)]
     code, stdout, stderr, wall, peak = run_measured(command, args.timeout)
     if code != 0:
         return {"exit_code": code, "wall_s": wall, "peak_mib": peak, "error": stderr.strip()[-500:]}
-    tets, mesh_s = stdout.split()[-2:]
-    return {"exit_code": 0, "wall_s": wall, "peak_mib": peak, "tets": int(tets), "generate_s": float(mesh_s)}
+    faces, tets, mesh_s = stdout.split()[-3:]
+    return {"exit_code": 0, "wall_s": wall, "peak_mib": peak, "faces": int(faces), "tets": int(tets),
+            "generate_s": float(mesh_s), "size": size}
 
 
 def cases(suite, parts):
@@ -129,8 +139,18 @@ def cases(suite, parts):
         scaling.append(dict(name=name, step=parts[name], size=1.5, layers=2, hexes=hexes))
     samples = [dict(name=s, step=os.path.join(ROOT, "Resources", "samples", s + ".step"), size=size, layers=2, hexes=0)
                for s, size in (("plate_holes", 2.0), ("lbracket", 3.0), ("uchannel", 2.0), ("hat_holes", 1.5))]
-    return {"target": target, "scaling": scaling, "samples": samples,
-            "all": target + samples + scaling}[suite]
+    many = [dict(name=n, step=parts[n], size=None, layers=2, hexes=0) for n in MANY]
+    if os.path.isdir(REAL):
+        many += [dict(name=os.path.splitext(f)[0], step=os.path.join(REAL, f), size=None, layers=2, hexes=0,
+                      options=["--drop-junctions"])
+                 for f in sorted(os.listdir(REAL)) if f.lower().endswith((".step", ".stp", ".brep"))]
+    return {"target": target, "scaling": scaling, "samples": samples, "many": many,
+            "all": target + samples + scaling + many}[suite]
+
+
+# Parts with many features (scripts/make_samples.py --only many) and the real parts.
+MANY = ("keyboard_plate", "plate_200_holes")
+REAL = os.path.join(os.path.dirname(ROOT), "shared", "parts", "real")
 
 
 # 3 mm sheets meshed at 1.5 mm in 2 layers: about 1e3, 1e4, 1e5 and 1e6 hexes.
@@ -145,16 +165,31 @@ def make_parts(out_dir):
         parts[name] = os.path.join(out_dir, name + ".step")
         if not os.path.exists(parts[name]):
             make_plate(parts[name], length, width, 3, [])
+    for name in MANY:
+        parts[name] = os.path.join(out_dir, "many", name + ".step")
     return parts
 
 
-def print_row(case, h, g):
-    if h["exit_code"] != 0:
-        print(f"{case['name']:16s} hexlayer failed (exit {h['exit_code']}): {h.get('error', '')}")
+def make_many(out_dir):
+    """The parts with many features, by scripts/make_samples.py (a minute: OpenCASCADE's booleans)."""
+    if all(os.path.exists(os.path.join(out_dir, "many", n + ".step")) for n in MANY):
         return
-    line = (f"{case['name']:16s} {h['hexes']:8d} hexes  {h['wall_s']:7.2f} s  {h['peak_mib']:7.0f} MiB  "
+    subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "make_samples.py"), out_dir, "--only", "many"],
+                   check=True, stdout=subprocess.DEVNULL)
+
+
+def print_row(case, h, g):
+    faces = f"{g['faces']:4d} faces  " if g and "faces" in g else ""
+    if h["exit_code"] != 0:
+        error = h.get("error", "").splitlines()[-1:] or [""]
+        print(f"{case['name']:16s} {faces}hexlayer failed (exit {h['exit_code']}) after {h['wall_s']:.2f} s: "
+              f"{error[0]}" + (f" | gmsh tets {g['tets']} {g['wall_s']:.2f} s" if g and g["exit_code"] == 0 else ""))
+        return
+    line = (f"{case['name']:16s} {faces}{h['hexes']:8d} hexes  {h['wall_s']:7.2f} s  {h['peak_mib']:7.0f} MiB  "
             f"{h['hexes_per_s']:9.0f} hex/s  SJ {h['sj_min']:.2f}/{h['sj_avg']:.3f}")
-    if g and g["exit_code"] == 0:
+    if g and g["exit_code"] == 0 and g["tets"] == 0:  # a shell without a volume (Gmsh reads no solid)
+        line += " | gmsh: no volume to mesh"
+    elif g and g["exit_code"] == 0:
         line += (f" | gmsh tets {g['tets']:8d}  {g['wall_s']:7.2f} s  {g['peak_mib']:6.0f} MiB"
                  f" | ratio {h['wall_s'] / g['wall_s']:.2f}")
     elif g:
@@ -184,19 +219,48 @@ def plot(results, path):
     if hexes:  # through the largest case: the smallest is mostly process start-up
         ax.loglog(hexes, [ok[-1]["hexlayer"]["wall_s"] * h / hexes[-1] for h in hexes], color="grey",
                   lw=0.8, label="O(n) through the largest case")
-    ax.set_xlabel("hexes")
+    finish_plot(fig, ax, "hexes", "HexLayer scaling: 3 mm sheets, 1.5 mm quads, 2 layers", 8, path)
+
+
+def finish_plot(fig, ax, xlabel, title, legend_size, path):
+    """Labels, grid and legend of a time plot, written to path."""
+    ax.set_xlabel(xlabel)
     ax.set_ylabel("wall time (s)")
-    ax.set_title("HexLayer scaling: 3 mm sheets, 1.5 mm quads, 2 layers")
+    ax.set_title(title)
     ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=legend_size)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
+
+
+def plot_faces(results, path):
+    """Wall time against the number of CAD faces (suite many): HexLayer's, its quad stage's, Gmsh's tet mesh's."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = sorted((r for r in results if r.get("gmsh") and "faces" in r["gmsh"]), key=lambda r: r["gmsh"]["faces"])
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for ok, marker, label in ((True, "o", "HexLayer total (wall)"), (False, "x", "HexLayer, failed or refused")):
+        pick = [r for r in rows if (r["hexlayer"]["exit_code"] == 0) == ok]
+        ax.semilogy([r["gmsh"]["faces"] for r in pick], [r["hexlayer"]["wall_s"] for r in pick], marker, ls="",
+                    label=label)
+    meshed = [r for r in rows if r["hexlayer"]["exit_code"] == 0]
+    ax.semilogy([r["gmsh"]["faces"] for r in meshed], [r["hexlayer"]["timings_s"].get("quad_mesh", 0) for r in meshed],
+                "s", mfc="none", ls="", label="HexLayer quad_mesh stage")
+    tets = [r for r in rows if r["gmsh"]["exit_code"] == 0 and r["gmsh"]["tets"] > 0]
+    ax.semilogy([r["gmsh"]["faces"] for r in tets], [r["gmsh"]["wall_s"] for r in tets], "^", ls="",
+                label="Gmsh 3D tet mesh, same part and size")
+    for r in rows:
+        ax.annotate(r["case"]["name"][:18], (r["gmsh"]["faces"], r["hexlayer"]["wall_s"]), fontsize=6)
+    ax.axhline(30, color="grey", lw=0.8, ls=":", label="30 s")
+    finish_plot(fig, ax, "CAD faces", "HexLayer on parts with many features (2 layers, default size)", 7, path)
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--hexlayer", default=os.path.join(ROOT, "build", "hexlayer"))
-    p.add_argument("--suite", default="target", choices=["target", "scaling", "samples", "all"])
+    p.add_argument("--suite", default="target", choices=["target", "scaling", "samples", "many", "all"])
+    p.add_argument("--only", help="run the cases whose name contains this")
     p.add_argument("--threads", type=int, default=os.cpu_count() or 1, help="OMP_NUM_THREADS for hexlayer")
     p.add_argument("--out", default=os.path.join(ROOT, "out", "bench"))
     p.add_argument("--plot", help="write a time vs hexes PNG here")
@@ -209,20 +273,25 @@ def main():
         sys.exit(f"bench.py: no hexlayer executable at {args.hexlayer}; build first or pass --hexlayer")
     os.makedirs(args.out, exist_ok=True)
     parts = make_parts(args.out)
+    if args.suite in ("many", "all"):
+        make_many(args.out)
     results = []
     print(f"threads {args.threads}, cores {os.cpu_count()}, load average {os.getloadavg()[0]:.2f}")
     for case in cases(args.suite, parts):
+        if args.only and args.only not in case["name"]:
+            continue
         if args.max_hexes and case["hexes"] > args.max_hexes:
             print(f"{case['name']:16s} skipped (--max-hexes {args.max_hexes})")
             continue
         h = run_hexlayer(args, case, args.out)
-        g = run_gmsh_tets(args, case) if case["hexes"] <= args.no_gmsh_above else None
+        size = case["size"] or h.get("size") or 2.0  # Gmsh at the size HexLayer used
+        g = run_gmsh_tets(args, case, size) if case["hexes"] <= args.no_gmsh_above else None
         results.append({"case": case, "hexlayer": h, "gmsh": g})
         print_row(case, h, g)
     with open(os.path.join(args.out, f"results_{args.suite}.json"), "w") as f:
         json.dump(results, f, indent=1)
     if args.plot:
-        plot(results, args.plot)
+        (plot_faces if args.suite == "many" else plot)(results, args.plot)
         print("plot:", args.plot)
 
 

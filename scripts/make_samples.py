@@ -3,7 +3,7 @@
 """Generate the HexLayer sample STEP files (thin-walled single solids, units mm).
 
 Usage:
-    /usr/bin/python3 scripts/make_samples.py [OUTPUT_DIR]
+    /usr/bin/python3 scripts/make_samples.py [OUTPUT_DIR] [--only many]
 
 OUTPUT_DIR defaults to Resources/samples relative to the repository root.
 Needs the Gmsh Python API with its OpenCASCADE kernel: on Debian 12 that is the
@@ -21,7 +21,10 @@ plane cuts, split faces) go to OUTPUT_DIR/rims with a README.md of their own;
 they are written after the others (see the note on PARTS). The junction
 parts (JUNCTION_PARTS: ribs, a grid of ribs, a partition, bosses, a gusset,
 a filleted rib foot: walls standing on walls) go to OUTPUT_DIR/junctions,
-with a README.md of their own, after the rim parts.
+with a README.md of their own, after the rim parts. The parts with many
+features (MANY_PARTS: a keyboard plate, a plate with 200 holes) are written
+to OUTPUT_DIR/many only with `--only many` (alone; bench/bench.py does it
+into out/bench: their STEP files are megabytes, too large to bundle).
 """
 
 import math
@@ -1432,6 +1435,72 @@ JUNCTION_README_NOTES = [
 
 
 # ---------------------------------------------------------------------------
+# Parts with many features (issue 19: the benchmark varies what users vary),
+# OUTPUT_DIR/many, only with --only many (bench/bench.py writes them into
+# out/bench): the keyboard plate's STEP file is 3.4 MB, too large to bundle.
+# ---------------------------------------------------------------------------
+
+MANY_MAX_BYTES = 8 * 1024 * 1024
+KEY_PITCH, KEY_HOLE, NOTCH_W, NOTCH_D = 19.05, 14.0, 3.0, 0.8
+
+
+def keyboard_plate():
+    """A keyboard switch plate: 5 rows x 14 square cutouts 14 x 14 at 19.05
+    pitch, each with two clip notches 0.8 deep x 3 wide in the middle of its
+    top and bottom sides, in a 1.5 plate with a 9 / 5 margin."""
+    rows, cols, t = 5, 14, 1.5
+    L, W = cols * KEY_PITCH + 18.0, rows * KEY_PITCH + 10.0
+    plate = occ.addBox(0, 0, 0, L, W, t)
+    tools = []
+    for j in range(rows):
+        for i in range(cols):
+            cx, cy = 9.0 + (i + 0.5) * KEY_PITCH, 5.0 + (j + 0.5) * KEY_PITCH
+            h = KEY_HOLE / 2
+            tools.append((3, occ.addBox(cx - h, cy - h, -1, KEY_HOLE, KEY_HOLE, t + 2)))
+            for y in (cy + h - 0.1, cy - h - NOTCH_D):  # overlapping the cutout by 0.1
+                tools.append((3, occ.addBox(cx - NOTCH_W / 2, y, -1, NOTCH_W, NOTCH_D + 0.1, t + 2)))
+    out, _ = occ.cut([(3, plate)], tools)
+    assert len([tag for dim, tag in out if dim == 3]) == 1, out
+    cutout = KEY_HOLE ** 2 + 2 * NOTCH_W * NOTCH_D
+    return (L * W - rows * cols * cutout) * t, dict(
+        dims=f"{L:.2f} × {W:.2f} × 1.5 keyboard plate: 5 rows × 14 cutouts 14 × 14 at 19.05 pitch, "
+             "each with two 0.8 × 3 clip notches", wall="1.5", max_bytes=MANY_MAX_BYTES)
+
+
+def plate_200_holes():
+    """A 210 x 110 x 2 plate with 200 through holes Ø4 on a 10 mm grid (20 x 10)."""
+    L, W, t, d = 210.0, 110.0, 2.0, 4.0
+    box = occ.addBox(0, 0, 0, L, W, t)
+    drill(box, [(10.0 + 10.0 * i, 10.0 + 10.0 * j, 0.0, t, d) for j in range(10) for i in range(20)])
+    return L * W * t - 200 * PI * (d / 2) ** 2 * t, dict(
+        dims="210 × 110 × 2 plate, 200 through holes Ø4 on a 10 mm grid (20 × 10)", wall="2",
+        max_bytes=MANY_MAX_BYTES)
+
+
+MANY_PARTS = [
+    ("keyboard_plate", keyboard_plate),
+    ("plate_200_holes", plate_200_holes),
+]
+
+MANY_README_HEAD = [
+    "# HexLayer sample parts: many features",
+    "",
+    "Thin plates with hundreds of faces, the kind of part users mesh (issue 19):",
+    "a keyboard switch plate and a plate with 200 holes. `bench/bench.py --suite",
+    "many` writes them here (into its output folder) and times them against",
+    "Gmsh's tet mesh, with the real parts of `../shared/parts/real`.",
+]
+
+MANY_README_NOTES = [
+    "Made by `scripts/make_samples.py` (`--only many` writes this folder alone;",
+    "run it with `/usr/bin/python3`, which needs the Debian package",
+    "`python3-gmsh`); licence AGPL-3.0-or-later like the project. The STEP header",
+    "timestamp is fixed, so regenerating the files gives byte-identical output.",
+    "",
+]
+
+
+# ---------------------------------------------------------------------------
 # Checks and output
 # ---------------------------------------------------------------------------
 
@@ -1586,14 +1655,20 @@ def make_subfolder(outdir, folder, parts, head, notes):
 
 def main(argv):
     repo_root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    if len(argv) > 2:
-        sys.exit("usage: make_samples.py [OUTPUT_DIR]")
+    only = None
+    if len(argv) >= 3 and argv[-2] == "--only":
+        only, argv = argv[-1], argv[:-2]
+    if len(argv) > 2 or only not in (None, "many"):
+        sys.exit("usage: make_samples.py [OUTPUT_DIR] [--only many]")
     outdir = argv[1] if len(argv) == 2 else os.path.join(repo_root, "Resources", "samples")
     os.makedirs(outdir, exist_ok=True)
 
     gmsh.initialize(readConfigFiles=False)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
+        if only == "many":
+            make_subfolder(outdir, "many", MANY_PARTS, MANY_README_HEAD, MANY_README_NOTES)
+            return 0
         rows = []
         for name, builder in PARTS:
             print(name)

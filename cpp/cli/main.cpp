@@ -1,14 +1,18 @@
 // hexlayer: the command-line tool. `hexlayer mesh INPUT -o OUT [--layers N] [--size H | --aspect A] [--sizing
 // uniform|adaptive]
-// [--min-size H] [--max-size H] [--order 1|2] [--shell] [--report R] [--force] [--quiet]`
+// [--min-size H] [--max-size H] [--order 1|2] [--shell] [--report R] [--force] [--quiet]`, `hexlayer --version`
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/progress_printer.hpp"
+#include "core/version.hpp"
 #include "pipeline/pipeline.hpp"
 #include "pipeline/report.hpp"
 #include "pipeline/result_file.hpp"
@@ -18,10 +22,13 @@ namespace {
 
 using hexlayer::ExitCode;
 
+// The running stage is drawn at most this often (seconds): a few times a second.
+constexpr double kProgressInterval = 0.25;
+
 struct MeshCommand {
   std::string input, output, report, result;
   bool quiet = false;
-  bool machine = false;  // progress as "@progress <line>" lines on stderr, for a program that runs this one
+  bool machine = false;  // progress as "@progress"/"@running" lines on stderr, for a program that runs this one
   hexlayer::MeshOptions options;
 };
 
@@ -94,16 +101,32 @@ void addMeshOptions(CLI::App* command, MeshCommand& c) {
   command->add_flag("--shell", c.options.shell,
                     "Write the mid-surface shell instead of the hexes: S4 (S8R with --order 2) with the nodal "
                     "thickness, node sets per CAD face");
+  command->add_option("--quad-budget", c.options.quadStageBudget,
+                      "Seconds the quad stage may spend on Gmsh tries before it keeps the best so far (default 0: "
+                      "10 s + 1 s per 1000 quads)");
+  command->add_option("--quad-try-budget", c.options.quadTryBudget,
+                      "Seconds one Gmsh try may take before it is killed as failed (default 0: 3 s + 1 s per 2000 "
+                      "quads)");
   command->add_flag("--force", c.options.force,
                     "Write the mesh even if it fails validation (with a warning per failed check)");
 }
 
-int runMesh(MeshCommand& c) {
-  if (c.machine)
-    c.options.progress = [](const std::string& line) { std::cerr << "@progress " << line << std::endl; };
-  else if (!c.quiet)
-    c.options.progress = [](const std::string& line) { std::cerr << "hexlayer: " << line << std::endl; };
+// Meshes with the progress on stderr (progress_printer.hpp: a status line on a terminal, plain lines elsewhere,
+// "@progress"/"@running" lines with --machine; none with --quiet). The printer is gone (its status line cleared)
+// when meshing ends. [in,out] c: the command, its options' progress set while meshing. Returns the result.
+hexlayer::MeshResult meshWithProgress(MeshCommand& c) {
+  std::optional<hexlayer::ProgressPrinter> printer;
+  if (c.machine || !c.quiet) {
+    printer.emplace(std::cerr, hexlayer::progressStyleFor(c.machine, STDERR_FILENO), kProgressInterval, true);
+    c.options.progress = [&printer](const hexlayer::Progress& event) { printer->show(event); };
+  }
   hexlayer::MeshResult result = hexlayer::meshFile(c.input, c.options);
+  c.options.progress = nullptr;
+  return result;
+}
+
+int runMesh(MeshCommand& c) {
+  hexlayer::MeshResult result = meshWithProgress(c);
   if (!c.result.empty()) hexlayer::writeResult(c.result, result);
   std::vector<hexlayer::CellField> fields;
   if (!result.mesh.hexes.empty()) fields.push_back({"scaled_jacobian", result.scaledJacobian});
@@ -130,6 +153,7 @@ int runMesh(MeshCommand& c) {
 int main(int argc, char** argv) {
   CLI::App app{"HexLayer: layered all-hex meshes of thin-section CAD solids (Hex-Layer method)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("hexlayer ") + hexlayer::kVersion);
   MeshCommand c;
   CLI::App* mesh = app.add_subcommand("mesh", "Mesh a thin solid into layered hexahedra");
   mesh->add_option("input", c.input, "CAD file: .step/.stp, .iges/.igs or .brep")->required();
@@ -141,7 +165,8 @@ int main(int argc, char** argv) {
       "Write the whole result (mesh, node sets, face groups, report, chordal surface and quad mesh) as a JSON "
       "index and its arrays in FILE.bin: what the FreeCAD workbench reads");
   mesh->add_flag("--machine", c.machine,
-                 "Progress as '@progress <line>' lines on stderr, one per stage, and no summary");
+                 "Progress on stderr for a program that runs this one: '@progress <line>' per finished stage, "
+                 "'@running <stage> [<done> <total>]' for the running one; no summary");
   mesh->add_flag("--quiet", c.quiet, "No progress and no summary");
   CLI::App* check = app.add_subcommand("check", "Check mesh options without meshing: exit 0, or 2 with the reason");
   addMeshOptions(check, c);

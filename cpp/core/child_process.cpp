@@ -10,6 +10,8 @@
 #include <chrono>
 #include <cstring>
 #include <exception>
+#include <iomanip>
+#include <sstream>
 
 namespace hexlayer {
 namespace {
@@ -89,7 +91,13 @@ ChildResult runInChildProcess(const std::function<std::string()>& work, double t
   int status = 0;
   waitpid(pid, &status, 0);
   if (!finished) {
-    result.failure = "timed out after " + std::to_string(static_cast<int>(timeoutSeconds)) + " s";
+    std::ostringstream after;  // whole seconds, or a test's budget below one
+    if (timeoutSeconds >= 1)
+      after << static_cast<long>(timeoutSeconds);
+    else
+      after << std::setprecision(2) << timeoutSeconds;
+    result.failure = "timed out after " + after.str() + " s";
+    result.timedOut = true;
   } else if (WIFSIGNALED(status)) {
     result.failure = std::string("crashed (") + strsignal(WTERMSIG(status)) + ")";
   } else if (bytes.empty()) {

@@ -8,13 +8,15 @@ namespace hexlayer {
 
 struct ChildResult {
   bool ok = false;
-  std::string output;   // the bytes the work returned, if ok
-  std::string failure;  // why not: the work's exception message, the signal that ended it, or the time-out
-  bool threw = false;   // the failure is the message of an exception the work threw
+  std::string output;     // the bytes the work returned, if ok
+  std::string failure;    // why not: the work's exception message, the signal that ended it, or the time-out
+  bool threw = false;     // the failure is the message of an exception the work threw
+  bool timedOut = false;  // the work ran out of its time and was killed
 };
 
 // Calls work() in a child process and returns its bytes. The child ends with _exit, so nothing of
-// it leaks into this process; it is killed after timeoutSeconds.
+// it leaks into this process; it is killed after timeoutSeconds (a failure with timedOut set).
+// [in] work: runs in the child; [in] timeoutSeconds: its time budget (> 0). Returns the result or why not.
 ChildResult runInChildProcess(const std::function<std::string()>& work, double timeoutSeconds);
 
 }  // namespace hexlayer

@@ -25,6 +25,7 @@ QuadMeshCounts countQuadMesh(const QuadMesh& q) {
   c.pairedTriangles = q.pairedTriangles, c.splitTriangles = q.splitTriangles, c.holes = q.holes;
   c.doubletsRemoved = q.doubletsRemoved, c.structuredPatches = q.structuredPatches;
   c.layout = layoutName(q.layout);
+  c.tries = q.tries;
   return c;
 }
 

@@ -59,7 +59,9 @@ struct QuadMeshCounts {
   std::size_t pairedTriangles = 0, splitTriangles = 0, holes = 0;
   int doubletsRemoved = 0;
   std::size_t structuredPatches = 0;
-  std::string layout;  // layoutName
+  std::string layout;        // layoutName
+  QuadTries tries;           // the Gmsh tries of every fairing level ("gmsh_tries")
+  double budgetSeconds = 0;  // the quad stage's time budget ("time_budget_s", QuadStage::budgetSeconds)
 };
 
 // The mesh's own numbers, measured on the finished mesh: "order", "hexes", "nodes", "layers", "inverted_hexes",

@@ -43,22 +43,19 @@ constexpr double kMaxAutoQuads = 250000;
 constexpr double kRimReach = 1.6;
 
 // Runs one stage, records its wall time and the process's peak memory at its end in stages[name], and reports
-// progress.
+// its start and end as progress.
 class StageClock {
  public:
   StageClock(std::map<std::string, StageTime>& stages, const MeshOptions& options)
       : stages_(stages), options_(options) {}
   template <class F>
   auto run(const std::string& name, F&& stage) {
+    reportProgress(options_.progress, progressStart(name));
     const auto start = std::chrono::steady_clock::now();
     auto result = stage();
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stages_[name] = {s, peakMemoryMiB()};
-    if (options_.progress) {
-      std::ostringstream line;
-      line << name << ": " << std::fixed << std::setprecision(2) << s << " s";
-      options_.progress(line.str());
-    }
+    reportProgress(options_.progress, progressFinish(name, s));
     return result;
   }
 
@@ -327,6 +324,9 @@ void validateOptions(const MeshOptions& o) {
     throw usageError("--sizing must be 'uniform' or 'adaptive', got '" + o.sizing + "'");
   if (!(o.aspect >= 0) || !std::isfinite(o.aspect)) throw usageError("--aspect must be a positive ratio (0 = off)");
   if (o.size > 0 && o.aspect > 0) throw usageError("give --size or --aspect, not both");
+  if (!(o.quadStageBudget >= 0) || !(o.quadTryBudget >= 0) || !std::isfinite(o.quadStageBudget) ||
+      !std::isfinite(o.quadTryBudget))
+    throw usageError("--quad-budget and --quad-try-budget must be seconds (0 = from the part's size)");
   if (!(o.minSize >= 0) || !(o.maxSize >= 0) || !std::isfinite(o.minSize) || !std::isfinite(o.maxSize) ||
       (o.maxSize > 0 && o.minSize > o.maxSize))
     throw usageError("--min-size and --max-size must be lengths with --min-size <= --max-size");
@@ -365,11 +365,13 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   QuadStageOptions qo;
   qo.size = r.size, qo.adaptive = o.sizing == "adaptive", qo.sizing = {r.size, o.minSize, o.maxSize};
   qo.knifeEdges = !sides.knifeEdges.empty(), qo.progress = o.progress;
+  qo.tryBudget = o.quadTryBudget, qo.stageBudget = o.quadStageBudget;
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
   const QuadMesh& quads = stage.quads;
   r.chordal.fairingIterations = stage.fairingIterations;
   r.chordal.knifeFacetsDropped = stage.knifeFacets;
   r.quadMesh = countQuadMesh(quads);
+  r.quadMesh.budgetSeconds = stage.budgetSeconds;
   const ChordalLocator locator(stage.chordal);
   SweepResult swept = clock.run("sweep", [&] { return sweepToWalls(quads, locator, cad, sides, o.layers); });
   result.mesh = std::move(swept.mesh);
@@ -408,7 +410,7 @@ MeshResult meshFile(const std::string& path, const MeshOptions& o) {
   double cadMidArea = 0;
   for (size_t i = 0; i < solids.size(); ++i) {
     const std::string which = "solid " + std::to_string(i + 1) + " of " + std::to_string(solids.size());
-    if (o.progress) o.progress(which);
+    reportProgress(o.progress, progressNote("", which));
     MeshResult one;
     try {
       one = meshSolid(solids[i], o);

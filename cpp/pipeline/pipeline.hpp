@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "chordal/chordal_surface.hpp"
+#include "core/progress.hpp"
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
 #include "pipeline/mesh_report.hpp"
@@ -23,7 +24,12 @@ struct MeshOptions {
   bool dropJunctions = false;       // mesh the largest sheet and leave out ribs/bosses standing on it (else refuse)
   bool force = false;               // hand on a mesh that failed validation (report "validation") instead of throwing
   bool shell = false;               // also the mid-surface shell (MeshResult::shell, report "shell")
-  std::function<void(const std::string&)> progress;  // one line per finished stage (may be empty)
+  // Each stage's start and end, how far a long stage is (the quad stage: its tries) and notes (may be empty).
+  // Called on the calling thread, between and inside the stages.
+  ProgressCallback progress;
+  // The quad stage's time budgets (quad_stage.hpp: --quad-budget, --quad-try-budget), in seconds; 0 = from the
+  // part's size. A Gmsh try that runs out of its budget is a failed try; after the stage's no try starts.
+  double quadTryBudget = 0, quadStageBudget = 0;
 };
 
 struct MeshResult {

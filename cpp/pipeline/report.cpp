@@ -48,7 +48,13 @@ nlohmann::json quadMesh(const QuadMeshCounts& q) {
           {"unpaired_triangles", q.holes},
           {"doublets_removed", q.doubletsRemoved},
           {"structured_patches", q.structuredPatches},
-          {"layout", q.layout}};
+          {"layout", q.layout},
+          {"gmsh_tries",
+           {{"run", q.tries.run},
+            {"failed", q.tries.failed},
+            {"timed_out", q.tries.timedOut},
+            {"not_started", q.tries.skipped}}},
+          {"time_budget_s", q.budgetSeconds}};
 }
 
 nlohmann::json sweep(const UntangleResult& u, const RimProjectionStats& rim) {

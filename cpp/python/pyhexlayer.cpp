@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/version.hpp"
 #include "pipeline/pipeline.hpp"
 #include "pipeline/report.hpp"
 
@@ -173,16 +174,17 @@ PyMeshResult toPython(const hexlayer::MeshResult& r) {
 
 // ---- running the pipeline without the GIL -----------------------------------------------------------
 
-// The pipeline runs with the GIL released; each progress line takes it back to call `progress` (if not None)
-// and to let Ctrl-C stop the run between stages. An exception of the callback ends the run and reaches the caller.
+// The pipeline runs with the GIL released; each progress event takes it back to let Ctrl-C stop the run (between
+// stages and between a stage's steps), and each line (a finished stage, a note: Progress::isLine) to call
+// `progress` (if not None). An exception of the callback ends the run and reaches the caller.
 // The callback is held by pointer: copies of the std::function (made without the GIL) never touch its refcount.
 hexlayer::MeshResult runReleased(const std::function<hexlayer::MeshResult(const hexlayer::MeshOptions&)>& run,
                                  Options o, const py::object& progress) {
   const py::object* callback = &progress;
-  o.progress = [callback](const std::string& line) {
+  o.progress = [callback](const hexlayer::Progress& event) {
     py::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    if (!callback->is_none()) (*callback)(line);
+    if (event.isLine() && !callback->is_none()) (*callback)(event.line());
   };
   py::gil_scoped_release release;
   return run(o);
@@ -321,6 +323,7 @@ PYBIND11_MODULE(pyhexlayer, m) {
       "quad (counter-clockwise seen from the top side), 4-7 the quad above them. Order 2: (M, 20), the same 8 "
       "corners, then the 12 mid-edge nodes in CalculiX's C3D20 order: edges 0-1, 1-2, 2-3, 3-0, 4-5, 5-6, 6-7, "
       "7-4, 0-4, 1-5, 2-6, 3-7. A mid-edge node is shared by all hexes around its edge.";
+  m.attr("__version__") = hexlayer::kVersion;
   registerTranslator(defineExceptions(m));
 
   py::class_<PyMeshResult>(m, "MeshResult", "Nodes, hexes, per-hex quality, node sets and the report of one run.")

@@ -274,20 +274,29 @@ QuadMesh fromBytes(const std::string& bytes) {
   return q;
 }
 
-double gmshTimeout(const ChordalSurface& chordal, double size) {
-  return 60 + chordalArea(chordal) / (size * size) / 2000;
-}
-
 // One Gmsh try: its quads, or why it failed (Gmsh's error, crash or hang).
 struct GmshTry {
   QuadMesh quads;
-  std::string failure;  // empty if the try gave quads
+  std::string failure;    // empty if the try gave quads
+  bool timedOut = false;  // it ran out of its time budget
 };
+
+// The time budget of the next Gmsh try: at most what is left before the deadline, and the try's own (given, or
+// gmshTryBudget of the surface's area over the size squared) once there are quads to fall back on: until then a
+// try is not an improvement but needed, and may take what the stage has left. [in] chordal, o; [in] needed: no
+// quads yet. Returns seconds (<= 0: none left).
+double tryBudget(const ChordalSurface& chordal, const QuadMeshOptions& o, bool needed) {
+  const double own = o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTryBudget(chordalArea(chordal) / (o.size * o.size));
+  if (o.deadline == std::chrono::steady_clock::time_point::max()) return own;
+  const double left = std::chrono::duration<double>(o.deadline - std::chrono::steady_clock::now()).count();
+  return needed && o.timeoutSeconds <= 0 ? left : std::min(own, left);
+}
 
 // One Gmsh run: split the chordal surface into patches, reparametrize, mesh.
 // Gmsh runs in a child process: its crashes and hangs (both seen on real parts with Gmsh 4.8) end
 // that try only.
-GmshTry gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const PatchSplit& split) {
+// [in] locator: the chordal surface; [in] o: sizes; [in] split; [in] budget: seconds the try may take.
+GmshTry gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const PatchSplit& split, double budget) {
   const ChordalSurface& chordal = locator.surface();
   const ChildResult run = runInChildProcess(
       [&] {
@@ -315,9 +324,9 @@ GmshTry gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const
           throw geometryError(last.empty() ? "unknown Gmsh error" : last);
         }
       },
-      o.timeoutSeconds > 0 ? o.timeoutSeconds : gmshTimeout(chordal, smallestSize(o)));
-  if (!run.ok) return {{}, "Gmsh " + run.failure};
-  GmshTry done{fromBytes(run.output), ""};
+      budget);
+  if (!run.ok) return {{}, "Gmsh " + run.failure, run.timedOut};
+  GmshTry done{fromBytes(run.output), "", false};
   if (done.quads.quads.empty()) done.failure = "Gmsh made no quads";
   return done;
 }
@@ -455,6 +464,86 @@ std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const QuadMe
   return tries;
 }
 
+// The best quads so far and their score; `failure` says why the Gmsh tries gave none.
+struct Ranked {
+  QuadMesh best;
+  QuadScore score;
+  Vec3 failedAt = Vec3::Zero();  // where the last reparametrization failed
+  std::string gmshError;         // the last try's failure, if it failed in Gmsh
+  void keep(QuadMesh& q, const QuadScore& s) {
+    if (s < score) best = std::move(q), score = s;
+  }
+};
+
+// Structured block grids first: where one has square enough quads, Gmsh is not needed. A grid with an inverted
+// quad (its layout does not fit the surface) is never kept. The block grids are independent tries: finished side
+// by side, then ranked in order. (A single try keeps its own parallel loops: an inactive region does not nest
+// them.)
+Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
+  Ranked ranked;
+  std::vector<QuadMesh> blocks = blockGridQuads(chordal, o);
+  std::vector<QuadScore> scores(blocks.size());
+#pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
+  for (long i = 0; i < static_cast<long>(blocks.size()); ++i) {
+    blocks[i].nodes = onChordalSurface(blocks[i], chordal).onSurface;
+    scores[i] = finishTry(blocks[i], chordal, o, chordalEuler);
+  }
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    if (!scores[i].topologyChanged && scores[i].inverted == 0) ranked.keep(blocks[i], scores[i]);
+  return ranked;
+}
+
+// One Gmsh try's quads checked (on the chordal surface), finished and ranked. [in,out] t: the try; [in,out]
+// ranked: the best so far. Returns false if the try failed.
+bool rankGmshTry(GmshTry& t, const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler,
+                 Ranked& ranked) {
+  if (!t.failure.empty()) {
+    ranked.gmshError = t.failure;
+    return false;
+  }
+  QuadMesh& q = t.quads;
+  SurfaceCheck c = onChordalSurface(q, chordal);
+  if (!(c.farthest < kOffSurface * o.size)) {
+    ranked.failedAt = c.farthestNode, ranked.gmshError.clear();
+    return false;
+  }
+  q.nodes = std::move(c.onSurface);
+  ranked.keep(q, finishTry(q, chordal, o, chordalEuler));
+  return true;
+}
+
+// Why no try gave quads. [in] ranked, tries. Returns the message.
+std::string noQuadsReason(const Ranked& ranked, const QuadTries& tries) {
+  if (!ranked.gmshError.empty()) return ranked.gmshError;
+  if (tries.run == 0 && tries.skipped > 0) return "the quad stage's time budget was spent before a Gmsh try began";
+  std::ostringstream msg;
+  msg << "its reparametrization failed near (" << ranked.failedAt.x() << ", " << ranked.failedAt.y() << ", "
+      << ranked.failedAt.z() << ")";
+  return msg.str();
+}
+
+// Gmsh, one patch split after the other, until a try is good (or the block grid is good with a mean quad of
+// kStructuredMean) or the deadline: each try gets its budget (tryBudget), one that runs out is a failed try.
+// [in,out] ranked: the best quads so far, and why none if so. Returns the tries.
+QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler, Ranked& ranked) {
+  QuadTries tries;
+  const std::size_t splits = o.patchSplits.size();
+  for (std::size_t i = 0; i < splits && !(ranked.score.good() && ranked.score.mean >= kStructuredMean); ++i) {
+    const double budget = tryBudget(chordal.surface(), o, ranked.best.quads.empty());
+    if (budget <= 0) {  // the stage's budget is spent: the rest are skipped
+      tries.skipped = splits - i;
+      break;
+    }
+    GmshTry t = gmshQuads(chordal, o, o.patchSplits[i], budget);
+    const bool meshed = rankGmshTry(t, chordal, o, chordalEuler, ranked);
+    ++tries.run, tries.timedOut += t.timedOut, tries.failed += !meshed;
+    if (o.tried) o.tried(2 + i, 1 + splits);
+    if (meshed && ranked.score.good()) break;
+  }
+  if (ranked.best.quads.empty()) ranked.best.failure = noQuadsReason(ranked, tries);
+  return tries;
+}
+
 }  // namespace
 
 std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
@@ -469,55 +558,26 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
   return around;
 }
 
-QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+QuadTries& QuadTries::operator+=(const QuadTries& o) {
+  run += o.run, failed += o.failed, timedOut += o.timedOut, skipped += o.skipped;
+  return *this;
+}
+
+double gmshTryBudget(double quads) { return 3 + quads / 2000; }
+
+QuadMesh tryQuadMeshes(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   if (!(o.size > 0)) throw usageError("quad size must be positive");
-  QuadMesh best;
-  QuadScore bestScore;
   const long chordalEuler = eulerCharacteristic(chordal.surface());
-  // Structured block grids first: where one has square enough quads, Gmsh is not needed. A grid
-  // with an inverted quad (its layout does not fit the surface) is never kept.
-  // The block grids are independent tries: finished side by side, then ranked in order. (A
-  // single try keeps its own parallel loops: an inactive region does not nest them.)
-  std::vector<QuadMesh> blocks = blockGridQuads(chordal, o);
-  std::vector<QuadScore> scores(blocks.size());
-#pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
-  for (long i = 0; i < static_cast<long>(blocks.size()); ++i) {
-    blocks[i].nodes = onChordalSurface(blocks[i], chordal).onSurface;
-    scores[i] = finishTry(blocks[i], chordal, o, chordalEuler);
-  }
-  for (std::size_t i = 0; i < blocks.size(); ++i)
-    if (!scores[i].topologyChanged && scores[i].inverted == 0 && scores[i] < bestScore)
-      best = std::move(blocks[i]), bestScore = scores[i];
-  Vec3 failedAt = Vec3::Zero();
-  std::string gmshError;  // the last try's failure, if it failed in Gmsh
-  for (std::size_t i = 0; i < o.patchSplits.size() && !(bestScore.good() && bestScore.mean >= kStructuredMean); ++i) {
-    GmshTry t = gmshQuads(chordal, o, o.patchSplits[i]);
-    if (!t.failure.empty()) {
-      gmshError = t.failure;
-      continue;
-    }
-    QuadMesh& q = t.quads;
-    SurfaceCheck c = onChordalSurface(q, chordal);
-    if (!(c.farthest < kOffSurface * o.size)) {
-      failedAt = c.farthestNode, gmshError.clear();
-      continue;
-    }
-    q.nodes = std::move(c.onSurface);
-    if (const QuadScore score = finishTry(q, chordal, o, chordalEuler); score < bestScore)
-      best = std::move(q), bestScore = score;
-    if (bestScore.good()) break;
-  }
-  if (best.quads.empty()) {
-    std::ostringstream msg;
-    msg << "could not quad-mesh the chordal surface: ";
-    if (!gmshError.empty())
-      msg << gmshError;
-    else
-      msg << "its reparametrization failed near (" << failedAt.x() << ", " << failedAt.y() << ", " << failedAt.z()
-          << ")";
-    throw geometryError(msg.str());
-  }
-  return best;
+  Ranked ranked = bestBlockGrid(chordal, o, chordalEuler);
+  if (o.tried) o.tried(1, 1 + o.patchSplits.size());
+  ranked.best.tries = gmshTries(chordal, o, chordalEuler, ranked);
+  return std::move(ranked.best);
+}
+
+QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+  QuadMesh q = tryQuadMeshes(chordal, o);
+  if (q.quads.empty()) throw geometryError("could not quad-mesh the chordal surface: " + q.failure);
+  return q;
 }
 
 }  // namespace hexlayer

@@ -4,12 +4,22 @@
 // the best of the tries is kept.
 #pragma once
 #include <array>
+#include <chrono>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "chordal/chordal_locator.hpp"
 #include "core/types.hpp"
 
 namespace hexlayer {
+
+// The Gmsh tries of a quad mesh: run, failed (Gmsh's error, a crash, a time-out or no quads), of those the ones
+// that ran out of their time budget, and the ones not started because the quad stage's budget was spent.
+struct QuadTries {
+  std::size_t run = 0, failed = 0, timedOut = 0, skipped = 0;
+  QuadTries& operator+=(const QuadTries& o);
+};
 
 // How the quads were laid out: by Gmsh on its patches (some of them structured, the rest
 // unstructured), or as structured block grids in a map of the surface (block_grids.hpp).
@@ -24,6 +34,8 @@ struct QuadMesh {
   int doubletsRemoved = 0;                // before smoothing (quad_smoothing)
   std::size_t structuredPatches = 0;      // patches (or blocks) meshed with a structured grid
   QuadLayout layout = QuadLayout::Gmsh;
+  QuadTries tries;      // the Gmsh tries that led to these quads
+  std::string failure;  // no quads: why (the last Gmsh failure, or where it failed)
 };
 
 // How Gmsh cuts the chordal surface into patches it can parametrize, in degrees: chordal edges
@@ -57,10 +69,22 @@ struct QuadMeshOptions {
                                       {80, 80, false, 2}, {25, 25, false, 2}};
   double acceptableQuad = 0.1;   // quad scaled Jacobian, smoothed
   int smoothingIterations = 10;  // of every try (quad_smoothing)
-  // For one Gmsh try: a fixed minute plus a second per 2000 quads the surface will get (Gmsh 4.8
-  // meshes tens of thousands of quads a second; a try that takes far longer has hung).
-  double timeoutSeconds = 0;  // 0: from the chordal surface's area and the size
+  // Time budget of one Gmsh try (killed when it runs out: a failed try); 0: gmshTryBudget of the chordal
+  // surface's area over the size squared once a try (or block grid) gave quads, before that what is left of the
+  // deadline (a try that is needed may take what the stage has left).
+  double timeoutSeconds = 0;
+  // No Gmsh try starts after this (quad_stage.hpp: the stage's budget), and a try gets at most the time left:
+  // the tries not started are skipped, the best so far kept. (The default: none.)
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  // Called after each try (the block grids as one, then each Gmsh try) with the tries done and the most there
+  // can be; may be empty.
+  std::function<void(std::size_t done, std::size_t total)> tried;
 };
+
+// The default time budget of one Gmsh try: 3 s plus a second per 2000 quads the surface will get (Gmsh 4.8
+// meshes tens of thousands of quads a second, a try of the real parts took 0.5-1.5 s; one that takes far longer
+// has hung or is lost in a reparametrization). [in] quads: the estimated quad count. Returns seconds.
+double gmshTryBudget(double quads);
 
 // For every node, the nodes it shares a rim edge with (an edge of a single quad); empty inside.
 std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& quads);
@@ -68,7 +92,11 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& quads);
 // Meshes the chordal surface with quads only, doublets removed and smoothed. Holes and the outer
 // rim are the boundary curves of the discrete surface, so they are kept. Of the tries (one per
 // patch split) whose nodes all lie on the chordal surface, the best (QuadMeshOptions) is kept.
-// Throws geometryError if Gmsh cannot mesh the surface.
+// [in] chordal: the surface; [in] options. Returns the best quads with their tries; no quads (and `failure`
+// saying why) if no try gave any.
+QuadMesh tryQuadMeshes(const ChordalLocator& chordal, const QuadMeshOptions& options);
+
+// tryQuadMeshes, but throws geometryError (with the failure) if no try gave quads.
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& options);
 
 }  // namespace hexlayer

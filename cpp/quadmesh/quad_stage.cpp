@@ -1,7 +1,10 @@
 #include "quadmesh/quad_stage.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <iomanip>
 #include <iterator>
+#include <sstream>
 #include <vector>
 
 #include "chordal/chordal_fairing.hpp"
@@ -22,6 +25,51 @@ double medianRadius(const ChordalSurface& chordal) {
   return r[r.size() / 2];
 }
 
+// The quad mesh options every fairing level starts from: the size and the budgets (a try's, and the stage's
+// deadline, stageBudget seconds from now).
+QuadMeshOptions triesWithin(const QuadStageOptions& o, double stageBudget) {
+  QuadMeshOptions qo;
+  qo.size = o.size;
+  qo.timeoutSeconds = o.tryBudget;
+  qo.deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                       std::chrono::duration<double>(stageBudget));
+  return qo;
+}
+
+// One fairing level: the chordal surface faired, its normals and radius, knife edges trimmed, its quads tried.
+// Its tries are the stage's progress, level k's after the k levels before it.
+// [in] cut, tets, o; [in] base: the levels' options; [in] fairing: Taubin steps; [in] level: its place in
+// kFairingIterations; [out] stage: the faired surface and its knife facets. Returns the quads (none: q.failure).
+QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const QuadStageOptions& o,
+                         const QuadMeshOptions& base, int fairing, std::size_t level, QuadStage& stage) {
+  stage.chordal = cut;
+  fairChordalSurface(stage.chordal, fairing);
+  computeNormalsAndRadius(stage.chordal, tets);
+  stage.knifeFacets = o.knifeEdges ? trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal)) : 0;
+  const ChordalLocator locator(stage.chordal);
+  QuadMeshOptions qo = base;
+  if (o.adaptive) qo.vertexSize = adaptiveSizes(stage.chordal, o.sizing);
+  const double levels = static_cast<double>(std::size(kFairingIterations));
+  if (o.progress)
+    qo.tried = [&](std::size_t done, std::size_t total) {
+      o.progress(progressAdvance("quad_mesh", static_cast<double>(level * total + done), levels * total));
+    };
+  return tryQuadMeshes(locator, qo);
+}
+
+// The tries of a failed stage, for its message: " (N Gmsh tries, F failed, T out of their time budget, S not
+// started: ...)". [in] stage. Returns the text.
+std::string triesSummary(const QuadStage& stage) {
+  const QuadTries& t = stage.tries;
+  std::ostringstream s;
+  s << " (" << t.run << " Gmsh tries, " << t.failed << " failed, " << t.timedOut << " out of their time budget";
+  if (t.skipped > 0)
+    s << ", " << t.skipped << " not started: the stage's budget of " << std::setprecision(3) << stage.budgetSeconds
+      << " s was spent";
+  s << ")";
+  return s.str();
+}
+
 }  // namespace
 
 const char* layoutName(QuadLayout layout) {
@@ -37,28 +85,30 @@ const char* layoutName(QuadLayout layout) {
   }
 }
 
+double quadStageBudget(double quads) { return 10 + quads / 1000; }
+
 QuadStage meshFairedChordalSurface(const ChordalSurface& cut, const TetMesh& tets, const QuadStageOptions& o) {
-  QuadMeshOptions qo;
-  qo.size = o.size;
+  const double quads = chordalArea(cut) / (o.size * o.size);
   QuadStage stage;
-  for (const int fairing : kFairingIterations) {
-    stage.chordal = cut;
-    fairChordalSurface(stage.chordal, fairing);
-    computeNormalsAndRadius(stage.chordal, tets);
-    stage.knifeFacets = o.knifeEdges ? trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal)) : 0;
-    const ChordalLocator locator(stage.chordal);
-    if (o.adaptive) qo.vertexSize = adaptiveSizes(stage.chordal, o.sizing);
-    try {
-      stage.quads = meshChordalSurface(locator, qo);
-    } catch (const Error& e) {
-      if (fairing == kFairingIterations[std::size(kFairingIterations) - 1]) throw;
-      if (o.progress) o.progress("quad_mesh: " + std::string(e.what()) + "; trying a less faired chordal surface");
-      continue;
+  stage.budgetSeconds = o.stageBudget > 0 ? o.stageBudget : quadStageBudget(quads);
+  const QuadMeshOptions qo = triesWithin(o, stage.budgetSeconds);
+  std::string failure;
+  for (std::size_t level = 0; level < std::size(kFairingIterations); ++level) {
+    const int fairing = kFairingIterations[level];
+    QuadMesh q = meshFairedLevel(cut, tets, o, qo, fairing, level, stage);
+    stage.tries += q.tries;
+    if (!q.quads.empty()) {
+      stage.quads = std::move(q);
+      stage.quads.tries = stage.tries;
+      stage.fairingIterations = fairing;
+      return stage;
     }
-    stage.fairingIterations = fairing;
-    return stage;
+    if (q.tries.run > 0 || failure.empty()) failure = q.failure;  // a level without a try keeps the last's reason
+    if (q.tries.skipped > 0) break;  // out of time: a less faired surface would get no try either
+    if (level + 1 < std::size(kFairingIterations))
+      reportProgress(o.progress, progressNote("quad_mesh", failure + "; trying a less faired chordal surface"));
   }
-  return stage;  // not reached: the last level returns or throws
+  throw geometryError("could not quad-mesh the chordal surface: " + failure + triesSummary(stage));
 }
 
 }  // namespace hexlayer

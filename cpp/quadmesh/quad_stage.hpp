@@ -7,6 +7,7 @@
 #include <string>
 
 #include "chordal/chordal_surface.hpp"
+#include "core/progress.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/sizing.hpp"
 #include "tets/tet_mesh.hpp"
@@ -18,7 +19,15 @@ struct QuadStageOptions {
   bool adaptive = true;     // sizes from the radius function and curvature (§6.1), else uniform
   SizingOptions sizing;     // bounds of the adaptive sizes
   bool knifeEdges = false;  // the part has knife edges (WallSides::knifeEdges): trim the surface there
-  std::function<void(const std::string&)> progress;  // a line per failed fairing level (may be empty)
+  // Progress of stage "quad_mesh": its tries done of the most there can be, and a note per failed fairing level
+  // (may be empty).
+  ProgressCallback progress;
+  // Time budgets in seconds (0: from the chordal surface's area and the size): of one Gmsh try (gmshTryBudget
+  // once there are quads to fall back on, until then what the stage has left; QuadMeshOptions::timeoutSeconds),
+  // and of the whole stage (quadStageBudget), after which no Gmsh try starts and the best quads so far are kept.
+  // A part whose tries all finish within their budgets gets the same quads on any machine; one that runs out gets
+  // the quads of the tries that finished (a slower machine may finish fewer).
+  double tryBudget = 0, stageBudget = 0;
 };
 
 struct QuadStage {
@@ -26,13 +35,21 @@ struct QuadStage {
   QuadMesh quads;
   int fairingIterations = 0;    // Taubin steps the quads were made on
   std::size_t knifeFacets = 0;  // facets dropped where the wall runs out to a knife edge
+  QuadTries tries;              // the Gmsh tries of every fairing level tried (also in quads.tries)
+  double budgetSeconds = 0;     // the stage's time budget used
 };
 
 // The fairing levels tried, strongest first.
 constexpr int kFairingIterations[] = {10, 3, 0};
 
+// The default time budget of the quad stage: 10 s plus a second per 1000 quads the surface will get (the real
+// parts of ../shared/parts/real within 30 s on two cores).
+// [in] quads: the estimated quad count. Returns seconds.
+double quadStageBudget(double quads);
+
 // [in] cut: the chordal surface as cut from the tets (its rim already placed, chordal_rim.hpp); [in] tets: the
-// kept tets (for the radius function); [in] options. Throws the last level's error if no level can be meshed.
+// kept tets (for the radius function); [in] options. Throws geometryError with the last level's failure if no
+// level can be meshed (within the budget).
 QuadStage meshFairedChordalSurface(const ChordalSurface& cut, const TetMesh& tets, const QuadStageOptions& options);
 
 // The layout's name in the report: grid, o-grid, ring or gmsh.

@@ -1,11 +1,12 @@
 // The driver (pipeline/pipeline.hpp): options checked before anything runs, each bad one named; a box meshed end
 // to end into the bricks it must be (counts, node sets, volume and quality measured on the mesh, every stage
-// timed); and the same box drawn in metres meshed into the same hexes, scaled.
+// timed); the same box drawn in metres meshed into the same hexes, scaled; every stage's start and end as progress.
 #include <gtest/gtest.h>
 
 #include <BRepPrimAPI_MakeBox.hxx>
 
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "pipeline/pipeline.hpp"
@@ -46,6 +47,8 @@ TEST(Pipeline, BadOptionsAreNamed) {
   EXPECT_NE(usageMessage(o).find("--min-size"), std::string::npos);
   o = MeshOptions{}, o.size = -1;
   EXPECT_NE(usageMessage(o).find("--size"), std::string::npos);
+  o = MeshOptions{}, o.quadStageBudget = -1;
+  EXPECT_NE(usageMessage(o).find("--quad-budget"), std::string::npos);
 }
 
 // 40 x 30 x 2 at size 2 in 3 layers: 20 x 15 x 3 bricks of 2 x 2 x 2/3, filling the box.
@@ -87,4 +90,29 @@ TEST(Pipeline, MetresGiveTheSameMeshScaled) {
   for (std::size_t v = 0; v < a.mesh.nodes.size(); ++v)
     EXPECT_LT((a.mesh.nodes[v] * 1e-3 - b.mesh.nodes[v]).norm(), 0.01 * diagonal);
   for (std::size_t h = 0; h < b.mesh.hexes.size(); ++h) EXPECT_GT(hexScaledJacobian(hexCorners(b.mesh, h)), 0.98);
+}
+
+// Every stage reports its start, then its end (the report's stages, in the order they ran); between them only
+// its own progress.
+TEST(Pipeline, ProgressStartsAndEndsEveryStage) {
+  MeshOptions o;
+  o.size = 2;
+  std::vector<Progress> events;
+  o.progress = [&](const Progress& p) { events.push_back(p); };
+  const MeshResult r = meshSolid(box(1), o);
+  std::string running;
+  std::size_t finished = 0;
+  for (const Progress& p : events) {
+    if (p.kind == Progress::Kind::Start) {
+      EXPECT_EQ(running, "") << p.stage << " started inside " << running;
+      running = p.stage;
+    } else {
+      EXPECT_EQ(p.stage, running) << p.line();
+    }
+    if (p.kind == Progress::Kind::Finish) running.clear(), ++finished;
+    if (p.kind == Progress::Kind::Advance) EXPECT_TRUE(p.done > 0 && p.done <= p.total) << p.line();
+  }
+  EXPECT_EQ(finished, r.report.stages.size());
+  EXPECT_EQ(r.report.quadMesh.tries.run, 0u) << "a box is one grid: no Gmsh try";
+  EXPECT_GT(r.report.quadMesh.budgetSeconds, 10);
 }

@@ -1,10 +1,12 @@
 // The quad mesh of the chordal surface (quadmesh/quad_mesh.hpp): meshChordalSurface on flat chordal surfaces built
 // by hand, a rectangle and a rectangle with a hole, checked on the quads themselves (they tile the surface, lie
-// on it, are squares of the size asked), and rimEdgeNeighbours on a strip of two quads.
+// on it, are squares of the size asked), and rimEdgeNeighbours on a strip of two quads; the Gmsh tries' time budgets
+// (a try out of its budget is a failed try; none starts after the deadline).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -68,4 +70,46 @@ TEST(QuadMesh, RimEdgeNeighboursOfAStrip) {
   EXPECT_EQ(next[1], (std::vector<int>{0, 2})) << "the shared edge 1-4 is not on the rim";
   EXPECT_EQ(next[4], (std::vector<int>{3, 5}));
   EXPECT_EQ(next[2], (std::vector<int>{1, 5}));
+}
+
+// The rectangle with a hole, its pocket's 45-degree corners (0.71) counted as poor quads (below 0.99): the grid
+// is not good, so the Gmsh tries run. Each gets a millisecond: every one runs out of it and is a failed try (not
+// a wait), and the grid is kept.
+TEST(QuadMesh, TryOutOfItsBudgetIsAFailedTry) {
+  const ChordalSurface surface = rectangle(20, 10, {{8, 12, 4, 6}});
+  const ChordalLocator chordal(surface);
+  QuadMeshOptions o;
+  o.size = 1, o.timeoutSeconds = 1e-3, o.acceptableQuad = 0.99;
+  std::vector<std::size_t> done;
+  o.tried = [&](std::size_t d, std::size_t total) {
+    EXPECT_EQ(total, 1 + o.patchSplits.size());
+    done.push_back(d);
+  };
+  const QuadMesh q = meshChordalSurface(chordal, o);
+  EXPECT_NE(q.layout, QuadLayout::Gmsh);
+  EXPECT_EQ(q.tries.run, o.patchSplits.size());
+  EXPECT_EQ(q.tries.failed, q.tries.run);
+  EXPECT_EQ(q.tries.timedOut, q.tries.run);
+  EXPECT_EQ(q.tries.skipped, 0u);
+  ASSERT_EQ(done.size(), 1 + o.patchSplits.size()) << "the block grids, then each Gmsh try";
+  for (std::size_t k = 0; k < done.size(); ++k) EXPECT_EQ(done[k], k + 1);
+}
+
+// Past the deadline (the quad stage's budget spent) no Gmsh try starts: all are counted as not started, and the
+// block grid (not good, as above) is kept.
+TEST(QuadMesh, NoTryStartsAfterTheDeadline) {
+  const ChordalSurface surface = rectangle(20, 10, {{8, 12, 4, 6}});
+  const ChordalLocator chordal(surface);
+  QuadMeshOptions o;
+  o.size = 1, o.acceptableQuad = 0.99, o.deadline = std::chrono::steady_clock::now();
+  const QuadMesh q = meshChordalSurface(chordal, o);
+  EXPECT_NE(q.layout, QuadLayout::Gmsh);
+  EXPECT_EQ(q.tries.run, 0u);
+  EXPECT_EQ(q.tries.skipped, o.patchSplits.size());
+}
+
+// The default budget of a try grows with the quads: 3 s, and a second per 2000 quads.
+TEST(QuadMesh, TryBudgetGrowsWithTheQuads) {
+  EXPECT_DOUBLE_EQ(gmshTryBudget(0), 3);
+  EXPECT_DOUBLE_EQ(gmshTryBudget(20000), 13);
 }

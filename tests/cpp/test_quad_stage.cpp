@@ -1,9 +1,10 @@
 // §6 as the pipeline runs it (quadmesh/quad_stage.hpp): the chordal surface of a plate, faired, measured and
-// quad-meshed at the strongest fairing level.
+// quad-meshed at the strongest fairing level; its tries reported as progress, its time budget.
 #include <gtest/gtest.h>
 #include <BRepPrimAPI_MakeBox.hxx>
 
 #include <cmath>
+#include <vector>
 
 #include "bubbles/bubble_packing.hpp"
 #include "chordal/chordal_surface.hpp"
@@ -17,11 +18,21 @@ using namespace hexlayer;
 // A 40 x 30 x 2 plate at size 2, uniform: the strongest fairing (10) meshes it as one structured grid of
 // 20 x 15 quads; the chordal surface it lies on has its normals (+-z) and radius (1, half the wall) at every
 // vertex; no knife edge, nothing trimmed.
-TEST(QuadStage, APlateIsOneGridOnTheMostFairedSurface) {
+namespace {
+
+// The kept tets of a 40 x 30 x 2 plate.
+TetMesh plateTets() {
   const CadSolid cad = prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40, 30, 2).Solid());
   const WallSides sides = classifyWallSides(cad);
   TetMesh tets = delaunayTets(packBubbles(cad, sides, BubbleOptions{}));
   keepSpanningTetsInside(tets, cad);
+  return tets;
+}
+
+}  // namespace
+
+TEST(QuadStage, APlateIsOneGridOnTheMostFairedSurface) {
+  const TetMesh tets = plateTets();
   QuadStageOptions o;
   o.size = 2, o.adaptive = false;
   const QuadStage stage = meshFairedChordalSurface(buildChordalSurface(tets), tets, o);
@@ -34,4 +45,22 @@ TEST(QuadStage, APlateIsOneGridOnTheMostFairedSurface) {
     EXPECT_NEAR(std::abs(stage.chordal.normals[v].z()), 1, 1e-6);
     EXPECT_NEAR(stage.chordal.radius[v], 1, 1e-6);
   }
+}
+
+// The stage reports its tries as progress: after the block grids, 1 of 3 x 13 (three fairing levels of the block
+// grids and 12 Gmsh splits); the plate's grid is good, so no Gmsh try runs and none is counted. Its budget is
+// 10 s + a second per 1000 quads.
+TEST(QuadStage, ReportsItsTriesAsProgress) {
+  const TetMesh tets = plateTets();
+  QuadStageOptions o;
+  o.size = 2, o.adaptive = false;
+  std::vector<Progress> events;
+  o.progress = [&](const Progress& p) { events.push_back(p); };
+  const QuadStage stage = meshFairedChordalSurface(buildChordalSurface(tets), tets, o);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, Progress::Kind::Advance);
+  EXPECT_EQ(events[0].line(), "quad_mesh: 1/39");
+  EXPECT_EQ(stage.tries.run + stage.tries.skipped, 0u);
+  EXPECT_NEAR(stage.budgetSeconds, quadStageBudget(300), 1) << "the chordal surface's area is about 40 x 30";
+  EXPECT_DOUBLE_EQ(quadStageBudget(4000), 14);
 }

@@ -51,6 +51,12 @@ class MesherDies(unittest.TestCase):
         self.assertTrue(mesh.isValid(), mesh.Status)
         self.assertGreater(mesh.FemMesh.VolumeCount, 0)
 
+    def test_running_lines_are_parsed_not_taken_for_errors(self):
+        self.assertEqual(mesher.running("@running quad_mesh 3 39\n"), ("quad_mesh", 3, 39))
+        self.assertEqual(mesher.running("@running wall_sides"), ("wall_sides", 0, 0))
+        self.assertIsNone(mesher.running("@progress quad_mesh: 1.20 s"))
+        self.assertIsNone(mesher.running("hexlayer: error: x"))
+
     def test_progress_lines_come_per_stage(self):
         lines = []
         result = mesher.mesh_brep(t.add_plate(t.new_document(self)).Shape.exportBrepToString(), progress=lines.append,

@@ -2,8 +2,10 @@
 OpenCASCADE, TetGen or Gmsh is a message, not a lost session, and the workbench needs no compiled module of its
 own (it loads in any FreeCAD, whatever its Python, Qt or OpenCASCADE).
 
-The part goes to the child as a BREP file (FreeCAD's face numbering kept); the child writes its progress as
-"@progress <stage>: <seconds> s" lines on stderr (`--machine`) and its whole result as a JSON index and a binary
+The part goes to the child as a BREP file (FreeCAD's face numbering kept); the child writes its progress on stderr
+(`--machine`): "@progress <stage>: <seconds> s" per finished stage (and notes), "@running <stage>" when a stage
+starts and "@running <stage> <done> <total>" as a long one goes on (a few times a second at most); and its whole
+result as a JSON index and a binary
 file of arrays (`--result`), read back here into arrays named as pyhexlayer.MeshResult's. Its exit code becomes the error class pyhexlayer raises.
 No GUI and no FreeCAD needed: the task panel runs the same command line with QProcess (task_panel.py).
 """
@@ -20,9 +22,10 @@ import numpy as np
 
 BUNDLED = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "bin", "hexlayer")
 PROGRESS = "@progress "
+RUNNING = "@running "
 # The stages the child reports one line each for (pipeline.cpp), for a progress bar; "quadratic" with Order 2.
-STAGES = ("geometry", "wall_sides", "mixed_faces", "bubbles", "tets", "tet_filter", "chordal_surface", "quad_mesh",
-          "sweep", "rim", "rim_cap", "smoothing", "surface_groups", "quality")
+STAGES = ("geometry", "wall_sides", "mixed_faces", "bubbles", "tets", "tet_filter", "chordal_surface", "chordal_rim",
+          "quad_mesh", "sweep", "rim", "rim_cap", "smoothing", "surface_groups", "quality")
 
 
 class HexLayerError(Exception):
@@ -170,16 +173,27 @@ def progress_text(line):
     return line[len(PROGRESS):].rstrip("\n") if line.startswith(PROGRESS) else None
 
 
+def running(line):
+    """The running stage of one of the child's stderr lines: (stage, done, total), total 0 if it has said nothing of
+    how far it is; None for any other line."""
+    if not line.startswith(RUNNING):
+        return None
+    words = line[len(RUNNING):].split()
+    if len(words) == 3 and words[1].isdigit() and words[2].isdigit():
+        return words[0], int(words[1]), int(words[2])
+    return (words[0], 0, 0) if len(words) == 1 else None
+
+
 def mesh_brep(brep_text, progress=None, force=False, **opts):
     """Meshes the BREP text in a child process (blocking: the headless path and macros); `progress` gets each
-    stage's line as the child reports it."""
+    finished stage's line as the child reports it."""
     run = Run(brep_text, opts, force)
     child = subprocess.Popen(run.command(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     stderr = []
     for line in child.stderr:
         stage = progress_text(line)
-        if stage is None:
+        if stage is None and running(line) is None:
             stderr.append(line)
-        elif progress is not None:
+        elif stage is not None and progress is not None:
             progress(stage)
     return run.answer(child.wait(), "".join(stderr))

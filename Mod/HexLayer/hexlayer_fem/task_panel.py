@@ -5,6 +5,9 @@ from PySide import QtCore, QtGui  # FreeCAD 0.20's PySide shim: the widgets are 
 
 from . import icon, mesher, meshing
 
+# The progress bar's steps per stage: a running stage that says how far it is (quad_mesh: its tries) moves it
+# within its step.
+BAR_STEPS = 100
 ERROR_STYLE = "color: #c00000;"
 # QProcess's crash status: PySide2 (FreeCAD 0.20) has it on the class, PySide6 (1.1) on its ExitStatus enum too.
 CRASH_EXIT = getattr(QtCore.QProcess, "CrashExit", None) or QtCore.QProcess.ExitStatus.CrashExit
@@ -141,8 +144,10 @@ class TaskPanel:
         self.summary.clear()
         self.run = mesher.Run(self.obj.Part.Shape.exportBrepToString(), meshing.options(self.obj), self.obj.Force)
         self.stderr, self.partial, self.cancelled = [], "", False
-        self.bar.setRange(0, len(mesher.STAGES) + (self.obj.Order == 2))
+        self.finished_stages = 0
+        self.bar.setRange(0, BAR_STEPS * (len(mesher.STAGES) + (self.obj.Order == 2)))
         self.bar.setValue(0)
+        self.bar.setFormat("%p%")
         self.process = QtCore.QProcess(self.form)
         self.process.readyReadStandardError.connect(self.read_progress)
         self.process.finished.connect(self.finished)
@@ -165,12 +170,22 @@ class TaskPanel:
         lines = text.split("\n")
         self.partial = lines.pop()
         for line in lines:
-            stage = mesher.progress_text(line)
-            if stage is None:
+            stage, now = mesher.progress_text(line), mesher.running(line)
+            if now is not None:
+                self.show_running(*now)
+            elif stage is None:
                 self.stderr.append(line)
             else:
                 self.progress.appendPlainText(stage)
-                self.bar.setValue(min(self.bar.value() + 1, self.bar.maximum()))
+                self.finished_stages += 1
+                self.bar.setValue(min(BAR_STEPS * self.finished_stages, self.bar.maximum()))
+                self.bar.setFormat("%p%")
+
+    def show_running(self, stage, done, total):
+        """The bar: the finished stages, and the running one's share (its done / total, if it says); its name."""
+        share = done / total if total > 0 else 0
+        self.bar.setValue(min(int(BAR_STEPS * (self.finished_stages + share)), self.bar.maximum()))
+        self.bar.setFormat("{} %p%".format(stage))
 
     def finished(self, code, status):
         """The child ended: cancelled (nothing changes), or its mesh or error goes to the object by a recompute."""
