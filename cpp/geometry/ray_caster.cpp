@@ -1,5 +1,6 @@
 #include "geometry/ray_caster.hpp"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <TopoDS.hxx>
 #include <gp_Lin.hxx>
@@ -47,8 +48,13 @@ bool before(const RayHit& a, const RayHit& b) { return a.w < b.w || (a.w == b.w 
 }  // namespace
 
 RayCaster::RayCaster(const CadSolid& cad, double tolerance) : boxes_(faceBoxes(cad, tolerance)), tree_(boxes_) {
-  for (int f = 1; f <= cad.faces.Extent(); ++f)
-    faces_.push_back(std::make_unique<IntCurvesFace_Intersector>(TopoDS::Face(cad.faces(f)), tolerance));
+  for (int f = 1; f <= cad.faces.Extent(); ++f) {
+    const TopoDS_Face& face = TopoDS::Face(cad.faces(f));
+    faces_.push_back(std::make_unique<IntCurvesFace_Intersector>(face, tolerance));
+    const GeomAbs_SurfaceType type = BRepAdaptor_Surface(face, false).GetType();
+    analytic_.push_back(type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone ||
+                        type == GeomAbs_Sphere || type == GeomAbs_Torus);
+  }
 }
 
 std::vector<std::pair<double, int>> RayCaster::candidates(const Vec3& from, const Vec3& dir, double wMin,
@@ -95,10 +101,24 @@ std::optional<RayHit> RayCaster::nearest(const Vec3& from, const Vec3& dir, doub
 }
 
 std::optional<bool> RayCaster::inside(const Vec3& p, double tolerance, double reach) {
+  std::optional<bool> first;  // two clean rays must agree
   for (const Vec3& d : kInsideRays) {
-    const std::vector<RayHit> hits = all(p, d.normalized(), -tolerance, reach);
+    const Vec3 dir = d.normalized();
+    const std::vector<std::pair<double, int>> faces = candidates(p, dir, -tolerance, reach);
+    // On other surfaces OpenCASCADE's intersector searches a polyhedron, made to find the nearest hit, and may
+    // miss one (a B-spline face's seam): such a ray counts nothing.
+    if (std::any_of(faces.begin(), faces.end(), [&](const auto& f) { return !analytic_[f.second]; })) continue;
+    std::vector<RayHit> hits;
+    for (const auto& [enter, f] : faces) hitsOnFace(f, p, dir, -tolerance, reach, hits);
+    std::sort(hits.begin(), hits.end(), before);
     if (!hits.empty() && std::abs(hits.front().w) <= tolerance) return false;  // on a face
-    if (const std::optional<int> n = cleanCrossings(hits, tolerance)) return *n % 2 == 1;
+    const std::optional<int> n = cleanCrossings(hits, tolerance);
+    if (!n) continue;
+    if (!first) {
+      first = *n % 2 == 1;
+      continue;
+    }
+    return *first == (*n % 2 == 1) ? first : std::nullopt;
   }
   return std::nullopt;
 }

@@ -37,9 +37,11 @@ class RayCaster {
   // The hit of least w in the range (equal w: the lowest face), as the first of all()'s.
   std::optional<RayHit> nearest(const Vec3& from, const Vec3& dir, double wMin, double wMax);
 
-  // Whether p lies inside the solid, by the parity of the faces a ray from p crosses (three directions tried);
-  // nullopt if no ray gave a clean count: each passed a face's boundary, touched a face, or two hits fell within
-  // `tolerance` of each other. A point within `tolerance` of a face along the ray is on the boundary: not inside.
+  // Whether p lies inside the solid, by the parity of the faces a ray from p crosses, where two rays agree (three
+  // directions tried); nullopt if they disagree or fewer than two gave a clean count (a ray that passes a face's
+  // boundary, touches a face, has two hits within `tolerance` of each other, or passes near a face whose surface
+  // is not analytic, a plane, cylinder, cone, sphere or torus, is not counted). A point within
+  // `tolerance` of a face along the ray is on the boundary: not inside.
   std::optional<bool> inside(const Vec3& p, double tolerance, double reach);
 
   const TopoDS_Face& face(int f) const { return faces_[f]->Face(); }
@@ -52,6 +54,7 @@ class RayCaster {
 
   std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces_;  // per face
   std::vector<Box> boxes_;
+  std::vector<bool> analytic_;  // per face: its surface is a plane, cylinder, cone, sphere or torus
   BoxTree tree_;
 };
 

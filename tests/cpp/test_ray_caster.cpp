@@ -1,6 +1,7 @@
 // RayCaster (geometry/ray_caster.hpp): the hits of a line on a solid's faces, the nearest one, and inside or
 // outside by the parity of a ray's crossings, against OpenCASCADE's intersector and classifier that try every face,
-// on a plate with a grid of holes (many faces), its faces planes and B-splines, scaled by 1, 1e-3 and 1e3.
+// on a plate with a grid of holes (many faces), its faces planes and B-splines (where the inside test leaves every
+// point to OpenCASCADE's classifier), scaled by 1, 1e-3 and 1e3.
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
@@ -96,6 +97,10 @@ TEST(RayCaster, InsideAsOpenCascadesClassifier) {
             EXPECT_EQ(*in, exact.State() == TopAbs_IN) << p.transpose() / s;
             (*in ? inside : outside) += 1;
           }
+      if (bspline) {  // no ray is counted near a face that is not analytic: only rays that meet no face decide
+        EXPECT_EQ(inside, 0);
+        continue;
+      }
       EXPECT_GT(inside, 150);
       EXPECT_GT(outside, 150);
       EXPECT_LT(unsure, 10);
