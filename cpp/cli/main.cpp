@@ -103,9 +103,9 @@ void addMeshOptions(CLI::App* command, MeshCommand& c) {
                     "thickness, node sets per CAD face");
   command->add_option("--quad-budget", c.options.quadStageBudget,
                       "Seconds the quad stage may spend on Gmsh tries before it keeps the best so far (default 0: "
-                      "10 s + 1 s per 1000 quads)");
+                      "300 s + 1 s per 100 quads)");
   command->add_option("--quad-try-budget", c.options.quadTryBudget,
-                      "Seconds one Gmsh try may take before it is killed as failed (default 0: 3 s + 1 s per 2000 "
+                      "Seconds one Gmsh try may take before it is killed as failed (default 0: 60 s + 1 s per 200 "
                       "quads)");
   command->add_flag("--force", c.options.force,
                     "Write the mesh even if it fails validation (with a warning per failed check)");

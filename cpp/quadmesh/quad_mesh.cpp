@@ -563,7 +563,7 @@ QuadTries& QuadTries::operator+=(const QuadTries& o) {
   return *this;
 }
 
-double gmshTryBudget(double quads) { return 3 + quads / 2000; }
+double gmshTryBudget(double quads) { return 60 + quads / 200; }
 
 QuadMesh tryQuadMeshes(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   if (!(o.size > 0)) throw usageError("quad size must be positive");

@@ -81,9 +81,11 @@ struct QuadMeshOptions {
   std::function<void(std::size_t done, std::size_t total)> tried;
 };
 
-// The default time budget of one Gmsh try: 3 s plus a second per 2000 quads the surface will get (Gmsh 4.8
-// meshes tens of thousands of quads a second, a try of the real parts took 0.5-1.5 s; one that takes far longer
-// has hung or is lost in a reparametrization). [in] quads: the estimated quad count. Returns seconds.
+// The default time budget of one Gmsh try: 60 s plus a second per 200 quads the surface will get (Gmsh 4.8
+// meshes tens of thousands of quads a second, a try of the real parts took 0.5-1.5 s, the U-channel's last one
+// 170 s on a loaded machine; one that takes far longer has hung or is lost in a reparametrization). Generous, so
+// that a loaded machine does not change which tries finish: the output stays the same. [in] quads: the estimated quad
+// count. Returns seconds.
 double gmshTryBudget(double quads);
 
 // For every node, the nodes it shares a rim edge with (an edge of a single quad); empty inside.

@@ -85,7 +85,7 @@ const char* layoutName(QuadLayout layout) {
   }
 }
 
-double quadStageBudget(double quads) { return 10 + quads / 1000; }
+double quadStageBudget(double quads) { return 300 + quads / 100; }
 
 QuadStage meshFairedChordalSurface(const ChordalSurface& cut, const TetMesh& tets, const QuadStageOptions& o) {
   const double quads = chordalArea(cut) / (o.size * o.size);

@@ -42,8 +42,9 @@ struct QuadStage {
 // The fairing levels tried, strongest first.
 constexpr int kFairingIterations[] = {10, 3, 0};
 
-// The default time budget of the quad stage: 10 s plus a second per 1000 quads the surface will get (the real
-// parts of ../shared/parts/real within 30 s on two cores).
+// The default time budget of the quad stage: 300 s plus a second per 100 quads the surface will get: a net for
+// a part whose Gmsh tries would run on for many minutes, generous enough that a loaded machine does not change
+// the mesh of a part that meshes (the real U-channel's tries take up to 400 s on a loaded machine).
 // [in] quads: the estimated quad count. Returns seconds.
 double quadStageBudget(double quads);
 

@@ -108,8 +108,8 @@ TEST(QuadMesh, NoTryStartsAfterTheDeadline) {
   EXPECT_EQ(q.tries.skipped, o.patchSplits.size());
 }
 
-// The default budget of a try grows with the quads: 3 s, and a second per 2000 quads.
+// The default budget of a try grows with the quads: 60 s, and a second per 200 quads.
 TEST(QuadMesh, TryBudgetGrowsWithTheQuads) {
-  EXPECT_DOUBLE_EQ(gmshTryBudget(0), 3);
-  EXPECT_DOUBLE_EQ(gmshTryBudget(20000), 13);
+  EXPECT_DOUBLE_EQ(gmshTryBudget(0), 60);
+  EXPECT_DOUBLE_EQ(gmshTryBudget(20000), 160);
 }
