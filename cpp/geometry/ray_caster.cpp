@@ -81,11 +81,16 @@ void RayCaster::hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin
   }
 }
 
-std::vector<RayHit> RayCaster::all(const Vec3& from, const Vec3& dir, double wMin, double wMax) {
+std::vector<RayHit> RayCaster::hitsOnFaces(const std::vector<std::pair<double, int>>& faces, const Vec3& from,
+                                           const Vec3& dir, double wMin, double wMax) {
   std::vector<RayHit> hits;
-  for (const auto& [enter, f] : candidates(from, dir, wMin, wMax)) hitsOnFace(f, from, dir, wMin, wMax, hits);
+  for (const auto& [enter, f] : faces) hitsOnFace(f, from, dir, wMin, wMax, hits);
   std::sort(hits.begin(), hits.end(), before);
   return hits;
+}
+
+std::vector<RayHit> RayCaster::all(const Vec3& from, const Vec3& dir, double wMin, double wMax) {
+  return hitsOnFaces(candidates(from, dir, wMin, wMax), from, dir, wMin, wMax);
 }
 
 std::optional<RayHit> RayCaster::nearest(const Vec3& from, const Vec3& dir, double wMin, double wMax) {
@@ -108,9 +113,7 @@ std::optional<bool> RayCaster::inside(const Vec3& p, double tolerance, double re
     // On other surfaces OpenCASCADE's intersector searches a polyhedron, made to find the nearest hit, and may
     // miss one (a B-spline face's seam): such a ray counts nothing.
     if (std::any_of(faces.begin(), faces.end(), [&](const auto& f) { return !analytic_[f.second]; })) continue;
-    std::vector<RayHit> hits;
-    for (const auto& [enter, f] : faces) hitsOnFace(f, p, dir, -tolerance, reach, hits);
-    std::sort(hits.begin(), hits.end(), before);
+    const std::vector<RayHit> hits = hitsOnFaces(faces, p, dir, -tolerance, reach);
     if (!hits.empty() && std::abs(hits.front().w) <= tolerance) return false;  // on a face
     const std::optional<int> n = cleanCrossings(hits, tolerance);
     if (!n) continue;

@@ -49,6 +49,9 @@ class RayCaster {
  private:
   // The faces whose boxes the line meets in the range, by where it enters them, with that w.
   std::vector<std::pair<double, int>> candidates(const Vec3& from, const Vec3& dir, double wMin, double wMax) const;
+  // The hits on the faces given (candidates') in [wMin, wMax], by increasing w (equal w: by face).
+  std::vector<RayHit> hitsOnFaces(const std::vector<std::pair<double, int>>& faces, const Vec3& from, const Vec3& dir,
+                                  double wMin, double wMax);
   // Face f's hits in [wMin, wMax], appended to hits.
   void hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax, std::vector<RayHit>& hits);
 

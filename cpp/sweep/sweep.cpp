@@ -96,15 +96,11 @@ SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, 
   std::vector<Vec3> normal(dir.size());
   for (size_t i = 0; i < dir.size(); ++i) normal[i] = dir[i].normal;
   auto place = [&](int i) { placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, walls); };
-  if (aimed) {
+  const WallMap& first = aimed ? aimed : walls;
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) {
-      const SweepLine line = placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, aimed);
-      if (const Vec3 d = (line.top - line.bottom).normalized(); d.dot(normal[i]) < kTurned) normal[i] = d;
-    }
-  } else {
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) place(i);
+  for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) {
+    const SweepLine line = placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, first);
+    if (const Vec3 d = (line.top - line.bottom).normalized(); aimed && d.dot(normal[i]) < kTurned) normal[i] = d;
   }
   result.untangled =
       untangleSweep(q, normal, kUntangleTarget, place, [&](int j) { return columnQuality(result.mesh, j); });
