@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "core/threads.hpp"
+#include "core/union_find.hpp"
 #include "geometry/wall_rays.hpp"
 #include "quality/quality.hpp"
+#include "sweep/cap_template.hpp"
 #include "sweep/rim_projection.hpp"
 
 namespace hexlayer {
@@ -98,30 +100,31 @@ Vec3 atHeight(const Profile& p, double y) {
   return best ? *best : p.origin + y * p.up;
 }
 
-// How many columns a cap has: enough for kMinChords chords across a half-round profile (its outermost column's
-// layers + 1 nodes and two nodes more per column on the profile), at least one.
+// How many columns a structured cap has (cap_template.hpp, for layer counts without a drawn template): enough
+// for kMinChords chords across a half-round profile (its outermost column's layers + 1 nodes and two nodes more
+// per column on the profile), at least one.
 int capRows(int layers) { return std::max(1, (kMinChords - layers + 1) / 2); }
 
-// The nodes on the profile: m - 1 of them at even arc lengths for m = layers + 2 rows chords.
-std::vector<Vec3> profileNodes(const Profile& p, int layers, int rows) {
-  const int m = layers + 2 * rows;
+// The nodes a cap lays on the profile: at the template's fractions of its arc length.
+std::vector<Vec3> profileNodes(const Profile& p, const CapTemplate& t) {
   std::vector<Vec3> nodes;
-  for (int i = 1; i < m; ++i) nodes.push_back(atArcLength(p.points, static_cast<double>(i) / m));
+  for (double f : t.onProfile) nodes.push_back(atArcLength(p.points, f));
   return nodes;
 }
 
-// The profile area the hexes leave out: a column of layers + 1 nodes at even heights on the profile (the rim
-// projection's), or a cap of `rows` columns (all its nodes on the profile at even arc lengths).
-double leftOut(const Profile& p, int layers, int rows) {
+// The profile area the hexes leave out: the polygon from the profile's bottom through `nodes` to its top.
+double leftOut(const Profile& p, const std::vector<Vec3>& nodes) {
   std::vector<Vec3> polygon{p.points.front()};
-  if (rows > 0) {
-    const std::vector<Vec3> c = profileNodes(p, layers, rows);
-    polygon.insert(polygon.end(), c.begin(), c.end());
-  } else {
-    for (int k = 1; k < layers; ++k) polygon.push_back(atHeight(p, p.h * (2.0 * k / layers - 1)));
-  }
+  polygon.insert(polygon.end(), nodes.begin(), nodes.end());
   polygon.push_back(p.points.back());
   return areaBeyondChord(p, p.points) - areaBeyondChord(p, polygon);
+}
+
+// The uncapped column's nodes on the profile: layers + 1 at even heights (the rim projection's).
+std::vector<Vec3> sweptNodes(const Profile& p, int layers) {
+  std::vector<Vec3> nodes;
+  for (int k = 1; k < layers; ++k) nodes.push_back(atHeight(p, p.h * (2.0 * k / layers - 1)));
+  return nodes;
 }
 
 // One edge of the chordal surface's rim: two rim columns, a before b in the hexes' bottom quads, the outward
@@ -183,30 +186,46 @@ std::vector<RimEdge> rimEdges(const HexMesh& mesh, const std::vector<std::vector
   return out;
 }
 
-// Per column, the cap's columns of layers + 1 nodes (none: not capped), laid on the profile along the mean
-// outward normal of its capped edges, inside out. The outermost on the profile at even arc lengths; each
-// other one with its ends on the profile (outside in: the nodes next to the outermost's) and its inner nodes
-// between the sweep's column (straight) and the outermost's, evenly. Nodes on the profile moved onto the
-// lateral faces.
-using Cap = std::vector<std::vector<FacePoint>>;
+// A cap's place on one column: its template (cap_template.hpp) and the weights that lay the inside nodes.
+struct CapLayout {
+  CapTemplate t;
+  std::vector<std::vector<double>> weights;  // insideWeights(t)
+};
 
-Cap layCap(WallRays& rays, const WallProjector& walls, const Column& c, const Vec3& outward, int layers, int rows) {
+// The cap layouts tried on a part of `layers` layers: the drawn template (if any) and the structured cap.
+std::vector<CapLayout> capLayouts(int layers) {
+  std::vector<CapTemplate> templates{structuredCap(layers, capRows(layers))};
+  if (std::optional<CapTemplate> drawn = drawnCap(layers)) templates.push_back(*drawn);
+  std::vector<CapLayout> layouts;
+  for (CapTemplate& t : templates) layouts.push_back({t, insideWeights(t)});
+  return layouts;
+}
+
+// Per column, its cap's nodes beyond the column (none: not capped), laid on the profile along the mean outward
+// normal of its capped edges: the template's profile nodes at their fractions of the profile's arc length (moved
+// onto the lateral faces), then its inside nodes at their mean value coordinates in the polygon of the straight
+// column and the profile nodes.
+using Cap = std::vector<FacePoint>;
+
+Cap layCap(WallRays& rays, const WallProjector& walls, const Column& c, const Vec3& outward, const CapLayout& layout) {
   const Profile p = rimProfile(rays, c.bottom, c.top, outward);
   if (p.points.size() < 3) return {};
   auto onRim = [&](const Vec3& x) {
     std::optional<FacePoint> on = walls.project(Side::Lateral, x);
     return on && (on->point - x).norm() <= kMaxSnap * p.h ? *on : FacePoint{x, -1};
   };
-  const std::vector<Vec3> around = profileNodes(p, layers, rows);  // m - 1 nodes, bottom to top
-  const int m = layers + 2 * rows;
-  Cap cap(rows, std::vector<FacePoint>(layers + 1));
-  for (int k = 0; k <= layers; ++k) cap[rows - 1][k] = onRim(around[rows - 1 + k]);
-  for (int j = 1; j < rows; ++j) {
-    cap[j - 1][0] = onRim(around[j - 1]), cap[j - 1][layers] = onRim(around[m - 1 - j]);
-    for (int k = 1; k < layers; ++k) {
-      const Vec3 straight = c.bottom + (static_cast<double>(k) / layers) * (c.top - c.bottom);
-      cap[j - 1][k] = {straight + (static_cast<double>(j) / rows) * (cap[rows - 1][k].point - straight), -1};
-    }
+  const CapTemplate& t = layout.t;
+  const std::vector<Vec3> around = profileNodes(p, t);
+  Cap cap;
+  for (const Vec3& x : around) cap.push_back(onRim(x));
+  std::vector<Vec3> boundary;
+  for (const int node : templateBoundary(t))
+    boundary.push_back(node <= t.layers ? Vec3(c.bottom + (static_cast<double>(node) / t.layers) * (c.top - c.bottom))
+                                        : around[node - t.layers - 1]);
+  for (const std::vector<double>& w : layout.weights) {
+    Vec3 x = Vec3::Zero();
+    for (std::size_t i = 0; i < w.size(); ++i) x += w[i] * boundary[i];
+    cap.push_back({x, -1});
   }
   return cap;
 }
@@ -216,48 +235,186 @@ Cap layCap(WallRays& rays, const WallProjector& walls, const Column& c, const Ve
 // the profile's; alternate projections put them on both, and on that face for the grouping of the side face.
 // [in] side: that face (lateralFaceOf the column); [in,out] cap.
 void onSideFace(const WallProjector& walls, int side, Cap& cap) {
-  for (auto& row : cap)
-    for (FacePoint& x : row) {
-      if (x.face < 0) continue;
-      const int profileFace = x.face;
-      for (int i = 0; i < kEdgeProjections; ++i) {
-        const std::optional<FacePoint> a = walls.projectOntoFace(side, x.point);
-        const std::optional<FacePoint> b = a ? walls.projectOntoFace(profileFace, a->point) : std::nullopt;
-        if (!b) break;
-        x.point = b->point;
-      }
-      x.face = side;
+  for (FacePoint& x : cap) {
+    if (x.face < 0) continue;  // inside
+    const int profileFace = x.face;
+    for (int i = 0; i < kEdgeProjections; ++i) {
+      const std::optional<FacePoint> a = walls.projectOntoFace(side, x.point);
+      const std::optional<FacePoint> b = a ? walls.projectOntoFace(profileFace, a->point) : std::nullopt;
+      if (!b) break;
+      x.point = b->point;
     }
-}
-
-// The hex of layer k between two columns of an edge, a before b, and the columns beyond them.
-std::array<int, 8> capHex(const std::vector<int>& a, const std::vector<int>& b, const std::vector<int>& capA,
-                          const std::vector<int>& capB, int k) {
-  return {b[k], a[k], capA[k], capB[k], b[k + 1], a[k + 1], capA[k + 1], capB[k + 1]};
-}
-
-// The columns of one rim column by position: the sweep's, straight, then its cap's.
-std::vector<std::vector<Vec3>> capColumns(const Column& c, const Cap& cap, int layers) {
-  std::vector<std::vector<Vec3>> out(1);
-  for (int k = 0; k <= layers; ++k) out[0].push_back(c.bottom + (static_cast<double>(k) / layers) * (c.top - c.bottom));
-  for (const auto& row : cap) {
-    out.emplace_back();
-    for (const FacePoint& x : row) out.back().push_back(x.point);
+    x.face = side;
   }
+}
+
+// The hex of template quad q between two columns of an edge, a before b (their nodes per template node): the
+// quad's edges q0 -> q1 and q3 -> q2 are its sweep edges.
+std::array<int, 8> capHex(const std::vector<int>& a, const std::vector<int>& b, const std::array<int, 4>& q) {
+  return {b[q[0]], a[q[0]], a[q[3]], b[q[3]], b[q[1]], a[q[1]], a[q[2]], b[q[2]]};
+}
+
+// A rim column's places per template node: the sweep's column, straight, then its cap's.
+std::vector<Vec3> capPlaces(const Column& c, const Cap& cap, int layers) {
+  std::vector<Vec3> out;
+  for (int k = 0; k <= layers; ++k) out.push_back(c.bottom + (static_cast<double>(k) / layers) * (c.top - c.bottom));
+  for (const FacePoint& x : cap) out.push_back(x.point);
   return out;
 }
 
-// The scaled Jacobian of the worst hex of edge e's cap.
-double worstCapHex(const HexMesh& mesh, const std::vector<std::vector<int>>& columns, const std::vector<Cap>& caps,
-                   const RimEdge& e, int layers) {
-  const auto a = capColumns(ends(mesh, columns[e.a]), caps[e.a], layers);
-  const auto b = capColumns(ends(mesh, columns[e.b]), caps[e.b], layers);
-  double worst = 1;
-  for (std::size_t j = 1; j < a.size(); ++j)
-    for (int k = 0; k < layers; ++k)
-      worst = std::min(worst, hexScaledJacobian({b[j - 1][k], a[j - 1][k], a[j][k], b[j][k], b[j - 1][k + 1],
-                                                 a[j - 1][k + 1], a[j][k + 1], b[j][k + 1]}));
-  return worst;
+// The scaled Jacobians of edge e's cap hexes.
+std::vector<double> capQualities(const HexMesh& mesh, const std::vector<std::vector<int>>& columns,
+                                 const std::vector<Cap>& caps, const RimEdge& e, const CapTemplate& t) {
+  const std::vector<Vec3> a = capPlaces(ends(mesh, columns[e.a]), caps[e.a], t.layers);
+  const std::vector<Vec3> b = capPlaces(ends(mesh, columns[e.b]), caps[e.b], t.layers);
+  std::vector<double> sj;
+  for (const auto& q : t.quads)
+    sj.push_back(hexScaledJacobian({b[q[0]], a[q[0]], a[q[3]], b[q[3]], b[q[1]], a[q[1]], a[q[2]], b[q[2]]}));
+  return sj;
+}
+
+// Where one cap layout would cap: per edge whether capped, per column its cap (empty: none).
+struct CapPlan {
+  std::vector<char> capped;
+  std::vector<Cap> caps;
+};
+
+// The rim's edges whose profile (at their middle) loses enough for a cap to be worth it with `layout`, and the
+// caps of their columns, laid along their capped edges' mean normal; edges whose cap has a poor hex, or that
+// would end a cap where its side face is not on the CAD, are dropped and the caps laid again, until none is.
+CapPlan planCaps(const HexMesh& mesh, const std::vector<std::vector<int>>& columns, const std::vector<RimEdge>& edges,
+                 const CapLayout& layout, std::deque<WallRays>& rays, const WallProjector& walls) {
+  CapPlan plan{std::vector<char>(edges.size(), 0), std::vector<Cap>(columns.size())};
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < static_cast<long>(edges.size()); ++i) {
+    const RimEdge& e = edges[i];
+    const Column a = ends(mesh, columns[e.a]), b = ends(mesh, columns[e.b]);
+    const Profile p = rimProfile(rays[threadIndex()], 0.5 * (a.bottom + b.bottom), 0.5 * (a.top + b.top), e.outward);
+    if (p.points.size() < 3 || !inside(walls, p)) continue;
+    const double uncapped = leftOut(p, sweptNodes(p, layout.t.layers)), capped = leftOut(p, profileNodes(p, layout.t));
+    plan.capped[i] = uncapped > kMinLoss * 4 * p.h * p.h && capped <= kGain * uncapped;
+  }
+  for (bool dropped = true; dropped;) {  // ends: every round drops an edge or none
+    std::vector<Vec3> outward(columns.size(), Vec3::Zero()), along(columns.size(), Vec3::Zero());
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      if (!plan.capped[i]) continue;
+      const RimEdge& e = edges[i];
+      outward[e.a] += e.outward.normalized(), outward[e.b] += e.outward.normalized();
+      const Vec3 ab = (middle(ends(mesh, columns[e.b])) - middle(ends(mesh, columns[e.a]))).normalized();
+      along[e.a] += ab, along[e.b] -= ab;  // cancels where both edges are capped
+    }
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < static_cast<long>(columns.size()); ++c)
+      plan.caps[c] = outward[c].norm() > 0 ? layCap(rays[threadIndex()], walls,
+                                                    nudged(ends(mesh, columns[c]), along[c]), outward[c], layout)
+                                           : Cap{};
+    auto poor = [&](const RimEdge& e) {
+      if (plan.caps[e.a].empty() || plan.caps[e.b].empty()) return true;
+      const std::vector<double> sj = capQualities(mesh, columns, plan.caps, e, layout.t);
+      return *std::min_element(sj.begin(), sj.end()) < kMinQuality;
+    };
+    dropped = false;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      if (plan.capped[i] && poor(edges[i])) plan.capped[i] = false, dropped = true;
+    // A cap may end only where its side face lies on the CAD (a round end meeting a flat side face).
+    std::vector<int> rimAt(columns.size(), 0), cappedAt(columns.size(), 0);
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      for (const int c : {edges[i].a, edges[i].b}) ++rimAt[c], cappedAt[c] += plan.capped[i];
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      for (const int c : {edges[i].a, edges[i].b})
+        if (plan.capped[i] && cappedAt[c] < rimAt[c] && !lateralFaceOf(walls, ends(mesh, columns[c])))
+          plan.capped[i] = false, dropped = true;
+  }
+  return plan;
+}
+
+// The sum of 1 - scaled Jacobian over `hexes` with the inner nodes of the columns in `straight` on their straight
+// line (as capping puts them).
+double sweptDeficit(const HexMesh& mesh, const std::vector<std::vector<int>>& columns, const std::vector<int>& hexes,
+                    const std::vector<int>& straight) {
+  std::map<int, Vec3> moved;
+  for (const int c : straight) {
+    const Column end = ends(mesh, columns[c]);
+    const int layers = static_cast<int>(columns[c].size()) - 1;
+    for (int k = 1; k < layers; ++k)
+      moved[columns[c][k]] = end.bottom + (static_cast<double>(k) / layers) * (end.top - end.bottom);
+  }
+  double deficit = 0;
+  for (const int h : hexes) {
+    std::array<Vec3, 8> x = hexCorners(mesh, h);
+    for (int i = 0; i < 8; ++i)
+      if (const auto it = moved.find(mesh.hexes[h][i]); it != moved.end()) x[i] = it->second;
+    deficit += 1 - hexScaledJacobian(x);
+  }
+  return deficit;
+}
+
+// Per column, which plan caps it (-1: none). The edges capped in any plan, joined at their columns, make chains;
+// each chain is capped as the first plan (the structured cap, the old way: capped where it is worth it, else
+// not) unless a later one leaves the mesh's mean scaled Jacobian higher: its cap hexes added, the sweep's hexes
+// at its capped columns straightened. Chains in the order of their first column, each counted into the mean.
+std::vector<int> choosePlans(const HexMesh& mesh, const std::vector<std::vector<int>>& columns,
+                             const std::vector<RimEdge>& edges, const std::vector<CapPlan>& plans,
+                             const std::vector<CapLayout>& layouts) {
+  UnionFind chains(columns.size());
+  std::vector<char> inChain(columns.size(), 0);
+  for (const CapPlan& plan : plans)
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      if (plan.capped[i]) chains.unite(edges[i].a, edges[i].b), inChain[edges[i].a] = inChain[edges[i].b] = 1;
+  // Per chain root: per plan its cap hexes' deficit and count and the columns it caps; the sweep's hexes at it.
+  struct Option {
+    double deficit = 0;
+    std::size_t hexes = 0;
+    std::vector<int> columns;
+  };
+  struct Chain {
+    std::vector<Option> options;
+    std::vector<int> hexes;
+  };
+  std::map<int, Chain> chainAt;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    for (std::size_t k = 0; k < plans.size(); ++k) {
+      if (!plans[k].capped[i]) continue;
+      Option& o =
+          (chainAt[chains.find(edges[i].a)].options.resize(plans.size()), chainAt[chains.find(edges[i].a)].options[k]);
+      for (const double sj : capQualities(mesh, columns, plans[k].caps, edges[i], layouts[k].t))
+        o.deficit += 1 - sj, ++o.hexes;
+      o.columns.push_back(edges[i].a), o.columns.push_back(edges[i].b);
+    }
+  std::vector<int> columnOfNode(mesh.nodes.size(), -1);
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (inChain[c])
+      for (const int v : columns[c]) columnOfNode[v] = static_cast<int>(c);
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+    for (const int v : mesh.hexes[h])
+      if (columnOfNode[v] >= 0) {
+        chainAt[chains.find(columnOfNode[v])].hexes.push_back(static_cast<int>(h));
+        break;
+      }
+  double deficit = 0;
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) deficit += 1 - hexScaledJacobian(hexCorners(mesh, h));
+  double count = static_cast<double>(mesh.hexes.size());
+  std::map<int, int> chosen;  // per chain root
+  for (auto& [root, chain] : chainAt) {
+    const double uncapped = sweptDeficit(mesh, columns, chain.hexes, {});
+    int best = -1;
+    double bestMean = 0, bestDeficit = 0, bestCount = 0;
+    for (std::size_t k = 0; k < chain.options.size(); ++k) {
+      Option& o = chain.options[k];
+      if (o.hexes == 0 && k > 0) continue;  // a later plan that caps none of the chain
+      std::sort(o.columns.begin(), o.columns.end());
+      o.columns.erase(std::unique(o.columns.begin(), o.columns.end()), o.columns.end());
+      const double d = deficit - uncapped + sweptDeficit(mesh, columns, chain.hexes, o.columns) + o.deficit;
+      const double n = count + static_cast<double>(o.hexes);
+      if (k == 0 || d / n < bestMean) best = static_cast<int>(k), bestMean = d / n, bestDeficit = d, bestCount = n;
+    }
+    chosen[root] = chain.options[best].hexes > 0 ? best : -1;
+    deficit = bestDeficit, count = bestCount;
+  }
+  std::vector<int> plan(columns.size(), -1);
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (inChain[c]) plan[c] = chosen.at(chains.find(static_cast<int>(c)));
+  return plan;
 }
 
 }  // namespace
@@ -269,60 +426,30 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
   std::vector<int> columnOf(mesh.nodes.size(), -1);
   for (std::size_t c = 0; c < columns.size(); ++c)
     for (int v : columns[c]) columnOf[v] = static_cast<int>(c);
-  std::vector<RimEdge> edges = rimEdges(mesh, columns, columnOf);
+  const std::vector<RimEdge> edges = rimEdges(mesh, columns, columnOf);
   stats.rimEdges = edges.size();
   std::deque<WallRays> rays;
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
-  const int rows = capRows(layers);
-// Which edges lose enough of their profile for a cap to be worth it: their profile at their middle.
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < static_cast<long>(edges.size()); ++i) {
-    RimEdge& e = edges[i];
-    const Column a = ends(mesh, columns[e.a]), b = ends(mesh, columns[e.b]);
-    const Profile p = rimProfile(rays[threadIndex()], 0.5 * (a.bottom + b.bottom), 0.5 * (a.top + b.top), e.outward);
-    if (p.points.size() < 3 || !inside(walls, p)) continue;
-    const double uncapped = leftOut(p, layers, 0), capped = leftOut(p, layers, rows);
-    e.capped = uncapped > kMinLoss * 4 * p.h * p.h && capped <= kGain * uncapped;
-  }
-  // The caps of the columns of capped edges, laid along their capped edges' mean normal; edges whose cap has
-  // a poor hex are dropped and the caps laid again, until none has.
-  std::vector<Cap> caps(columns.size());
-  for (bool dropped = true; dropped;) {  // ends: every round drops an edge or none
-    std::vector<Vec3> outward(columns.size(), Vec3::Zero()), along(columns.size(), Vec3::Zero());
-    for (const RimEdge& e : edges) {
-      if (!e.capped) continue;
-      outward[e.a] += e.outward.normalized(), outward[e.b] += e.outward.normalized();
-      const Vec3 ab = (middle(ends(mesh, columns[e.b])) - middle(ends(mesh, columns[e.a]))).normalized();
-      along[e.a] += ab, along[e.b] -= ab;  // cancels where both edges are capped
-    }
-#pragma omp parallel for schedule(static)
-    for (long c = 0; c < static_cast<long>(columns.size()); ++c)
-      caps[c] = outward[c].norm() > 0 ? layCap(rays[threadIndex()], walls, nudged(ends(mesh, columns[c]), along[c]),
-                                               outward[c], layers, rows)
-                                      : Cap{};
-    dropped = false;
-    for (RimEdge& e : edges)
-      if (e.capped &&
-          (caps[e.a].empty() || caps[e.b].empty() || worstCapHex(mesh, columns, caps, e, layers) < kMinQuality))
-        e.capped = false, dropped = true;
-    // A cap may end only where its side face lies on the CAD (a round end meeting a flat side face).
-    std::vector<int> rimAt(columns.size(), 0), cappedAt(columns.size(), 0);
-    for (const RimEdge& e : edges) ++rimAt[e.a], ++rimAt[e.b], cappedAt[e.a] += e.capped, cappedAt[e.b] += e.capped;
-    for (RimEdge& e : edges)
-      for (const int c : {e.a, e.b})
-        if (e.capped && cappedAt[c] < rimAt[c] && !lateralFaceOf(walls, ends(mesh, columns[c])))
-          e.capped = false, dropped = true;
-  }
+  const std::vector<CapLayout> layouts = capLayouts(layers);
+  std::vector<CapPlan> plans;
+  for (const CapLayout& layout : layouts) plans.push_back(planCaps(mesh, columns, edges, layout, rays, walls));
+  const std::vector<int> planOf = choosePlans(mesh, columns, edges, plans, layouts);
   // The capped columns: inner nodes back on the straight line, then the caps' nodes and hexes. Inner nodes are
   // inside the part, unless the column has an edge without a cap: then its cap's side face is on the boundary.
+  auto capped = [&](std::size_t i) {
+    const int k = planOf[edges[i].a];
+    return k >= 0 && plans[k].capped[i];
+  };
   std::vector<int> rimEdgesAt(columns.size(), 0), cappedAt(columns.size(), 0);
-  for (const RimEdge& e : edges) {
-    ++rimEdgesAt[e.a], ++rimEdgesAt[e.b];
-    if (e.capped) ++cappedAt[e.a], ++cappedAt[e.b], ++stats.cappedEdges;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    ++rimEdgesAt[edges[i].a], ++rimEdgesAt[edges[i].b];
+    if (capped(i)) ++cappedAt[edges[i].a], ++cappedAt[edges[i].b], ++stats.cappedEdges;
   }
-  std::vector<std::vector<std::vector<int>>> ids(columns.size());  // per column: the sweep's, then the cap's
+  std::vector<std::vector<int>> ids(columns.size());  // per column: its node per template node
   for (std::size_t c = 0; c < columns.size(); ++c) {
     if (cappedAt[c] == 0) continue;
+    const CapTemplate& t = layouts[planOf[c]].t;
+    Cap& cap = plans[planOf[c]].caps[c];
     const bool side = cappedAt[c] < rimEdgesAt[c];
     const Column end = ends(mesh, columns[c]);
     const double reach = kMaxSnap * 0.5 * (end.top - end.bottom).norm();
@@ -335,29 +462,28 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
     };
     for (int k = 1; k < layers; ++k)
       inner(columns[c][k], end.bottom + (static_cast<double>(k) / layers) * (end.top - end.bottom), kRimSwept);
-    if (const std::optional<int> face = side ? lateralFaceOf(walls, end) : std::nullopt)
-      onSideFace(walls, *face, caps[c]);
-    ids[c].push_back(columns[c]);
-    for (std::size_t j = 0; j < caps[c].size(); ++j) {
-      ids[c].emplace_back();
-      for (int k = 0; k <= layers; ++k) {
-        const int v = static_cast<int>(mesh.nodes.size());
-        ids[c].back().push_back(v);
-        mesh.nodes.push_back(caps[c][j][k].point);
-        mesh.nodeLayer.push_back(k);
-        mesh.nodeOnRim.push_back(kRimCap);
-        mesh.nodeFace.push_back(caps[c][j][k].face);
-        if (j + 1 < caps[c].size() && k > 0 && k < layers) inner(v, caps[c][j][k].point, kRimCap);
-      }
+    if (const std::optional<int> face = side ? lateralFaceOf(walls, end) : std::nullopt) onSideFace(walls, *face, cap);
+    ids[c] = columns[c];
+    for (int node = layers + 1; node < t.nodeCount(); ++node) {
+      const int v = static_cast<int>(mesh.nodes.size());
+      const FacePoint& x = cap[node - layers - 1];
+      ids[c].push_back(v);
+      mesh.nodes.push_back(x.point);
+      // a profile node in the layer nearest its height in the half disc; an inside node in none (-1)
+      const bool onProfile = node < t.firstInside();
+      mesh.nodeLayer.push_back(
+          onProfile ? static_cast<int>(std::lround(0.5 * layers * (templatePosition(t, node).y() + 1))) : -1);
+      mesh.nodeOnRim.push_back(kRimCap);
+      mesh.nodeFace.push_back(x.face);
+      if (!onProfile) inner(v, x.point, kRimCap);
     }
     ++stats.capColumns;
   }
-  for (const RimEdge& e : edges) {
-    if (!e.capped) continue;
-    for (std::size_t j = 1; j < ids[e.a].size(); ++j)
-      for (int k = 0; k < layers; ++k)
-        mesh.hexes.push_back(capHex(ids[e.a][j - 1], ids[e.b][j - 1], ids[e.a][j], ids[e.b][j], k));
-    stats.capHexes += layers * rows;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (!capped(i)) continue;
+    const CapTemplate& t = layouts[planOf[edges[i].a]].t;
+    for (const auto& q : t.quads) mesh.hexes.push_back(capHex(ids[edges[i].a], ids[edges[i].b], q));
+    stats.capHexes += t.quads.size();
   }
   return stats;
 }

@@ -286,6 +286,25 @@ std::vector<std::optional<FacePoint>> movedColumn(const HexMesh& mesh, const std
   return to;
 }
 
+// The move of a column beside a leaning rim (its bottom node n, its neighbours in the wall `next`, the rim's side
+// at level - 1): as given where both wall nodes move the same way, or one does, along the wall away from the rim;
+// where they move apart (a "scissor": a rim cut obliquely, its bottom edge going out and its top edge in), both
+// by the move of the one that goes in. A sheared column beside such a rim would lean the hexes between them
+// twice, a shifted one keeps them upright: only the rim's own hexes then have its sharp corners.
+WallMove shiftedIfScissor(const HexMesh& mesh, int n, const std::vector<int>& next, const std::vector<int>& level,
+                          const WallMove& move) {
+  Vec3 from = Vec3::Zero();
+  int count = 0;
+  for (int p : next)
+    if (level[p] == level[n] - 1) from += mesh.nodes[p], ++count;
+  if (count == 0) return move;
+  const Vec3 in = mesh.nodes[n] - from / count;  // away from the rim, along the wall
+  const double bottom = move.bottom.dot(in), top = move.top.dot(in);
+  if (bottom * top >= 0) return move;
+  const Vec3 shift = bottom > 0 ? move.bottom : move.top;
+  return {shift, shift, move.rows};
+}
+
 // Where a rim is cut obliquely, its columns lean (their wall nodes move apart along the walls, by up to 1.5
 // walls on a rim 3 walls wide) and the hexes beside them would fold. The columns beside such a rim move with
 // it: by its move times 1 - j / (rows + 1) in the j-th row (rows enough that an edge along the wall keeps
@@ -335,11 +354,12 @@ void spreadRimMoves(HexMesh& mesh, const std::vector<std::vector<int>>& columns,
     }
     for (int n : kept) {
       const double fade = 1 - j / (move[n].rows + 1);
+      const WallMove shifted = shiftedIfScissor(mesh, n, next[n], level, move[n]);
       if (rimOf[n] >= 0) {
-        to[rimOf[n]] = movedColumn(mesh, columns[n], move[n], fade, true, walls);
+        to[rimOf[n]] = movedColumn(mesh, columns[n], shifted, fade, true, walls);
         continue;
       }
-      const std::vector<std::optional<FacePoint>> at = movedColumn(mesh, columns[n], move[n], fade, false, walls);
+      const std::vector<std::optional<FacePoint>> at = movedColumn(mesh, columns[n], shifted, fade, false, walls);
       for (std::size_t k = 0; k < at.size(); ++k)
         if (at[k]) mesh.nodes[columns[n][k]] = at[k]->point, mesh.nodeFace[columns[n][k]] = at[k]->face;
     }

@@ -28,7 +28,8 @@ struct RimProjectionStats {
 // [in] cad, sides: the solid and its faces' sides; [in] walls: the nearest-point projector on them.
 // [in] reach: how far a node may move (1.6 walls in the pipeline: half the width of the most oblique rim).
 // The column nearest a sharp CAD edge between two lateral faces is laid along it; where rim columns lean (an
-// oblique cut), the columns beside them lean with them, fading over a few rows (their nodes moved too).
+// oblique cut), the columns beside them move with them, fading over a few rows (their nodes moved too): sheared
+// like the rim's where its wall nodes move the same way, shifted upright where they move apart.
 // A column stays where the sweep put it if a hex around it would end below a scaled Jacobian of 0.2
 // and be worse than before, with all other columns moved (whatever the order of the columns).
 RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, const WallProjector& walls,

@@ -14,11 +14,8 @@ Gmsh's OpenCASCADE computes; the scaled Jacobian of every hex (at its corners, c
 boundary node within 1e-6 mm of the CAD face it is grouped on (Gmsh's closest point); every rim node on a
 rim face (a face none of whose nodes is a wall node off the rim).
 
-Every rim within 1 % of the CAD volume, with one exception: on a round rim, linear hexes cut the profile
-with straight chords. The rim cap (cpp/sweep/rim_cap.hpp) adds a column beyond the sweep's, so layers + 2
-chords cut it (layers + 4 with one layer); with 2 layers that leaves out 0.16 r^2 per length of rim, 0.8 %
-of the small near-full-round plate, whose rim is long for its area. That part, at 2 layers, is checked
-against that chord deficit (computed here from the profile) plus 0.5 %.
+Every rim within 1 % of the CAD volume: on a round rim the rim cap (cpp/sweep/rim_cap.hpp) adds hexes beyond the
+sweep's column, so that linear hexes cut the profile with 6 chords (2 layers) or 5 (3 layers).
 
 Run by CTest as: /usr/bin/python3 test_rims.py --hexlayer PATH --source DIR
 """
@@ -29,8 +26,6 @@ import sys
 import tempfile
 import unittest
 
-import numpy as np
-
 import harness
 from cad import face_distances, opened
 from inp import hex_arrays, read_inp
@@ -39,41 +34,14 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from hex_geometry import hex_scaled_jacobians, hex_volumes  # noqa: E402
 
 
-def round_profile(radius, wall, steps=2000):
-    """A rim profile of two fillets of `radius` with a flat between them, as points (bulge past the line joining
-    the walls' edges, height) from the bottom wall's edge (0, 0) to the top wall's (0, wall)."""
-    def bulge(y):
-        below = radius - y if y < radius else (y - (wall - radius) if y > wall - radius else 0.0)
-        return math.sqrt(max(radius * radius - below * below, 0.0))
-    return np.array([(bulge(wall * k / steps), wall * k / steps) for k in range(steps + 1)])
-
-
-def chord_deficit(profile, chords):
-    """Area (per length of rim) between the profile and the polygon of `chords` chords through it, their ends at
-    even arc lengths: a rim cap's nodes (rim_cap.cpp)."""
-    arc = np.concatenate([[0], np.cumsum(np.linalg.norm(np.diff(profile, axis=0), axis=1))])
-    nodes = np.array([np.interp(np.linspace(0, arc[-1], chords + 1), arc, profile[:, i]) for i in (0, 1)]).T
-
-    def area(polyline):  # between the polyline and the line x = 0 (the chord joining the walls' edges)
-        x, y = polyline[:, 0], polyline[:, 1]
-        return float(np.sum(0.5 * (x[1:] + x[:-1]) * np.diff(y)))
-    return area(profile) - area(nodes)
-
-
-# Round rims measured against their chord deficit: (rim length, fillet radius, wall, chords). Lengths from the
-# parts' drawings (rims/README.md): the plate's perimeter 2 x (50 + 30) with four R5 corners.
-CHORD_LIMITED = {("plate_full_round", 2): (2 * (50 + 30) - 8 * 5 + 2 * math.pi * 5, 0.98, 2.0, 4)}
-# Quality met by the parts (scaled Jacobian, every hex): min >= 0.3, avg >= 0.95, but for
-#  - the near-full-round plate: 0.56 / 0.939 measured; its rim cap's hexes have a 135 degree corner where two
-#    chords of the profile meet (0.71), and a fifth of this small plate's hexes are cap hexes;
-#  - the strip cut at 70.5 degrees: a hex with a corner on its 19.5 degree edges has a scaled Jacobian of at
-#    most sin(19.5 deg) = 1/3, reached (0.333 measured); with a column of those at each end of its 30 and the
-#    columns beside them leaning with the cut, its average is 0.927 (at most 0.955 with every other hex a cube);
-# and the issue's higher bar for the parts whose chordal surface is one structured grid: the tubes cut at 45
-# degrees (a ring grid from the conformal map of the annulus, 0.67 / 0.990 and 0.67 / 0.978 measured) and the
-# cap cut by a plane (an O-grid, 0.76 / 0.980).
-QUALITY = {"plate_full_round": (0.5, 0.935), "strip_oblique_3x": (1 / 3 - 1e-3, 0.92), "tube_cut_45": (0.5, 0.97),
-           "tube_cut_45_both": (0.5, 0.97), "cap_cut_by_plane": (0.5, 0.97)}
+# Quality met by every part (scaled Jacobian, every hex): min >= 0.3, avg >= 0.95. The near-full-round plate, whose
+# rim caps are a fifth of its hexes: 0.580 / 0.958 with 2 layers, 0.580 / 0.961 with 3. The strip cut at 70.5
+# degrees: a hex with a corner on its 19.5 degree edges has a scaled Jacobian of at most sin(19.5 deg) = 1/3, and
+# a column of them at each end of its 30 leaves an average of at most 0.955 (0.956 measured: the columns beside
+# them upright). And the issue's higher bar for the parts whose chordal surface is one structured grid: the tubes
+# cut at 45 degrees (a ring grid from the conformal map of the annulus, 0.67 / 0.991 and 0.67 / 0.981 measured)
+# and the cap cut by a plane (an O-grid, 0.76 / 0.980).
+QUALITY = {"tube_cut_45": (0.5, 0.97), "tube_cut_45_both": (0.5, 0.97), "cap_cut_by_plane": (0.5, 0.97)}
 PARTS = ["lbracket_round_ends", "uchannel_round_ends", "hat_round_ends", "plate_full_round",
          "plate_fillet_flat_fillet", "plate_chamfer_one_side", "plate_chamfer_both_sides", "strip_oblique_45",
          "strip_oblique_3x", "plate_split_rim", "plate_split_walls", "lbracket_split_bend", "cap_cut_by_plane",
@@ -125,9 +93,6 @@ class Rims(unittest.TestCase):
             cad_volume = EXACT_VOLUME.get(part, sum(gmsh.model.occ.getMass(3, t) for _, t in gmsh.model.getEntities(3)))
             error = (volumes.sum() - cad_volume) / cad_volume
             allowed = 0.01
-            if (part, layers) in CHORD_LIMITED:
-                length, radius, wall, chords = CHORD_LIMITED[(part, layers)]
-                allowed = 0.005 + length * chord_deficit(round_profile(radius, wall), chords) / cad_volume
             self.assertLessEqual(abs(error), allowed, f"volume {100 * error:+.2f} %, allowed {100 * allowed:.2f} %")
             print(f"{part}, {layers} layers: {len(hexes)} hexes, SJ min {sj.min():.3f} avg {sj.mean():.3f}, volume "
                   f"{100 * error:+.2f} % (allowed {100 * allowed:.2f} %)")
