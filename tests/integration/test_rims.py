@@ -10,9 +10,10 @@ near the plate's rim, a slot filleted on top).
 
 Each part with 2 and 3 layers, checked on the written .inp with tools of their own, not the mesher's
 report: every element an 8-node hex of positive volume; the mesh volume against the CAD volume that
-Gmsh's OpenCASCADE computes; the scaled Jacobian of every hex (at its corners, computed here); every
-boundary node within 1e-6 mm of the CAD face it is grouped on (Gmsh's closest point); every rim node on a
-rim face (a face none of whose nodes is a wall node off the rim).
+Gmsh's OpenCASCADE computes; the scaled Jacobian of every hex (at its corners, computed here); the part's
+topology (the Euler characteristic of the mesh's boundary quads against that of Gmsh's triangulation of the
+CAD's faces); every boundary node within 1e-6 mm of the CAD face it is grouped on (Gmsh's closest point); every
+rim node on a rim face (a face none of whose nodes is a wall node off the rim).
 
 Every rim within 1 % of the CAD volume: on a round rim the rim cap (cpp/sweep/rim_cap.hpp) adds hexes beyond the
 sweep's column, so that linear hexes cut the profile with 6 chords (2 layers) or 5 (3 layers).
@@ -27,11 +28,11 @@ import tempfile
 import unittest
 
 import harness
-from cad import face_distances, opened
+from cad import face_distances, opened, surface_euler_characteristic
 from inp import hex_arrays, read_inp
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from hex_geometry import hex_scaled_jacobians, hex_volumes  # noqa: E402
+from hex_geometry import boundary_euler_characteristic, hex_scaled_jacobians, hex_volumes  # noqa: E402
 
 
 # Quality met by every part (scaled Jacobian, every hex): min >= 0.3, avg >= 0.95. The near-full-round plate, whose
@@ -73,6 +74,7 @@ class Rims(unittest.TestCase):
     def setUpClass(cls):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.meshes = {(part, layers): mesh(part, layers, cls.tmp.name) for part in PARTS for layers in LAYERS}
+        cls.euler = {}
 
     @classmethod
     def tearDownClass(cls):
@@ -97,6 +99,12 @@ class Rims(unittest.TestCase):
             print(f"{part}, {layers} layers: {len(hexes)} hexes, SJ min {sj.min():.3f} avg {sj.mean():.3f}, volume "
                   f"{100 * error:+.2f} % (allowed {100 * allowed:.2f} %)")
             self.check_boundary(gmsh, x, index, sets, mixed=part in MIXED)
+        self.assertEqual(boundary_euler_characteristic(hexes), self.cad_euler(part, step), "the part's topology")
+
+    def cad_euler(self, part, step):
+        if part not in self.euler:
+            self.euler[part] = surface_euler_characteristic(step, 2.0)  # triangles about a wall across
+        return self.euler[part]
 
     def check_boundary(self, gmsh, x, index, sets, mixed=False):
         for face, worst in face_distances(gmsh, x, index, sets).items():
