@@ -53,9 +53,10 @@ double distanceToSurface(const gp_Pnt& p, const BRepAdaptor_Surface& surface) {
 }
 
 // Largest distance between the face's triangles and the exact surface, at each triangle's corners,
-// edge midpoints and centre: to the surface point at the same parameters, or (next to a pole,
-// where parameters interpolate badly) to the nearest surface point.
-double largestDeviation(const TopoDS_Face& face, const std::vector<Triangle2d>& mesh) {
+// edge midpoints and centre: to the surface point at the same parameters, or, where that is farther than
+// `near` (next to a pole, or on a freeform surface whose parameters run unevenly over the triangle) and
+// the nearest surface point is nearer, to that.
+double largestDeviation(const TopoDS_Face& face, const std::vector<Triangle2d>& mesh, double near) {
   static constexpr double kAt[7][3] = {
       {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, 0}, {0, 0.5, 0.5}, {0.5, 0, 0.5}, {1.0 / 3, 1.0 / 3, 1.0 / 3}};
   const BRepAdaptor_Surface surface(face);
@@ -67,7 +68,8 @@ double largestDeviation(const TopoDS_Face& face, const std::vector<Triangle2d>& 
       const gp_XY uv = w[0] * t.uv[0].XY() + w[1] * t.uv[1].XY() + w[2] * t.uv[2].XY();
       const gp_XYZ xyz = w[0] * t.xyz[0].XYZ() + w[1] * t.xyz[1].XYZ() + w[2] * t.xyz[2].XYZ();
       const double atParameters = (surface.Value(uv.X(), uv.Y()).XYZ() - xyz).Modulus();
-      worst = std::max(worst, pole ? std::min(atParameters, distanceToSurface(xyz, surface)) : atParameters);
+      const bool uneven = pole || atParameters > near;
+      worst = std::max(worst, uneven ? std::min(atParameters, distanceToSurface(xyz, surface)) : atParameters);
     }
   }
   return worst;
@@ -145,7 +147,7 @@ BoundaryTriangles::BoundaryTriangles(const CadSolid& cad) {
     const TopoDS_Face face = TopoDS::Face(faces(f));
     const std::vector<Triangle2d> mesh = faceTriangles(face);
     if (mesh.empty()) return;
-    deviation = std::max(deviation, largestDeviation(face, mesh));
+    deviation = std::max(deviation, largestDeviation(face, mesh, 2 * kFineDeflection * cad.diagonal));
     for (const Triangle2d& t : mesh)
       triangles.push_back({toVec(t.xyz[0].XYZ()), toVec(t.xyz[1].XYZ()), toVec(t.xyz[2].XYZ())});
   }

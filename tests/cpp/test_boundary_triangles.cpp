@@ -1,12 +1,15 @@
 // The quick inside/outside test of the tet filter (geometry/boundary_triangles.hpp: triangles of the CAD's
 // triangulation in a bounding volume hierarchy), against OpenCASCADE's classifier.
 #include <gtest/gtest.h>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <Bnd_Box.hxx>
 #include <TopoDS.hxx>
 
+#include <string>
 #include <vector>
 
 #include "geometry/boundary_triangles.hpp"
@@ -18,14 +21,14 @@ namespace {
 
 // Every point of a grid over the solid's box (a little beyond it) that the triangles decide is
 // decided as OpenCASCADE's classifier decides it; returns how many were decided.
-int decidedAsOpenCascade(const CadSolid& cad, double lo, double hi, int steps) {
+int decidedAsOpenCascade(const CadSolid& cad, const Vec3& lo, const Vec3& hi, int steps) {
   const BoundaryTriangles triangles(cad);
   BRepClass3d_SolidClassifier exact(cad.solid);
   int decided = 0;
   for (int i = 0; i <= steps; ++i)
     for (int j = 0; j <= steps; ++j)
       for (int k = 0; k <= steps; ++k) {
-        const Vec3 p = Vec3::Constant(lo) + (hi - lo) / steps * Vec3(i, j, k) + Vec3(1e-3, 2e-3, 3e-3);
+        const Vec3 p = lo + (hi - lo).cwiseProduct(Vec3(i, j, k)) / steps + Vec3(1e-3, 2e-3, 3e-3);
         const Containment quick = triangles.classify(p);
         if (quick == Containment::kUndecided) continue;
         ++decided;
@@ -33,6 +36,10 @@ int decidedAsOpenCascade(const CadSolid& cad, double lo, double hi, int steps) {
         EXPECT_EQ(quick == Containment::kInside, exact.State() == TopAbs_IN) << p.transpose();
       }
   return decided;
+}
+
+int decidedAsOpenCascade(const CadSolid& cad, double lo, double hi, int steps) {
+  return decidedAsOpenCascade(cad, Vec3::Constant(lo), Vec3::Constant(hi), steps);
 }
 
 }  // namespace
@@ -61,4 +68,20 @@ TEST(BoundaryTriangles, CurvedAndFreeformSolidsAreDecidedAsOpenCascadeDecides) {
   const CadSolid freeform = prepareSolid(TopoDS::Solid(nurbs));
   EXPECT_LT(BoundaryTriangles(freeform).margin(), 1e-2);
   EXPECT_GT(decidedAsOpenCascade(freeform, -1, 11, 12), 2000);
+}
+
+// Gmsh's periodic curved shell (a B-spline face whose parameters run unevenly over the triangles): measured at
+// the same parameters, its triangles lay 0.19 off the surface, a margin of 0.39 on a wall 1.0 thick, and most tet
+// centres went to OpenCASCADE's classifier (78 of the mesher's 136 s); measured to the nearest surface point where
+// the parameters say more than twice the deflection, 0.03.
+TEST(BoundaryTriangles, AFreeformShellsMarginIsItsTrianglesDistance) {
+  const CadSolid shell =
+      prepareSolid(readSolids(std::string(HEXLAYER_SHARED_PARTS) + "/gmsh_periodic_u_cst_curved_shell.step").at(0));
+  const BoundaryTriangles triangles(shell);
+  EXPECT_LT(triangles.margin(), 0.1) << "a tenth of the wall";
+  Bnd_Box box;
+  BRepBndLib::Add(shell.solid, box);
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  EXPECT_GT(decidedAsOpenCascade(shell, Vec3(x0, y0, z0), Vec3(x1, y1, z1), 12), 1800);
 }
