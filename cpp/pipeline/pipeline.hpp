@@ -11,6 +11,7 @@
 #include "geometry/cad_solid.hpp"
 #include "pipeline/mesh_report.hpp"
 #include "quadmesh/quad_mesh.hpp"
+#include "quadmesh/quad_stage.hpp"
 
 namespace hexlayer {
 
@@ -52,7 +53,16 @@ void validateOptions(const MeshOptions& options);
 // unless options.force, a failed check throws validationError naming the check and the place.
 MeshResult meshFile(const std::string& path, const MeshOptions& options);
 
-// Meshes one solid; validated like meshFile.
+// Meshes one solid; validated like meshFile. A part where one rib stands on a flat plate (a T junction, issue 18)
+// is cut at the rib's foot and its pieces meshed and joined (junction_mesh.hpp); other junctions are refused
+// (geometryError) unless options.dropJunctions.
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options);
+
+// Replaces the quads the quad stage made, before the sweep (a plate's quads carrying a rib's footprint, issue 18).
+// [in] cad: the solid as the stages see it (scaled by cad.unit); [in,out] stage: its quads replaced.
+using QuadEdit = std::function<void(const CadSolid& cad, QuadStage& stage)>;
+
+// meshSolid with the quad stage's quads replaced by `edit` (none: as made). [in] solid, options, edit.
+MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options, const QuadEdit& edit);
 
 }  // namespace hexlayer

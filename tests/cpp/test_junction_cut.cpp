@@ -10,7 +10,9 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <GProp_GProps.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <gp_Trsf.hxx>
 
@@ -43,6 +45,32 @@ TopoDS_Solid boxes(const std::vector<Box>& parts, double s) {
   scale.SetScale(gp_Pnt(0, 0, 0), s);
   TopExp_Explorer solid(BRepBuilderAPI_Transform(unify.Shape(), scale, true).Shape(), TopAbs_SOLID);
   return TopoDS::Solid(solid.Current());
+}
+
+double areaOf(const TopoDS_Shape& face) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(face, props);
+  return props.Mass();
+}
+
+// Every face of the cut solid is a face of the pieces or is cut into faces of them (their areas adding up to its),
+// and only the feet (a face of two pieces each) have no origin.
+void expectFaceOrigins(const CadSolid& cad, const JunctionCut& cut) {
+  ASSERT_EQ(cut.faceOrigin.size(), cut.pieces.size());
+  std::vector<double> area(cad.faces.Extent(), 0);
+  std::size_t noOrigin = 0;
+  for (std::size_t p = 0; p < cut.pieces.size(); ++p) {
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(cut.pieces[p], TopAbs_FACE, faces);
+    ASSERT_EQ(cut.faceOrigin[p].size(), static_cast<std::size_t>(faces.Extent()));
+    for (int f = 1; f <= faces.Extent(); ++f) {
+      const int origin = cut.faceOrigin[p][f - 1];
+      if (origin < 0) ++noOrigin;
+      else area[origin] += areaOf(faces(f));
+    }
+  }
+  EXPECT_EQ(noOrigin, 2 * cut.feet.size());
+  for (int f = 0; f < cad.faces.Extent(); ++f) EXPECT_NEAR(area[f] / areaOf(cad.faces(f + 1)), 1, 1e-9) << "face " << f;
 }
 
 double volumeOf(const TopoDS_Shape& shape) {
@@ -81,6 +109,7 @@ void expectCut(const std::vector<Box>& parts, double footArea) {
       EXPECT_TRUE(baseFaces.Contains(f.face) && standing.Contains(f.face)) << "a foot is a face of both pieces";
     }
     EXPECT_NEAR(area / (cad.unit * cad.unit) / (s * s) / footArea, 1, 1e-9);
+    expectFaceOrigins(cad, cut);
   }
 }
 
@@ -121,7 +150,19 @@ TEST(JunctionCut, JunctionSamplesOnPlanes) {
       EXPECT_TRUE(pieceSides.ownSideFaces.empty());
     }
     EXPECT_NEAR(volume / cad.volume, 1, 1e-9);
+    expectFaceOrigins(cad, cut);
   }
+}
+
+// A solid of one sheet is its own piece, each face its own origin.
+TEST(JunctionCut, OneSheetIsItsOwnPiece) {
+  const TopoDS_Solid solid = boxes({{0, 0, 0, 60, 40, 2}}, 1);
+  const CadSolid cad = prepareSolid(solid);
+  const WallSides sides = classifyWallSides(cad);
+  const JunctionCut cut = cutAtJunctions(cad, sides, findSheets(cad, sides));
+  ASSERT_EQ(cut.pieces.size(), 1u);
+  expectFaceOrigins(cad, cut);
+  for (int f = 0; f < cad.faces.Extent(); ++f) EXPECT_EQ(cut.faceOrigin[0][f], f);
 }
 
 // A rib on a curved wall is refused by name (the cut along a curved wall is not built yet).
