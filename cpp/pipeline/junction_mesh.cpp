@@ -37,9 +37,9 @@ bool parallel(const Vec3& a, const Vec3& b) { return a.cross(b).norm() <= kParal
 
 // The rib's wall normal: all its walls planar and parallel, across the plate's normal n.
 Vec3 ribNormal(const CadSolid& cad, const Sheet& rib, const Vec3& n) {
-  const Vec3 normal = planeNormal(cad.faces(rib.faces.front() + 1), "a wall of the rib");
+  const Vec3 normal = planeNormal(cad.faces(rib.faces.front() + 1), "a wall of the standing sheet");
   for (int f : rib.faces)
-    if (!parallel(planeNormal(cad.faces(f + 1), "a wall of the rib"), normal))
+    if (!parallel(planeNormal(cad.faces(f + 1), "a wall of the standing sheet"), normal))
       throw geometryError("T-junction: the rib's walls are not parallel planes");
   if (std::abs(normal.dot(n)) > kParallel) throw geometryError("T-junction: the rib does not stand across the plate");
   return normal;
@@ -65,8 +65,9 @@ Extent boxExtent(const TopoDS_Solid& piece, const Vec3& u, const Vec3& v, const 
   BRepGProp::VolumeProperties(piece, props);
   const double box = (e.hi - e.lo).prod();
   if (!(std::abs(props.Mass() - box) <= kBox * box))
-    throw geometryError("T-junction: the plate under the rib is not a rectangle (junction meshing does not cut "
-                        "other plates yet)");
+    throw geometryError(
+        "T-junction: the plate under the rib is not a rectangle (junction meshing does not cut "
+        "other plates yet)");
   return e;
 }
 
@@ -121,12 +122,14 @@ FootGrid footGrid(const HexMesh& rib, const QuadMesh& quads, const TJunctionFram
   FootGrid g;
   g.nodes.assign(stride, std::vector<int>(columns.size()));
   g.rows.assign(stride, 0), g.columns.assign(columns.size(), 0);
+  g.at.assign(stride, std::vector<Eigen::Vector2d>(columns.size()));
   for (std::size_t j = 0; j < columns.size(); ++j) {
     const int q = columns[j];
     const bool up = rib.nodes[q * stride].dot(frame.plate.v) < rib.nodes[q * stride + m].dot(frame.plate.v);
     for (int i = 0; i < stride; ++i) {
       const int n = q * stride + (up ? i : m - i);
       g.nodes[i][j] = n;
+      g.at[i][j] = {rib.nodes[n].dot(frame.plate.u), rib.nodes[n].dot(frame.plate.v)};
       g.rows[i] += rib.nodes[n].dot(frame.plate.v) / columns.size();
       g.columns[j] += rib.nodes[n].dot(frame.plate.u) / stride;
     }
@@ -140,6 +143,10 @@ Footprint footprintOf(const TJunctionFrame& frame, const FootGrid& foot, double 
   f.uMin *= unit, f.uMax *= unit, f.vMin *= unit, f.vMax *= unit;
   for (double c : foot.columns) f.columns.push_back(c * unit);
   for (double r : foot.rows) f.rows.push_back(r * unit);
+  for (const auto& row : foot.at) {
+    f.feet.emplace_back();
+    for (const Eigen::Vector2d& p : row) f.feet.back().push_back(p * unit);
+  }
   f.size = (f.columns.back() - f.columns.front()) / (f.columns.size() - 1);
   return f;
 }

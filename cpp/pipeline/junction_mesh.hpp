@@ -19,7 +19,7 @@ namespace hexlayer {
 // The T in a frame of the plate: u along the rib's foot, v across it, w the plate's normal towards the wall the
 // rib stands on; a point p has the coordinates (p·u, p·v, p·w).
 struct TJunctionFrame {
-  Footprint plate;       // origin (on the plate's mid-plane: its chordal surface), u, v and the plate's rectangle
+  Footprint plate;  // origin (on the plate's mid-plane: its chordal surface), u, v and the plate's rectangle
   Vec3 w = Vec3::UnitZ();
   double footW = 0;      // the foot's plane: p·w
   double thickness = 0;  // the plate's
@@ -33,8 +33,9 @@ TJunctionFrame tJunctionFrame(const CadSolid& cad, const std::vector<Sheet>& she
 
 // The rib's foot as the rib's hexes have it.
 struct FootGrid {
-  std::vector<std::vector<int>> nodes;  // nodes[i][j]: the rib's hex node at row i (v ascending), column j (u)
-  std::vector<double> columns, rows;    // their u and v in the frame, each the mean over its nodes
+  std::vector<std::vector<int>> nodes;           // nodes[i][j]: the rib's hex node at row i (v ascending), column j (u)
+  std::vector<double> columns, rows;             // their u and v in the frame, each the mean over its nodes
+  std::vector<std::vector<Eigen::Vector2d>> at;  // at[i][j]: (u, v) of node [i][j]
 };
 
 // [in] rib: hexes swept from `quads` (sweep.hpp's layout: quad node q's sweep column is the hex nodes q (m + 1) + k,
@@ -43,7 +44,7 @@ struct FootGrid {
 // of quad edges.
 FootGrid footGrid(const HexMesh& rib, const QuadMesh& quads, const TJunctionFrame& frame);
 
-// The plate's rectangle with the foot's columns and rows, quads outside it as long as the foot's mean column
+// The plate's rectangle with the foot's columns, rows and nodes, quads outside it as long as the foot's mean column
 // spacing, all scaled by `unit` (the plate piece's CadSolid::unit). [in] frame, foot, unit.
 Footprint footprintOf(const TJunctionFrame& frame, const FootGrid& foot, double unit);
 

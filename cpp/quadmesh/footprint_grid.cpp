@@ -50,6 +50,9 @@ FootprintGrid footprintGrid(const Footprint& f) {
   for (std::size_t r = 0; r < f.rows.size(); ++r)
     for (std::size_t c = 0; c < f.columns.size(); ++c)
       g.strip[r][c] = (firstV + static_cast<int>(r)) * nu + firstU + static_cast<int>(c);
+  for (std::size_t r = 0; r < f.feet.size(); ++r)
+    for (std::size_t c = 0; c < f.feet[r].size(); ++c)
+      g.quads.nodes[g.strip[r][c]] = f.origin + f.feet[r][c].x() * f.u + f.feet[r][c].y() * f.v;
   return g;
 }
 

@@ -4,48 +4,25 @@
 // along them), two ribs, and on copies scaled by 1e-3 and 1e3.
 #include <gtest/gtest.h>
 
-#include <BRepAlgoAPI_Fuse.hxx>
-#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepGProp.hxx>
-#include <BRepPrimAPI_MakeBox.hxx>
 #include <GProp_GProps.hxx>
-#include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
-#include <gp_Trsf.hxx>
 
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
 #include "geometry/junction_cut.hpp"
+#include "test_boxes.hpp"
 
 using namespace hexlayer;
+using hexlayer::test_boxes::Box;
+using hexlayer::test_boxes::boxes;
 
 namespace {
-
-struct Box {
-  double x0, y0, z0, dx, dy, dz;
-  double volume() const { return dx * dy * dz; }
-};
-
-// The union of boxes (faces unified, as a CAD system models a plate with ribs), scaled by s.
-TopoDS_Solid boxes(const std::vector<Box>& parts, double s) {
-  TopoDS_Shape all =
-      BRepPrimAPI_MakeBox(gp_Pnt(parts[0].x0, parts[0].y0, parts[0].z0), parts[0].dx, parts[0].dy, parts[0].dz).Shape();
-  for (std::size_t i = 1; i < parts.size(); ++i) {
-    const Box& b = parts[i];
-    all = BRepAlgoAPI_Fuse(all, BRepPrimAPI_MakeBox(gp_Pnt(b.x0, b.y0, b.z0), b.dx, b.dy, b.dz).Shape()).Shape();
-  }
-  ShapeUpgrade_UnifySameDomain unify(all);
-  unify.Build();
-  gp_Trsf scale;
-  scale.SetScale(gp_Pnt(0, 0, 0), s);
-  TopExp_Explorer solid(BRepBuilderAPI_Transform(unify.Shape(), scale, true).Shape(), TopAbs_SOLID);
-  return TopoDS::Solid(solid.Current());
-}
 
 double areaOf(const TopoDS_Shape& face) {
   GProp_GProps props;
@@ -65,8 +42,10 @@ void expectFaceOrigins(const CadSolid& cad, const JunctionCut& cut) {
     ASSERT_EQ(cut.faceOrigin[p].size(), static_cast<std::size_t>(faces.Extent()));
     for (int f = 1; f <= faces.Extent(); ++f) {
       const int origin = cut.faceOrigin[p][f - 1];
-      if (origin < 0) ++noOrigin;
-      else area[origin] += areaOf(faces(f));
+      if (origin < 0)
+        ++noOrigin;
+      else
+        area[origin] += areaOf(faces(f));
     }
   }
   EXPECT_EQ(noOrigin, 2 * cut.feet.size());
