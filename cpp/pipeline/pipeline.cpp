@@ -142,12 +142,15 @@ std::string describeSheet(const CadSolid& cad, const Sheet& s) {
 // meshing could not do with them.
 Error junctionRefusal(const CadSolid& cad, const std::vector<Sheet>& sheets, const std::string& why) {
   std::ostringstream msg;
-  msg << "T-junction: " << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
-      << "chordal surface would be non-manifold, which this method does not mesh: " << describeSheet(cad, sheets[1]);
+  const std::string prefix = "T-junction: ";
+  msg << prefix << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
+      << "chordal surface would be non-manifold, which this method does not mesh";
+  if (!why.empty())
+    msg << " (junction meshing: " << (why.rfind(prefix, 0) == 0 ? why.substr(prefix.size()) : why) << ")";
+  msg << ": " << describeSheet(cad, sheets[1]);
   for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s)
     msg << ", " << describeSheet(cad, sheets[s]);
   if (sheets.size() > 4) msg << ", ...";
-  if (!why.empty()) msg << " (junction meshing: " << why << ")";
   msg << "; --drop-junctions meshes the main sheet without them";
   return geometryError(msg.str());
 }
@@ -405,7 +408,7 @@ void placeFootNodes(HexMesh& mesh, const CadSolid& cad, const std::vector<int>& 
 MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
                          const MeshOptions& o, MeshResult& result, StageClock& clock) {
   if (sheets.size() != 2) throw junctionRefusal(cad, sheets, "");
-  if (o.order != 1 || o.shell) throw junctionRefusal(cad, sheets, "order 1 and no shell only, so far");
+  if (o.order != 1 || o.shell) throw junctionRefusal(cad, sheets, "order 2 and the shell are not meshed at junctions yet");
   TJunctionPieces t;
   std::vector<int> shared;
   try {
@@ -422,6 +425,7 @@ MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std:
   const std::size_t facesSplit = r.facesSplit;
   r = std::move(t.plate.report);  // the plate's stages' numbers stand for the part's, the mesh's are measured again
   r.stages = std::move(stages), r.facesSplit = facesSplit, r.thickness = sides.thickness, r.faces = countFaces(sides);
+  r.smallFeatures = findSmallFeatures(cad, sides, r.size);  // the part's faces, not the pieces' (a foot is none)
   toCutFaces(t.rib.mesh, t.cut.faceOrigin[1]);
   toCutFaces(t.plate.mesh, t.cut.faceOrigin[0]);
   result.mesh = std::move(t.rib.mesh);  // the rib first: its node ids stay
