@@ -408,7 +408,8 @@ void placeFootNodes(HexMesh& mesh, const CadSolid& cad, const std::vector<int>& 
 MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
                          const MeshOptions& o, MeshResult& result, StageClock& clock) {
   if (sheets.size() != 2) throw junctionRefusal(cad, sheets, "");
-  if (o.order != 1 || o.shell) throw junctionRefusal(cad, sheets, "order 2 and the shell are not meshed at junctions yet");
+  if (o.order != 1 || o.shell)
+    throw junctionRefusal(cad, sheets, "order 2 and the shell are not meshed at junctions yet");
   TJunctionPieces t;
   std::vector<int> shared;
   try {
