@@ -1,5 +1,7 @@
 #include "pipeline/pipeline.hpp"
 
+#include <Standard_Failure.hxx>
+
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -419,6 +421,8 @@ MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std:
   } catch (const Error& e) {
     if (e.code() == ExitCode::BadUsage) throw;
     throw junctionRefusal(cad, sheets, e.what());
+  } catch (const Standard_Failure& e) {  // OpenCASCADE's exceptions are not std::exceptions
+    throw junctionRefusal(cad, sheets, std::string("OpenCASCADE: ") + e.GetMessageString());
   }
   MeshReport& r = result.report;
   std::map<std::string, StageTime> stages = std::move(r.stages);
