@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -78,6 +79,30 @@ Vec3 footNormal(const JunctionCut& cut) {
   BRepGProp::SurfaceProperties(cut.feet.front().face, face);
   BRepGProp::VolumeProperties(cut.pieces.front(), plate);
   return (toVec(face.CentreOfMass().XYZ()) - toVec(plate.CentreOfMass().XYZ())).dot(n) > 0 ? n : Vec3(-n);
+}
+
+// 20-node hexes: the plate's mid-edge node of every edge whose corners are both rib nodes is the rib's mid-edge node
+// of that edge. [in] plate, rib; [in,out] shared: footNodesShared's corners, the mid-edge nodes added.
+void shareMidEdgeNodes(const HexMesh& plate, const HexMesh& rib, std::vector<int>& shared) {
+  if (!plate.quadratic()) return;
+  std::map<std::pair<int, int>, int> ribEdges;  // the rib's edges on the foot: their corners -> mid-edge node
+  std::vector<char> onFoot(rib.nodes.size(), 0);
+  for (int n : shared)
+    if (n >= 0) onFoot[n] = 1;
+  for (std::size_t h = 0; h < rib.hexes.size(); ++h)
+    for (std::size_t e = 0; e < kHexEdges.size(); ++e) {
+      const int a = rib.hexes[h][kHexEdges[e][0]], b = rib.hexes[h][kHexEdges[e][1]];
+      if (onFoot[a] && onFoot[b]) ribEdges[std::minmax(a, b)] = rib.midEdges[h][e];
+    }
+  for (std::size_t h = 0; h < plate.hexes.size(); ++h)
+    for (std::size_t e = 0; e < kHexEdges.size(); ++e) {
+      const int a = shared[plate.hexes[h][kHexEdges[e][0]]], b = shared[plate.hexes[h][kHexEdges[e][1]]];
+      if (a < 0 || b < 0) continue;
+      const auto at = ribEdges.find(std::minmax(a, b));
+      if (at == ribEdges.end())
+        throw geometryError("T-junction: a plate's edge on the rib's foot is none of the rib's");
+      shared[plate.midEdges[h][e]] = at->second;
+    }
 }
 
 }  // namespace
@@ -168,6 +193,7 @@ std::vector<int> footNodesShared(const HexMesh& plate, const std::vector<std::ve
       }
       shared[end] = foot.nodes[i][j];
     }
+  shareMidEdgeNodes(plate, rib, shared);
   return shared;
 }
 

@@ -49,9 +49,11 @@ FootGrid footGrid(const HexMesh& rib, const QuadMesh& quads, const TJunctionFram
 Footprint footprintOf(const TJunctionFrame& frame, const FootGrid& foot, double unit);
 
 // Per node of the plate's hexes, the rib's node it is, or -1: for every foot node (i, j) the end of the sweep
-// column of strip[i][j] (footprintGrid's) nearer to it. [in] plate: swept from the footprint grid, as many layers
-// as the rib; [in] strip; [in] rib, foot; [in] tolerance: how far such an end may be from its foot node.
-// Throws geometryError with the distance if one is farther (the plate's walls do not meet the rib's foot there).
+// column of strip[i][j] (footprintGrid's) nearer to it, and for 20-node hexes the mid-edge node of every plate
+// edge between two of them the rib's mid-edge node of that edge. [in] plate: swept from the footprint grid, as many
+// layers as the rib, of the same order; [in] strip; [in] rib, foot; [in] tolerance: how far such an end may be from
+// its foot node. Throws geometryError with the distance if one is farther (the plate's walls do not meet the rib's
+// foot there), or if an edge on the foot is not a rib's edge.
 std::vector<int> footNodesShared(const HexMesh& plate, const std::vector<std::vector<int>>& strip, const HexMesh& rib,
                                  const FootGrid& foot, double tolerance);
 

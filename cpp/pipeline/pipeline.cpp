@@ -385,9 +385,16 @@ TJunctionPieces meshTPieces(const CadSolid& cad, const WallSides& sides, const s
 }
 
 // The cut solid's face of every node put on a piece's face (-1: on a foot, or none). [in,out] mesh: a piece's
-// hexes, nodeFace the piece's faces; [in] origin: JunctionCut::faceOrigin of the piece.
-void toCutFaces(HexMesh& mesh, const std::vector<int>& origin) {
-  for (int& f : mesh.nodeFace) f = f >= 0 ? origin[f] : -1;
+// hexes, nodeFace the piece's faces; [in] origin: JunctionCut::faceOrigin of the piece. Returns the nodes that were
+// on a foot.
+std::vector<int> toCutFaces(HexMesh& mesh, const std::vector<int>& origin) {
+  std::vector<int> onFoot;
+  for (std::size_t n = 0; n < mesh.nodeFace.size(); ++n) {
+    int& f = mesh.nodeFace[n];
+    if (f >= 0 && origin[f] < 0) onFoot.push_back(static_cast<int>(n));
+    f = f >= 0 ? origin[f] : -1;
+  }
+  return onFoot;
 }
 
 // The foot's nodes (no CAD face: the foot is none) on the CAD face nearest to each, so that those on the boundary
@@ -410,8 +417,7 @@ void placeFootNodes(HexMesh& mesh, const CadSolid& cad, const std::vector<int>& 
 MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
                          const MeshOptions& o, MeshResult& result, StageClock& clock) {
   if (sheets.size() != 2) throw junctionRefusal(cad, sheets, "");
-  if (o.order != 1 || o.shell)
-    throw junctionRefusal(cad, sheets, "order 2 and the shell are not meshed at junctions yet");
+  if (o.shell) throw junctionRefusal(cad, sheets, "the shell is not made at junctions yet");
   TJunctionPieces t;
   std::vector<int> shared;
   try {
@@ -431,13 +437,13 @@ MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std:
   r = std::move(t.plate.report);  // the plate's stages' numbers stand for the part's, the mesh's are measured again
   r.stages = std::move(stages), r.facesSplit = facesSplit, r.thickness = sides.thickness, r.faces = countFaces(sides);
   r.smallFeatures = findSmallFeatures(cad, sides, r.size);  // the part's faces, not the pieces' (a foot is none)
-  toCutFaces(t.rib.mesh, t.cut.faceOrigin[1]);
+  const std::vector<int> ribFoot = toCutFaces(t.rib.mesh, t.cut.faceOrigin[1]);  // its corner and mid-edge nodes
   toCutFaces(t.plate.mesh, t.cut.faceOrigin[0]);
   result.mesh = std::move(t.rib.mesh);  // the rib first: its node ids stay
   joinHexMesh(result.mesh, t.plate.mesh, shared);
   std::vector<int> foot;
   for (const std::vector<int>& row : t.foot.nodes) foot.insert(foot.end(), row.begin(), row.end());
-  placeFootNodes(result.mesh, cad, foot);
+  placeFootNodes(result.mesh, cad, ribFoot);
   const WallProjector walls(cad, sides);
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   appendStages(result, t.rib);

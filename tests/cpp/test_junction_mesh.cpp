@@ -1,7 +1,7 @@
 // The T junction's steps (pipeline/junction_mesh.hpp): the frame of a rib on a flat rectangular plate, the rib's
 // foot grid from its hexes, the plate's footprint, the plate's nodes that are the rib's foot nodes, the junction
-// hexes. Run on a rib across a plate and one inside it, at 2 and 3 layers, on copies scaled by 1e-3 and 1e3; a
-// boss and a rib on an L-shaped plate are refused.
+// hexes. Run on a rib across a plate (also at order 2) and one inside it, at 2 and 3 layers, on copies scaled by 1e-3
+// and 1e3; a boss and a rib on an L-shaped plate are refused.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,7 +42,7 @@ Cut cutOf(const TopoDS_Solid& solid) {
 // under every foot node (within 1e-4 of the plate: its grid nodes under the foot nodes, its sweep lines meeting the
 // wall), which the junction hexes
 // (the rib's first row and the plate's under the foot) hold.
-void expectT(double x0, double x1, int layers) {
+void expectT(double x0, double x1, int layers, int order = 1) {
   for (double s : {1.0, 1e-3, 1e3}) {
     SCOPED_TRACE("x " + std::to_string(s) + ", " + std::to_string(layers) + " layers");
     const Cut c = cutOf(boxes({{0, 0, 0, 60, 40, 2}, {x0, 19, 2, x1 - x0, 2, 12}}, s));
@@ -56,7 +56,7 @@ void expectT(double x0, double x1, int layers) {
     EXPECT_NEAR(t.footW, 2 * k, tolerance);
     EXPECT_NEAR(t.plate.origin.z(), k, tolerance);
     MeshOptions o;
-    o.layers = layers;
+    o.layers = layers, o.order = order;
     const MeshResult rib = meshSolid(c.cut.pieces[1], o);
     const FootGrid foot = footGrid(rib.mesh, rib.quadMesh, t);
     ASSERT_EQ(foot.rows.size(), static_cast<std::size_t>(layers + 1));
@@ -77,7 +77,9 @@ void expectT(double x0, double x1, int layers) {
       stage.quads = grid.quads;
     });
     const std::vector<int> shared = footNodesShared(plate.mesh, grid.strip, rib.mesh, foot, 1e-4 * k);
-    const std::size_t feet = foot.rows.size() * foot.columns.size();
+    const std::size_t rows = foot.rows.size(), columns = foot.columns.size();
+    // The foot's corners, and at order 2 the mid-edge nodes of its edges along and across.
+    const std::size_t feet = rows * columns + (order == 2 ? rows * (columns - 1) + (rows - 1) * columns : 0);
     EXPECT_EQ(static_cast<std::size_t>(std::count_if(shared.begin(), shared.end(), [](int n) { return n >= 0; })),
               feet);
     HexMesh joined = rib.mesh;
@@ -111,6 +113,9 @@ void expectRefused(const TopoDS_Solid& solid, const std::string& why) {
 TEST(JunctionMesh, RibAcrossAPlate) { expectT(0, 60, 2); }
 
 TEST(JunctionMesh, RibInsideAPlateThreeLayers) { expectT(10, 50, 3); }
+
+// 20-node hexes: the plate's mid-edge nodes on the foot are the rib's too.
+TEST(JunctionMesh, RibAcrossAPlateOrderTwo) { expectT(0, 60, 2, 2); }
 
 // A boss (its walls cylinders) and a rib on an L-shaped plate are not this T.
 TEST(JunctionMesh, OtherJunctionsAreRefused) {

@@ -1,10 +1,12 @@
 """Issue 18, first step: a straight rib standing on a flat plate (a T junction) meshed all-hex and conformal by
 default, no flag: the junction samples plate_rib (rim to rim), plate_rib_thin (the rib half the plate's thickness),
 plate_rib_thick (1.5 x), plate_rib_split (faces the boolean left split) and plate_rib_inside (the rib ending
-inside the plate), with 2 and 3 layers.
+inside the plate), with 2 and 3 layers, and at order 2 (20-node hexes) with 2 layers.
 
 Checked on the written .inp with tools of their own, not the mesher's report:
-- every element an 8-node hex of positive volume;
+- every element an 8-node hex (20-node at order 2) of positive volume;
+- order 2: one mid-edge node per edge, shared by every hex around it, at the edge's middle (the part's edges and
+  walls are straight and flat);
 - conformal and watertight: no two nodes within 1e-9 x the part's diagonal, no hex face used by more than two
   hexes, every edge of the boundary quads in exactly two of them (a closed surface), the boundary quads' area the
   CAD surface's (Gmsh's), within 1 % (a rib's hexes not joined to the plate's leave the foot's faces on the
@@ -33,10 +35,10 @@ from inp import hex_arrays, read_inp, read_surfaces
 from test_junction_samples import readme_table, samples_dir
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from hex_geometry import HEX_FACES, boundary_quads, hex_scaled_jacobians, hex_volumes  # noqa: E402
+from hex_geometry import HEX_EDGES, HEX_FACES, boundary_quads, hex_scaled_jacobians, hex_volumes  # noqa: E402
 
 PARTS = ("plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside")
-LAYERS = (2, 3)
+RUNS = ((2, 1), (3, 1), (2, 2))  # (layers, order)
 MIN_SJ, MEAN_SJ, JUNCTION_MEAN_SJ = 0.2, 0.9, 0.8
 VOLUME_TOL, AREA_TOL = 0.02, 0.01
 DUPLICATE, ON_FACE = 1e-9, 1e-6  # x the part's diagonal
@@ -70,17 +72,30 @@ class JunctionMeshing(unittest.TestCase):
     def tearDownClass(cls):
         cls.tmp.cleanup()
 
-    def mesh(self, part, layers):
-        out = os.path.join(self.tmp.name, f"{part}_{layers}")
+    def mesh(self, part, layers, order):
+        out = os.path.join(self.tmp.name, f"{part}_{layers}_{order}")
         done = subprocess.run([harness.args.hexlayer, "mesh", os.path.join(samples_dir(), part + ".step"),
-                               "-o", out + ".inp", "--report", out + ".json", "--layers", str(layers), "--quiet"],
+                               "-o", out + ".inp", "--report", out + ".json", "--layers", str(layers),
+                               "--order", str(order), "--quiet"],
                               capture_output=True, text=True, timeout=600)
         self.assertEqual(done.returncode, 0, done.stderr[-2000:])
         with open(out + ".json", encoding="utf-8") as fh:
             return out + ".inp", json.load(fh)
 
-    def check_hexes(self, x, hexes, elements, part):
-        self.assertTrue(all(len(nodes) == 8 for _, nodes in elements), "8-node hexes only")
+    def check_mid_edge_nodes(self, x, elements, diagonal):
+        """One mid-edge node per edge (corner pair), at its middle."""
+        mid = {}
+        for row in elements:
+            for k, (a, b) in enumerate(HEX_EDGES):
+                edge = (min(row[a], row[b]), max(row[a], row[b]))
+                self.assertEqual(mid.setdefault(edge, row[8 + k]), row[8 + k], "an edge with two mid-edge nodes")
+        self.assertEqual(len(set(mid.values())), len(mid), "a mid-edge node on two edges")
+        edges, nodes = np.array(list(mid)), np.array(list(mid.values()))
+        off = np.linalg.norm(x[nodes] - 0.5 * (x[edges[:, 0]] + x[edges[:, 1]]), axis=1).max()
+        self.assertLessEqual(off, ON_FACE * diagonal, "a mid-edge node off its edge's middle")
+
+    def check_hexes(self, x, hexes, elements, part, order):
+        self.assertTrue(all(len(nodes) == 12 * order - 4 for _, nodes in elements), f"hexes of order {order} only")
         self.assertGreater(hex_volumes(x, hexes).min(), 0, "a hex of zero or negative volume")
         sj = hex_scaled_jacobians(x, hexes)
         self.assertGreaterEqual(sj.min(), MIN_SJ)
@@ -137,18 +152,21 @@ class JunctionMeshing(unittest.TestCase):
 
     def test_ribs_on_plates(self):
         for part in PARTS:
-            for layers in LAYERS:
-                with self.subTest(part=part, layers=layers):
+            for layers, order in RUNS:
+                with self.subTest(part=part, layers=layers, order=order):
                     step = os.path.join(samples_dir(), part + ".step")
-                    path, report = self.mesh(part, layers)
+                    path, report = self.mesh(part, layers, order)
                     nodes, elements, sets = read_inp(path)
-                    x, hexes, index = hex_arrays(nodes, elements)
+                    x, rows, index = hex_arrays(nodes, elements)
+                    hexes = rows[:, :8]
                     diagonal = float(np.linalg.norm(x.max(axis=0) - x.min(axis=0)))
-                    sj, volume = self.check_hexes(x, hexes, elements, part)
+                    sj, volume = self.check_hexes(x, hexes, elements, part, order)
+                    if order == 2:
+                        self.check_mid_edge_nodes(x, rows, diagonal)
                     quads = self.check_conformal(x, hexes, step, diagonal)
                     self.check_groups(path, x, index, sets, hexes, quads, step, diagonal)
                     junction = self.check_report(report)
-                    print(f"{part} {layers} layers: {len(hexes)} hexes, scaled Jacobian min {sj.min():.3f} avg "
+                    print(f"{part} {layers} layers, order {order}: {len(hexes)} hexes, scaled Jacobian min {sj.min():.3f} avg "
                           f"{sj.mean():.3f}, volume {100 * (volume / self.volumes[part] - 1):+.2e} %, junction "
                           f"{junction['hexes']} hexes min {junction['scaled_jacobian']['min']:.3f} avg "
                           f"{junction['scaled_jacobian']['avg']:.3f}")
