@@ -435,6 +435,8 @@ MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std:
   stages["junction_rib"] = pieceTime(t.rib.report), stages["junction_plate"] = pieceTime(t.plate.report);
   const std::size_t facesSplit = r.facesSplit;
   r = std::move(t.plate.report);  // the plate's stages' numbers stand for the part's, the mesh's are measured again
+  r.bubbles += t.rib.report.bubbles, r.tetsKept += t.rib.report.tetsKept;  // the counts of both pieces
+  r.quadMesh.quads += t.rib.report.quadMesh.quads, r.quadMesh.nodes += t.rib.report.quadMesh.nodes;
   r.stages = std::move(stages), r.facesSplit = facesSplit, r.thickness = sides.thickness, r.faces = countFaces(sides);
   r.smallFeatures = findSmallFeatures(cad, sides, r.size);  // the part's faces, not the pieces' (a foot is none)
   const std::vector<int> ribFoot = toCutFaces(t.rib.mesh, t.cut.faceOrigin[1]);  // its corner and mid-edge nodes
