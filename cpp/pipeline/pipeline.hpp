@@ -22,7 +22,7 @@ struct MeshOptions {
   std::string sizing = "adaptive";  // "adaptive" or "uniform" (§6.1: radius function and curvature)
   double aspect = 0;                // in-plane quad size / layer thickness; 0 = off (size from --size or the wall)
   double minSize = 0, maxSize = 0;  // bounds of the adaptive size; 0 = a quarter and 4 x the size
-  bool dropJunctions = false;       // mesh the largest sheet and leave out ribs/bosses standing on it (else refuse)
+  bool dropJunctions = false;       // leave out ribs/bosses on the largest sheet (else a T is meshed, others refused)
   bool force = false;               // hand on a mesh that failed validation (report "validation") instead of throwing
   bool shell = false;               // also the mid-surface shell (MeshResult::shell, report "shell")
   // Each stage's start and end, how far a long stage is (the quad stage: its tries) and notes (may be empty).
