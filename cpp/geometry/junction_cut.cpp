@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <numeric>
 
 #include "core/error.hpp"
 #include "geometry/sheet_edges.hpp"
@@ -158,10 +159,29 @@ std::vector<TopoDS_Shape> imagesOf(BRepAlgoAPI_Splitter& split, const TopoDS_Sha
   return std::vector<TopoDS_Shape>(modified.cbegin(), modified.cend());
 }
 
+// Per piece, per face of it, the face of `cad` it is or is a piece of (-1: a foot).
+std::vector<std::vector<int>> faceOrigins(const CadSolid& cad, BRepAlgoAPI_Splitter& split,
+                                          const std::vector<TopoDS_Solid>& pieces) {
+  std::vector<std::vector<int>> origin;
+  for (const TopoDS_Solid& piece : pieces) {
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(piece, TopAbs_FACE, faces);
+    origin.emplace_back(faces.Extent(), -1);
+    for (int f = 1; f <= cad.faces.Extent(); ++f)
+      for (const TopoDS_Shape& image : imagesOf(split, cad.faces(f)))
+        if (const int at = faces.FindIndex(image); at > 0) origin.back()[at - 1] = f - 1;
+  }
+  return origin;
+}
+
 }  // namespace
 
 JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
-  if (sheets.size() < 2) return {{cad.solid}, {}};
+  if (sheets.size() < 2) {  // one piece: the solid, each face its own origin
+    std::vector<int> same(cad.faces.Extent());
+    std::iota(same.begin(), same.end(), 0);
+    return {{cad.solid}, {}, {same}};
+  }
   const Junctions junctions{cad, sides, sheets, sheetOfFaces(cad, sides, sheets), concaveEdges(cad)};
   JunctionCut cut;
   TopTools_ListOfShape arguments, tools;
@@ -208,6 +228,7 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
       throw geometryError("T-junction: the foot of the sheet at " + sheetPlace(cad, sheets[f.sheet]) +
                           " is not a face of both pieces after the cut");
   }
+  cut.faceOrigin = faceOrigins(cad, split, cut.pieces);
   return cut;
 }
 

@@ -26,6 +26,9 @@ struct Foot {
 struct JunctionCut {
   std::vector<TopoDS_Solid> pieces;  // per sheet given, in their order: pieces[0] is the base
   std::vector<Foot> feet;
+  // Per piece, per face of the piece (TopExp::MapShapes order, FreeCAD's numbering), the 0-based face of the cut
+  // solid it is or is a piece of; -1 for a foot (a face no CAD face gave).
+  std::vector<std::vector<int>> faceOrigin;
 };
 
 // [in] cad: the solid; [in] sides: its faces' sides (classifyWallSides); [in] sheets: findSheets's, the first
@@ -33,7 +36,7 @@ struct JunctionCut {
 // its faces, walls and their rim faces, and the base's walls bound its foot; a foot running to the wall's
 // edge is closed along it). The base's walls under a foot must be planar.
 // Throws geometryError naming the sheet's place if a foot is not on a plane, or the cut does not give one
-// piece per sheet.
+// piece per sheet. [out] (returned) the pieces, their feet and the origin of every piece's face.
 JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets);
 
 }  // namespace hexlayer

@@ -32,11 +32,16 @@ struct StageTime {
   double peakMemoryMiB = 0;
 };
 
-// A rib, boss or flange standing on the meshed sheet (a T-junction), listed in "junctions".
+// A rib, boss or flange standing on the meshed sheet (a T-junction), listed in "junctions": left out
+// (--drop-junctions), or meshed with the sheet (issue 18).
 struct JunctionRecord {
-  Vec3 at = Vec3::Zero();          // the centre of its faces
-  std::vector<std::string> faces;  // its input faces (FaceN), a split face's pieces once
-  double area = 0, volume = 0;     // of its faces; its estimated volume
+  Vec3 at = Vec3::Zero();                                // the centre of its faces
+  std::vector<std::string> faces;                        // its input faces (FaceN), a split face's pieces once
+  double area = 0, volume = 0;                           // of its faces; its estimated volume
+  bool meshed = false;                                   // meshed: the fields below are set
+  std::string kind;                                      // "T": a rib standing on a sheet
+  std::size_t hexes = 0;                                 // the junction hexes: those with a corner on the rib's foot
+  double minScaledJacobian = 0, meanScaledJacobian = 0;  // of the junction hexes
 };
 
 // How many faces of the part are top wall, bottom wall and lateral (rim) faces ("faces").
@@ -84,7 +89,7 @@ struct MeshMeasures {
 struct MeshReport {
   std::map<std::string, StageTime> stages;  // by stage name, each stage that ran
   std::size_t facesSplit = 0;               // faces partly wall, partly rim, split (mixed_faces.hpp)
-  std::vector<JunctionRecord> junctions;    // refused, or left out with --drop-junctions
+  std::vector<JunctionRecord> junctions;    // meshed, or left out with --drop-junctions
   double junctionsLeftOut = 0;              // their estimated volume
   double thickness = 0;                     // the wall thickness
   FaceCounts faces;

@@ -1,8 +1,11 @@
 #include "pipeline/pipeline.hpp"
 
+#include <Standard_Failure.hxx>
+
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "bubbles/bubble_packing.hpp"
@@ -12,13 +15,16 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "geometry/cad_faces.hpp"
+#include "geometry/junction_cut.hpp"
 #include "geometry/mixed_faces.hpp"
 #include "geometry/sheet_junctions.hpp"
 #include "geometry/wall_projector.hpp"
 #include "geometry/wall_sides.hpp"
+#include "pipeline/junction_mesh.hpp"
 #include "pipeline/mesh_report.hpp"
 #include "pipeline/shell_mesh.hpp"
 #include "pipeline/surface_groups.hpp"
+#include "quadmesh/footprint_grid.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_stage.hpp"
 #include "quality/quality.hpp"
@@ -134,8 +140,27 @@ std::string describeSheet(const CadSolid& cad, const Sheet& s) {
   return out.str();
 }
 
+// The refusal of sheets standing on the main sheet (sheets[1..]), naming them; `why` (may be empty): what junction
+// meshing could not do with them.
+Error junctionRefusal(const CadSolid& cad, const std::vector<Sheet>& sheets, const std::string& why) {
+  std::ostringstream msg;
+  const std::string prefix = "T-junction: ";
+  msg << prefix << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
+      << "chordal surface would be non-manifold, which this method does not mesh";
+  if (!why.empty())
+    msg << " (junction meshing: " << (why.rfind(prefix, 0) == 0 ? why.substr(prefix.size()) : why) << ")";
+  msg << ": " << describeSheet(cad, sheets[1]);
+  for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s)
+    msg << ", " << describeSheet(cad, sheets[s]);
+  if (sheets.size() > 4) msg << ", ...";
+  msg << "; --drop-junctions meshes the main sheet without them";
+  return geometryError(msg.str());
+}
+
 JunctionRecord junctionRecord(const CadSolid& cad, const Sheet& s) {
-  return {s.centre, faceNames(cad, s), s.area, s.volume};
+  JunctionRecord j;
+  j.at = s.centre, j.faces = faceNames(cad, s), j.area = s.area, j.volume = s.volume;
+  return j;
 }
 
 // Ribs, bosses and flanges standing on the sheet (T-junctions, where the chordal surface would be
@@ -159,14 +184,7 @@ double handleJunctions(const CadSolid& cad, WallSides& sides, bool drop, std::ve
     for (std::size_t s = 1; s < sheets.size(); ++s) leftOut += sheets[s].volume;
     return leftOut;
   }
-  std::ostringstream msg;
-  msg << "T-junction: " << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
-      << "chordal surface would be non-manifold, which this method does not mesh: " << describeSheet(cad, sheets[1]);
-  for (std::size_t s = 2; s < std::min<std::size_t>(sheets.size(), 4); ++s)
-    msg << ", " << describeSheet(cad, sheets[s]);
-  if (sheets.size() > 4) msg << ", ...";
-  msg << "; --drop-junctions meshes the main sheet without them";
-  throw geometryError(msg.str());
+  throw junctionRefusal(cad, sheets, "");
 }
 
 // Order 2: 20-node hexes whose wall mid-edge nodes lie on the CAD walls (π_t, π_b of §3).
@@ -312,6 +330,137 @@ void appendShell(ShellMesh& all, const ShellMesh& part) {
   appendSurfaceGroups(all.faces, part.faces, offset, 0);
 }
 
+// The mesh, its stages and report brought to the input's units, measured and checked against the CAD (not yet
+// enforced). [in,out] result; [in] cad, sides, o; [in] leftOut: the volume of junctions left out (pipeline units).
+void measureSolid(MeshResult& result, const CadSolid& cad, const WallSides& sides, const MeshOptions& o, double leftOut,
+                  StageClock& clock) {
+  MeshReport& r = result.report;
+  // From here on, the input's units.
+  toInputUnits(result, cad.unit);
+  const double unit3 = cad.unit * cad.unit * cad.unit;
+  const long cadEuler = eulerCharacteristic(cad);
+  r.mesh = clock.run("quality", [&] {
+    return measureSolidMesh(result.mesh, (cad.volume - leftOut) / unit3, cadEuler, result.scaledJacobian);
+  });
+  r.junctionsLeftOut = leftOut / unit3;  // the mesh's CAD volume is the part's without them
+  if (o.aspect > 0) r.aspectRatioHit = aspectHit(result.mesh, o.aspect);
+  result.nodeSets = surfaceNodeSets(result.mesh);
+  if (o.shell) r.shell = measureShell(result.shell, wallMeanArea(sides) / (cad.unit * cad.unit));
+}
+
+// A T junction's pieces (issue 18; junction_mesh.hpp), meshed: the rib, then the plate with its quads carrying
+// the rib's footprint.
+struct TJunctionPieces {
+  JunctionCut cut;
+  TJunctionFrame frame;
+  MeshResult rib, plate;
+  FootGrid foot;
+  std::vector<std::vector<int>> strip;  // footprintGrid's, of the plate's quad mesh
+};
+
+// The seconds and peak memory of a piece's stages, as one stage.
+StageTime pieceTime(const MeshReport& piece) {
+  StageTime t;
+  for (const auto& [name, stage] : piece.stages)
+    t.seconds += stage.seconds, t.peakMemoryMiB = std::max(t.peakMemoryMiB, stage.peakMemoryMiB);
+  return t;
+}
+
+// [in] cad, sides, sheets (the plate, then the rib); [in] o: in the pipeline's units. Throws the pieces' errors.
+TJunctionPieces meshTPieces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
+                            const MeshOptions& o, StageClock& clock) {
+  TJunctionPieces t;
+  t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });
+  t.frame = tJunctionFrame(cad, sheets, t.cut);
+  reportProgress(o.progress, progressNote("", "the rib"));
+  t.rib = meshSolid(t.cut.pieces[1], o);
+  t.foot = footGrid(t.rib.mesh, t.rib.quadMesh, t.frame);
+  reportProgress(o.progress, progressNote("", "the plate under it"));
+  t.plate = meshSolid(t.cut.pieces[0], o, [&](const CadSolid& piece, QuadStage& stage) {
+    FootprintGrid grid = footprintGrid(footprintOf(t.frame, t.foot, piece.unit));
+    stage.quads = std::move(grid.quads);
+    t.strip = std::move(grid.strip);
+  });
+  return t;
+}
+
+// The cut solid's face of every node put on a piece's face (-1: on a foot, or none). [in,out] mesh: a piece's
+// hexes, nodeFace the piece's faces; [in] origin: JunctionCut::faceOrigin of the piece. Returns the nodes that were
+// on a foot.
+std::vector<int> toCutFaces(HexMesh& mesh, const std::vector<int>& origin) {
+  std::vector<int> onFoot;
+  for (std::size_t n = 0; n < mesh.nodeFace.size(); ++n) {
+    int& f = mesh.nodeFace[n];
+    if (f >= 0 && origin[f] < 0) onFoot.push_back(static_cast<int>(n));
+    f = f >= 0 ? origin[f] : -1;
+  }
+  return onFoot;
+}
+
+// The foot's nodes (no CAD face: the foot is none) on the CAD face nearest to each, so that those on the boundary
+// (the foot's edges) are grouped with the faces they lie on. [in,out] mesh; [in] cad; [in] foot: node ids.
+void placeFootNodes(HexMesh& mesh, const CadSolid& cad, const std::vector<int>& foot) {
+  const CadFaces faces(cad);
+  CadFaceProbe probe(faces);
+  for (int n : foot) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int f = 0; f < faces.count(); ++f)
+      if (const double d = probe.distance(f, mesh.nodes[n]); d < best) best = d, mesh.nodeFace[n] = f;
+  }
+}
+
+// Issue 18, first step: a T junction (a straight planar rib on a flat rectangular plate, junction_mesh.hpp) meshed
+// all-hex and conformal: the rib's hexes and the plate's joined on the rib's foot nodes, grouped by the part's faces.
+// Any other junction, or a piece that does not mesh, is refused (geometryError naming it and why).
+// [in] cad, sides, sheets: the part's (findSheets, two or more); [in] o: in the pipeline's units; [in,out] result:
+// the stages so far (report), moved into the returned mesh; [in,out] clock: timing result's stages.
+MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
+                         const MeshOptions& o, MeshResult& result, StageClock& clock) {
+  if (sheets.size() != 2) throw junctionRefusal(cad, sheets, "");
+  if (o.shell) throw junctionRefusal(cad, sheets, "the shell is not made at junctions yet");
+  TJunctionPieces t;
+  std::vector<int> shared;
+  try {
+    t = meshTPieces(cad, sides, sheets, o, clock);
+    // A tenth of a plate layer: the plate's walls meet the foot where the rib's hexes end.
+    shared = footNodesShared(t.plate.mesh, t.strip, t.rib.mesh, t.foot, 0.1 * t.frame.thickness / o.layers);
+  } catch (const Error& e) {
+    if (e.code() == ExitCode::BadUsage) throw;
+    throw junctionRefusal(cad, sheets, e.what());
+  } catch (const Standard_Failure& e) {  // OpenCASCADE's exceptions are not std::exceptions
+    throw junctionRefusal(cad, sheets, std::string("OpenCASCADE: ") + e.GetMessageString());
+  }
+  MeshReport& r = result.report;
+  std::map<std::string, StageTime> stages = std::move(r.stages);
+  stages["junction_rib"] = pieceTime(t.rib.report), stages["junction_plate"] = pieceTime(t.plate.report);
+  const std::size_t facesSplit = r.facesSplit;
+  r = std::move(t.plate.report);  // the plate's stages' numbers stand for the part's, the mesh's are measured again
+  r.bubbles += t.rib.report.bubbles, r.tetsKept += t.rib.report.tetsKept;  // the counts of both pieces
+  r.quadMesh.quads += t.rib.report.quadMesh.quads, r.quadMesh.nodes += t.rib.report.quadMesh.nodes;
+  r.stages = std::move(stages), r.facesSplit = facesSplit, r.thickness = sides.thickness, r.faces = countFaces(sides);
+  r.smallFeatures = findSmallFeatures(cad, sides, r.size);  // the part's faces, not the pieces' (a foot is none)
+  const std::vector<int> ribFoot = toCutFaces(t.rib.mesh, t.cut.faceOrigin[1]);  // its corner and mid-edge nodes
+  toCutFaces(t.plate.mesh, t.cut.faceOrigin[0]);
+  result.mesh = std::move(t.rib.mesh);  // the rib first: its node ids stay
+  joinHexMesh(result.mesh, t.plate.mesh, shared);
+  std::vector<int> foot;
+  for (const std::vector<int>& row : t.foot.nodes) foot.insert(foot.end(), row.begin(), row.end());
+  placeFootNodes(result.mesh, cad, ribFoot);
+  const WallProjector walls(cad, sides);
+  result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
+  appendStages(result, t.rib);
+  appendStages(result, t.plate);
+  measureSolid(result, cad, sides, o, 0, clock);
+  JunctionRecord j = junctionRecord(cad, sheets[1]);
+  const JunctionHexes hexes = junctionHexes(result.mesh, result.scaledJacobian, foot);
+  j.at /= cad.unit, j.area /= cad.unit * cad.unit, j.volume /= cad.unit * cad.unit * cad.unit;  // as toInputUnits
+  j.kind = "T", j.meshed = true, j.hexes = hexes.hexes;
+  j.minScaledJacobian = hexes.minScaledJacobian, j.meanScaledJacobian = hexes.meanScaledJacobian;
+  r.junctions = {j};
+  enforceValidation(r.mesh, o);
+  return std::move(result);
+}
+
 }  // namespace
 
 void validateOptions(const MeshOptions& o) {
@@ -332,7 +481,9 @@ void validateOptions(const MeshOptions& o) {
     throw usageError("--min-size and --max-size must be lengths with --min-size <= --max-size");
 }
 
-MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
+MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) { return meshSolid(solid, given, {}); }
+
+MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const QuadEdit& edit) {
   validateOptions(given);
   MeshResult result;
   MeshReport& r = result.report;
@@ -342,6 +493,9 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   const MeshOptions o = inPipelineUnits(given, cad.unit);
   WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
+  if (!o.dropJunctions && sides.ownSideFaces.empty())
+    if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1)
+      return meshTJunction(cad, sides, sheets, o, result, clock);
   const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r.junctions);
   r.thickness = sides.thickness;
   r.faces = countFaces(sides);
@@ -367,6 +521,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
   qo.knifeEdges = !sides.knifeEdges.empty(), qo.progress = o.progress;
   qo.tryBudget = o.quadTryBudget, qo.stageBudget = o.quadStageBudget;
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
+  if (edit) edit(cad, stage);
   const QuadMesh& quads = stage.quads;
   r.chordal.fairingIterations = stage.fairingIterations;
   r.chordal.knifeFacetsDropped = stage.knifeFacets;
@@ -386,17 +541,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) {
     result.shell = clock.run("shell", [&] { return midSurfaceShell(result.mesh, quads, result.surfaceGroups); });
   result.chordalSurface = std::move(stage.chordal);
   result.quadMesh = std::move(stage.quads);
-  // From here on, the input's units.
-  toInputUnits(result, cad.unit);
-  const double unit3 = cad.unit * cad.unit * cad.unit;
-  const long cadEuler = eulerCharacteristic(cad);
-  r.mesh = clock.run("quality", [&] {
-    return measureSolidMesh(result.mesh, (cad.volume - leftOut) / unit3, cadEuler, result.scaledJacobian);
-  });
-  r.junctionsLeftOut = leftOut / unit3;  // the mesh's CAD volume is the part's without them
-  if (o.aspect > 0) r.aspectRatioHit = aspectHit(result.mesh, o.aspect);
-  result.nodeSets = surfaceNodeSets(result.mesh);
-  if (o.shell) r.shell = measureShell(result.shell, wallMeanArea(sides) / (cad.unit * cad.unit));
+  measureSolid(result, cad, sides, o, leftOut, clock);
   enforceValidation(r.mesh, o);
   return result;
 }

@@ -11,6 +11,7 @@
 #include "geometry/cad_solid.hpp"
 #include "pipeline/mesh_report.hpp"
 #include "quadmesh/quad_mesh.hpp"
+#include "quadmesh/quad_stage.hpp"
 
 namespace hexlayer {
 
@@ -21,7 +22,7 @@ struct MeshOptions {
   std::string sizing = "adaptive";  // "adaptive" or "uniform" (§6.1: radius function and curvature)
   double aspect = 0;                // in-plane quad size / layer thickness; 0 = off (size from --size or the wall)
   double minSize = 0, maxSize = 0;  // bounds of the adaptive size; 0 = a quarter and 4 x the size
-  bool dropJunctions = false;       // mesh the largest sheet and leave out ribs/bosses standing on it (else refuse)
+  bool dropJunctions = false;       // leave out ribs/bosses on the largest sheet (else a T is meshed, others refused)
   bool force = false;               // hand on a mesh that failed validation (report "validation") instead of throwing
   bool shell = false;               // also the mid-surface shell (MeshResult::shell, report "shell")
   // Each stage's start and end, how far a long stage is (the quad stage: its tries) and notes (may be empty).
@@ -52,7 +53,16 @@ void validateOptions(const MeshOptions& options);
 // unless options.force, a failed check throws validationError naming the check and the place.
 MeshResult meshFile(const std::string& path, const MeshOptions& options);
 
-// Meshes one solid; validated like meshFile.
+// Meshes one solid; validated like meshFile. A part where one rib stands on a flat plate (a T junction, issue 18)
+// is cut at the rib's foot and its pieces meshed and joined (junction_mesh.hpp); other junctions are refused
+// (geometryError) unless options.dropJunctions.
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options);
+
+// Replaces the quads the quad stage made, before the sweep (a plate's quads carrying a rib's footprint, issue 18).
+// [in] cad: the solid as the stages see it (scaled by cad.unit); [in,out] stage: its quads replaced.
+using QuadEdit = std::function<void(const CadSolid& cad, QuadStage& stage)>;
+
+// meshSolid with the quad stage's quads replaced by `edit` (none: as made). [in] solid, options, edit.
+MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options, const QuadEdit& edit);
 
 }  // namespace hexlayer

@@ -123,8 +123,13 @@ nlohmann::json shell(const ShellRecord& s) {
 
 nlohmann::json junctions(const std::vector<JunctionRecord>& list) {
   nlohmann::json all = nlohmann::json::array();
-  for (const JunctionRecord& j : list)
-    all.push_back({{"at", point(j.at)}, {"faces", j.faces}, {"area", j.area}, {"volume", j.volume}});
+  for (const JunctionRecord& j : list) {
+    all.push_back(
+        {{"at", point(j.at)}, {"faces", j.faces}, {"area", j.area}, {"volume", j.volume}, {"meshed", j.meshed}});
+    if (!j.meshed) continue;
+    all.back()["kind"] = j.kind, all.back()["hexes"] = j.hexes;
+    all.back()["scaled_jacobian"] = {{"min", j.minScaledJacobian}, {"avg", j.meanScaledJacobian}};
+  }
   return all;
 }
 

@@ -52,3 +52,21 @@ TEST(Append, HexMeshesFollowOneAnother) {
   EXPECT_EQ(all.nodeOnRim.size(), 40u);
   EXPECT_EQ(all.layers, 1);
 }
+
+// A hex on top of another, joined on the first's top face: the second's bottom nodes are the first's top nodes
+// (same ids), its other nodes and their data follow, the shared ones keep the first's data.
+TEST(Append, JoinedMeshesShareTheirCommonNodes) {
+  HexMesh all = oneHex(1, false);
+  HexMesh top = oneHex(2, false);
+  for (Vec3& p : top.nodes) p.z() += 1;
+  const std::vector<int> shared{4, 5, 6, 7, -1, -1, -1, -1};
+  const std::vector<int> id = joinHexMesh(all, top, shared);
+  EXPECT_EQ(id, (std::vector<int>{4, 5, 6, 7, 8, 9, 10, 11}));
+  ASSERT_EQ(all.nodes.size(), 12u);
+  EXPECT_EQ(all.hexes[1], (std::array<int, 8>{4, 5, 6, 7, 8, 9, 10, 11}));
+  EXPECT_EQ(all.nodeFace[7], 1);
+  EXPECT_EQ(all.nodeFace[8], 2);
+  EXPECT_EQ(all.nodes[8].z(), 1);
+  EXPECT_EQ(all.nodeLayer.size(), 12u);
+  EXPECT_EQ(all.nodeOnRim.size(), 12u);
+}

@@ -4,45 +4,52 @@
 // along them), two ribs, and on copies scaled by 1e-3 and 1e3.
 #include <gtest/gtest.h>
 
-#include <BRepAlgoAPI_Fuse.hxx>
-#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepGProp.hxx>
-#include <BRepPrimAPI_MakeBox.hxx>
 #include <GProp_GProps.hxx>
-#include <ShapeUpgrade_UnifySameDomain.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
-#include <gp_Trsf.hxx>
 
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
 #include "geometry/junction_cut.hpp"
+#include "test_boxes.hpp"
 
 using namespace hexlayer;
+using hexlayer::test_boxes::Box;
+using hexlayer::test_boxes::boxes;
 
 namespace {
 
-struct Box {
-  double x0, y0, z0, dx, dy, dz;
-  double volume() const { return dx * dy * dz; }
-};
+double areaOf(const TopoDS_Shape& face) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(face, props);
+  return props.Mass();
+}
 
-// The union of boxes (faces unified, as a CAD system models a plate with ribs), scaled by s.
-TopoDS_Solid boxes(const std::vector<Box>& parts, double s) {
-  TopoDS_Shape all =
-      BRepPrimAPI_MakeBox(gp_Pnt(parts[0].x0, parts[0].y0, parts[0].z0), parts[0].dx, parts[0].dy, parts[0].dz).Shape();
-  for (std::size_t i = 1; i < parts.size(); ++i) {
-    const Box& b = parts[i];
-    all = BRepAlgoAPI_Fuse(all, BRepPrimAPI_MakeBox(gp_Pnt(b.x0, b.y0, b.z0), b.dx, b.dy, b.dz).Shape()).Shape();
+// Every face of the cut solid is a face of the pieces or is cut into faces of them (their areas adding up to its),
+// and only the feet (a face of two pieces each) have no origin.
+void expectFaceOrigins(const CadSolid& cad, const JunctionCut& cut) {
+  ASSERT_EQ(cut.faceOrigin.size(), cut.pieces.size());
+  std::vector<double> area(cad.faces.Extent(), 0);
+  std::size_t noOrigin = 0;
+  for (std::size_t p = 0; p < cut.pieces.size(); ++p) {
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(cut.pieces[p], TopAbs_FACE, faces);
+    ASSERT_EQ(cut.faceOrigin[p].size(), static_cast<std::size_t>(faces.Extent()));
+    for (int f = 1; f <= faces.Extent(); ++f) {
+      const int origin = cut.faceOrigin[p][f - 1];
+      if (origin < 0)
+        ++noOrigin;
+      else
+        area[origin] += areaOf(faces(f));
+    }
   }
-  ShapeUpgrade_UnifySameDomain unify(all);
-  unify.Build();
-  gp_Trsf scale;
-  scale.SetScale(gp_Pnt(0, 0, 0), s);
-  TopExp_Explorer solid(BRepBuilderAPI_Transform(unify.Shape(), scale, true).Shape(), TopAbs_SOLID);
-  return TopoDS::Solid(solid.Current());
+  EXPECT_EQ(noOrigin, 2 * cut.feet.size());
+  for (int f = 0; f < cad.faces.Extent(); ++f) EXPECT_NEAR(area[f] / areaOf(cad.faces(f + 1)), 1, 1e-9) << "face " << f;
 }
 
 double volumeOf(const TopoDS_Shape& shape) {
@@ -81,6 +88,7 @@ void expectCut(const std::vector<Box>& parts, double footArea) {
       EXPECT_TRUE(baseFaces.Contains(f.face) && standing.Contains(f.face)) << "a foot is a face of both pieces";
     }
     EXPECT_NEAR(area / (cad.unit * cad.unit) / (s * s) / footArea, 1, 1e-9);
+    expectFaceOrigins(cad, cut);
   }
 }
 
@@ -121,7 +129,19 @@ TEST(JunctionCut, JunctionSamplesOnPlanes) {
       EXPECT_TRUE(pieceSides.ownSideFaces.empty());
     }
     EXPECT_NEAR(volume / cad.volume, 1, 1e-9);
+    expectFaceOrigins(cad, cut);
   }
+}
+
+// A solid of one sheet is its own piece, each face its own origin.
+TEST(JunctionCut, OneSheetIsItsOwnPiece) {
+  const TopoDS_Solid solid = boxes({{0, 0, 0, 60, 40, 2}}, 1);
+  const CadSolid cad = prepareSolid(solid);
+  const WallSides sides = classifyWallSides(cad);
+  const JunctionCut cut = cutAtJunctions(cad, sides, findSheets(cad, sides));
+  ASSERT_EQ(cut.pieces.size(), 1u);
+  expectFaceOrigins(cad, cut);
+  for (int f = 0; f < cad.faces.Extent(); ++f) EXPECT_EQ(cut.faceOrigin[0][f], f);
 }
 
 // A rib on a curved wall is refused by name (the cut along a curved wall is not built yet).

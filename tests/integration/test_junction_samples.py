@@ -9,9 +9,10 @@ Checked for each part:
 (b) `hexlayer mesh` refuses it with exit 4 and a message naming the junction, and every place the message gives,
     "(x, y, z) [FaceN ...]", lies within the named faces' bounding box (Gmsh's; face tags in file order are FaceN)
     enlarged by the part's thickest wall; the two twins whose chordal surface does not branch (a rib flush with the
-    plate's edge is an L, a bore through the plate a collar) are meshed instead;
+    plate's edge is an L, a bore through the plate a collar) are meshed instead, and so are the straight ribs on a
+    flat rectangular plate (issue 18's first step; test_junction_meshing.py checks their meshes);
 (c) with --drop-junctions it is meshed, the junctions it left out listed in the report.
-(b) and (c) record what today's CLI does; they change when junctions are meshed (issue 18).
+(b) records what today's CLI does; it changes as more junctions are meshed (issue 18).
 
 Run by CTest as: /usr/bin/python3 test_junction_samples.py --hexlayer PATH --source DIR
 """
@@ -25,11 +26,14 @@ import unittest
 import harness
 
 REL_TOL = 1e-6
-# Today's CLI, before junctions are meshed (issue 18): every part is refused with exit 4 and a "T-junction" message
-# (or, from the wall classification, "... face a wall on its own side"), but these two, whose chordal surface is
-# 2-manifold: a sharp L (the rib flush with the plate's edge) and a collar (the bore through the plate, the plate
-# turned up round the hole). When junctions are meshed, (b) becomes "meshes with exit 0" for every part.
-MESHED_TODAY = {"plate_rib_rim", "plate_boss_collar"}
+# Today's CLI: every part is refused with exit 4 and a "T-junction" message (or, from the wall classification, "...
+# face a wall on its own side"), but these two, whose chordal surface is 2-manifold: a sharp L (the rib flush with
+# the plate's edge) and a collar (the bore through the plate, the plate turned up round the hole), and the junctions
+# meshed so far. When all junctions are meshed, (b) becomes "meshes with exit 0" for every part.
+MANIFOLD = {"plate_rib_rim", "plate_boss_collar"}
+# Junctions meshed by default since issue 18's first step: a straight planar rib on a flat rectangular plate.
+JUNCTIONS_MESHED = {"plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside"}
+MESHED_TODAY = MANIFOLD | JUNCTIONS_MESHED
 JUNCTION_WORDS = ("T-junction", "face a wall on its own side")
 # Today's CLI with --drop-junctions: every part meshed (exit 0), the main sheet without its ribs, bosses and
 # partitions; (c) changes when junctions are meshed by default (--drop-junctions stays an option).
@@ -111,6 +115,9 @@ class JunctionSamples(unittest.TestCase):
                 done = run(part, os.path.join(self.tmp.name, part))
                 if part in MESHED_TODAY:
                     self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+                    with open(os.path.join(self.tmp.name, part + ".json"), encoding="utf-8") as fh:
+                        junctions = json.load(fh)["junctions"]
+                    self.assertEqual([j["meshed"] for j in junctions], [True] * (part in JUNCTIONS_MESHED))
                     continue
                 self.assertEqual(done.returncode, 4, done.stderr[-2000:])
                 self.assertTrue(any(w in done.stderr for w in JUNCTION_WORDS), done.stderr[-2000:])
@@ -131,7 +138,8 @@ class JunctionSamples(unittest.TestCase):
                     report = json.load(fh)
                 self.assertTrue(report["validation"]["passed"])
                 # The junctions left out are listed (none on the two manifold twins).
-                self.assertEqual(bool(report["junctions"]), part not in MESHED_TODAY)
+                self.assertEqual(bool(report["junctions"]), part not in MANIFOLD)
+                self.assertFalse(any(j["meshed"] for j in report["junctions"]))
                 print(f"{part} --drop-junctions: {report['hexes']} hexes, scaled Jacobian min "
                       f"{report['scaled_jacobian']['min']:.3f} avg {report['scaled_jacobian']['avg']:.3f}, "
                       f"{len(report['junctions'])} junction(s) left out")

@@ -1,6 +1,6 @@
 """Issue 17: the report has one schema, docs/report.schema.json (JSON Schema 2020-12), which the README points
 to. Reports of parts that between them have every key (a plate with holes; a hat section at order 2 with
---aspect; a T-junction meshed with --drop-junctions; a file of two solids, with --shell) are validated against it with
+--aspect; a T-junction meshed with --drop-junctions and meshed with its rib (issue 18); a file of two solids, with --shell) are validated against it with
 python3-jsonschema; every key the schema describes appears in one of them (no stale entries), and a report with
 a key the schema does not know fails (the schema is closed: a new key must be documented there).
 
@@ -21,6 +21,7 @@ RUNS = {
     "plate_holes": ("Resources/samples/plate_holes.step", []),
     "hat_order2": ("Resources/samples/rims/hat_round_ends.step", ["--order", "2", "--aspect", "4"]),
     "t_junction": ("tests/data/robustness/t_junction.step", ["--drop-junctions"]),
+    "t_junction_meshed": ("tests/data/robustness/t_junction.step", []),  # the rib meshed with the plate
     "two_plates": ("tests/data/robustness/two_plates.step", ["--shell"]),  # its mid-surface shell too
 }
 

@@ -46,8 +46,11 @@ TABLE = [
     # a 30 x 20 x 15 box (which of its sides the mesher takes for the thickness is its own choice), a cube
     ("thick block", "data/thick_block.step", [], 4, f"over part size (diagonal) {math.hypot(30, 20, 15):.6g} = "),
     ("cube", "sample/thick_block.step", [], 4, f"= {1 / math.sqrt(3):.6g} (a thin section has at most 0.25)"),
-    ("rib (T-junction)", "data/t_junction.step", [], 4, "T-junction: 1 sheet(s) (rib, boss or flange) stand on the main sheet"),
-    ("rib: where", "data/t_junction.step", [], 4, RIB_CENTRE + " ["),  # its faces: test_rib_junction_names_its_walls
+    # a rib on the plate is meshed with it (issue 18), but its mid-surface shell is not made yet
+    ("rib (T-junction)", "data/t_junction.step", [], 0, f"Volume {60 * 40 * 2 + 60 * 2 * 12} vs CAD"),
+    ("rib, shell", "data/t_junction.step", ["--shell"], 4,
+     "T-junction: 1 sheet(s) (rib, boss or flange) stand on the main sheet"),
+    ("rib: where", "data/t_junction.step", ["--shell"], 4, RIB_CENTRE + " ["),  # test_rib_junction_names_its_walls
     ("rib left out", "data/t_junction.step", ["--drop-junctions"], 0, f"Volume {60 * 40 * 2} vs CAD {60 * 40 * 2}"),
     # several solids and small features: a valid mesh
     ("two solids", "data/two_plates.step", [], 0, "2 solids, each meshed on its own"),
@@ -147,7 +150,7 @@ class BadAndHardInputs(unittest.TestCase):
         its box, twice 60 x 12 mm^2), and the place it gives is their centre."""
         with tempfile.TemporaryDirectory() as tmp:
             step = resolve("data/t_junction.step", tmp)
-            done = self.run_row("data/t_junction.step", [], tmp)
+            done = self.run_row("data/t_junction.step", ["--shell"], tmp)  # refused (issue 18: no shell yet)
         named = junctions_named(done.stderr)
         self.assertEqual(len(named), 1, done.stderr)
         at, faces = named[0]

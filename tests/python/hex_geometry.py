@@ -31,6 +31,10 @@ def hex_scaled_jacobians(nodes, hexes):
     return worst
 
 
+# A hex's 12 edges as corner pairs, in the order of its mid-edge nodes 9-20 (CalculiX's C3D20).
+HEX_EDGES = ((0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7))
+
+
 # A hex's six faces (C3D8 corner order).
 HEX_FACES = ((0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
 

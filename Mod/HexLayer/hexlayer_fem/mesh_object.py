@@ -34,7 +34,8 @@ class MeshHexLayer(Stateless):
         add("App::PropertyInteger", "Order", "Element order: 2 = hexa20 (wall mid-edge nodes on the CAD walls), "
             "1 = hexa8 (written as C3D8: too stiff in bending, see Status)", 2)
         add("App::PropertyBool", "DropJunctions",
-            "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (else meshing refuses them)", False)
+            "Mesh the largest sheet and leave out ribs, bosses and flanges standing on it (else a straight rib on a "
+            "flat rectangular plate is meshed with it, the others are refused)", False)
         add("App::PropertyBool", "Force", "Keep a mesh that fails its validation (an inverted hex, a crack, the volume), "
             "with the failures in Status", False)
         add("App::PropertyString", "Status", "Summary of the last meshing, or why it failed", "")

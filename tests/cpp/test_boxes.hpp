@@ -1,0 +1,38 @@
+// Test parts made of boxes (header-only, no test of its own): a plate with ribs standing on it, as a CAD system
+// models it, shared by test_junction_cut.cpp and test_junction_mesh.cpp.
+#pragma once
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Solid.hxx>
+#include <gp_Trsf.hxx>
+
+#include <vector>
+
+namespace hexlayer::test_boxes {
+
+struct Box {
+  double x0, y0, z0, dx, dy, dz;
+  double volume() const { return dx * dy * dz; }
+};
+
+// The union of boxes (faces unified, as a CAD system models a plate with ribs), scaled by s.
+inline TopoDS_Solid boxes(const std::vector<Box>& parts, double s) {
+  TopoDS_Shape all =
+      BRepPrimAPI_MakeBox(gp_Pnt(parts[0].x0, parts[0].y0, parts[0].z0), parts[0].dx, parts[0].dy, parts[0].dz).Shape();
+  for (std::size_t i = 1; i < parts.size(); ++i) {
+    const Box& b = parts[i];
+    all = BRepAlgoAPI_Fuse(all, BRepPrimAPI_MakeBox(gp_Pnt(b.x0, b.y0, b.z0), b.dx, b.dy, b.dz).Shape()).Shape();
+  }
+  ShapeUpgrade_UnifySameDomain unify(all);
+  unify.Build();
+  gp_Trsf scale;
+  scale.SetScale(gp_Pnt(0, 0, 0), s);
+  TopExp_Explorer solid(BRepBuilderAPI_Transform(unify.Shape(), scale, true).Shape(), TopAbs_SOLID);
+  return TopoDS::Solid(solid.Current());
+}
+
+}  // namespace hexlayer::test_boxes

@@ -1,0 +1,176 @@
+"""Issue 18, first step: a straight rib standing on a flat plate (a T junction) meshed all-hex and conformal by
+default, no flag: the junction samples plate_rib (rim to rim), plate_rib_thin (the rib half the plate's thickness),
+plate_rib_thick (1.5 x), plate_rib_split (faces the boolean left split) and plate_rib_inside (the rib ending
+inside the plate), with 2 and 3 layers, and at order 2 (20-node hexes) with 2 layers.
+
+Checked on the written .inp with tools of their own, not the mesher's report:
+- every element an 8-node hex (20-node at order 2) of positive volume;
+- order 2: one mid-edge node per edge, shared by every hex around it, at the edge's middle (the part's edges and
+  walls are straight and flat);
+- conformal and watertight: no two nodes within 1e-9 x the part's diagonal, no hex face used by more than two
+  hexes, every edge of the boundary quads in exactly two of them (a closed surface), the boundary quads' area the
+  CAD surface's (Gmsh's), within 1 % (a rib's hexes not joined to the plate's leave the foot's faces on the
+  boundary, twice its area more) and their Euler characteristic the CAD surface's (Gmsh's triangulation);
+- the scaled Jacobian (at the corners, computed here) min >= 0.2 and mean >= 0.9;
+- the mesh volume within 2 % of the CAD volume (the samples README's);
+- every CAD face of the part (the rib's and the plate's) has its FACE<N> node set and element-face surface, every
+  boundary quad is in exactly one surface, and every node of FACE<N> lies within 1e-6 x the diagonal of face N
+  (Gmsh's closest point);
+and from the report: one junction, meshed, of kind "T", its hexes' scaled Jacobian mean >= 0.8 (the issue's bar).
+
+Run by CTest as: /usr/bin/python3 test_junction_meshing.py --hexlayer PATH --source DIR
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+import harness
+from cad import face_distances, opened, surface_euler_characteristic
+from inp import hex_arrays, read_inp, read_surfaces
+from test_junction_samples import readme_table, samples_dir
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from hex_geometry import HEX_EDGES, HEX_FACES, boundary_quads, hex_scaled_jacobians, hex_volumes  # noqa: E402
+
+PARTS = ("plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside")
+RUNS = ((2, 1), (3, 1), (2, 2))  # (layers, order)
+MIN_SJ, MEAN_SJ, JUNCTION_MEAN_SJ = 0.2, 0.9, 0.8
+VOLUME_TOL, AREA_TOL = 0.02, 0.01
+DUPLICATE, ON_FACE = 1e-9, 1e-6  # x the part's diagonal
+
+
+def quad_area(x, quads):
+    """Area of each quad (rows of 4 indices into x): half the norm of its diagonals' cross product."""
+    p = x[quads]
+    return 0.5 * np.linalg.norm(np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 1]), axis=1)
+
+
+def closest_pair(x):
+    """The smallest distance between two of the points x (N, 3)."""
+    order = np.argsort(x[:, 0])
+    s = x[order]
+    best = np.inf
+    for shift in range(1, len(s)):
+        if best <= 0 or shift > 64 and np.min(s[shift:, 0] - s[:-shift, 0]) > best:
+            break
+        best = min(best, float(np.min(np.linalg.norm(s[shift:] - s[:-shift], axis=1))))
+    return best
+
+
+class JunctionMeshing(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.volumes = {part: volume for part, (_, volume) in readme_table().items()}
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def mesh(self, part, layers, order):
+        out = os.path.join(self.tmp.name, f"{part}_{layers}_{order}")
+        done = subprocess.run([harness.args.hexlayer, "mesh", os.path.join(samples_dir(), part + ".step"),
+                               "-o", out + ".inp", "--report", out + ".json", "--layers", str(layers),
+                               "--order", str(order), "--quiet"],
+                              capture_output=True, text=True, timeout=600)
+        self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+        with open(out + ".json", encoding="utf-8") as fh:
+            return out + ".inp", json.load(fh)
+
+    def check_mid_edge_nodes(self, x, elements, diagonal):
+        """One mid-edge node per edge (corner pair), at its middle."""
+        mid = {}
+        for row in elements:
+            for k, (a, b) in enumerate(HEX_EDGES):
+                edge = (min(row[a], row[b]), max(row[a], row[b]))
+                self.assertEqual(mid.setdefault(edge, row[8 + k]), row[8 + k], "an edge with two mid-edge nodes")
+        self.assertEqual(len(set(mid.values())), len(mid), "a mid-edge node on two edges")
+        edges, nodes = np.array(list(mid)), np.array(list(mid.values()))
+        off = np.linalg.norm(x[nodes] - 0.5 * (x[edges[:, 0]] + x[edges[:, 1]]), axis=1).max()
+        self.assertLessEqual(off, ON_FACE * diagonal, "a mid-edge node off its edge's middle")
+
+    def check_hexes(self, x, hexes, elements, part, order):
+        self.assertTrue(all(len(nodes) == 12 * order - 4 for _, nodes in elements), f"hexes of order {order} only")
+        self.assertGreater(hex_volumes(x, hexes).min(), 0, "a hex of zero or negative volume")
+        sj = hex_scaled_jacobians(x, hexes)
+        self.assertGreaterEqual(sj.min(), MIN_SJ)
+        self.assertGreaterEqual(sj.mean(), MEAN_SJ)
+        volume = hex_volumes(x, hexes).sum()
+        self.assertLessEqual(abs(volume - self.volumes[part]) / self.volumes[part], VOLUME_TOL,
+                             f"volume {volume} vs CAD {self.volumes[part]}")
+        return sj, volume
+
+    def check_conformal(self, x, hexes, step, diagonal):
+        self.assertGreater(closest_pair(x), DUPLICATE * diagonal, "two nodes at one place")
+        faces = np.sort(hexes[:, HEX_FACES].reshape(-1, 4), axis=1)
+        _, uses = np.unique(faces, axis=0, return_counts=True)
+        self.assertLessEqual(uses.max(), 2, "a hex face shared by more than two hexes")
+        quads = boundary_quads(hexes)
+        edges = np.sort(np.stack([quads, np.roll(quads, -1, axis=1)], axis=2).reshape(-1, 2), axis=1)
+        _, edge_uses = np.unique(edges, axis=0, return_counts=True)
+        self.assertEqual(set(edge_uses.tolist()), {2}, "the boundary is not a closed surface")
+        with opened(step) as gmsh:
+            cad_area = sum(gmsh.model.occ.getMass(2, tag) for _, tag in gmsh.model.getEntities(2))
+        area = quad_area(x, quads).sum()
+        self.assertLessEqual(abs(area - cad_area) / cad_area, AREA_TOL, f"boundary area {area} vs CAD {cad_area}")
+        euler = len(np.unique(quads)) - len(np.unique(edges, axis=0)) + len(quads)
+        self.assertEqual(euler, surface_euler_characteristic(step, diagonal / 20))
+        return quads
+
+    def check_groups(self, path, x, index, sets, hexes, quads, step, diagonal):
+        surfaces = read_surfaces(path)
+        with opened(step) as gmsh:
+            cad_faces = [tag for _, tag in gmsh.model.getEntities(2)]
+            distances = face_distances(gmsh, x, index, sets)
+        for face in cad_faces:
+            self.assertTrue(sets.get(f"FACE{face}"), f"no nodes grouped on Face{face}")
+            self.assertTrue(surfaces.get(f"FACE{face}_S"), f"no element faces grouped on Face{face}")
+            self.assertLessEqual(distances[face], ON_FACE * diagonal, f"a node of FACE{face} is off Face{face}")
+        # Every boundary quad in exactly one surface (element ids are the .inp's, hexes' rows in order).
+        grouped = [np.sort(hexes[e - 1][list(HEX_FACES[s - 1])])
+                   for name, faces in surfaces.items() if name.startswith("FACE") for e, s in faces]
+        self.assertEqual(len(grouped), len(quads))
+        self.assertEqual(len(np.unique(np.array(grouped), axis=0)), len(quads))
+        self.assertTrue(np.array_equal(np.unique(np.array(grouped), axis=0), np.unique(np.sort(quads, axis=1), axis=0)))
+
+    def check_report(self, report):
+        self.assertTrue(report["validation"]["passed"], report["validation"])
+        self.assertEqual(len(report["junctions"]), 1)
+        junction = report["junctions"][0]
+        self.assertTrue(junction["meshed"])
+        self.assertEqual(junction["kind"], "T")
+        self.assertGreater(junction["hexes"], 0)
+        self.assertLess(junction["hexes"], report["hexes"])
+        self.assertGreaterEqual(junction["scaled_jacobian"]["min"], MIN_SJ)
+        self.assertGreaterEqual(junction["scaled_jacobian"]["avg"], JUNCTION_MEAN_SJ)
+        return junction
+
+    def test_ribs_on_plates(self):
+        for part in PARTS:
+            for layers, order in RUNS:
+                with self.subTest(part=part, layers=layers, order=order):
+                    step = os.path.join(samples_dir(), part + ".step")
+                    path, report = self.mesh(part, layers, order)
+                    nodes, elements, sets = read_inp(path)
+                    x, rows, index = hex_arrays(nodes, elements)
+                    hexes = rows[:, :8]
+                    diagonal = float(np.linalg.norm(x.max(axis=0) - x.min(axis=0)))
+                    sj, volume = self.check_hexes(x, hexes, elements, part, order)
+                    if order == 2:
+                        self.check_mid_edge_nodes(x, rows, diagonal)
+                    quads = self.check_conformal(x, hexes, step, diagonal)
+                    self.check_groups(path, x, index, sets, hexes, quads, step, diagonal)
+                    junction = self.check_report(report)
+                    print(f"{part} {layers} layers, order {order}: {len(hexes)} hexes, scaled Jacobian min {sj.min():.3f} avg "
+                          f"{sj.mean():.3f}, volume {100 * (volume / self.volumes[part] - 1):+.2e} %, junction "
+                          f"{junction['hexes']} hexes min {junction['scaled_jacobian']['min']:.3f} avg "
+                          f"{junction['scaled_jacobian']['avg']:.3f}")
+
+
+if __name__ == "__main__":
+    harness.main()
