@@ -69,7 +69,7 @@ struct Junctions {
 std::map<int, std::vector<TopoDS_Edge>> footEdges(const Junctions& j, int s) {
   std::map<int, std::vector<TopoDS_Edge>> edges;
   for (const ConcaveEdge& c : j.concave)
-    for (const auto [base, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
+    for (const auto& [base, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
       if (j.sheetOf[base] == 0 && j.sides.faces[base].side != Side::Lateral && j.sheetOf[other] == s)
         edges[base].push_back(TopoDS::Edge(j.cad.edges(c.edge + 1)));
   return edges;
