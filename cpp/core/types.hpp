@@ -48,7 +48,8 @@ struct HexMesh {
   std::vector<Vec3> nodes;
   std::vector<std::array<int, 8>> hexes;
   std::vector<std::array<int, 12>> midEdges;  // empty for linear (8-node) hexes, else one per hex
-  std::vector<int> nodeLayer;   // 0 = bottom surface ... layers = top surface; -1 = mid-edge node between two layers
+  std::vector<int> nodeLayer;   // 0 = bottom surface ... layers = top surface; -1 = mid-edge node between two
+                                // layers, or a rim cap's node inside the part (rim_cap.hpp)
   std::vector<char> nodeOnRim;  // kRimSwept: swept from a node on the chordal surface's boundary (or mid-edge node of a
                                 // rim edge); kRimCap: on a rim cap column (rim_cap.hpp), beyond the sweep; else 0
   std::vector<int> nodeFace;    // CAD face (0-based, FreeCAD's Face1 = 0) the node was put on; -1 if none, or not sized

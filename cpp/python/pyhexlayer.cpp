@@ -351,7 +351,8 @@ PYBIND11_MODULE(pyhexlayer, m) {
                     "int64 (K, 4) 0-based rows of quad_nodes: the quads the sweep made the hexes of")
       .def_readonly("node_layer", &PyMeshResult::nodeLayer,
                     "int64 (N,): layer of each node, 0 = bottom surface .. layers = top surface; -1 = a mid-edge node "
-                    "between two layers (order 2). A hex's layer is the lowest of its corners'")
+                    "between two layers (order 2), or a rim cap's node inside the part. A hex's layer is the lowest "
+                    "of its corners' that are in one")
       .def_readonly("shell_nodes", &PyMeshResult::shellNodes,
                     "float64 (S, 3), shell=True: the mid-surface shell's nodes: the quad mesh's (on the chordal "
                     "surface), then order 2's mid-side nodes (midway between the walls); else (0, 3)")

@@ -64,8 +64,12 @@ def quad_femmesh(result):
 
 
 def hex_layers(result):
-    """Layer of every hex (0 = on the bottom surface): the lowest layer of its corners."""
-    return result.node_layer[result.hexes[:, :8]].min(axis=1)
+    """Layer of every hex (0 = on the bottom surface): the lowest layer of its corners that are in one (a rim
+    cap's nodes inside the part are in none: -1); a cap hex none of whose corners is in a layer, the middle one."""
+    layers = result.node_layer[result.hexes[:, :8]]
+    top = int(result.node_layer.max())
+    lowest = np.where(layers >= 0, layers, top + 1).min(axis=1)
+    return np.where(lowest > top, top // 2, lowest)
 
 
 def column_directions(nodes, corners):
