@@ -8,7 +8,7 @@ each, hexes per second, the time of every HexLayer stage (the report's timings_s
 HexLayer / Gmsh. Writes all numbers as JSON, and optionally a scaling plot.
 
 Usage (Debian's /usr/bin/python3, which has python3-gmsh and matplotlib):
-    bench/bench.py [--hexlayer build/hexlayer] [--suite target|scaling|samples|many|all]
+    bench/bench.py [--hexlayer build/hexlayer] [--suite target|scaling|samples|many|junctions|all]
                    [--threads N] [--out out/bench] [--plot docs/scaling.png]
                    [--no-gmsh-above HEXES] [--timeout SECONDS]
 
@@ -144,10 +144,14 @@ def cases(suite, parts):
         many += [dict(name=os.path.splitext(f)[0], step=os.path.join(REAL, f), size=None, layers=2, hexes=0,
                       options=["--drop-junctions"])
                  for f in sorted(os.listdir(REAL)) if f.lower().endswith((".step", ".stp", ".brep"))]
-    return {"target": target, "scaling": scaling, "samples": samples, "many": many,
-            "all": target + samples + scaling + many}[suite]
+    junctions = [dict(name=s, step=os.path.join(ROOT, "Resources", "samples", "junctions", s + ".step"), size=None,
+                      layers=2, hexes=0) for s in JUNCTIONS]
+    return {"target": target, "scaling": scaling, "samples": samples, "many": many, "junctions": junctions,
+            "all": target + samples + scaling + many + junctions}[suite]
 
 
+# The junction samples meshed all-hex (issue 18: a straight rib on a box plate).
+JUNCTIONS = ("plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside")
 # Parts with many features (scripts/make_samples.py --only many) and the real parts.
 MANY = ("keyboard_plate", "plate_200_holes")
 REAL = os.path.join(os.path.dirname(ROOT), "shared", "parts", "real")
@@ -259,7 +263,7 @@ def plot_faces(results, path):
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--hexlayer", default=os.path.join(ROOT, "build", "hexlayer"))
-    p.add_argument("--suite", default="target", choices=["target", "scaling", "samples", "many", "all"])
+    p.add_argument("--suite", default="target", choices=["target", "scaling", "samples", "many", "junctions", "all"])
     p.add_argument("--only", help="run the cases whose name contains this")
     p.add_argument("--threads", type=int, default=os.cpu_count() or 1, help="OMP_NUM_THREADS for hexlayer")
     p.add_argument("--out", default=os.path.join(ROOT, "out", "bench"))
