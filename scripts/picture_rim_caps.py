@@ -9,7 +9,6 @@ import os
 import subprocess
 import sys
 import tempfile
-from collections import Counter
 
 import matplotlib
 import meshio
@@ -22,10 +21,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "tests", "python"))
-from hex_geometry import hex_scaled_jacobians  # noqa: E402
-
-FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
-
+from hex_geometry import HEX_FACES, boundary_faces, hex_scaled_jacobians  # noqa: E402
 
 def mesh(hexlayer, layers, tmp):
     step = os.path.join(HERE, "..", "Resources", "samples", "rims", "plate_full_round.step")
@@ -36,17 +32,6 @@ def mesh(hexlayer, layers, tmp):
     return x, hexes, hex_scaled_jacobians(x, hexes)
 
 
-def boundary(hexes):
-    """Boundary quads of the hexes and the hex each belongs to."""
-    count, owner = Counter(), {}
-    for h, e in enumerate(hexes):
-        for f in FACES:
-            q = tuple(e[i] for i in f)
-            count[frozenset(q)] += 1
-            owner[frozenset(q)] = (q, h)
-    return [owner[k] for k, n in count.items() if n == 1]
-
-
 def section(x, hexes, sj):
     """The hex faces in the plane of the rim column nearest the middle of the side y = min: (quads in (y, z), SJ)."""
     ymin = x[:, 1].min()
@@ -54,7 +39,7 @@ def section(x, hexes, sj):
     x0 = near[np.argmin(np.abs(near[:, 0] - x[:, 0].mean())), 0]
     quads, colour = [], []
     for h, e in enumerate(hexes):
-        for f in FACES:
+        for f in HEX_FACES:
             p = x[[e[i] for i in f]]
             if np.all(np.abs(p[:, 0] - x0) < 1e-4) and p[:, 1].max() < ymin + 5:
                 quads.append(p[:, [1, 2]])
@@ -73,9 +58,8 @@ def main():
         meshes = {layers: mesh(a.hexlayer, layers, tmp) for layers in (2, 3)}
     x, hexes, sj = meshes[2]
     ax = fig.add_axes([0.0, 0.05, 0.55, 0.9], projection="3d")
-    faces = boundary(hexes)
-    ax.add_collection3d(Poly3DCollection([x[list(q)] for q, _ in faces], facecolors=cmap(norm([sj[h] for _, h in faces])),
-                                         edgecolors="k", linewidths=0.2))
+    quads, owners = boundary_faces(hexes)
+    ax.add_collection3d(Poly3DCollection(x[quads], facecolors=cmap(norm(sj[owners])), edgecolors="k", linewidths=0.2))
     lo, hi = x.min(0), x.max(0)
     ax.set_xlim(lo[0], hi[0]), ax.set_ylim(lo[1], hi[1]), ax.set_zlim(-7, 9)
     ax.set_box_aspect((hi[0] - lo[0], hi[1] - lo[1], 16), zoom=1.0)

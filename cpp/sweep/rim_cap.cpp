@@ -127,12 +127,11 @@ std::vector<Vec3> sweptNodes(const Profile& p, int layers) {
   return nodes;
 }
 
-// One edge of the chordal surface's rim: two rim columns, a before b in the hexes' bottom quads, the outward
-// normal of the side faces along it, and the hexes' nodes per layer.
+// One edge of the chordal surface's rim: two rim columns, a before b in the hexes' bottom quads, and the
+// outward normal of the side faces along it.
 struct RimEdge {
   int a = -1, b = -1;
   Vec3 outward = Vec3::Zero();
-  bool capped = false;
 };
 
 struct Column {
@@ -248,9 +247,10 @@ void onSideFace(const WallProjector& walls, int side, Cap& cap) {
   }
 }
 
-// The hex of template quad q between two columns of an edge, a before b (their nodes per template node): the
-// quad's edges q0 -> q1 and q3 -> q2 are its sweep edges.
-std::array<int, 8> capHex(const std::vector<int>& a, const std::vector<int>& b, const std::array<int, 4>& q) {
+// The hex of template quad q between two columns of an edge, a before b (their node ids or places per template
+// node): the quad's edges q0 -> q1 and q3 -> q2 are its sweep edges.
+template <class T>
+std::array<T, 8> capHex(const std::vector<T>& a, const std::vector<T>& b, const std::array<int, 4>& q) {
   return {b[q[0]], a[q[0]], a[q[3]], b[q[3]], b[q[1]], a[q[1]], a[q[2]], b[q[2]]};
 }
 
@@ -268,8 +268,7 @@ std::vector<double> capQualities(const HexMesh& mesh, const std::vector<std::vec
   const std::vector<Vec3> a = capPlaces(ends(mesh, columns[e.a]), caps[e.a], t.layers);
   const std::vector<Vec3> b = capPlaces(ends(mesh, columns[e.b]), caps[e.b], t.layers);
   std::vector<double> sj;
-  for (const auto& q : t.quads)
-    sj.push_back(hexScaledJacobian({b[q[0]], a[q[0]], a[q[3]], b[q[3]], b[q[1]], a[q[1]], a[q[2]], b[q[2]]}));
+  for (const auto& q : t.quads) sj.push_back(hexScaledJacobian(capHex(a, b, q)));
   return sj;
 }
 
@@ -356,6 +355,12 @@ double sweptDeficit(const HexMesh& mesh, const std::vector<std::vector<int>>& co
 std::vector<int> choosePlans(const HexMesh& mesh, const std::vector<std::vector<int>>& columns,
                              const std::vector<RimEdge>& edges, const std::vector<CapPlan>& plans,
                              const std::vector<CapLayout>& layouts) {
+  std::vector<int> plan(columns.size(), -1);
+  if (plans.size() == 1) {  // nothing to choose: the plan caps every column of its capped edges
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      if (plans[0].capped[i]) plan[edges[i].a] = plan[edges[i].b] = 0;
+    return plan;
+  }
   UnionFind chains(columns.size());
   std::vector<char> inChain(columns.size(), 0);
   for (const CapPlan& plan : plans)
@@ -375,8 +380,9 @@ std::vector<int> choosePlans(const HexMesh& mesh, const std::vector<std::vector<
   for (std::size_t i = 0; i < edges.size(); ++i)
     for (std::size_t k = 0; k < plans.size(); ++k) {
       if (!plans[k].capped[i]) continue;
-      Option& o =
-          (chainAt[chains.find(edges[i].a)].options.resize(plans.size()), chainAt[chains.find(edges[i].a)].options[k]);
+      std::vector<Option>& options = chainAt[chains.find(edges[i].a)].options;
+      options.resize(plans.size());
+      Option& o = options[k];
       for (const double sj : capQualities(mesh, columns, plans[k].caps, edges[i], layouts[k].t))
         o.deficit += 1 - sj, ++o.hexes;
       o.columns.push_back(edges[i].a), o.columns.push_back(edges[i].b);
@@ -391,6 +397,7 @@ std::vector<int> choosePlans(const HexMesh& mesh, const std::vector<std::vector<
         chainAt[chains.find(columnOfNode[v])].hexes.push_back(static_cast<int>(h));
         break;
       }
+  if (chainAt.empty()) return plan;
   double deficit = 0;
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) deficit += 1 - hexScaledJacobian(hexCorners(mesh, h));
   double count = static_cast<double>(mesh.hexes.size());
@@ -411,7 +418,6 @@ std::vector<int> choosePlans(const HexMesh& mesh, const std::vector<std::vector<
     chosen[root] = chain.options[best].hexes > 0 ? best : -1;
     deficit = bestDeficit, count = bestCount;
   }
-  std::vector<int> plan(columns.size(), -1);
   for (std::size_t c = 0; c < columns.size(); ++c)
     if (inChain[c]) plan[c] = chosen.at(chains.find(static_cast<int>(c)));
   return plan;

@@ -39,11 +39,17 @@ HEX_EDGES = ((0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0,
 HEX_FACES = ((0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
 
 
-def boundary_quads(hexes):
-    """The faces used by one hex only (rows of 4 node indices): the mesh's boundary."""
+def boundary_faces(hexes):
+    """The faces used by one hex only (rows of 4 node indices: the mesh's boundary) and the row of that hex."""
     faces = np.asarray(hexes)[:, HEX_FACES].reshape(-1, 4)
     _, first, count = np.unique(np.sort(faces, axis=1), axis=0, return_index=True, return_counts=True)
-    return faces[first[count == 1]]
+    rows = first[count == 1]
+    return faces[rows], rows // len(HEX_FACES)
+
+
+def boundary_quads(hexes):
+    """The faces used by one hex only (rows of 4 node indices): the mesh's boundary."""
+    return boundary_faces(hexes)[0]
 
 
 def boundary_euler_characteristic(hexes):
