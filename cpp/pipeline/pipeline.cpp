@@ -24,7 +24,6 @@
 #include "pipeline/mesh_report.hpp"
 #include "pipeline/shell_mesh.hpp"
 #include "pipeline/surface_groups.hpp"
-#include "quadmesh/footprint_grid.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_stage.hpp"
 #include "quality/quality.hpp"
@@ -348,42 +347,6 @@ void measureSolid(MeshResult& result, const CadSolid& cad, const WallSides& side
   if (o.shell) r.shell = measureShell(result.shell, wallMeanArea(sides) / (cad.unit * cad.unit));
 }
 
-// A T junction's pieces (issue 18; junction_mesh.hpp), meshed: the rib, then the plate with its quads carrying
-// the rib's footprint.
-struct TJunctionPieces {
-  JunctionCut cut;
-  TJunctionFrame frame;
-  MeshResult rib, plate;
-  FootGrid foot;
-  std::vector<std::vector<int>> strip;  // footprintGrid's, of the plate's quad mesh
-};
-
-// The seconds and peak memory of a piece's stages, as one stage.
-StageTime pieceTime(const MeshReport& piece) {
-  StageTime t;
-  for (const auto& [name, stage] : piece.stages)
-    t.seconds += stage.seconds, t.peakMemoryMiB = std::max(t.peakMemoryMiB, stage.peakMemoryMiB);
-  return t;
-}
-
-// [in] cad, sides, sheets (the plate, then the rib); [in] o: in the pipeline's units. Throws the pieces' errors.
-TJunctionPieces meshTPieces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
-                            const MeshOptions& o, StageClock& clock) {
-  TJunctionPieces t;
-  t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });
-  t.frame = tJunctionFrame(cad, sheets, t.cut);
-  reportProgress(o.progress, progressNote("", "the rib"));
-  t.rib = meshSolid(t.cut.pieces[1], o);
-  t.foot = footGrid(t.rib.mesh, t.rib.quadMesh, t.frame);
-  reportProgress(o.progress, progressNote("", "the plate under it"));
-  t.plate = meshSolid(t.cut.pieces[0], o, [&](const CadSolid& piece, QuadStage& stage) {
-    FootprintGrid grid = footprintGrid(footprintOf(t.frame, t.foot, piece.unit));
-    stage.quads = std::move(grid.quads);
-    t.strip = std::move(grid.strip);
-  });
-  return t;
-}
-
 // The cut solid's face of every node put on a piece's face (-1: on a foot, or none). [in,out] mesh: a piece's
 // hexes, nodeFace the piece's faces; [in] origin: JunctionCut::faceOrigin of the piece. Returns the nodes that were
 // on a foot.
@@ -395,6 +358,81 @@ std::vector<int> toCutFaces(HexMesh& mesh, const std::vector<int>& origin) {
     f = f >= 0 ? origin[f] : -1;
   }
   return onFoot;
+}
+
+constexpr double kOnFoot = 1e-3;  // of a layer: a node this near a foot's plane lies on it
+
+// A part cut at its junctions (issue 18; junction_mesh.hpp), meshed: the standing walls first, then the sheet they
+// stand on, its quads carrying their footprints.
+struct JunctionPieces {
+  JunctionCut cut;
+  std::vector<MeshReport> walls;      // per standing sheet, in the cut's order (its pieces 1, 2, ...)
+  std::vector<bool> rings;            // per wall: its feet closed (a boss)
+  HexMesh joinedWalls;                // their hexes, one after the other, nodes on the cut's faces
+  std::vector<int> onFeet;            // joinedWalls' nodes that were on a foot face
+  std::vector<int> footNode;          // per footprint node (every wall's in turn), its node in joinedWalls
+  std::vector<std::size_t> wallFeet;  // per wall, where its footprint nodes begin in footNode
+  MeshResult sheet;
+  FootprintInsertion inserted;
+  MeshResult stages;  // the walls' chordal surfaces and quads, one after the other
+};
+
+// The seconds and peak memory of a piece's stages, as one stage.
+StageTime pieceTime(const MeshReport& piece) {
+  StageTime t;
+  for (const auto& [name, stage] : piece.stages)
+    t.seconds += stage.seconds, t.peakMemoryMiB = std::max(t.peakMemoryMiB, stage.peakMemoryMiB);
+  return t;
+}
+
+// The mean length of the quads' edges.
+double meanEdge(const QuadMesh& q) {
+  double sum = 0;
+  for (const auto& quad : q.quads)
+    for (int c = 0; c < 4; ++c) sum += (q.nodes[quad[c]] - q.nodes[quad[(c + 1) % 4]]).norm();
+  return q.quads.empty() ? 0 : sum / (4.0 * q.quads.size());
+}
+
+// Meshes standing wall w (cut.pieces[w]) and adds its hexes and footprint to t. [in] o: in the pipeline's units;
+// [in] tolerance: how near a node lies to its foot's plane. [in,out] t, footprint: every wall's so far.
+void meshStandingWall(JunctionPieces& t, int w, const MeshOptions& o, double tolerance, FootprintQuads& footprint) {
+  reportProgress(o.progress, progressNote("", "standing wall " + std::to_string(w) + " of " +
+                                                  std::to_string(t.cut.pieces.size() - 1)));
+  MeshResult wall = meshSolid(t.cut.pieces[w], o);
+  const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, footPlanes(t.cut, w), tolerance);
+  const int nodes = static_cast<int>(t.joinedWalls.nodes.size()), first = static_cast<int>(footprint.nodes.size());
+  for (int n : toCutFaces(wall.mesh, t.cut.faceOrigin[w])) t.onFeet.push_back(n + nodes);
+  for (std::array<int, 4> q : foot.footprint.quads) {
+    for (int& n : q) n += first;
+    footprint.quads.push_back(q);
+  }
+  footprint.nodes.insert(footprint.nodes.end(), foot.footprint.nodes.begin(), foot.footprint.nodes.end());
+  t.wallFeet.push_back(t.footNode.size());
+  for (int n : foot.wallNode) t.footNode.push_back(n + nodes);
+  appendHexMesh(t.joinedWalls, wall.mesh);
+  appendStages(t.stages, wall);
+  t.rings.push_back(foot.ring);
+  t.walls.push_back(std::move(wall.report));
+}
+
+// [in] cad, sides, sheets (the sheet stood on, then the standing ones); [in] o: in the pipeline's units. Throws the
+// pieces' errors.
+JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
+                                  const MeshOptions& o, StageClock& clock) {
+  JunctionPieces t;
+  t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });
+  FootprintQuads footprint;
+  const double tolerance = kOnFoot * sides.thickness / o.layers;
+  for (int w = 1; w < static_cast<int>(t.cut.pieces.size()); ++w) meshStandingWall(t, w, o, tolerance, footprint);
+  reportProgress(o.progress, progressNote("", "the sheet they stand on"));
+  t.sheet = meshSolid(t.cut.pieces[0], o, [&](const CadSolid& piece, QuadStage& stage) {
+    const ChordalLocator locator(stage.chordal);
+    FootprintQuads onSheet = footprint;
+    for (Vec3& p : onSheet.nodes) p = locator.locate(p * piece.unit).point;
+    t.inserted = insertFootprints(stage.quads, onSheet, locator, meanEdge(stage.quads));
+    stage.quads = t.inserted.quads;
+  });
+  return t;
 }
 
 // The foot's nodes (no CAD face: the foot is none) on the CAD face nearest to each, so that those on the boundary
@@ -409,21 +447,41 @@ void placeFootNodes(HexMesh& mesh, const CadSolid& cad, const std::vector<int>& 
   }
 }
 
-// Issue 18, first step: a T junction (a straight planar rib on a flat rectangular plate, junction_mesh.hpp) meshed
-// all-hex and conformal: the rib's hexes and the plate's joined on the rib's foot nodes, grouped by the part's faces.
-// Any other junction, or a piece that does not mesh, is refused (geometryError naming it and why).
+// The part's report from its pieces': the sheet's stages' numbers stand for the part's (the mesh's are measured
+// again), the counts are both pieces', each piece's time one stage. [in,out] r: the stages so far; [in] t.
+void reportPieces(MeshReport& r, JunctionPieces& t, const CadSolid& cad, const WallSides& sides) {
+  std::map<std::string, StageTime> stages = std::move(r.stages);
+  StageTime walls;
+  for (const MeshReport& w : t.walls) {
+    const StageTime one = pieceTime(w);
+    walls.seconds += one.seconds, walls.peakMemoryMiB = std::max(walls.peakMemoryMiB, one.peakMemoryMiB);
+  }
+  stages["junction_walls"] = walls, stages["junction_sheet"] = pieceTime(t.sheet.report);
+  const std::size_t facesSplit = r.facesSplit;
+  r = std::move(t.sheet.report);
+  for (const MeshReport& w : t.walls) {
+    r.bubbles += w.bubbles, r.tetsKept += w.tetsKept;
+    r.quadMesh.quads += w.quadMesh.quads, r.quadMesh.nodes += w.quadMesh.nodes;
+  }
+  r.stages = std::move(stages), r.facesSplit = facesSplit, r.thickness = sides.thickness, r.faces = countFaces(sides);
+  r.smallFeatures = findSmallFeatures(cad, sides, r.size);  // the part's faces, not the pieces' (a foot is none)
+}
+
+// Issue 18: walls standing on a sheet (junction_mesh.hpp) meshed all-hex and conformal: the walls' hexes and the
+// sheet's joined on the walls' foot nodes, grouped by the part's faces. A junction the cut or the footprints cannot
+// take, or a piece that does not mesh, is refused (geometryError naming it and why).
 // [in] cad, sides, sheets: the part's (findSheets, two or more); [in] o: in the pipeline's units; [in,out] result:
 // the stages so far (report), moved into the returned mesh; [in,out] clock: timing result's stages.
-MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
+MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
                          const MeshOptions& o, MeshResult& result, StageClock& clock) {
-  if (sheets.size() != 2) throw junctionRefusal(cad, sheets, "");
   if (o.shell) throw junctionRefusal(cad, sheets, "the shell is not made at junctions yet");
-  TJunctionPieces t;
+  JunctionPieces t;
   std::vector<int> shared;
   try {
-    t = meshTPieces(cad, sides, sheets, o, clock);
-    // A tenth of a plate layer: the plate's walls meet the foot where the rib's hexes end.
-    shared = footNodesShared(t.plate.mesh, t.strip, t.rib.mesh, t.foot, 0.1 * t.frame.thickness / o.layers);
+    t = meshJunctionPieces(cad, sides, sheets, o, clock);
+    // A tenth of a sheet layer: the sheet's walls meet the foot where the wall's hexes end.
+    shared = footNodesShared(t.sheet.mesh, t.inserted.node, t.joinedWalls, t.footNode,
+                             0.1 * t.sheet.report.thickness / o.layers);
   } catch (const Error& e) {
     if (e.code() == ExitCode::BadUsage) throw;
     throw junctionRefusal(cad, sheets, e.what());
@@ -431,32 +489,28 @@ MeshResult meshTJunction(const CadSolid& cad, const WallSides& sides, const std:
     throw junctionRefusal(cad, sheets, std::string("OpenCASCADE: ") + e.GetMessageString());
   }
   MeshReport& r = result.report;
-  std::map<std::string, StageTime> stages = std::move(r.stages);
-  stages["junction_rib"] = pieceTime(t.rib.report), stages["junction_plate"] = pieceTime(t.plate.report);
-  const std::size_t facesSplit = r.facesSplit;
-  r = std::move(t.plate.report);  // the plate's stages' numbers stand for the part's, the mesh's are measured again
-  r.bubbles += t.rib.report.bubbles, r.tetsKept += t.rib.report.tetsKept;  // the counts of both pieces
-  r.quadMesh.quads += t.rib.report.quadMesh.quads, r.quadMesh.nodes += t.rib.report.quadMesh.nodes;
-  r.stages = std::move(stages), r.facesSplit = facesSplit, r.thickness = sides.thickness, r.faces = countFaces(sides);
-  r.smallFeatures = findSmallFeatures(cad, sides, r.size);  // the part's faces, not the pieces' (a foot is none)
-  const std::vector<int> ribFoot = toCutFaces(t.rib.mesh, t.cut.faceOrigin[1]);  // its corner and mid-edge nodes
-  toCutFaces(t.plate.mesh, t.cut.faceOrigin[0]);
-  result.mesh = std::move(t.rib.mesh);  // the rib first: its node ids stay
-  joinHexMesh(result.mesh, t.plate.mesh, shared);
-  std::vector<int> foot;
-  for (const std::vector<int>& row : t.foot.nodes) foot.insert(foot.end(), row.begin(), row.end());
-  placeFootNodes(result.mesh, cad, ribFoot);
+  reportPieces(r, t, cad, sides);
+  toCutFaces(t.sheet.mesh, t.cut.faceOrigin[0]);
+  result.mesh = std::move(t.joinedWalls);  // the walls first: their node ids stay
+  joinHexMesh(result.mesh, t.sheet.mesh, shared);
+  placeFootNodes(result.mesh, cad, t.onFeet);
   const WallProjector walls(cad, sides);
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
-  appendStages(result, t.rib);
-  appendStages(result, t.plate);
+  appendStages(result, t.stages);
+  appendStages(result, t.sheet);
   measureSolid(result, cad, sides, o, 0, clock);
-  JunctionRecord j = junctionRecord(cad, sheets[1]);
-  const JunctionHexes hexes = junctionHexes(result.mesh, result.scaledJacobian, foot);
-  j.at /= cad.unit, j.area /= cad.unit * cad.unit, j.volume /= cad.unit * cad.unit * cad.unit;  // as toInputUnits
-  j.kind = "T", j.meshed = true, j.hexes = hexes.hexes;
-  j.minScaledJacobian = hexes.minScaledJacobian, j.meanScaledJacobian = hexes.meanScaledJacobian;
-  r.junctions = {j};
+  r.junctions.clear();
+  for (std::size_t w = 0; w < t.walls.size(); ++w) {
+    JunctionRecord j = junctionRecord(cad, sheets[w + 1]);
+    const std::size_t end = w + 1 < t.wallFeet.size() ? t.wallFeet[w + 1] : t.footNode.size();
+    const std::vector<int> foot(t.footNode.begin() + static_cast<long>(t.wallFeet[w]),
+                                t.footNode.begin() + static_cast<long>(end));
+    const JunctionHexes hexes = junctionHexes(result.mesh, result.scaledJacobian, foot);
+    j.at /= cad.unit, j.area /= cad.unit * cad.unit, j.volume /= cad.unit * cad.unit * cad.unit;  // as toInputUnits
+    j.kind = t.rings[w] ? "ring" : "T", j.meshed = true, j.hexes = hexes.hexes;
+    j.minScaledJacobian = hexes.minScaledJacobian, j.meanScaledJacobian = hexes.meanScaledJacobian;
+    r.junctions.push_back(j);
+  }
   enforceValidation(r.mesh, o);
   return std::move(result);
 }
@@ -495,7 +549,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   if (!o.dropJunctions && sides.ownSideFaces.empty())
     if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1)
-      return meshTJunction(cad, sides, sheets, o, result, clock);
+      return meshJunctions(cad, sides, sheets, o, result, clock);
   const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r.junctions);
   r.thickness = sides.thickness;
   r.faces = countFaces(sides);

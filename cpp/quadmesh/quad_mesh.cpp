@@ -244,36 +244,6 @@ QuadMesh collectQuads() {
   return q;
 }
 
-// A quad mesh as bytes and back, to cross from the child process that runs Gmsh.
-std::string toBytes(const QuadMesh& q) {
-  const std::size_t counts[6] = {q.nodes.size(),   q.quads.size(), q.pairedTriangles,
-                                 q.splitTriangles, q.holes,        q.structuredPatches};
-  std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
-  for (const Vec3& p : q.nodes) bytes.append(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
-  bytes.append(reinterpret_cast<const char*>(q.quads.data()), q.quads.size() * sizeof(q.quads[0]));
-  return bytes;
-}
-
-QuadMesh fromBytes(const std::string& bytes) {
-  std::size_t counts[6];
-  if (bytes.size() < sizeof counts) throw internalError("truncated quad mesh from the Gmsh process");
-  std::memcpy(counts, bytes.data(), sizeof counts);
-  QuadMesh q;
-  q.nodes.resize(counts[0]);
-  q.quads.resize(counts[1]);
-  q.pairedTriangles = counts[2];
-  q.splitTriangles = counts[3];
-  q.holes = counts[4];
-  q.structuredPatches = counts[5];
-  const std::size_t nodeBytes = counts[0] * 3 * sizeof(double), quadBytes = counts[1] * sizeof(q.quads[0]);
-  if (bytes.size() != sizeof counts + nodeBytes + quadBytes)
-    throw internalError("truncated quad mesh from the Gmsh process");
-  const char* at = bytes.data() + sizeof counts;
-  for (Vec3& p : q.nodes) std::memcpy(p.data(), at, 3 * sizeof(double)), at += 3 * sizeof(double);
-  std::memcpy(static_cast<void*>(q.quads.data()), at, quadBytes);
-  return q;
-}
-
 // One Gmsh try: its quads, or why it failed (Gmsh's error, crash or hang).
 struct GmshTry {
   QuadMesh quads;
@@ -577,6 +547,35 @@ QuadMesh tryQuadMeshes(const ChordalLocator& chordal, const QuadMeshOptions& o) 
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   QuadMesh q = tryQuadMeshes(chordal, o);
   if (q.quads.empty()) throw geometryError("could not quad-mesh the chordal surface: " + q.failure);
+  return q;
+}
+
+std::string toBytes(const QuadMesh& q) {
+  const std::size_t counts[6] = {q.nodes.size(),   q.quads.size(), q.pairedTriangles,
+                                 q.splitTriangles, q.holes,        q.structuredPatches};
+  std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
+  for (const Vec3& p : q.nodes) bytes.append(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
+  bytes.append(reinterpret_cast<const char*>(q.quads.data()), q.quads.size() * sizeof(q.quads[0]));
+  return bytes;
+}
+
+QuadMesh fromBytes(const std::string& bytes) {
+  std::size_t counts[6];
+  if (bytes.size() < sizeof counts) throw internalError("truncated quad mesh from the Gmsh process");
+  std::memcpy(counts, bytes.data(), sizeof counts);
+  QuadMesh q;
+  q.nodes.resize(counts[0]);
+  q.quads.resize(counts[1]);
+  q.pairedTriangles = counts[2];
+  q.splitTriangles = counts[3];
+  q.holes = counts[4];
+  q.structuredPatches = counts[5];
+  const std::size_t nodeBytes = counts[0] * 3 * sizeof(double), quadBytes = counts[1] * sizeof(q.quads[0]);
+  if (bytes.size() != sizeof counts + nodeBytes + quadBytes)
+    throw internalError("truncated quad mesh from the Gmsh process");
+  const char* at = bytes.data() + sizeof counts;
+  for (Vec3& p : q.nodes) std::memcpy(p.data(), at, 3 * sizeof(double)), at += 3 * sizeof(double);
+  std::memcpy(static_cast<void*>(q.quads.data()), at, quadBytes);
   return q;
 }
 

@@ -98,6 +98,11 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& quads);
 // saying why) if no try gave any.
 QuadMesh tryQuadMeshes(const ChordalLocator& chordal, const QuadMeshOptions& options);
 
+// A quad mesh as bytes and back, to cross from a child process that runs Gmsh (child_process.hpp). fromBytes throws
+// internalError if the bytes are not a whole mesh.
+std::string toBytes(const QuadMesh& q);
+QuadMesh fromBytes(const std::string& bytes);
+
 // tryQuadMeshes, but throws geometryError (with the failure) if no try gave quads.
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& options);
 

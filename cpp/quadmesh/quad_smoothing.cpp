@@ -302,7 +302,7 @@ void dropUnusedNodes(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& 
   nodes.swap(kept);
 }
 
-void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations) {
+void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, bool slideRim) {
   const NodeQuads nq = quadsAroundNodes(q);
   const std::vector<std::array<int, 2>> rim = rimNeighbours(q);
   const std::vector<Vec3> rimStart = q.nodes;  // rim nodes slide along the rim as Gmsh placed it
@@ -318,7 +318,8 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations) 
   // Then the nodes of poor quads are moved to make the worst quad around them as good as can be.
   gaussSeidel(q, nq, iterations, [&](int node) {
     const Vec3 from = q.nodes[node];
-    if (rim[node][0] == -2 || worstAround(q, nq, node, from) >= kGoodQuad) return false;
+    if (rim[node][0] == -2 || (!slideRim && rim[node][0] != -1) || worstAround(q, nq, node, from) >= kGoodQuad)
+      return false;
     if (rim[node][0] == -1) {
       improveWorst(q, nq, node, tangentDirections(q, nq, node), [&](const Vec3& p) { return chordal.locate(p).point; });
       return q.nodes[node] != from;

@@ -25,8 +25,9 @@ void dropUnusedNodes(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& 
 // and the node dropped. Returns how many were removed. [in,out] quads.
 int removeDoublets(QuadMesh& quads);
 
-// Smooths the interior nodes (the rim nodes stay where Gmsh put them). Deterministic.
-// [in,out] quads: interior nodes moved on the surface; [in] chordal, iterations.
-void smoothQuadMesh(QuadMesh& quads, const ChordalLocator& chordal, int iterations);
+// Smooths the interior nodes, and where the worst quad round a rim node gains, slides it along the rim as Gmsh
+// placed it (slideRim false: the rim nodes stay). Deterministic.
+// [in,out] quads: interior nodes moved on the surface; [in] chordal, iterations, slideRim.
+void smoothQuadMesh(QuadMesh& quads, const ChordalLocator& chordal, int iterations, bool slideRim = true);
 
 }  // namespace hexlayer

@@ -9,8 +9,8 @@ Checked for each part:
 (b) `hexlayer mesh` refuses it with exit 4 and a message naming the junction, and every place the message gives,
     "(x, y, z) [FaceN ...]", lies within the named faces' bounding box (Gmsh's; face tags in file order are FaceN)
     enlarged by the part's thickest wall; the two twins whose chordal surface does not branch (a rib flush with the
-    plate's edge is an L, a bore through the plate a collar) are meshed instead, and so are the straight ribs on a
-    flat rectangular plate (issue 18's first step; test_junction_meshing.py checks their meshes);
+    plate's edge is an L, a bore through the plate a collar) are meshed instead, and so are the walls standing on a
+    flat plate (issue 18: JUNCTIONS_MESHED; test_junction_meshing.py checks their meshes);
 (c) with --drop-junctions it is meshed, the junctions it left out listed in the report.
 (b) records what today's CLI does; it changes as more junctions are meshed (issue 18).
 
@@ -31,8 +31,10 @@ REL_TOL = 1e-6
 # the plate's edge) and a collar (the bore through the plate, the plate turned up round the hole), and the junctions
 # meshed so far. When all junctions are meshed, (b) becomes "meshes with exit 0" for every part.
 MANIFOLD = {"plate_rib_rim", "plate_boss_collar"}
-# Junctions meshed by default since issue 18's first step: a straight planar rib on a flat rectangular plate.
-JUNCTIONS_MESHED = {"plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside"}
+# Junctions meshed by default (issue 18): walls standing on a flat sheet, their feet on its wall (a rib's a strip, a
+# boss's a ring).
+JUNCTIONS_MESHED = {"plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside",
+                    "plate_boss"}
 MESHED_TODAY = MANIFOLD | JUNCTIONS_MESHED
 JUNCTION_WORDS = ("T-junction", "face a wall on its own side")
 # Today's CLI with --drop-junctions: every part meshed (exit 0), the main sheet without its ribs, bosses and

@@ -1,0 +1,594 @@
+#include "quadmesh/footprint_insert.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/child_process.hpp"
+#include "core/error.hpp"
+#include "core/triangle_tree.hpp"
+#include "core/union_find.hpp"
+#include "quadmesh/quad_completion.hpp"
+#include "quadmesh/quad_smoothing.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr double kBand = 2.0;          // of the quad size: the sheet's quads this near a footprint are meshed again
+constexpr double kOnRim = 0.1;         // of the quad size: a footprint node this near the sheet's rim lies on it
+constexpr double kTinyEdge = 0.3;      // of the quad size: a rim node of the gap this near a footprint's is dropped
+constexpr double kFlatCosine = 0.866;  // cos 30°: the gap's quads lean at most this far from its plane
+constexpr int kMaxStrip = 20;          // quads between two leftover triangles that are paired (quad_completion)
+constexpr double kGmshSeconds = 120;   // a gap's Gmsh run (it takes milliseconds)
+constexpr int kGapAlgorithms[] = {6, 5, 1};      // Gmsh's 2D algorithms tried: frontal-Delaunay, Delaunay, MeshAdapt
+constexpr double kGapSpacing[] = {1, 0.7, 0.5};  // of the boundary's edge lengths: the gap's mesh sizes tried
+constexpr int kSmoothing = 10;                   // iterations of the gap's quads (as the quad stage's)
+
+using Quad = std::array<int, 4>;
+using Edge = std::pair<int, int>;  // directed, the gap on its left
+using Loop = std::vector<int>;     // nodes in order, the gap on the left
+
+// A plane and 2D coordinates in it.
+struct Plane {
+  Vec3 origin = Vec3::Zero(), normal = Vec3::UnitZ(), e1 = Vec3::UnitX(), e2 = Vec3::UnitY();
+  Eigen::Vector2d at(const Vec3& p) const { return {(p - origin).dot(e1), (p - origin).dot(e2)}; }
+  Vec3 lift(const Eigen::Vector2d& q) const { return origin + q.x() * e1 + q.y() * e2; }
+};
+
+// Twice the quad's vector area: along its normal.
+Vec3 areaVector(const std::vector<Vec3>& nodes, const Quad& q) {
+  return (nodes[q[2]] - nodes[q[0]]).cross(nodes[q[3]] - nodes[q[1]]);
+}
+
+// Signed area of a polygon in the plane (shoelace): positive counter-clockwise.
+double signedArea(const std::vector<Eigen::Vector2d>& p) {
+  double a = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Eigen::Vector2d& u = p[i];
+    const Eigen::Vector2d& v = p[(i + 1) % p.size()];
+    a += u.x() * v.y() - v.x() * u.y();
+  }
+  return 0.5 * a;
+}
+
+// Even-odd rule: whether q is inside the polygon.
+bool insidePolygon(const std::vector<Eigen::Vector2d>& p, const Eigen::Vector2d& q) {
+  bool inside = false;
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
+    if ((p[i].y() > q.y()) != (p[j].y() > q.y()) &&
+        q.x() < p[j].x() + (p[i].x() - p[j].x()) * (q.y() - p[j].y()) / (p[i].y() - p[j].y()))
+      inside = !inside;
+  return inside;
+}
+
+// Distance from p to the segment ab, and where its nearest point is along it (0 at a, 1 at b).
+std::pair<double, double> toSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 d = b - a;
+  const double t = std::clamp(d.squaredNorm() > 0 ? (p - a).dot(d) / d.squaredNorm() : 0.0, 0.0, 1.0);
+  return {(a + t * d - p).norm(), t};
+}
+
+std::array<Triangle, 2> triangles(const std::vector<Vec3>& nodes, const Quad& q) {
+  return {Triangle{nodes[q[0]], nodes[q[1]], nodes[q[2]]}, Triangle{nodes[q[0]], nodes[q[2]], nodes[q[3]]}};
+}
+
+// Every node, the sheet's then the footprints', in one numbering: node i < sheetNodes is the sheet's.
+struct Nodes {
+  std::vector<Vec3> at;
+  int sheetNodes = 0;
+  bool footprint(int n) const { return n >= sheetNodes; }
+};
+
+// The footprints that lie close together, and the sheet's quads to mesh again round them: one gap.
+struct Gap {
+  std::vector<int> footprintQuads;  // into FootprintQuads::quads
+  std::vector<int> sheetQuads;      // into the sheet's quads
+};
+
+// The footprint quads joined by nodes into feet, and the sheet's quads within the band of each; feet whose bands
+// share a quad are one gap. [in] sheet, footprint, size. Returns the gaps; `removed` flags the sheet's quads in one.
+std::vector<Gap> gapsRoundFeet(const QuadMesh& sheet, const FootprintQuads& footprint, double size,
+                               std::vector<char>& removed) {
+  UnionFind feet(footprint.quads.size());
+  std::map<int, int> quadOfNode;
+  for (int q = 0; q < static_cast<int>(footprint.quads.size()); ++q)
+    for (int n : footprint.quads[q])
+      if (const auto [it, added] = quadOfNode.emplace(n, q); !added) feet.unite(it->second, q);
+  std::map<int, std::vector<int>> footQuads;  // root -> its quads
+  for (int q = 0; q < static_cast<int>(footprint.quads.size()); ++q) footQuads[feet.find(q)].push_back(q);
+  std::vector<int> roots;
+  std::vector<TriangleTree> trees;
+  for (const auto& [root, quads] : footQuads) {
+    std::vector<Triangle> t;
+    for (int q : quads)
+      for (const Triangle& tri : triangles(footprint.nodes, footprint.quads[q])) t.push_back(tri);
+    roots.push_back(root), trees.emplace_back(std::move(t));
+  }
+  const double band = kBand * size;
+  removed.assign(sheet.quads.size(), 0);
+  std::vector<int> claimedBy(sheet.quads.size(), -1);
+  for (std::size_t q = 0; q < sheet.quads.size(); ++q) {
+    Vec3 centre = Vec3::Zero();
+    for (int n : sheet.quads[q]) centre += 0.25 * sheet.nodes[n];
+    for (std::size_t f = 0; f < trees.size(); ++f) {
+      bool near = trees[f].anyWithin(centre, band);
+      for (int n : sheet.quads[q]) near = near || trees[f].anyWithin(sheet.nodes[n], band);
+      if (!near) continue;
+      if (claimedBy[q] >= 0) feet.unite(claimedBy[q], roots[f]);
+      claimedBy[q] = roots[f], removed[q] = 1;
+    }
+  }
+  std::map<int, Gap> gaps;
+  for (int q = 0; q < static_cast<int>(footprint.quads.size()); ++q) gaps[feet.find(q)].footprintQuads.push_back(q);
+  for (int q = 0; q < static_cast<int>(sheet.quads.size()); ++q)
+    if (claimedBy[q] >= 0) gaps[feet.find(claimedBy[q])].sheetQuads.push_back(q);
+  std::vector<Gap> out;
+  for (auto& [root, gap] : gaps) {
+    if (gap.sheetQuads.empty()) throw geometryError("junction: a wall's foot does not lie on the sheet it stands on");
+    out.push_back(std::move(gap));
+  }
+  return out;
+}
+
+// The gap's plane: through its footprints' centre, normal their mean. Throws if the sheet's quads there lean from
+// it by more than kFlatCosine (a foot across a bend).
+Plane gapPlane(const Nodes& nodes, const QuadMesh& sheet, const FootprintQuads& footprint, const Gap& gap) {
+  Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
+  const Vec3 first = areaVector(footprint.nodes, footprint.quads[gap.footprintQuads.front()]);
+  double count = 0;
+  for (int q : gap.footprintQuads) {
+    const Vec3 n = areaVector(footprint.nodes, footprint.quads[q]);
+    normal += n.dot(first) < 0 ? Vec3(-n) : n;
+    for (int v : footprint.quads[q]) centre += footprint.nodes[v], ++count;
+  }
+  Plane plane;
+  plane.origin = centre / count, plane.normal = normal.normalized();
+  plane.e1 = plane.normal.unitOrthogonal(), plane.e2 = plane.normal.cross(plane.e1);
+  for (int q : gap.sheetQuads) {
+    const Vec3 n = areaVector(sheet.nodes, sheet.quads[q]);
+    if (std::abs(n.dot(plane.normal)) < kFlatCosine * n.norm()) {
+      std::ostringstream msg;
+      const Vec3& p = nodes.at[sheet.quads[q][0]];
+      msg << "junction: the sheet under a wall's foot is not flat near (" << p.x() << ", " << p.y() << ", " << p.z()
+          << ") (feet across a bend are not meshed yet)";
+      throw geometryError(msg.str());
+    }
+  }
+  return plane;
+}
+
+// The quad turned counter-clockwise in the plane.
+Quad counterClockwise(const Nodes& nodes, const Plane& plane, Quad q) {
+  std::vector<Eigen::Vector2d> p;
+  for (int n : q) p.push_back(plane.at(nodes.at[n]));
+  if (signedArea(p) < 0) std::reverse(q.begin(), q.end());
+  return q;
+}
+
+// The gap's boundary edges, the gap on their left: the taken-out quads' edges shared with a quad kept (fixed),
+// the footprints' edges not on the sheet's rim (fixed), and the sheet's rim between them (free: divided anew).
+struct GapEdges {
+  std::vector<Edge> edges;
+  std::set<Edge> free;  // on the sheet's rim
+};
+
+// The rim edges of the taken-out quads, cut where a footprint reaches the rim: its nodes on an edge split it, and
+// the pieces the footprint covers are left out. [in] rim: those edges; [in] footRim: the footprint's boundary
+// edges on the rim; [in] footNodes: its boundary nodes.
+std::vector<Edge> rimPieces(const Nodes& nodes, const std::vector<Edge>& rim, const std::vector<Edge>& footRim,
+                            const std::set<int>& footNodes, double tolerance) {
+  auto covered = [&](const Vec3& p) {
+    for (const auto& [a, b] : footRim)
+      if (toSegment(p, nodes.at[a], nodes.at[b]).first <= tolerance) return true;
+    return false;
+  };
+  std::vector<Edge> pieces;
+  for (const auto& [a, b] : rim) {
+    std::vector<std::pair<double, int>> along{{0.0, a}, {1.0, b}};
+    for (int f : footNodes)
+      if (const auto [d, t] = toSegment(nodes.at[f], nodes.at[a], nodes.at[b]); d <= tolerance && t > 0 && t < 1)
+        along.emplace_back(t, f);
+    std::sort(along.begin(), along.end());
+    for (std::size_t k = 0; k + 1 < along.size(); ++k) {
+      const int u = along[k].second, v = along[k + 1].second;
+      if (u != v && !covered(0.5 * (nodes.at[u] + nodes.at[v]))) pieces.emplace_back(u, v);
+    }
+  }
+  return pieces;
+}
+
+GapEdges gapEdges(const Nodes& nodes, const Plane& plane, const QuadMesh& sheet, const FootprintQuads& footprint,
+                  const Gap& gap, double size) {
+  std::map<std::pair<int, int>, int> quadsOfEdge;  // undirected sheet edge -> how many sheet quads have it
+  for (const Quad& q : sheet.quads)
+    for (int c = 0; c < 4; ++c) ++quadsOfEdge[std::minmax(q[c], q[(c + 1) % 4])];
+  std::set<Edge> inGap;
+  for (int q : gap.sheetQuads) {
+    const Quad c = counterClockwise(nodes, plane, sheet.quads[q]);
+    for (int k = 0; k < 4; ++k) inGap.emplace(c[k], c[(k + 1) % 4]);
+  }
+  GapEdges g;
+  std::vector<Edge> rim;
+  for (const auto& [a, b] : inGap) {
+    if (inGap.count({b, a})) continue;
+    if (quadsOfEdge[std::minmax(a, b)] > 1)
+      g.edges.emplace_back(a, b);  // shared with a quad kept
+    else
+      rim.emplace_back(a, b);
+  }
+  std::set<Edge> inFoot;
+  const int offset = nodes.sheetNodes;
+  for (int q : gap.footprintQuads) {
+    Quad c = footprint.quads[q];
+    for (int& n : c) n += offset;
+    c = counterClockwise(nodes, plane, c);
+    for (int k = 0; k < 4; ++k) inFoot.emplace(c[k], c[(k + 1) % 4]);
+  }
+  const double tolerance = kOnRim * size;
+  auto onRim = [&](const Vec3& p) {
+    for (const auto& [a, b] : rim)
+      if (toSegment(p, nodes.at[a], nodes.at[b]).first <= tolerance) return true;
+    return false;
+  };
+  std::vector<Edge> footRim;
+  std::set<int> footNodes;
+  for (const auto& [a, b] : inFoot) {
+    if (inFoot.count({b, a})) continue;
+    footNodes.insert(a), footNodes.insert(b);
+    if (onRim(nodes.at[a]) && onRim(nodes.at[b]) && onRim(0.5 * (nodes.at[a] + nodes.at[b])))
+      footRim.emplace_back(a, b);
+    else
+      g.edges.emplace_back(b, a);  // the gap is outside the footprint
+  }
+  for (const Edge& e : rimPieces(nodes, rim, footRim, footNodes, tolerance)) g.edges.push_back(e), g.free.insert(e);
+  return g;
+}
+
+// The edges chained into closed loops. Throws if a node starts two edges (the gap pinched at a node).
+std::vector<Loop> chainLoops(const std::vector<Edge>& edges) {
+  std::map<int, int> next;
+  for (const auto& [a, b] : edges)
+    if (!next.emplace(a, b).second)
+      throw geometryError(
+          "junction: the gap round a wall's foot is pinched at a node (a foot touching another "
+          "or the sheet's rim at a point)");
+  std::vector<Loop> loops;
+  std::set<int> done;
+  for (const auto& [start, unused] : next) {
+    if (done.count(start)) continue;
+    Loop loop;
+    for (int n = start; !done.count(n);) {
+      done.insert(n), loop.push_back(n);
+      const auto it = next.find(n);
+      if (it == next.end()) throw geometryError("junction: the gap round a wall's foot is not closed");
+      n = it->second;
+    }
+    if (loop.front() != next.at(loop.back()))
+      throw geometryError("junction: the gap round a wall's foot is not closed");
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+// A free rim node (none of a kept quad's, none of a footprint's) this near a footprint node beside it is left out:
+// the rim edge between them would be tiny.
+void dropTinyRimEdges(const Nodes& nodes, const std::set<Edge>& free, double size, std::vector<Loop>& loops) {
+  for (Loop& loop : loops) {
+    for (std::size_t k = 0; loop.size() > 4 && k < loop.size(); ++k) {
+      const int prev = loop[(k + loop.size() - 1) % loop.size()], n = loop[k], next = loop[(k + 1) % loop.size()];
+      if (nodes.footprint(n) || !free.count({prev, n}) || !free.count({n, next})) continue;
+      const bool tiny = (nodes.footprint(prev) && (nodes.at[n] - nodes.at[prev]).norm() < kTinyEdge * size) ||
+                        (nodes.footprint(next) && (nodes.at[n] - nodes.at[next]).norm() < kTinyEdge * size);
+      if (tiny) loop.erase(loop.begin() + static_cast<long>(k)), --k;
+    }
+  }
+}
+
+// One planar surface of the gap: its outer loop, then its holes.
+using Surface = std::vector<Loop>;
+
+std::vector<Eigen::Vector2d> inPlane(const Nodes& nodes, const Plane& plane, const Loop& loop) {
+  std::vector<Eigen::Vector2d> p;
+  for (int n : loop) p.push_back(plane.at(nodes.at[n]));
+  return p;
+}
+
+// The loops sorted into surfaces: counter-clockwise ones are outer loops (the gap on the left), each clockwise one a
+// hole of the smallest outer loop round it.
+std::vector<Surface> surfacesOf(const Nodes& nodes, const Plane& plane, const std::vector<Loop>& loops) {
+  std::vector<std::size_t> outer, holes;
+  std::vector<double> area(loops.size());
+  for (std::size_t k = 0; k < loops.size(); ++k) {
+    area[k] = signedArea(inPlane(nodes, plane, loops[k]));
+    (area[k] > 0 ? outer : holes).push_back(k);
+  }
+  std::vector<Surface> surfaces;
+  for (std::size_t k : outer) surfaces.push_back({loops[k]});
+  for (std::size_t h : holes) {
+    int best = -1;
+    const Eigen::Vector2d p = plane.at(nodes.at[loops[h].front()]);
+    for (std::size_t s = 0; s < outer.size(); ++s)
+      if (insidePolygon(inPlane(nodes, plane, loops[outer[s]]), p) && (best < 0 || area[outer[s]] < area[outer[best]]))
+        best = static_cast<int>(s);
+    if (best < 0) throw geometryError("junction: a loop of the gap round a wall's foot lies outside it");
+    surfaces[best].push_back(loops[h]);
+  }
+  return surfaces;
+}
+
+// All quads need an even number of boundary edges: where a surface has an odd one, its longest free rim edge is
+// halved (a node appended to `nodes`). Throws if it has none.
+void evenBoundaries(Nodes& nodes, const std::set<Edge>& free, std::vector<Surface>& surfaces) {
+  for (Surface& s : surfaces) {
+    std::size_t edges = 0;
+    for (const Loop& loop : s) edges += loop.size();
+    if (edges % 2 == 0) continue;
+    double longest = 0;
+    Loop* in = nullptr;
+    std::size_t at = 0;
+    for (Loop& loop : s)
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const int a = loop[k], b = loop[(k + 1) % loop.size()];
+        if (const double l = (nodes.at[a] - nodes.at[b]).norm(); free.count({a, b}) && l > longest)
+          longest = l, in = &loop, at = k;
+      }
+    if (!in)
+      throw geometryError("junction: the gap round a wall's foot has an odd number of fixed edges (no quad mesh)");
+    const int a = (*in)[at], b = (*in)[(at + 1) % in->size()];
+    nodes.at.push_back(0.5 * (nodes.at[a] + nodes.at[b]));
+    in->insert(in->begin() + static_cast<long>(at) + 1, static_cast<int>(nodes.at.size()) - 1);
+  }
+}
+
+// The surfaces as Gmsh geometry: a point per node (tag: the node + 1, mesh size spacing[node]), a line of two nodes
+// per boundary edge. [in] at, spacing, surfaces. Returns the nodes used.
+std::set<int> addGapGeometry(const std::vector<Eigen::Vector2d>& at, const std::vector<double>& spacing,
+                             const std::vector<Surface>& surfaces) {
+  std::set<int> used;
+  for (const Surface& s : surfaces)
+    for (const Loop& loop : s) used.insert(loop.begin(), loop.end());
+  for (int n : used) gmsh::model::geo::addPoint(at[n].x(), at[n].y(), 0, spacing[n], n + 1);
+  std::vector<int> lines;
+  for (const Surface& s : surfaces) {
+    std::vector<int> loops;
+    for (const Loop& loop : s) {
+      std::vector<int> curve;
+      for (std::size_t k = 0; k < loop.size(); ++k)
+        curve.push_back(gmsh::model::geo::addLine(loop[k] + 1, loop[(k + 1) % loop.size()] + 1));
+      lines.insert(lines.end(), curve.begin(), curve.end());
+      loops.push_back(gmsh::model::geo::addCurveLoop(curve));
+    }
+    gmsh::model::geo::addPlaneSurface(loops);
+  }
+  gmsh::model::geo::synchronize();
+  for (int l : lines) gmsh::model::mesh::setTransfiniteCurve(l, 2);
+  return used;
+}
+
+// Gmsh's quads in the plane, its leftover triangles paired (quad_completion) or counted as holes; the first
+// at.size() nodes the given points. [in] at; [in] used: the nodes that are Gmsh's points.
+QuadMesh collectGapQuads(const std::vector<Eigen::Vector2d>& at, const std::set<int>& used) {
+  QuadMesh q;
+  std::map<std::size_t, int> index;  // Gmsh's node tag -> ours
+  for (int n : used) {
+    std::vector<std::size_t> tags;
+    std::vector<double> coord, param;
+    gmsh::model::mesh::getNodes(tags, coord, param, 0, n + 1);
+    if (tags.size() != 1) throw internalError("Gmsh lost a point of the gap");
+    index[tags[0]] = n;
+  }
+  for (const Eigen::Vector2d& p : at) q.nodes.emplace_back(p.x(), p.y(), 0);
+  std::vector<std::size_t> all;
+  std::vector<double> coord, param;
+  gmsh::model::mesh::getNodes(all, coord, param, -1, -1, true, false);
+  for (std::size_t k = 0; k < all.size(); ++k)
+    if (index.emplace(all[k], static_cast<int>(q.nodes.size())).second)
+      q.nodes.emplace_back(coord[3 * k], coord[3 * k + 1], 0);
+  std::vector<std::size_t> tags, nodeTags;  // Gmsh 4.8 leaves the vectors as they were if there are none: new ones
+  gmsh::model::mesh::getElementsByType(3, tags, nodeTags);
+  for (std::size_t e = 0; e < tags.size(); ++e)
+    q.quads.push_back({index.at(nodeTags[4 * e]), index.at(nodeTags[4 * e + 1]), index.at(nodeTags[4 * e + 2]),
+                       index.at(nodeTags[4 * e + 3])});
+  std::vector<std::size_t> triangleTags, triangleNodes;
+  gmsh::model::mesh::getElementsByType(2, triangleTags, triangleNodes);
+  std::vector<std::array<int, 3>> left;
+  for (std::size_t e = 0; e < triangleTags.size(); ++e)
+    left.push_back(
+        {index.at(triangleNodes[3 * e]), index.at(triangleNodes[3 * e + 1]), index.at(triangleNodes[3 * e + 2])});
+  q.pairedTriangles = pairTriangles(q.quads, left, kMaxStrip).paired;
+  q.holes = left.size();
+  return q;
+}
+
+// The mesh size at each node of the loops: the mean length of its two edges.
+std::vector<double> loopSpacing(const std::vector<Vec3>& at, const std::vector<Surface>& surfaces) {
+  std::vector<double> sum(at.size(), 0), count(at.size(), 0);
+  for (const Surface& s : surfaces)
+    for (const Loop& loop : s)
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const int a = loop[k], b = loop[(k + 1) % loop.size()];
+        const double l = (at[a] - at[b]).norm();
+        sum[a] += l, sum[b] += l, count[a] += 1, count[b] += 1;
+      }
+  for (std::size_t n = 0; n < at.size(); ++n) sum[n] = count[n] > 0 ? sum[n] / count[n] : 1;
+  return sum;
+}
+
+// Gmsh meshes the surfaces with quads, every boundary node fixed: Blossom's recombination of the triangles of 2D
+// algorithm `algorithm`. Runs in a child process. [in] at: 2D points; [in] spacing: the mesh size at each;
+// [in] surfaces: loops of them; [in] algorithm. Returns the quads in the plane, their first at.size() nodes the given
+// points. Throws geometryError if Gmsh fails or leaves triangles.
+QuadMesh gmshGapQuads(const std::vector<Eigen::Vector2d>& at, const std::vector<double>& spacing,
+                      const std::vector<Surface>& surfaces, int algorithm) {
+  const ChildResult run = runInChildProcess(
+      [&] {
+        gmsh::initialize();
+        gmsh::option::setNumber("General.Terminal", 0);
+        gmsh::option::setNumber("General.NumThreads", 1);  // deterministic output
+        try {
+          gmsh::model::add("gap");
+          const std::set<int> used = addGapGeometry(at, spacing, surfaces);
+          gmsh::option::setNumber("Mesh.RecombineAll", 1);
+          gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);  // Blossom (the full-quad ones refine the lines)
+          gmsh::option::setNumber("Mesh.Smoothing", 5);
+          gmsh::option::setNumber("Mesh.RandomFactor", 1e-9);
+          gmsh::option::setNumber("Mesh.Algorithm", algorithm);
+          gmsh::model::mesh::generate(2);
+          const QuadMesh q = collectGapQuads(at, used);
+          gmsh::finalize();
+          return toBytes(q);
+        } catch (...) {
+          std::string last;
+          gmsh::logger::getLastError(last);
+          gmsh::finalize();
+          throw geometryError("Gmsh: " + (last.empty() ? std::string("unknown error") : last));
+        }
+      },
+      kGmshSeconds);
+  if (!run.ok) throw geometryError("junction: the gap round a wall's foot was not meshed (" + run.failure + ")");
+  QuadMesh q = fromBytes(run.output);
+  if (q.holes > 0)
+    throw geometryError("junction: Gmsh left " + std::to_string(q.holes) + " triangles in the gap round a wall's foot");
+  return q;
+}
+
+// Checks that the gap's quads fill it: their boundary is the gap's (every edge of it once, no other).
+void checkGapQuads(const QuadMesh& q, const std::vector<Surface>& surfaces) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const Quad& quad : q.quads)
+    for (int c = 0; c < 4; ++c) ++uses[std::minmax(quad[c], quad[(c + 1) % 4])];
+  std::size_t boundary = 0;
+  for (const Surface& s : surfaces)
+    for (const Loop& loop : s)
+      for (std::size_t k = 0; k < loop.size(); ++k, ++boundary)
+        if (uses[std::minmax(loop[k], loop[(k + 1) % loop.size()])] != 1)
+          throw geometryError("junction: the gap's quads do not end on its boundary");
+  std::size_t once = 0;
+  for (const auto& [edge, n] : uses) once += n == 1;
+  if (once != boundary) throw geometryError("junction: the gap's quads have a boundary of their own");
+}
+
+// The gap's quads on the sheet: its boundary nodes where they are, the others lifted from the plane onto the chordal
+// surface and smoothed (quad_smoothing; the boundary stays). [in] at: every node so far (the first at.size() of
+// the quads'); [in] plane, chordal; [in,out] q: Gmsh's quads in the plane, then on the sheet. Returns the worst
+// quad's scaled Jacobian, turned the plane's way (<= 0: one is folded).
+double smoothGap(const std::vector<Vec3>& at, const Plane& plane, const ChordalLocator& chordal, QuadMesh& q) {
+  for (std::size_t n = 0; n < q.nodes.size(); ++n)
+    q.nodes[n] = n < at.size() ? at[n] : chordal.locate(plane.lift({q.nodes[n].x(), q.nodes[n].y()})).point;
+  QuadMesh local;  // the gap's nodes only
+  std::map<int, int> index;
+  std::vector<int> of;
+  for (const Quad& quad : q.quads) {
+    Quad l;
+    for (int c = 0; c < 4; ++c) {
+      const auto [it, added] = index.emplace(quad[c], static_cast<int>(of.size()));
+      if (added) of.push_back(quad[c]), local.nodes.push_back(q.nodes[quad[c]]);
+      l[c] = it->second;
+    }
+    local.quads.push_back(l);
+  }
+  smoothQuadMesh(local, chordal, kSmoothing, false);
+  for (std::size_t l = 0; l < of.size(); ++l) q.nodes[of[l]] = local.nodes[l];
+  double worst = 1;
+  for (const Quad& quad : q.quads) {
+    const std::array<Vec3, 4> c{q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]};
+    const double sj = quadScaledJacobian(c);
+    worst = std::min(worst, (c[2] - c[0]).cross(c[3] - c[1]).dot(plane.normal) < 0 ? -sj : sj);
+  }
+  return worst;
+}
+
+// The gap's quads on the sheet: of Gmsh's algorithms (kGapAlgorithms) the one whose worst quad, smoothed, is best;
+// finer (kGapSpacing) where none of them gives quads only.
+// [in] at: every node so far; [in] plane, chordal, surfaces. Throws geometryError if none gives unfolded quads.
+QuadMesh gapQuads(const std::vector<Vec3>& at, const Plane& plane, const ChordalLocator& chordal,
+                  const std::vector<Surface>& surfaces) {
+  std::vector<Eigen::Vector2d> flat;
+  for (const Vec3& p : at) flat.push_back(plane.at(p));
+  QuadMesh best;
+  double bestWorst = 0;
+  std::string failure = "its quads are folded";
+  for (double finer : kGapSpacing) {
+    std::vector<double> spacing = loopSpacing(at, surfaces);
+    for (double& h : spacing) h *= finer;
+    for (int algorithm : kGapAlgorithms) {
+      try {
+        QuadMesh q = gmshGapQuads(flat, spacing, surfaces, algorithm);
+        checkGapQuads(q, surfaces);
+        if (const double worst = smoothGap(at, plane, chordal, q); worst > bestWorst)
+          best = std::move(q), bestWorst = worst;
+      } catch (const Error& e) {
+        failure = e.what();
+      }
+    }
+    if (!best.quads.empty()) break;
+  }
+  if (best.quads.empty()) throw geometryError("junction: the gap round a wall's foot was not meshed: " + failure);
+  return best;
+}
+
+}  // namespace
+
+FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads& footprint,
+                                    const ChordalLocator& chordal, double size) {
+  if (footprint.quads.empty()) throw geometryError("junction: no footprint to put in the sheet's quads");
+  Nodes nodes;
+  nodes.at = sheet.nodes;
+  nodes.sheetNodes = static_cast<int>(sheet.nodes.size());
+  nodes.at.insert(nodes.at.end(), footprint.nodes.begin(), footprint.nodes.end());
+  std::vector<char> removed;
+  const std::vector<Gap> gaps = gapsRoundFeet(sheet, footprint, size, removed);
+  std::vector<Quad> added;  // in the numbering of `nodes`
+  FootprintInsertion out;
+  for (const Gap& gap : gaps) {
+    const Plane plane = gapPlane(nodes, sheet, footprint, gap);
+    const GapEdges edges = gapEdges(nodes, plane, sheet, footprint, gap, size);
+    std::vector<Loop> loops = chainLoops(edges.edges);
+    dropTinyRimEdges(nodes, edges.free, size, loops);
+    std::vector<Surface> surfaces = surfacesOf(nodes, plane, loops);
+    evenBoundaries(nodes, edges.free, surfaces);
+    const QuadMesh q = gapQuads(nodes.at, plane, chordal, surfaces);  // its first nodes are nodes.at
+    nodes.at.insert(nodes.at.end(), q.nodes.begin() + static_cast<long>(nodes.at.size()), q.nodes.end());
+    added.insert(added.end(), q.quads.begin(), q.quads.end());
+    for (int f : gap.footprintQuads) {
+      Quad quad = footprint.quads[f];
+      for (int& n : quad) n += nodes.sheetNodes;
+      added.push_back(quad);
+    }
+    out.quadsRemoved += gap.sheetQuads.size(), out.quadsMeshed += q.quads.size();
+  }
+  // Renumber: the kept quads' nodes in their order, then the others as the added quads use them.
+  std::vector<int> id(nodes.at.size(), -1);
+  auto use = [&](int n) {
+    if (id[n] < 0) id[n] = static_cast<int>(out.quads.nodes.size()), out.quads.nodes.push_back(nodes.at[n]);
+    return id[n];
+  };
+  for (std::size_t q = 0; q < sheet.quads.size(); ++q)
+    if (!removed[q]) out.quads.quads.push_back({0, 0, 0, 0});
+  std::vector<int> keptNodes;
+  for (std::size_t q = 0; q < sheet.quads.size(); ++q)
+    if (!removed[q]) keptNodes.insert(keptNodes.end(), sheet.quads[q].begin(), sheet.quads[q].end());
+  std::sort(keptNodes.begin(), keptNodes.end());
+  for (int n : keptNodes) use(n);
+  std::size_t k = 0;
+  for (std::size_t q = 0; q < sheet.quads.size(); ++q)
+    if (!removed[q]) {
+      for (int c = 0; c < 4; ++c) out.quads.quads[k][c] = id[sheet.quads[q][c]];
+      ++k;
+    }
+  for (const Quad& quad : added) out.quads.quads.push_back({use(quad[0]), use(quad[1]), use(quad[2]), use(quad[3])});
+  out.node.resize(footprint.nodes.size());
+  for (std::size_t f = 0; f < footprint.nodes.size(); ++f) {
+    out.node[f] = id[nodes.sheetNodes + f];
+    if (out.node[f] < 0) throw geometryError("junction: a footprint node is in none of its quads");
+  }
+  out.quads.layout = sheet.layout;
+  out.quads.tries = sheet.tries;
+  return out;
+}
+
+}  // namespace hexlayer

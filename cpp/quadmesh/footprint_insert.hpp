@@ -1,0 +1,38 @@
+// Walls standing on a sheet (issue 18; ../shared/design/junctions.md §3): the sheet's quad mesh made to carry their
+// feet. Seen from the sheet, a standing wall's foot is a strip of quads (its layers across, its quads along; a ring
+// for a boss) whose nodes are fixed: under them the sheet's hexes must end on the wall's hex nodes. The sheet's
+// quads near a footprint are taken out, and the gap between the quads kept and the footprint is meshed again with
+// quads in the gap's plane (Gmsh, every boundary node fixed: the kept quads', the footprint's, and the sheet's rim,
+// divided again where a footprint reaches it). The footprint's quads are then the sheet's, node for node, whatever
+// the sheet's outline, holes or quad layout.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "chordal/chordal_locator.hpp"
+#include "core/types.hpp"
+#include "quadmesh/quad_mesh.hpp"
+
+namespace hexlayer {
+
+// The footprints of the walls standing on a sheet, on its chordal surface.
+struct FootprintQuads {
+  std::vector<Vec3> nodes;                // on the sheet's chordal surface
+  std::vector<std::array<int, 4>> quads;  // each foot a strip (or a ring) of them, any orientation
+};
+
+struct FootprintInsertion {
+  QuadMesh quads;                                 // the sheet's quads carrying the footprints
+  std::vector<int> node;                          // per footprint node, its node in `quads`
+  std::size_t quadsRemoved = 0, quadsMeshed = 0;  // the sheet's quads taken out, the gap's quads meshed again
+};
+
+// [in] sheet: the sheet's quads (quad_mesh.hpp); [in] footprint; [in] chordal: the sheet's chordal surface, where
+// the gap's new nodes are put; [in] size: the sheet's quad size (the gap is about a quad wide round each footprint).
+// Returns the quads: the kept ones first (their nodes in their order), then the gap's and the footprint's.
+// Throws geometryError saying why if a footprint does not lie on the sheet, footprints overlap, the gap round one
+// is not flat (a foot across a bend), or Gmsh cannot fill it with quads.
+FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads& footprint,
+                                    const ChordalLocator& chordal, double size);
+
+}  // namespace hexlayer

@@ -1,0 +1,160 @@
+// A sheet's quads made to carry the footprints of walls standing on it (quadmesh/footprint_insert.hpp): a strip
+// inside the sheet, one running to its rim, two strips, a ring, and a foot off the sheet (refused); on a 60 x 40 grid
+// of 2 mm quads in the plane z = 1 and on copies scaled by 1e-3 and 1e3.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "chordal/chordal_locator.hpp"
+#include "core/error.hpp"
+#include "quadmesh/footprint_insert.hpp"
+#include "quadmesh/quad_smoothing.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+constexpr double kL = 60, kW = 40, kQuad = 2;
+
+// The sheet: nx x ny quads over [0, L] x [0, W] at z = 1, scaled by s; its chordal surface the same grid's
+// triangles.
+struct Sheet {
+  QuadMesh quads;
+  ChordalSurface chordal;
+};
+
+Sheet gridSheet(double s) {
+  Sheet g;
+  const int nx = static_cast<int>(kL / kQuad), ny = static_cast<int>(kW / kQuad);
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) g.quads.nodes.push_back(s * Vec3(i * kQuad, j * kQuad, 1));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i;
+      g.quads.quads.push_back({a, a + 1, a + nx + 2, a + nx + 1});
+      g.chordal.facets.push_back({a, a + 1, a + nx + 2, -1});
+      g.chordal.facets.push_back({a, a + nx + 2, a + nx + 1, -1});
+    }
+  g.chordal.vertices = g.quads.nodes;
+  g.chordal.normals.assign(g.chordal.vertices.size(), Vec3::UnitZ());
+  g.chordal.radius.assign(g.chordal.vertices.size(), s);
+  return g;
+}
+
+// A strip from (x0, y) to (x1, y), `rows` quads across its width w and `columns` along, at z = 1, scaled by s.
+void addStrip(FootprintQuads& f, double x0, double x1, double y, double w, int rows, int columns, double s) {
+  const int first = static_cast<int>(f.nodes.size());
+  for (int i = 0; i <= rows; ++i)
+    for (int j = 0; j <= columns; ++j)
+      f.nodes.push_back(s * Vec3(x0 + (x1 - x0) * j / columns, y - w / 2 + w * i / rows, 1));
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < columns; ++j) {
+      const int a = first + i * (columns + 1) + j;
+      f.quads.push_back({a, a + 1, a + columns + 2, a + columns + 1});
+    }
+}
+
+// A ring round (cx, cy): radii r0..r1 in `rows` quads, `around` quads round it.
+void addRing(FootprintQuads& f, double cx, double cy, double r0, double r1, int rows, int around, double s) {
+  const int first = static_cast<int>(f.nodes.size());
+  for (int i = 0; i <= rows; ++i)
+    for (int j = 0; j < around; ++j) {
+      const double r = r0 + (r1 - r0) * i / rows, a = 2 * M_PI * j / around;
+      f.nodes.push_back(s * Vec3(cx + r * std::cos(a), cy + r * std::sin(a), 1));
+    }
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < around; ++j)
+      f.quads.push_back({first + i * around + j, first + i * around + (j + 1) % around,
+                         first + (i + 1) * around + (j + 1) % around, first + (i + 1) * around + j});
+}
+
+// The quads tile the sheet's rectangle once, conformal: every edge in one or two quads, the edges in one its
+// perimeter, the quads' area its area, each quad's scaled Jacobian (turned the sheet's way) at least `worst`; every
+// footprint node is a node of the quads where it was, and every footprint quad is one of them.
+void expectCarried(const FootprintInsertion& in, const FootprintQuads& f, double s, double worst) {
+  std::map<std::pair<int, int>, int> uses;
+  double area = 0, least = 1;
+  for (const auto& q : in.quads.quads) {
+    std::array<Vec3, 4> c;
+    for (int k = 0; k < 4; ++k) c[k] = in.quads.nodes[q[k]], ++uses[std::minmax(q[k], q[(k + 1) % 4])];
+    const Vec3 normal = (c[2] - c[0]).cross(c[3] - c[1]);
+    area += 0.5 * std::abs(normal.z());
+    if (normal.z() < 0) std::swap(c[1], c[3]);
+    least = std::min(least, quadScaledJacobian(c));
+  }
+  double perimeter = 0;
+  for (const auto& [e, n] : uses) {
+    EXPECT_LE(n, 2);
+    if (n == 1) perimeter += (in.quads.nodes[e.first] - in.quads.nodes[e.second]).norm();
+  }
+  EXPECT_NEAR(perimeter, 2 * (kL + kW) * s, 1e-9 * s);
+  EXPECT_NEAR(area, kL * kW * s * s, 1e-9 * s * s);
+  EXPECT_GE(least, worst);
+  ASSERT_EQ(in.node.size(), f.nodes.size());
+  for (std::size_t n = 0; n < f.nodes.size(); ++n) EXPECT_NEAR((in.quads.nodes[in.node[n]] - f.nodes[n]).norm(), 0, 0);
+  std::map<std::array<int, 4>, int> quads;
+  for (auto q : in.quads.quads) std::sort(q.begin(), q.end()), ++quads[q];
+  for (const auto& q : f.quads) {
+    std::array<int, 4> mapped{in.node[q[0]], in.node[q[1]], in.node[q[2]], in.node[q[3]]};
+    std::sort(mapped.begin(), mapped.end());
+    EXPECT_EQ(quads[mapped], 1);
+  }
+  EXPECT_GT(in.quadsRemoved, 0u);
+  EXPECT_GT(in.quadsMeshed, 0u);
+}
+
+template <class Add>
+void expectInserted(Add add, double worst) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const Sheet g = gridSheet(s);
+    const ChordalLocator locator(g.chordal);
+    FootprintQuads f;
+    add(f, s);
+    expectCarried(insertFootprints(g.quads, f, locator, kQuad * s), f, s, worst);
+  }
+}
+
+}  // namespace
+
+// A rib's foot inside the sheet: 2 rows across its 2 mm, 17 quads along 10..44 (off the sheet's grid lines).
+TEST(FootprintInsert, AStripInsideTheSheet) {
+  expectInserted([](FootprintQuads& f, double s) { addStrip(f, 10.3, 44.3, 20.5, 2, 2, 17, s); }, 0.3);
+}
+
+// A rib running to the sheet's rim at both ends, thinner than the quads (1 mm in 3 rows).
+TEST(FootprintInsert, AStripFromRimToRim) {
+  expectInserted([](FootprintQuads& f, double s) { addStrip(f, 0, kL, 13.7, 1, 3, 40, s); }, 0.3);
+}
+
+// Two ribs, one to the rim, near enough that their gaps merge.
+TEST(FootprintInsert, TwoStripsShareAGap) {
+  expectInserted(
+      [](FootprintQuads& f, double s) {
+        addStrip(f, 0, 40, 10, 2, 2, 20, s);
+        addStrip(f, 20, 50, 13.5, 2, 2, 15, s);
+      },
+      0.2);
+}
+
+// A boss's foot: a ring of 2 rows, 24 quads round; the sheet's quads inside it are meshed again too.
+TEST(FootprintInsert, ARing) {
+  expectInserted([](FootprintQuads& f, double s) { addRing(f, 30, 20, 4, 6, 2, 24, s); }, 0.3);
+}
+
+// A foot that runs off the sheet is refused.
+TEST(FootprintInsert, AFootOffTheSheetIsRefused) {
+  const Sheet g = gridSheet(1);
+  const ChordalLocator locator(g.chordal);
+  FootprintQuads f;
+  addStrip(f, 50, 70, 20, 2, 2, 10, 1);
+  try {
+    insertFootprints(g.quads, f, locator, kQuad);
+    FAIL() << "not refused";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
+    EXPECT_NE(std::string(e.what()).find("junction"), std::string::npos) << e.what();
+  }
+}
