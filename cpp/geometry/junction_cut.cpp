@@ -65,12 +65,15 @@ struct Junctions {
   std::vector<ConcaveEdge> concave;  // concaveEdges
 };
 
-// Per base wall face, the concave edges between it and the faces of standing sheet s.
+// Per base wall face, the concave edges between it and the faces of standing sheet s. A sheet stands on the earlier
+// (larger) sheets it meets in concave edges: the first sheet, or a wall standing on it (a rib's end on another rib,
+// a partition's on a wall), so that the sheets stand on each other in a tree.
 std::map<int, std::vector<TopoDS_Edge>> footEdges(const Junctions& j, int s) {
   std::map<int, std::vector<TopoDS_Edge>> edges;
   for (const ConcaveEdge& c : j.concave)
     for (const auto& [base, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
-      if (j.sheetOf[base] == 0 && j.sides.faces[base].side != Side::Lateral && j.sheetOf[other] == s)
+      if (j.sheetOf[base] >= 0 && j.sheetOf[base] < s && j.sides.faces[base].side != Side::Lateral &&
+          j.sheetOf[other] == s)
         edges[base].push_back(TopoDS::Edge(j.cad.edges(c.edge + 1)));
   return edges;
 }
@@ -115,6 +118,7 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, doub
 struct PlaneEdges {
   gp_Pln plane;
   int face;  // the first base face on it
+  int base;  // its sheet
   std::vector<TopoDS_Edge> edges;
 };
 
@@ -127,11 +131,13 @@ std::vector<PlaneEdges> footEdgesByPlane(const Junctions& j, int s) {
       throw geometryError("T-junction: the sheet at " + sheetPlace(j.cad, j.sheets[s]) + " stands on a curved wall (" +
                           inputFaceName(j.cad, base) + "), which junction meshing does not cut yet");
     const gp_Pln plane = surface.Plane();
+    const int sheet = j.sheetOf[base];
     auto same = [&](const PlaneEdges& p) {
-      return p.plane.Axis().IsParallel(plane.Axis(), 1e-9) && p.plane.Distance(plane.Location()) <= tolerance;
+      return p.base == sheet && p.plane.Axis().IsParallel(plane.Axis(), 1e-9) &&
+             p.plane.Distance(plane.Location()) <= tolerance;
     };
     auto at = std::find_if(planes.begin(), planes.end(), same);
-    if (at == planes.end()) at = planes.insert(planes.end(), PlaneEdges{plane, base, {}});
+    if (at == planes.end()) at = planes.insert(planes.end(), PlaneEdges{plane, base, sheet, {}});
     at->edges.insert(at->edges.end(), edges.begin(), edges.end());
   }
   return planes;
@@ -144,7 +150,7 @@ std::vector<Foot> footFaces(const Junctions& j, int s) {
     for (const TopoDS_Wire& wire : closedWires(p.edges, kJoin * j.cad.diagonal)) {
       BRepBuilderAPI_MakeFace face(p.plane, wire, true);
       if (!face.IsDone()) continue;
-      feet.push_back({s, p.face, face.Face(), areaOf(face.Face())});
+      feet.push_back({s, p.base, p.face, face.Face(), areaOf(face.Face())});
     }
   if (feet.empty())
     throw geometryError("T-junction: no foot found for the sheet at " + sheetPlace(j.cad, j.sheets[s]) +
@@ -216,14 +222,13 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
   }
   // The feet as they are in the pieces: the pieces of each cutting face that the base's piece shares with its
   // sheet's piece (a foot across a bore keeps the ring round it).
-  TopTools_IndexedMapOfShape baseFaces;
-  TopExp::MapShapes(cut.pieces[0], TopAbs_FACE, baseFaces);
   for (const Foot& f : cutters) {
-    TopTools_IndexedMapOfShape pieceFaces;
+    TopTools_IndexedMapOfShape baseFaces, pieceFaces;
+    TopExp::MapShapes(cut.pieces[f.base], TopAbs_FACE, baseFaces);
     TopExp::MapShapes(cut.pieces[f.sheet], TopAbs_FACE, pieceFaces);
     for (const TopoDS_Shape& image : imagesOf(split, f.face))
       if (baseFaces.Contains(image) && pieceFaces.Contains(image))
-        cut.feet.push_back({f.sheet, f.baseFace, TopoDS::Face(image), areaOf(image)});
+        cut.feet.push_back({f.sheet, f.base, f.baseFace, TopoDS::Face(image), areaOf(image)});
     if (cut.feet.empty() || cut.feet.back().sheet != f.sheet)
       throw geometryError("T-junction: the foot of the sheet at " + sheetPlace(cad, sheets[f.sheet]) +
                           " is not a face of both pieces after the cut");

@@ -18,6 +18,7 @@ namespace hexlayer {
 // Where a standing sheet meets the base: one cut face.
 struct Foot {
   int sheet = -1;     // the standing sheet (index into the sheets given; its piece has the same index)
+  int base = 0;       // the sheet it stands on (an earlier one: the first sheet, or a wall standing on it)
   int baseFace = -1;  // 0-based face of the base's wall the foot lies on
   TopoDS_Face face;   // the foot, shared (IsSame) by the base's piece and the standing sheet's piece
   double area = 0;

@@ -41,10 +41,10 @@ void shareMidEdgeNodes(const HexMesh& sheet, const HexMesh& walls, std::vector<i
 
 }  // namespace
 
-std::vector<FootPlane> footPlanes(const JunctionCut& cut, int sheet) {
+std::vector<FootPlane> footPlanes(const JunctionCut& cut, int sheet, int base) {
   std::vector<FootPlane> planes;
   for (const Foot& f : cut.feet) {
-    if (f.sheet != sheet) continue;
+    if (f.sheet != sheet || f.base != base) continue;
     const gp_Pln plane = BRepAdaptor_Surface(f.face).Plane();
     const gp_XYZ n = plane.Axis().Direction().XYZ(), o = plane.Location().XYZ();
     planes.push_back({Vec3(n.X(), n.Y(), n.Z()), n.Dot(o)});

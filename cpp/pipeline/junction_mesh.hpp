@@ -20,9 +20,9 @@ struct FootPlane {
   double offset = 0;
 };
 
-// [in] cut; [in] sheet: a standing sheet's index (its piece's). Returns the planes of its feet (cutAtJunctions'
-// feet are planar).
-std::vector<FootPlane> footPlanes(const JunctionCut& cut, int sheet);
+// [in] cut; [in] sheet: a standing sheet's index (its piece's); [in] base: the sheet it stands on. Returns the planes
+// of its feet on that sheet (cutAtJunctions' feet are planar).
+std::vector<FootPlane> footPlanes(const JunctionCut& cut, int sheet, int base);
 
 // A standing wall's feet as its hexes have them.
 struct WallFoot {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "bubbles/bubble_packing.hpp"
@@ -362,19 +364,16 @@ std::vector<int> toCutFaces(HexMesh& mesh, const std::vector<int>& origin) {
 
 constexpr double kOnFoot = 1e-3;  // of a layer: a node this near a foot's plane lies on it
 
-// A part cut at its junctions (issue 18; junction_mesh.hpp), meshed: the standing walls first, then the sheet they
-// stand on, its quads carrying their footprints.
+// A part cut at its junctions (issue 18; junction_mesh.hpp), meshed piece by piece: every sheet after the sheets
+// standing on it (the cut's later, smaller sheets), its quads carrying their footprints, its hexes joined to theirs.
 struct JunctionPieces {
   JunctionCut cut;
-  std::vector<MeshReport> walls;      // per standing sheet, in the cut's order (its pieces 1, 2, ...)
-  std::vector<bool> rings;            // per wall: its feet closed (a boss)
-  HexMesh joinedWalls;                // their hexes, one after the other, nodes on the cut's faces
-  std::vector<int> onFeet;            // joinedWalls' nodes that were on a foot face
-  std::vector<int> footNode;          // per footprint node (every wall's in turn), its node in joinedWalls
-  std::vector<std::size_t> wallFeet;  // per wall, where its footprint nodes begin in footNode
-  MeshResult sheet;
-  FootprintInsertion inserted;
-  MeshResult stages;  // the walls' chordal surfaces and quads, one after the other
+  std::vector<MeshReport> reports;  // per piece
+  HexMesh joined;                   // every piece's hexes, the last piece's first, nodes on the cut's faces
+  std::vector<int> onFeet;          // joined's nodes that were on a foot face
+  // Per standing sheet, per sheet it stands on, its footprint there, its nodes joined's.
+  std::vector<std::map<int, WallFoot>> feet;
+  MeshResult stages;  // the pieces' chordal surfaces and quads, one after the other
 };
 
 // The seconds and peak memory of a piece's stages, as one stage.
@@ -393,26 +392,63 @@ double meanEdge(const QuadMesh& q) {
   return q.quads.empty() ? 0 : sum / (4.0 * q.quads.size());
 }
 
-// Meshes standing wall w (cut.pieces[w]) and adds its hexes and footprint to t. [in] o: in the pipeline's units;
-// [in] tolerance: how near a node lies to its foot's plane. [in,out] t, footprint: every wall's so far.
-void meshStandingWall(JunctionPieces& t, int w, const MeshOptions& o, double tolerance, FootprintQuads& footprint) {
-  reportProgress(o.progress, progressNote("", "standing wall " + std::to_string(w) + " of " +
-                                                  std::to_string(t.cut.pieces.size() - 1)));
-  MeshResult wall = meshSolid(t.cut.pieces[w], o);
-  const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, footPlanes(t.cut, w), tolerance);
-  const int nodes = static_cast<int>(t.joinedWalls.nodes.size()), first = static_cast<int>(footprint.nodes.size());
-  for (int n : toCutFaces(wall.mesh, t.cut.faceOrigin[w])) t.onFeet.push_back(n + nodes);
-  for (std::array<int, 4> q : foot.footprint.quads) {
-    for (int& n : q) n += first;
-    footprint.quads.push_back(q);
+// The footprints of the sheets standing on sheet s, one node per joined node (feet that meet share their nodes).
+// [out] node: per footprint node, its joined node.
+FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& node) {
+  FootprintQuads f;
+  std::map<int, int> index;  // joined node -> footprint node
+  for (const auto& on : t.feet) {
+    const auto foot = on.find(s);
+    if (foot == on.end()) continue;
+    for (const auto& quad : foot->second.footprint.quads) {
+      std::array<int, 4> q;
+      for (int c = 0; c < 4; ++c) {
+        const int n = foot->second.wallNode[quad[c]];
+        const auto [it, added] = index.emplace(n, static_cast<int>(node.size()));
+        if (added) node.push_back(n), f.nodes.push_back(t.joined.nodes[n]);
+        q[c] = it->second;
+      }
+      f.quads.push_back(q);
+    }
   }
-  footprint.nodes.insert(footprint.nodes.end(), foot.footprint.nodes.begin(), foot.footprint.nodes.end());
-  t.wallFeet.push_back(t.footNode.size());
-  for (int n : foot.wallNode) t.footNode.push_back(n + nodes);
-  appendHexMesh(t.joinedWalls, wall.mesh);
-  appendStages(t.stages, wall);
-  t.rings.push_back(foot.ring);
-  t.walls.push_back(std::move(wall.report));
+  return f;
+}
+
+// Meshes piece s with its quads carrying the footprints on it, joins its hexes to t.joined and keeps its own feet
+// (in joined's nodes). [in] o: in the pipeline's units; [in] tolerance: how near a node lies to its foot's plane;
+// [in] layerShare: of a layer, how far a column's end may be from its foot node. [in,out] t.
+void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance, double layerShare) {
+  const int pieces = static_cast<int>(t.cut.pieces.size());
+  reportProgress(o.progress, progressNote("", "piece " + std::to_string(pieces - s) + " of " + std::to_string(pieces)));
+  std::vector<int> footNode;
+  const FootprintQuads footprint = footprintsOn(t, s, footNode);
+  FootprintInsertion inserted;
+  MeshResult piece = footprint.quads.empty()
+                         ? meshSolid(t.cut.pieces[s], o)
+                         : meshSolid(t.cut.pieces[s], o, [&](const CadSolid& c, QuadStage& stage) {
+                             const ChordalLocator locator(stage.chordal);
+                             FootprintQuads onSheet = footprint;
+                             for (Vec3& p : onSheet.nodes) p = locator.locate(p * c.unit).point;
+                             inserted = insertFootprints(stage.quads, onSheet, locator, meanEdge(stage.quads));
+                             stage.quads = inserted.quads;
+                           });
+  std::vector<int> shared(piece.mesh.nodes.size(), -1);
+  if (!footprint.quads.empty())
+    shared =
+        footNodesShared(piece.mesh, inserted.node, t.joined, footNode, layerShare * piece.report.thickness / o.layers);
+  const std::vector<int> onFeet = toCutFaces(piece.mesh, t.cut.faceOrigin[s]);
+  const std::vector<int> id = joinHexMesh(t.joined, piece.mesh, shared);
+  for (int n : onFeet) t.onFeet.push_back(id[n]);
+  std::set<int> bases;
+  for (const Foot& f : t.cut.feet)
+    if (f.sheet == s) bases.insert(f.base);
+  for (int b : bases) {
+    WallFoot foot = wallFoot(piece.mesh, piece.quadMesh, footPlanes(t.cut, s, b), tolerance);
+    for (int& n : foot.wallNode) n = id[n];
+    t.feet[s][b] = std::move(foot);
+  }
+  appendStages(t.stages, piece);
+  t.reports[s] = std::move(piece.report);
 }
 
 // [in] cad, sides, sheets (the sheet stood on, then the standing ones); [in] o: in the pipeline's units. Throws the
@@ -421,17 +457,10 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
                                   const MeshOptions& o, StageClock& clock) {
   JunctionPieces t;
   t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });
-  FootprintQuads footprint;
-  const double tolerance = kOnFoot * sides.thickness / o.layers;
-  for (int w = 1; w < static_cast<int>(t.cut.pieces.size()); ++w) meshStandingWall(t, w, o, tolerance, footprint);
-  reportProgress(o.progress, progressNote("", "the sheet they stand on"));
-  t.sheet = meshSolid(t.cut.pieces[0], o, [&](const CadSolid& piece, QuadStage& stage) {
-    const ChordalLocator locator(stage.chordal);
-    FootprintQuads onSheet = footprint;
-    for (Vec3& p : onSheet.nodes) p = locator.locate(p * piece.unit).point;
-    t.inserted = insertFootprints(stage.quads, onSheet, locator, meanEdge(stage.quads));
-    stage.quads = t.inserted.quads;
-  });
+  t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size());
+  // A tenth of a layer: a sheet's walls meet a foot where the standing wall's hexes end.
+  for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s)
+    meshPiece(t, s, o, kOnFoot * sides.thickness / o.layers, 0.1);
   return t;
 }
 
@@ -447,21 +476,22 @@ void placeFootNodes(HexMesh& mesh, const CadSolid& cad, const std::vector<int>& 
   }
 }
 
-// The part's report from its pieces': the sheet's stages' numbers stand for the part's (the mesh's are measured
-// again), the counts are both pieces', each piece's time one stage. [in,out] r: the stages so far; [in] t.
+// The part's report from its pieces': the first sheet's stages' numbers stand for the part's (the mesh's are
+// measured again), the counts are every piece's, the pieces' times two stages. [in,out] r: the stages so far; [in] t.
 void reportPieces(MeshReport& r, JunctionPieces& t, const CadSolid& cad, const WallSides& sides) {
   std::map<std::string, StageTime> stages = std::move(r.stages);
   StageTime walls;
-  for (const MeshReport& w : t.walls) {
-    const StageTime one = pieceTime(w);
+  for (std::size_t w = 1; w < t.reports.size(); ++w) {
+    const StageTime one = pieceTime(t.reports[w]);
     walls.seconds += one.seconds, walls.peakMemoryMiB = std::max(walls.peakMemoryMiB, one.peakMemoryMiB);
   }
-  stages["junction_walls"] = walls, stages["junction_sheet"] = pieceTime(t.sheet.report);
+  stages["junction_walls"] = walls, stages["junction_sheet"] = pieceTime(t.reports[0]);
   const std::size_t facesSplit = r.facesSplit;
-  r = std::move(t.sheet.report);
-  for (const MeshReport& w : t.walls) {
-    r.bubbles += w.bubbles, r.tetsKept += w.tetsKept;
-    r.quadMesh.quads += w.quadMesh.quads, r.quadMesh.nodes += w.quadMesh.nodes;
+  r = std::move(t.reports[0]);
+  for (std::size_t w = 1; w < t.reports.size(); ++w) {
+    const MeshReport& p = t.reports[w];
+    r.bubbles += p.bubbles, r.tetsKept += p.tetsKept;
+    r.quadMesh.quads += p.quadMesh.quads, r.quadMesh.nodes += p.quadMesh.nodes;
   }
   r.stages = std::move(stages), r.facesSplit = facesSplit, r.thickness = sides.thickness, r.faces = countFaces(sides);
   r.smallFeatures = findSmallFeatures(cad, sides, r.size);  // the part's faces, not the pieces' (a foot is none)
@@ -476,12 +506,8 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
                          const MeshOptions& o, MeshResult& result, StageClock& clock) {
   if (o.shell) throw junctionRefusal(cad, sheets, "the shell is not made at junctions yet");
   JunctionPieces t;
-  std::vector<int> shared;
   try {
     t = meshJunctionPieces(cad, sides, sheets, o, clock);
-    // A tenth of a sheet layer: the sheet's walls meet the foot where the wall's hexes end.
-    shared = footNodesShared(t.sheet.mesh, t.inserted.node, t.joinedWalls, t.footNode,
-                             0.1 * t.sheet.report.thickness / o.layers);
   } catch (const Error& e) {
     if (e.code() == ExitCode::BadUsage) throw;
     throw junctionRefusal(cad, sheets, e.what());
@@ -490,24 +516,22 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
   }
   MeshReport& r = result.report;
   reportPieces(r, t, cad, sides);
-  toCutFaces(t.sheet.mesh, t.cut.faceOrigin[0]);
-  result.mesh = std::move(t.joinedWalls);  // the walls first: their node ids stay
-  joinHexMesh(result.mesh, t.sheet.mesh, shared);
+  result.mesh = std::move(t.joined);
   placeFootNodes(result.mesh, cad, t.onFeet);
   const WallProjector walls(cad, sides);
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   appendStages(result, t.stages);
-  appendStages(result, t.sheet);
   measureSolid(result, cad, sides, o, 0, clock);
   r.junctions.clear();
-  for (std::size_t w = 0; w < t.walls.size(); ++w) {
-    JunctionRecord j = junctionRecord(cad, sheets[w + 1]);
-    const std::size_t end = w + 1 < t.wallFeet.size() ? t.wallFeet[w + 1] : t.footNode.size();
-    const std::vector<int> foot(t.footNode.begin() + static_cast<long>(t.wallFeet[w]),
-                                t.footNode.begin() + static_cast<long>(end));
+  for (std::size_t w = 1; w < t.feet.size(); ++w) {
+    JunctionRecord j = junctionRecord(cad, sheets[w]);
+    std::vector<int> foot;
+    bool ring = true;
+    for (const auto& [base, on] : t.feet[w])
+      foot.insert(foot.end(), on.wallNode.begin(), on.wallNode.end()), ring = ring && on.ring;
     const JunctionHexes hexes = junctionHexes(result.mesh, result.scaledJacobian, foot);
     j.at /= cad.unit, j.area /= cad.unit * cad.unit, j.volume /= cad.unit * cad.unit * cad.unit;  // as toInputUnits
-    j.kind = t.rings[w] ? "ring" : "T", j.meshed = true, j.hexes = hexes.hexes;
+    j.kind = ring ? "ring" : "T", j.meshed = true, j.hexes = hexes.hexes;
     j.minScaledJacobian = hexes.minScaledJacobian, j.meanScaledJacobian = hexes.meanScaledJacobian;
     r.junctions.push_back(j);
   }

@@ -34,7 +34,7 @@ MANIFOLD = {"plate_rib_rim", "plate_boss_collar"}
 # Junctions meshed by default (issue 18): walls standing on a flat sheet, their feet on its wall (a rib's a strip, a
 # boss's a ring).
 JUNCTIONS_MESHED = {"plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside",
-                    "plate_boss"}
+                    "plate_boss", "plate_ribs_tee"}
 MESHED_TODAY = MANIFOLD | JUNCTIONS_MESHED
 JUNCTION_WORDS = ("T-junction", "face a wall on its own side")
 # Today's CLI with --drop-junctions: every part meshed (exit 0), the main sheet without its ribs, bosses and
