@@ -119,7 +119,8 @@ class JunctionSamples(unittest.TestCase):
                     self.assertEqual(done.returncode, 0, done.stderr[-2000:])
                     with open(os.path.join(self.tmp.name, part + ".json"), encoding="utf-8") as fh:
                         junctions = json.load(fh)["junctions"]
-                    self.assertEqual([j["meshed"] for j in junctions], [True] * (part in JUNCTIONS_MESHED))
+                    self.assertEqual(len(junctions) > 0, part in JUNCTIONS_MESHED)
+                    self.assertTrue(all(j["meshed"] for j in junctions))
                     continue
                 self.assertEqual(done.returncode, 4, done.stderr[-2000:])
                 self.assertTrue(any(w in done.stderr for w in JUNCTION_WORDS), done.stderr[-2000:])
