@@ -1,5 +1,6 @@
 #include "geometry/junction_cut.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Splitter.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -19,17 +20,22 @@
 #include <TopoDS_Wire.hxx>
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <set>
 
 #include "core/error.hpp"
+#include "core/union_find.hpp"
 #include "geometry/sheet_edges.hpp"
 
 namespace hexlayer {
 namespace {
 
-constexpr double kJoin = 1e-7;  // times the part's diagonal: ends of foot edges this close are one point
+constexpr double kRunsOn = 0.999;  // cosine: a closing segment this near an open foot chain's direction continues it
+constexpr double kJoin = 1e-7;     // times the part's diagonal: ends of foot edges this close are one point
 
 double areaOf(const TopoDS_Shape& face) {
   GProp_GProps props;
@@ -84,33 +90,58 @@ gp_Pnt endPoint(const TopoDS_Wire& wire, bool first) {
   return BRep_Tool::Pnt(first ? a : b);
 }
 
-// The foot edges joined into closed wires: open chains (a foot running to the wall's edge, a partition's two
-// edges between walls) are closed by straight segments between their nearest free ends.
+// The direction a wire leaves through its end `at`: the tangent of its edge there, pointing away from the edge.
+gp_Vec outward(const TopoDS_Wire& wire, const gp_Pnt& at, double tolerance) {
+  for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next()) {
+    const BRepAdaptor_Curve curve(TopoDS::Edge(it.Current()));
+    for (const double t : {curve.FirstParameter(), curve.LastParameter()}) {
+      gp_Pnt p;
+      gp_Vec d;
+      curve.D1(t, p, d);
+      if (p.Distance(at) <= tolerance && d.Magnitude() > 0)
+        return t == curve.FirstParameter() ? -d.Normalized() : d.Normalized();
+    }
+  }
+  return gp_Vec(0, 0, 0);
+}
+
+// The foot edges joined into closed wires. Open chains are closed by straight segments between their free ends:
+// first an end and the end it runs on to (a rib's foot continued under a rib crossing it), then the nearest free
+// ends (a foot running to the wall's edge, a partition's two edges between walls).
 std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, double tolerance) {
   Handle(TopTools_HSequenceOfShape) in = new TopTools_HSequenceOfShape, wires;
   for (const TopoDS_Edge& e : edges) in->Append(e);
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, wires);
   std::vector<gp_Pnt> ends;
+  std::vector<gp_Vec> out;
   for (int i = 1; i <= wires->Length(); ++i) {
     const TopoDS_Wire w = TopoDS::Wire(wires->Value(i));
     if (BRep_Tool::IsClosed(w) || endPoint(w, true).Distance(endPoint(w, false)) <= tolerance) continue;
-    ends.push_back(endPoint(w, true)), ends.push_back(endPoint(w, false));
+    for (const bool first : {true, false})
+      ends.push_back(endPoint(w, first)), out.push_back(outward(w, endPoint(w, first), tolerance));
   }
   std::vector<char> used(ends.size(), 0);
-  for (std::size_t k = 0; k + 1 < ends.size(); k += 2) {  // nearest pairs first
-    std::size_t bi = 0, bj = 0;
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < ends.size(); ++i)
-      for (std::size_t j = i + 1; j < ends.size(); ++j)
-        if (!used[i] && !used[j] && ends[i].Distance(ends[j]) < best) best = ends[i].Distance(ends[j]), bi = i, bj = j;
-    used[bi] = used[bj] = 1;
-    in->Append(BRepBuilderAPI_MakeEdge(ends[bi], ends[bj]).Edge());
-  }
+  auto runsOn = [&](std::size_t i, std::size_t j) {  // the segment from end i to end j continues both
+    const gp_Vec d(ends[i], ends[j]);
+    return d.Magnitude() > tolerance && out[i].Dot(d.Normalized()) > kRunsOn && out[j].Dot(-d.Normalized()) > kRunsOn;
+  };
+  for (const bool continuing : {true, false})
+    for (;;) {  // nearest pairs first
+      std::size_t bi = 0, bj = 0;
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < ends.size(); ++i)
+        for (std::size_t j = i + 1; j < ends.size(); ++j)
+          if (!used[i] && !used[j] && (!continuing || runsOn(i, j)) && ends[i].Distance(ends[j]) < best)
+            best = ends[i].Distance(ends[j]), bi = i, bj = j;
+      if (!std::isfinite(best)) break;
+      used[bi] = used[bj] = 1;
+      in->Append(BRepBuilderAPI_MakeEdge(ends[bi], ends[bj]).Edge());
+    }
   Handle(TopTools_HSequenceOfShape) closed;
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, closed);
-  std::vector<TopoDS_Wire> out;
-  for (int i = 1; i <= closed->Length(); ++i) out.push_back(TopoDS::Wire(closed->Value(i)));
-  return out;
+  std::vector<TopoDS_Wire> result;
+  for (int i = 1; i <= closed->Length(); ++i) result.push_back(TopoDS::Wire(closed->Value(i)));
+  return result;
 }
 
 // The foot edges of standing sheet s grouped by the plane of the base wall they lie on (a rib running across a
@@ -180,7 +211,86 @@ std::vector<std::vector<int>> faceOrigins(const CadSolid& cad, BRepAlgoAPI_Split
   return origin;
 }
 
+// A sheet's wall planes (unit normal with its first non-zero coordinate positive, offset), or none if a wall is
+// not planar.
+std::vector<std::pair<Vec3, double>> wallPlanes(const CadSolid& cad, const Sheet& sheet) {
+  std::vector<std::pair<Vec3, double>> planes;
+  const double tolerance = kJoin * cad.diagonal;
+  for (int f : sheet.faces) {
+    const BRepAdaptor_Surface surface(TopoDS::Face(cad.faces(f + 1)));
+    if (surface.GetType() != GeomAbs_Plane) return {};
+    const gp_XYZ d = surface.Plane().Axis().Direction().XYZ(), o = surface.Plane().Location().XYZ();
+    Vec3 n(d.X(), d.Y(), d.Z());
+    const int first = std::abs(n.x()) > 1e-9 ? 0 : std::abs(n.y()) > 1e-9 ? 1 : 2;
+    if (n[first] < 0) n = -n;
+    const double offset = n.dot(Vec3(o.X(), o.Y(), o.Z()));
+    const bool known = std::any_of(planes.begin(), planes.end(), [&](const auto& p) {
+      return p.first.dot(n) > 1 - 1e-9 && std::abs(p.second - offset) <= tolerance;
+    });
+    if (!known) planes.emplace_back(n, offset);
+  }
+  return planes;
+}
+
+bool samePlanes(const std::vector<std::pair<Vec3, double>>& a, const std::vector<std::pair<Vec3, double>>& b,
+                double tolerance) {
+  if (a.empty() || a.size() != b.size()) return false;
+  for (const auto& p : a)
+    if (std::none_of(b.begin(), b.end(), [&](const auto& q) {
+          return p.first.dot(q.first) > 1 - 1e-9 && std::abs(p.second - q.second) <= tolerance;
+        }))
+      return false;
+  return true;
+}
+
 }  // namespace
+
+std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
+  const int n = static_cast<int>(sheets.size());
+  const std::vector<int> faceSheet = sheetOfFaces(cad, sides, sheets);
+  std::vector<std::set<int>> meets(n);  // the standing sheets each meets in a concave edge
+  for (const ConcaveEdge& c : concaveEdges(cad))
+    if (const int a = faceSheet[c.a], b = faceSheet[c.b]; a > 0 && b > 0 && a != b)
+      meets[a].insert(b), meets[b].insert(a);
+  std::vector<std::vector<std::pair<Vec3, double>>> planes(n);
+  for (int s = 1; s < n; ++s) planes[s] = wallPlanes(cad, sheets[s]);
+  struct Crossing {
+    int a, b;
+    std::set<int> crossers;  // the other rib's segments both meet
+    double area;
+  };
+  std::vector<Crossing> crossings;
+  for (int a = 1; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      if (!samePlanes(planes[a], planes[b], kJoin * cad.diagonal)) continue;
+      Crossing c{a, b, {}, sheets[a].area + sheets[b].area};
+      std::set_intersection(meets[a].begin(), meets[a].end(), meets[b].begin(), meets[b].end(),
+                            std::inserter(c.crossers, c.crossers.end()));
+      if (!c.crossers.empty()) crossings.push_back(std::move(c));
+    }
+  std::stable_sort(crossings.begin(), crossings.end(),
+                   [](const Crossing& x, const Crossing& y) { return x.area > y.area; });
+  UnionFind uf(n);
+  std::set<int> through, crossed;  // segments of ribs run through, of ribs crossed
+  for (const Crossing& c : crossings) {
+    if (crossed.count(c.a) || crossed.count(c.b) ||
+        std::any_of(c.crossers.begin(), c.crossers.end(), [&](int x) { return through.count(x) > 0; }))
+      continue;
+    uf.unite(c.a, c.b), through.insert({c.a, c.b}), crossed.insert(c.crossers.begin(), c.crossers.end());
+  }
+  std::map<int, std::vector<int>> faces;  // root -> faces
+  for (int s = 0; s < n; ++s) {
+    std::vector<int>& f = faces[uf.find(s)];
+    f.insert(f.end(), sheets[s].faces.begin(), sheets[s].faces.end());
+  }
+  std::vector<Sheet> merged;
+  for (auto& [root, f] : faces) {
+    std::sort(f.begin(), f.end());
+    merged.push_back(sheetOf(cad, sides, f));
+  }
+  std::stable_sort(merged.begin(), merged.end(), [](const Sheet& x, const Sheet& y) { return x.area > y.area; });
+  return merged;
+}
 
 JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
   if (sheets.size() < 2) {  // one piece: the solid, each face its own origin

@@ -32,6 +32,13 @@ struct JunctionCut {
   std::vector<std::vector<int>> faceOrigin;
 };
 
+// Ribs crossing (an X): findSheets sees each rib cut in segments by the other. Of two crossing ribs the larger runs
+// through: its segments on each side of a crossing (their walls on the same planes, both meeting the other rib's
+// segments there) become one sheet, and the other rib's segments stand on it. Crossings are taken largest first;
+// a rib whose segments cross one already run through stays in segments there. [in] cad, sides; [in] sheets:
+// findSheets's. Returns the sheets, merged, the largest first.
+std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets);
+
 // [in] cad: the solid; [in] sides: its faces' sides (classifyWallSides); [in] sheets: findSheets's, the first
 // the base. Every other sheet is cut off along the base's wall faces it stands on (the concave edges between
 // its faces, walls and their rim faces, and the base's walls bound its foot; a foot running to the wall's

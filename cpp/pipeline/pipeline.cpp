@@ -456,7 +456,7 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
 JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
                                   const MeshOptions& o, StageClock& clock) {
   JunctionPieces t;
-  t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });
+  t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });  // sheets: crossings merged
   t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size());
   // A tenth of a layer: a sheet's walls meet a foot where the standing wall's hexes end.
   for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s)
@@ -573,7 +573,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   if (!o.dropJunctions && sides.ownSideFaces.empty())
     if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1)
-      return meshJunctions(cad, sides, sheets, o, result, clock);
+      return meshJunctions(cad, sides, mergeCrossingRibs(cad, sides, sheets), o, result, clock);
   const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r.junctions);
   r.thickness = sides.thickness;
   r.faces = countFaces(sides);

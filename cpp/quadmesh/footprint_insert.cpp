@@ -19,6 +19,7 @@ namespace hexlayer {
 namespace {
 
 constexpr double kBand = 2.0;          // of the quad size: the sheet's quads this near a footprint are meshed again
+constexpr double kOverlap = 1e-3;      // of the quad size: a foot this near another overlaps it
 constexpr double kOnRim = 0.1;         // of the quad size: a footprint node this near the sheet's rim lies on it
 constexpr double kTinyEdge = 0.3;      // of the quad size: a rim node of the gap this near a footprint's is dropped
 constexpr double kFlatCosine = 0.866;  // cos 30°: the gap's quads lean at most this far from its plane
@@ -108,6 +109,14 @@ std::vector<Gap> gapsRoundFeet(const QuadMesh& sheet, const FootprintQuads& foot
       for (const Triangle& tri : triangles(footprint.nodes, footprint.quads[q])) t.push_back(tri);
     roots.push_back(root), trees.emplace_back(std::move(t));
   }
+  for (std::size_t f = 0; f < trees.size(); ++f)  // feet on both sides of the sheet at one place
+    for (int q : footQuads[roots[f]])
+      for (int n : footprint.quads[q])
+        for (std::size_t g = 0; g < trees.size(); ++g)
+          if (g != f && trees[g].anyWithin(footprint.nodes[n], kOverlap * size))
+            throw geometryError(
+                "junction: walls stand on both sides of a sheet at one place (ribs crossing), which is not meshed "
+                "yet");
   const double band = kBand * size;
   removed.assign(sheet.quads.size(), 0);
   std::vector<int> claimedBy(sheet.quads.size(), -1);
