@@ -20,6 +20,7 @@ namespace {
 
 constexpr double kBand = 2.0;          // of the quad size: the sheet's quads this near a footprint are meshed again
 constexpr double kOverlap = 1e-3;      // of the quad size: a foot this near another overlaps it
+constexpr double kCoincide = 1e-2;     // of kOnRim: a rim node this near a footprint node is that node
 constexpr double kOnRim = 0.1;         // of the quad size: a footprint node this near the sheet's rim lies on it
 constexpr double kTinyEdge = 0.3;      // of the quad size: a rim node of the gap this near a footprint's is dropped
 constexpr double kFlatCosine = 0.866;  // cos 30°: the gap's quads lean at most this far from its plane
@@ -186,20 +187,29 @@ struct GapEdges {
 };
 
 // The rim edges of the taken-out quads, cut where a footprint reaches the rim: its nodes on an edge split it, and
-// the pieces the footprint covers are left out. [in] rim: those edges; [in] footRim: the footprint's boundary
-// edges on the rim; [in] footNodes: its boundary nodes.
+// the pieces the footprint covers are left out; a rim node where a footprint node is (a sheet's grid line through
+// the foot's corner) is that node. [in] rim: those edges; [in] footRim: the footprint's boundary edges on the rim;
+// [in] footNodes: its boundary nodes.
 std::vector<Edge> rimPieces(const Nodes& nodes, const std::vector<Edge>& rim, const std::vector<Edge>& footRim,
                             const std::set<int>& footNodes, double tolerance) {
-  auto covered = [&](const Vec3& p) {
+  auto covered = [&](const Vec3& p) {  // p lies along a footprint's rim edge, not beyond its ends
     for (const auto& [a, b] : footRim)
-      if (toSegment(p, nodes.at[a], nodes.at[b]).first <= tolerance) return true;
+      if (const auto [d, t] = toSegment(p, nodes.at[a], nodes.at[b]); d <= tolerance && t > 0 && t < 1) return true;
     return false;
   };
+  const double same = kCoincide * tolerance;
+  auto footNodeAt = [&](int n) {
+    for (int f : footNodes)
+      if ((nodes.at[f] - nodes.at[n]).norm() <= same) return f;
+    return n;
+  };
   std::vector<Edge> pieces;
-  for (const auto& [a, b] : rim) {
+  for (const auto& [rimA, rimB] : rim) {
+    const int a = footNodeAt(rimA), b = footNodeAt(rimB);
     std::vector<std::pair<double, int>> along{{0.0, a}, {1.0, b}};
     for (int f : footNodes)
-      if (const auto [d, t] = toSegment(nodes.at[f], nodes.at[a], nodes.at[b]); d <= tolerance && t > 0 && t < 1)
+      if (const auto [d, t] = toSegment(nodes.at[f], nodes.at[a], nodes.at[b]);
+          d <= tolerance && f != a && f != b && t > 0 && t < 1)
         along.emplace_back(t, f);
     std::sort(along.begin(), along.end());
     for (std::size_t k = 0; k + 1 < along.size(); ++k) {

@@ -129,6 +129,11 @@ TEST(FootprintInsert, AStripFromRimToRim) {
   expectInserted([](FootprintQuads& f, double s) { addStrip(f, 0, kL, 13.7, 1, 3, 40, s); }, 0.3);
 }
 
+// A rib to the rim whose sides lie on the sheet's grid lines: the sheet's rim nodes there are the foot's corners.
+TEST(FootprintInsert, AStripOnTheSheetsGridLines) {
+  expectInserted([](FootprintQuads& f, double s) { addStrip(f, 0, kL, 21, 2, 2, 20, s); }, 0.3);
+}
+
 // Two ribs, one to the rim, near enough that their gaps merge.
 TEST(FootprintInsert, TwoStripsShareAGap) {
   expectInserted(
