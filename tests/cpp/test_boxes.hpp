@@ -19,6 +19,14 @@ struct Box {
   double volume() const { return dx * dy * dz; }
 };
 
+// The solid scaled by s about the origin.
+inline TopoDS_Solid scaled(const TopoDS_Shape& solid, double s) {
+  gp_Trsf scale;
+  scale.SetScale(gp_Pnt(0, 0, 0), s);
+  TopExp_Explorer it(BRepBuilderAPI_Transform(solid, scale, true).Shape(), TopAbs_SOLID);
+  return TopoDS::Solid(it.Current());
+}
+
 // The union of boxes (faces unified, as a CAD system models a plate with ribs), scaled by s.
 inline TopoDS_Solid boxes(const std::vector<Box>& parts, double s) {
   TopoDS_Shape all =
@@ -29,10 +37,7 @@ inline TopoDS_Solid boxes(const std::vector<Box>& parts, double s) {
   }
   ShapeUpgrade_UnifySameDomain unify(all);
   unify.Build();
-  gp_Trsf scale;
-  scale.SetScale(gp_Pnt(0, 0, 0), s);
-  TopExp_Explorer solid(BRepBuilderAPI_Transform(unify.Shape(), scale, true).Shape(), TopAbs_SOLID);
-  return TopoDS::Solid(solid.Current());
+  return scaled(unify.Shape(), s);
 }
 
 }  // namespace hexlayer::test_boxes

@@ -11,7 +11,9 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/error.hpp"
@@ -156,5 +158,40 @@ TEST(JunctionCut, CurvedBaseWallIsNamed) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
     EXPECT_NE(std::string(e.what()).find("stands on a curved wall (Face"), std::string::npos) << e.what();
+  }
+}
+
+// Walls standing on walls: a rib ending on another rib (plate_ribs_tee) stands on it and on the plate; of two ribs
+// crossing, the larger runs through (its segments one sheet) and the other's segments stand on it (plate_rib_grid:
+// two 60-long ribs through, the two 40-long ones in three segments each). Every piece is one sheet, the volumes add
+// up, on copies scaled by 1e-3 and 1e3.
+TEST(JunctionCut, WallsStandingOnWalls) {
+  for (const auto& [name, sheets, onWalls] :
+       {std::tuple{"plate_ribs_tee", 3u, 1u}, std::tuple{"plate_rib_grid", 9u, 6u}}) {
+    for (double s : {1.0, 1e-3, 1e3}) {
+      SCOPED_TRACE(std::string(name) + " x " + std::to_string(s));
+      const TopoDS_Solid read =
+          readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/junctions/" + name + ".step").at(0);
+      const TopoDS_Solid solid = test_boxes::scaled(read, s);
+      const CadSolid cad = prepareSolid(solid, normalizingUnit(solid));
+      const WallSides sides = classifyWallSides(cad);
+      const std::vector<Sheet> merged = mergeCrossingRibs(cad, sides, findSheets(cad, sides));
+      ASSERT_EQ(merged.size(), sheets);
+      const JunctionCut cut = cutAtJunctions(cad, sides, merged);
+      ASSERT_EQ(cut.pieces.size(), sheets);
+      std::set<int> standingOnWalls;
+      for (const Foot& f : cut.feet) {
+        EXPECT_LT(f.base, f.sheet);
+        if (f.base > 0) standingOnWalls.insert(f.sheet);
+      }
+      EXPECT_EQ(standingOnWalls.size(), onWalls);
+      double volume = 0;
+      for (const TopoDS_Solid& p : cut.pieces) {
+        volume += volumeOf(p);
+        const CadSolid piece = prepareSolid(p, normalizingUnit(p));
+        EXPECT_EQ(findSheets(piece, classifyWallSides(piece)).size(), 1u);
+      }
+      EXPECT_NEAR(volume / cad.volume, 1, 1e-9);
+    }
   }
 }

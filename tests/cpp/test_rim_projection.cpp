@@ -15,6 +15,7 @@
 
 #include "geometry/cad_solid.hpp"
 #include "pipeline/pipeline.hpp"
+#include "test_boxes.hpp"
 
 using namespace hexlayer;
 
@@ -24,9 +25,7 @@ namespace {
 TopoDS_Solid scaled(const std::string& sample, double factor, bool bspline) {
   const TopoDS_Solid solid =
       readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/rims/" + sample + ".step").at(0);
-  gp_Trsf scale;
-  scale.SetScale(gp_Pnt(0, 0, 0), factor);
-  const TopoDS_Shape shape = BRepBuilderAPI_Transform(solid, scale, true).Shape();
+  const TopoDS_Solid shape = test_boxes::scaled(solid, factor);
   return TopoDS::Solid(bspline ? BRepBuilderAPI_NurbsConvert(shape, true).Shape() : shape);
 }
 
