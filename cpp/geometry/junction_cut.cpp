@@ -9,6 +9,7 @@
 #include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -25,6 +26,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 
 #include "core/error.hpp"
@@ -60,6 +62,16 @@ std::vector<int> sheetOfFaces(const CadSolid& cad, const WallSides& sides, const
         if (sides.faces[a].side == Side::Lateral && sheet[b] > 0) rimSheet[a] = sheet[b];
   }
   return rimSheet;
+}
+
+// The face's plane: its surface's if a plane, or the plane a B-spline (or other) surface lies on within tolerance
+// (CAD systems and scaling write planes as B-splines); none if it is curved.
+std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance) {
+  const BRepAdaptor_Surface surface(TopoDS::Face(face));
+  if (surface.GetType() == GeomAbs_Plane) return surface.Plane();
+  GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(TopoDS::Face(face)), tolerance);
+  if (!planar.IsPlanar()) return std::nullopt;
+  return planar.Plan();
 }
 
 // What the feet are found from, worked out once for every standing sheet.
@@ -157,11 +169,11 @@ std::vector<PlaneEdges> footEdgesByPlane(const Junctions& j, int s) {
   const double tolerance = kJoin * j.cad.diagonal;
   std::vector<PlaneEdges> planes;
   for (const auto& [base, edges] : footEdges(j, s)) {
-    const BRepAdaptor_Surface surface(TopoDS::Face(j.cad.faces(base + 1)));
-    if (surface.GetType() != GeomAbs_Plane)
+    const std::optional<gp_Pln> flat = planeOf(j.cad.faces(base + 1), tolerance);
+    if (!flat)
       throw geometryError("T-junction: the sheet at " + sheetPlace(j.cad, j.sheets[s]) + " stands on a curved wall (" +
                           inputFaceName(j.cad, base) + "), which junction meshing does not cut yet");
-    const gp_Pln plane = surface.Plane();
+    const gp_Pln plane = *flat;
     const int sheet = j.sheetOf[base];
     auto same = [&](const PlaneEdges& p) {
       return p.base == sheet && p.plane.Axis().IsParallel(plane.Axis(), 1e-9) &&
@@ -217,9 +229,9 @@ std::vector<std::pair<Vec3, double>> wallPlanes(const CadSolid& cad, const Sheet
   std::vector<std::pair<Vec3, double>> planes;
   const double tolerance = kJoin * cad.diagonal;
   for (int f : sheet.faces) {
-    const BRepAdaptor_Surface surface(TopoDS::Face(cad.faces(f + 1)));
-    if (surface.GetType() != GeomAbs_Plane) return {};
-    const gp_XYZ d = surface.Plane().Axis().Direction().XYZ(), o = surface.Plane().Location().XYZ();
+    const std::optional<gp_Pln> plane = planeOf(cad.faces(f + 1), tolerance);
+    if (!plane) return {};
+    const gp_XYZ d = plane->Axis().Direction().XYZ(), o = plane->Location().XYZ();
     Vec3 n(d.X(), d.Y(), d.Z());
     const int first = std::abs(n.x()) > 1e-9 ? 0 : std::abs(n.y()) > 1e-9 ? 1 : 2;
     if (n[first] < 0) n = -n;

@@ -18,16 +18,17 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kBand = 2.0;          // of the quad size: the sheet's quads this near a footprint are meshed again
-constexpr double kOverlap = 1e-3;      // of the quad size: a foot this near another overlaps it
-constexpr double kCoincide = 1e-2;     // of kOnRim: a rim node this near a footprint node is that node
-constexpr double kOnRim = 0.1;         // of the quad size: a footprint node this near the sheet's rim lies on it
-constexpr double kTinyEdge = 0.3;      // of the quad size: a rim node of the gap this near a footprint's is dropped
-constexpr double kFlatCosine = 0.866;  // cos 30°: the gap's quads lean at most this far from its plane
-constexpr int kMaxStrip = 20;          // quads between two leftover triangles that are paired (quad_completion)
-constexpr double kGmshSeconds = 120;   // a gap's Gmsh run (it takes milliseconds)
+constexpr double kBands[] = {2, 3, 4};  // of the quad size: the sheet's quads this near a footprint are meshed again
+constexpr double kOverlap = 1e-3;       // of the quad size: a foot this near another overlaps it
+constexpr double kCoincide = 1e-2;      // of kOnRim: a rim node this near a footprint node is that node
+constexpr double kOnRim = 0.1;          // of the quad size: a footprint node this near the sheet's rim lies on it
+constexpr double kTinyEdge = 0.3;       // of the quad size: a rim node of the gap this near a footprint's is dropped
+constexpr double kFlatCosine = 0.866;   // cos 30°: the gap's quads lean at most this far from its plane
+constexpr int kMaxStrip = 20;           // quads between two leftover triangles that are paired (quad_completion)
+constexpr double kGmshSeconds = 120;    // a gap's Gmsh run (it takes milliseconds)
 constexpr int kGapAlgorithms[] = {6, 5, 1};      // Gmsh's 2D algorithms tried: frontal-Delaunay, Delaunay, MeshAdapt
 constexpr double kGapSpacing[] = {1, 0.7, 0.5};  // of the boundary's edge lengths: the gap's mesh sizes tried
+constexpr double kGoodGap = 0.3;                 // scaled Jacobian of the gap's worst quad that needs no finer try
 constexpr int kSmoothing = 10;                   // iterations of the gap's quads (as the quad stage's)
 
 using Quad = std::array<int, 4>;
@@ -92,8 +93,9 @@ struct Gap {
 };
 
 // The footprint quads joined by nodes into feet, and the sheet's quads within the band of each; feet whose bands
-// share a quad are one gap. [in] sheet, footprint, size. Returns the gaps; `removed` flags the sheet's quads in one.
-std::vector<Gap> gapsRoundFeet(const QuadMesh& sheet, const FootprintQuads& footprint, double size,
+// share a quad are one gap. [in] sheet, footprint, size; [in] band: how near. Returns the gaps; `removed` flags the
+// sheet's quads in one.
+std::vector<Gap> gapsRoundFeet(const QuadMesh& sheet, const FootprintQuads& footprint, double size, double band,
                                std::vector<char>& removed) {
   UnionFind feet(footprint.quads.size());
   std::map<int, int> quadOfNode;
@@ -118,7 +120,6 @@ std::vector<Gap> gapsRoundFeet(const QuadMesh& sheet, const FootprintQuads& foot
             throw geometryError(
                 "junction: walls stand on both sides of a sheet at one place (ribs crossing), which is not meshed "
                 "yet");
-  const double band = kBand * size;
   removed.assign(sheet.quads.size(), 0);
   std::vector<int> claimedBy(sheet.quads.size(), -1);
   for (std::size_t q = 0; q < sheet.quads.size(); ++q) {
@@ -522,10 +523,11 @@ double smoothGap(const std::vector<Vec3>& at, const Plane& plane, const ChordalL
 }
 
 // The gap's quads on the sheet: of Gmsh's algorithms (kGapAlgorithms) the one whose worst quad, smoothed, is best;
-// finer (kGapSpacing) where none of them gives quads only.
-// [in] at: every node so far; [in] plane, chordal, surfaces. Throws geometryError if none gives unfolded quads.
+// finer (kGapSpacing) while none of them gives quads only, all at least kGoodGap.
+// [in] at: every node so far; [in] plane, chordal, surfaces; [out] worst: its worst quad's scaled Jacobian. Throws
+// geometryError if none gives unfolded quads.
 QuadMesh gapQuads(const std::vector<Vec3>& at, const Plane& plane, const ChordalLocator& chordal,
-                  const std::vector<Surface>& surfaces) {
+                  const std::vector<Surface>& surfaces, double& worst) {
   std::vector<Eigen::Vector2d> flat;
   for (const Vec3& p : at) flat.push_back(plane.at(p));
   QuadMesh best;
@@ -544,23 +546,24 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const Plane& plane, const Chordal
         failure = e.what();
       }
     }
-    if (!best.quads.empty()) break;
+    if (bestWorst >= kGoodGap) break;
   }
   if (best.quads.empty()) throw geometryError("junction: the gap round a wall's foot was not meshed: " + failure);
+  worst = bestWorst;
   return best;
 }
 
 }  // namespace
 
-FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads& footprint,
-                                    const ChordalLocator& chordal, double size) {
-  if (footprint.quads.empty()) throw geometryError("junction: no footprint to put in the sheet's quads");
+// insertFootprints with the sheet's quads within `band` of a footprint meshed again.
+FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& footprint, const ChordalLocator& chordal,
+                                double size, double band) {
   Nodes nodes;
   nodes.at = sheet.nodes;
   nodes.sheetNodes = static_cast<int>(sheet.nodes.size());
   nodes.at.insert(nodes.at.end(), footprint.nodes.begin(), footprint.nodes.end());
   std::vector<char> removed;
-  const std::vector<Gap> gaps = gapsRoundFeet(sheet, footprint, size, removed);
+  const std::vector<Gap> gaps = gapsRoundFeet(sheet, footprint, size, band, removed);
   std::vector<Quad> added;  // in the numbering of `nodes`
   FootprintInsertion out;
   for (const Gap& gap : gaps) {
@@ -570,7 +573,9 @@ FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads&
     dropTinyRimEdges(nodes, edges.free, size, loops);
     std::vector<Surface> surfaces = surfacesOf(nodes, plane, loops);
     evenBoundaries(nodes, edges.free, surfaces);
-    const QuadMesh q = gapQuads(nodes.at, plane, chordal, surfaces);  // its first nodes are nodes.at
+    double worst = 0;
+    const QuadMesh q = gapQuads(nodes.at, plane, chordal, surfaces, worst);  // its first nodes are nodes.at
+    out.worstQuad = std::min(out.worstQuad, worst);
     nodes.at.insert(nodes.at.end(), q.nodes.begin() + static_cast<long>(nodes.at.size()), q.nodes.end());
     added.insert(added.end(), q.quads.begin(), q.quads.end());
     for (int f : gap.footprintQuads) {
@@ -608,6 +613,24 @@ FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads&
   out.quads.layout = sheet.layout;
   out.quads.tries = sheet.tries;
   return out;
+}
+
+FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads& footprint,
+                                    const ChordalLocator& chordal, double size) {
+  if (footprint.quads.empty()) throw geometryError("junction: no footprint to put in the sheet's quads");
+  FootprintInsertion best;
+  std::string failure;
+  for (double band : kBands) {  // a wider gap where the boundary leaves Gmsh no good quads
+    try {
+      FootprintInsertion in = insertWithin(sheet, footprint, chordal, size, band * size);
+      if (best.quads.quads.empty() || in.worstQuad > best.worstQuad) best = std::move(in);
+      if (best.worstQuad >= kGoodGap) break;
+    } catch (const Error& e) {
+      if (failure.empty()) failure = e.what();
+    }
+  }
+  if (best.quads.quads.empty()) throw geometryError(failure);
+  return best;
 }
 
 }  // namespace hexlayer

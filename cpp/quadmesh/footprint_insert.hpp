@@ -25,10 +25,12 @@ struct FootprintInsertion {
   QuadMesh quads;                                 // the sheet's quads carrying the footprints
   std::vector<int> node;                          // per footprint node, its node in `quads`
   std::size_t quadsRemoved = 0, quadsMeshed = 0;  // the sheet's quads taken out, the gap's quads meshed again
+  double worstQuad = 1;                           // the gap's worst quad's scaled Jacobian
 };
 
 // [in] sheet: the sheet's quads (quad_mesh.hpp); [in] footprint; [in] chordal: the sheet's chordal surface, where
-// the gap's new nodes are put; [in] size: the sheet's quad size (the gap is about a quad wide round each footprint).
+// the gap's new nodes are put; [in] size: the sheet's quad size (the gap is two quads wide round each footprint, three
+// or four where the quads Gmsh can make in the narrower one are poor: the widest's worst quad best).
 // Returns the quads: the kept ones first (their nodes in their order), then the gap's and the footprint's.
 // Throws geometryError saying why if a footprint does not lie on the sheet, footprints overlap, the gap round one
 // is not flat (a foot across a bend), or Gmsh cannot fill it with quads.

@@ -66,6 +66,39 @@ def closest_pair(x):
     return best
 
 
+def write_holed_ribbed_plate(path, scale, turn):
+    """Writes test_walls_on_a_holed_plate_and_twins's part (mm, then scaled and turned) as STEP; returns its volume
+    (Gmsh's)."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        plate = occ.addBox(0, 0, 0, 80, 50, 2)
+        notch = occ.addBox(60, 35, -1, 30, 20, 4)
+        holes = [(3, occ.addCylinder(x, y, -1, 0, 0, 4, r)) for x, y, r in ((15, 12, 4), (65, 15, 5))]
+        body, _ = occ.cut([(3, plate)], [(3, notch)] + holes)
+        oblique = occ.addBox(0, -1, 2, 36, 2, 10)  # along x, then turned 25 degrees about z round (20, 30)
+        occ.rotate([(3, oblique)], 0, 0, 0, 0, 0, 1, 25 * np.pi / 180)
+        occ.translate([(3, oblique)], 20, 20, 0)
+        rim_rib = occ.addBox(0, 38, 2, 30, 2, 8)
+        boss = occ.addCylinder(45, 10, 1, 0, 0, 11, 4)
+        bore = occ.addCylinder(45, 10, 2, 0, 0, 11, 2)
+        boss_ring, _ = occ.cut([(3, boss)], [(3, bore)])
+        fused, _ = occ.fuse(body, [(3, oblique), (3, rim_rib)] + boss_ring)
+        occ.synchronize()
+        volumes = gmsh.model.getEntities(3)
+        if turn:
+            occ.rotate(volumes, 0, 0, 0, 1, 2, 3, turn * np.pi / 180)
+        if scale != 1:  # OpenCASCADE's scaling writes the planes as B-spline surfaces
+            occ.dilate(volumes, 0, 0, 0, scale, scale, scale)
+        occ.synchronize()
+        gmsh.write(path)
+        return sum(occ.getMass(3, tag) for _, tag in volumes)
+    finally:
+        gmsh.finalize()
+
+
 class JunctionMeshing(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -76,9 +109,9 @@ class JunctionMeshing(unittest.TestCase):
     def tearDownClass(cls):
         cls.tmp.cleanup()
 
-    def mesh(self, part, layers, order):
+    def mesh(self, part, layers, order, step=None):
         out = os.path.join(self.tmp.name, f"{part}_{layers}_{order}")
-        done = subprocess.run([harness.args.hexlayer, "mesh", os.path.join(samples_dir(), part + ".step"),
+        done = subprocess.run([harness.args.hexlayer, "mesh", step or os.path.join(samples_dir(), part + ".step"),
                                "-o", out + ".inp", "--report", out + ".json", "--layers", str(layers),
                                "--order", str(order), "--quiet"],
                               capture_output=True, text=True, timeout=600)
@@ -153,6 +186,34 @@ class JunctionMeshing(unittest.TestCase):
             self.assertGreaterEqual(junction["scaled_jacobian"]["min"], MIN_SJ)
             self.assertGreaterEqual(junction["scaled_jacobian"]["avg"], JUNCTION_MEAN_SJ)
         return min(report["junctions"], key=lambda j: j["scaled_jacobian"]["avg"])
+
+    def check_part(self, part, step, layers, order, kinds):
+        """Meshes the part and checks its mesh and report; returns them for the printout."""
+        path, report = self.mesh(part, layers, order, step)
+        nodes, elements, sets = read_inp(path)
+        x, rows, index = hex_arrays(nodes, elements)
+        hexes = rows[:, :8]
+        diagonal = float(np.linalg.norm(x.max(axis=0) - x.min(axis=0)))
+        sj, volume = self.check_hexes(x, hexes, elements, part, order)
+        quads = self.check_conformal(x, hexes, step, diagonal)
+        self.check_groups(path, x, index, sets, hexes, quads, step, diagonal)
+        junction = self.check_report(report, kinds)
+        print(f"{part} {layers} layers, order {order}: {len(hexes)} hexes, scaled Jacobian min {sj.min():.3f} avg "
+              f"{sj.mean():.3f}, volume {100 * (volume / self.volumes[part] - 1):+.2e} %, junctions "
+              f"{len(report['junctions'])}, worst min {junction['scaled_jacobian']['min']:.3f} avg "
+              f"{junction['scaled_jacobian']['avg']:.3f}")
+        return x, rows, diagonal
+
+    def test_walls_on_a_holed_plate_and_twins(self):
+        """A plate of no rectangle (a notch cut off), two round holes, a rib oblique to its sides ending inside it,
+        a rib from a rim to the first, a hollow boss; and its twins: in metres (x 1e-3) and turned 30 degrees about
+        a skew axis."""
+        for name, scale, turn in (("holed", 1.0, 0.0), ("holed_metres", 1e-3, 0.0), ("holed_turned", 1.0, 30.0)):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_holed_ribbed_plate(step, scale, turn)
+            for layers in (2, 3):
+                with self.subTest(part=name, layers=layers):
+                    self.check_part(name, step, layers, 1, ["T", "T", "ring"])
 
     def test_ribs_on_plates(self):
         for part in PARTS:
