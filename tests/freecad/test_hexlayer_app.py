@@ -182,6 +182,28 @@ class Failures(unittest.TestCase):
         plate_volume = 60 * 40 * 2
         self.assertLess(abs(volumes.sum() - plate_volume) / plate_volume, 0.01, "the plate, filled under the boss")
 
+    def test_ribs_and_a_boss_are_meshed_by_default(self):
+        """Issue 18: a plate with two ribs (one ending on the other) and a hollow boss, made in FreeCAD, meshes
+        all-hex through the workbench without DropJunctions: every CAD face grouped, the hexes fill the part."""
+        import Part
+        plate = Part.makeBox(80, 50, 2)
+        rib = Part.makeBox(60, 2, 10, FreeCAD.Vector(10, 24, 2))
+        cross = Part.makeBox(2, 14, 8, FreeCAD.Vector(30, 10, 2))  # from y = 10 to the first rib's wall
+        boss = Part.makeCylinder(6, 9, FreeCAD.Vector(62, 11, 2)).cut(Part.makeCylinder(4, 9, FreeCAD.Vector(62, 11, 2)))
+        shape = plate.fuse([rib, cross, boss]).removeSplitter()
+        part = self.doc.addObject("Part::Feature", "RibbedPlate")
+        part.Shape = shape.Solids[0]
+        mesh = HexLayer.makeMesh(self.doc, part)
+        self.doc.recompute()
+        self.assertTrue(mesh.isValid(), mesh.Status)
+        fem = mesh.FemMesh
+        self.assertEqual(fem.HexaCount, fem.VolumeCount)
+        volumes = t.written_hex_volumes(fem)
+        self.assertGreater(volumes.min(), 0)
+        self.assertLess(abs(volumes.sum() - part.Shape.Volume) / part.Shape.Volume, 0.01, "the plate, ribs and boss")
+        faces = sorted(fem.getGroupName(g) for g in fem.Groups if fem.getGroupName(g).startswith("Face"))
+        self.assertEqual(len(faces), len(part.Shape.Faces), "every CAD face grouped")
+
     def test_bad_option_values(self):
         plate = t.add_plate(self.doc)
         for name, value, phrase in (("Order", 3, "Order must be 1 or 2, got 3"), ("Aspect", -1.0, "Aspect must be a positive ratio"),
