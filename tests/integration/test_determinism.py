@@ -41,6 +41,10 @@ class Determinism(unittest.TestCase):
     def test_adaptive_quadratic_l_bracket(self):
         self.check_twice("lbracket.step", ("inp",), "--sizing", "adaptive", "--order", "2")
 
+    def test_junctions_quadratic(self):
+        """Issue 18: ribs (one ending on the other) meshed piece by piece, the gaps round their feet by Gmsh."""
+        self.check_twice(os.path.join("junctions", "plate_ribs_tee.step"), ("inp",), "--order", "2")
+
 
 if __name__ == "__main__":
     harness.main()
