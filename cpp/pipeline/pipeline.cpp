@@ -459,8 +459,12 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });  // sheets: crossings merged
   t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size());
   // A tenth of a layer: a sheet's walls meet a foot where the standing wall's hexes end.
+  // The pieces are not validated on their own (a small boss's ring of quads loses a few % of its volume, not of the
+  // part's): the joined mesh is, as any part's.
+  MeshOptions piece = o;
+  piece.force = true;
   for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s)
-    meshPiece(t, s, o, kOnFoot * sides.thickness / o.layers, 0.1);
+    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.1);
   return t;
 }
 

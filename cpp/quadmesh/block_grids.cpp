@@ -247,7 +247,10 @@ BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size) {
     return {};
   const double outerQuads = quadsAlongLoop(map, map.rim, size).back(),
                innerQuads = quadsAlongLoop(map, inner, size).back();
-  const int around = std::max(kMinAround, count(std::max(outerQuads, innerQuads)));
+  // Even: a tube standing on a sheet (a boss) puts a ring of `around` quads in the sheet's quads, and the quads
+  // inside and round it can only be all quads if their boundaries are even.
+  int around = std::max(kMinAround, count(std::max(outerQuads, innerQuads)));
+  around += around % 2;
   // Rows as square as the columns: the map's rectangle is -log(inner radius) tall and 2 pi wide.
   const double height = -std::log(map.innerRadius);
   const int across = count(height / (2 * M_PI) * around);
