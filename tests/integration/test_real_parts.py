@@ -109,7 +109,7 @@ class RealParts(unittest.TestCase):
                 self.assertEqual(junction["kind"], "ring")
                 self.assertGreaterEqual(junction["scaled_jacobian"]["min"], 0.2)
                 self.assertGreaterEqual(junction["scaled_jacobian"]["avg"], 0.8)
-                self.assert_names_a_boss(part, junction["at"], junction["faces"])
+                self.assert_names_a_boss(part, junction["at"], [int(f[4:]) for f in junction["faces"]])
 
     def assert_names_a_boss(self, part, at, faces):
         """The faces a junction message names, read from the CAD with Gmsh, are a boss's (a small part of the
