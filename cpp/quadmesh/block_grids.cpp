@@ -174,6 +174,398 @@ bool holeCorners(const SurfaceMap& map, std::vector<int>& hole, std::array<int, 
   return corners[0] < corners[1] && corners[1] < corners[2] && corners[2] < corners[3];
 }
 
+// ---------------------------------------------------------------------------------------------------------------
+// The shared grid round many holes (issue 19): where pockets of neighbouring holes would meet or one would reach
+// the rim, one tensor grid is laid over the whole square, its lines through every hole's sides: a rectilinear hole
+// (its loop runs along the axes in the plane, corner to corner: a cutout, with its notches) is a block of grid
+// cells left out, its loop on their lines, as a quad layout traced from the holes' corners would have it (the
+// lines of the motorcycle graph run on to the rim here, so every node inside is regular); any other hole gets a
+// pocket of four blocks as in holedGrid, its box shrunk to half the gap to the next hole or snapped to the rim.
+// ---------------------------------------------------------------------------------------------------------------
+
+constexpr double kPocketMargin = 1.0;  // a pocket's box reaches this many quads beyond its hole, where there is room
+constexpr double kMinMargin = 0.25;    // a pocket's box snapped to a line is still this many quads beyond its hole
+constexpr double kSnap = 0.5;          // a pocket's side this many quads from a line or the rim is moved onto it
+constexpr double kMerge = 0.1;         // lines of two holes' sides this many quads apart are merged (their mean)
+constexpr double kSame = 1e-6;         // sides' lines this many quads apart are one (collinear sides, rounding)
+constexpr double kSharpTurn = 50 * M_PI / 180;  // a hole's loop turning more in the plane has a corner there
+constexpr double kAxisSlope = 0.1;  // a rectilinear hole's side runs along an axis within this slope (5.7 degrees)
+constexpr double kStraight = 0.05;  // and its points are this share of its length off its chord, at most
+
+// One axis of the square measured in quads: those the target size needs from -1 to u, averaged over the rim's two
+// sides along the axis (holedGrid's lines are the rim nodes' places averaged the same way).
+class AxisMeasure {
+ public:
+  // [in] locate: the map's locator; [in] axis: 0 for u, 1 for v; [in] size: the target size.
+  AxisMeasure(const MapLocator& locate, int axis, const SizeField& size) {
+    std::array<PlaneLine, 2> sides;
+    for (int s = 0; s < 2; ++s) {
+      Eigen::Vector2d from = Eigen::Vector2d::Constant(s == 0 ? -1.0 : 1.0), to = from;
+      from[axis] = -1, to[axis] = 1;
+      sides[s] = planeLine(locate, from, {locate(to), to}, size);
+    }
+    const int samples = static_cast<int>(std::max(sides[0].quads.size(), sides[1].quads.size())) - 1;
+    for (int i = 0; i <= samples; ++i) {
+      const double f = static_cast<double>(i) / samples;
+      u_.push_back(-1 + 2 * f), q_.push_back(0.5 * (at(sides[0].quads, f) + at(sides[1].quads, f)));
+    }
+  }
+  double quads(double u) const { return interpolate(u_, q_, u); }  // from -1 to u
+  double place(double q) const { return interpolate(q_, u_, q); }  // the u where quads(u) = q
+  double total() const { return q_.back(); }
+
+ private:
+  // The measure at a share f of a line's evenly spaced samples.
+  static double at(const std::vector<double>& samples, double f) {
+    const double s = f * (samples.size() - 1);
+    const std::size_t i = std::min(static_cast<std::size_t>(s), samples.size() - 2);
+    return samples[i] + (s - i) * (samples[i + 1] - samples[i]);
+  }
+  // y at x of the ascending table (xs, ys), linear between its entries, clamped to its ends.
+  static double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+    const std::size_t i = std::clamp<std::size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin(), 1,
+                                                  xs.size() - 1);
+    const double g = std::clamp((x - xs[i - 1]) / std::max(xs[i] - xs[i - 1], 1e-300), 0.0, 1.0);
+    return ys[i - 1] + g * (ys[i] - ys[i - 1]);
+  }
+  std::vector<double> u_, q_;
+};
+
+// A grid line being laid out, along one axis: where it crosses it, in quads (AxisMeasure), and what put it there.
+struct Station {
+  double at = 0;
+  enum Kind { Rim, Side, Pocket } kind = Rim;
+  int hole = -1;     // Side, Pocket: whose
+  int outward = 0;   // Pocket: +1 on the side of the box above its hole, -1 below
+  double hole0 = 0;  // Pocket: the hole's extent on that side
+};
+
+// A hole of the shared grid, in quads of the two axis measures.
+struct GridHole {
+  std::vector<int> loop;  // map.holes[h]; a rectilinear one from its corner 0
+  std::array<double, 2> lo{}, hi{};  // its extent
+  // Rectilinear: its corners (positions in the loop, ascending), the axis each side (corner j to j + 1) keeps
+  // constant and the station of its line; else empty.
+  std::vector<int> corners, sideAxis, sideStation;
+  std::array<double, 2> boxLo{}, boxHi{};      // the pocket's box (a rectilinear hole: its extent)
+  std::array<int, 2> boxLoAt{-1, -1}, boxHiAt{-1, -1};  // the box's stations (pocket)
+  bool rectilinear() const { return !corners.empty(); }
+};
+
+// Positions in a loop of the plane where it turns by more than kSharpTurn.
+std::vector<int> sharpTurns(const std::vector<Eigen::Vector2d>& p) {
+  const int n = static_cast<int>(p.size());
+  std::vector<int> turns;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d in = p[i] - p[(i + n - 1) % n], out = p[(i + 1) % n] - p[i];
+    if (std::abs(std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out))) > kSharpTurn) turns.push_back(i);
+  }
+  return turns;
+}
+
+// The axis a loop's stretch from corner a to corner b keeps constant (0: u), or -1 if it does not run straight
+// along an axis of the plane. [in] p: the loop's points.
+int sideAxis(const std::vector<Eigen::Vector2d>& p, int a, int b) {
+  const int n = static_cast<int>(p.size());
+  const Eigen::Vector2d d = p[b % n] - p[a];
+  const int axis = std::abs(d.x()) < std::abs(d.y()) ? 0 : 1;
+  if (!(std::abs(d[axis]) <= kAxisSlope * std::abs(d[1 - axis]))) return -1;
+  const Eigen::Vector2d normal = Eigen::Vector2d(-d.y(), d.x()).normalized();
+  for (int i = a + 1; i < b; ++i)
+    if (std::abs((p[i % n] - p[a]).dot(normal)) > kStraight * d.norm()) return -1;
+  return axis;
+}
+
+// Whether a hole runs along the axes, corner to corner, each side across the last: then its loop from corner 0,
+// its corners and the axis each side keeps. [in,out] hole; [in] map.
+bool rectilinear(const SurfaceMap& map, GridHole& hole) {
+  std::vector<Eigen::Vector2d> p;
+  for (int i : hole.loop) p.push_back(map.uv[i]);
+  std::vector<int> corners = sharpTurns(p);
+  if (corners.size() < 4 || corners.size() % 2) return false;
+  std::vector<int> axes;
+  for (std::size_t j = 0; j < corners.size(); ++j) {
+    const int end = j + 1 < corners.size() ? corners[j + 1] : corners[0] + static_cast<int>(p.size());
+    axes.push_back(sideAxis(p, corners[j], end));
+    if (axes.back() < 0 || (j > 0 && axes[j] == axes[j - 1])) return false;
+  }
+  std::rotate(hole.loop.begin(), hole.loop.begin() + corners[0], hole.loop.end());
+  const int first = corners.front();
+  for (int& c : corners) c -= first;
+  hole.corners = corners, hole.sideAxis = axes;
+  return true;
+}
+
+// The shared grid's holes with their extents, and the stations of the rectilinear ones' sides.
+// [in] map, measure; [out] stations: per axis, those added. Returns the holes.
+std::vector<GridHole> gridHoles(const SurfaceMap& map, const std::array<AxisMeasure, 2>& measure,
+                                std::array<std::vector<Station>, 2>& stations) {
+  std::vector<GridHole> holes;
+  for (const std::vector<int>& loop : map.holes) {
+    GridHole hole;
+    hole.loop = loop;
+    for (int a = 0; a < 2; ++a) {
+      double lo = 1e300, hi = -1e300;
+      for (int p : loop) lo = std::min(lo, map.uv[p][a]), hi = std::max(hi, map.uv[p][a]);
+      hole.lo[a] = measure[a].quads(lo), hole.hi[a] = measure[a].quads(hi);
+    }
+    if (rectilinear(map, hole)) {
+      const int n = static_cast<int>(hole.loop.size());
+      for (std::size_t j = 0; j < hole.corners.size(); ++j) {
+        const int a = hole.sideAxis[j], from = hole.corners[j];
+        const int to = j + 1 < hole.corners.size() ? hole.corners[j + 1] : n;
+        const double u = 0.5 * (map.uv[hole.loop[from]][a] + map.uv[hole.loop[to % n]][a]);
+        hole.sideStation.push_back(static_cast<int>(stations[a].size()));
+        stations[a].push_back({measure[a].quads(u), Station::Side, static_cast<int>(holes.size())});
+      }
+      hole.boxLo = hole.lo, hole.boxHi = hole.hi;
+    } else {
+      for (int a = 0; a < 2; ++a)
+        hole.boxLo[a] = hole.lo[a] - kPocketMargin, hole.boxHi[a] = hole.hi[a] + kPocketMargin;
+    }
+    holes.push_back(std::move(hole));
+  }
+  return holes;
+}
+
+// Pockets that would meet another hole's box shrunk to half the gap between the two holes, along the axis where
+// the gap is widest. [in,out] holes. Returns false if two holes' extents overlap along both axes.
+bool separatePockets(std::vector<GridHole>& holes) {
+  for (std::size_t i = 0; i < holes.size(); ++i)
+    for (std::size_t j = i + 1; j < holes.size(); ++j) {
+      GridHole &a = holes[i], &b = holes[j];
+      auto overlap = [&](int x) { return a.boxLo[x] < b.boxHi[x] && b.boxLo[x] < a.boxHi[x]; };
+      if (!overlap(0) || !overlap(1)) continue;
+      auto gap = [&](int x) { return std::max(b.lo[x] - a.hi[x], a.lo[x] - b.hi[x]); };
+      const int x = gap(0) >= gap(1) ? 0 : 1;
+      if (!(gap(x) > 0)) return false;
+      GridHole &below = a.hi[x] <= b.lo[x] ? a : b, &above = &below == &a ? b : a;
+      const double middle = 0.5 * (below.hi[x] + above.lo[x]);
+      below.boxHi[x] = std::min(below.boxHi[x], middle), above.boxLo[x] = std::max(above.boxLo[x], middle);
+    }
+  return true;
+}
+
+// The stations of the pockets' boxes, a box's side within kSnap of the rim on it. [in,out] holes, stations;
+// [in] total: per axis, the quads across the square.
+void addPocketStations(std::vector<GridHole>& holes, std::array<std::vector<Station>, 2>& stations,
+                       const std::array<double, 2>& total) {
+  for (std::size_t h = 0; h < holes.size(); ++h) {
+    GridHole& hole = holes[h];
+    if (hole.rectilinear()) continue;
+    for (int a = 0; a < 2; ++a) {
+      if (hole.boxLo[a] < kSnap) hole.boxLo[a] = 0;
+      if (hole.boxHi[a] > total[a] - kSnap) hole.boxHi[a] = total[a];
+      hole.boxLoAt[a] = static_cast<int>(stations[a].size());
+      stations[a].push_back({hole.boxLo[a], Station::Pocket, static_cast<int>(h), -1, hole.lo[a]});
+      hole.boxHiAt[a] = static_cast<int>(stations[a].size());
+      stations[a].push_back({hole.boxHi[a], Station::Pocket, static_cast<int>(h), 1, hole.hi[a]});
+    }
+  }
+}
+
+// Whether the lines of two holes' sides along axis `a` may be one line: different holes beside each other (their
+// extents apart along the other axis).
+bool mayShare(const std::vector<GridHole>& holes, int a, int h, int g) {
+  const int o = 1 - a;
+  return h != g && (holes[h].hi[o] < holes[g].lo[o] || holes[g].hi[o] < holes[h].lo[o]);
+}
+
+// Rectilinear holes' side lines within kMerge of each other merged into their mean where they may share a line,
+// within kSame whatever their holes.
+// [in,out] stations: one axis's; [in] holes, a.
+void mergeSides(std::vector<Station>& stations, const std::vector<GridHole>& holes, int a) {
+  std::vector<int> sides;
+  for (std::size_t s = 0; s < stations.size(); ++s)
+    if (stations[s].kind == Station::Side) sides.push_back(static_cast<int>(s));
+  std::stable_sort(sides.begin(), sides.end(), [&](int s, int t) { return stations[s].at < stations[t].at; });
+  for (std::size_t first = 0; first < sides.size();) {
+    std::vector<int> cluster{sides[first]};
+    std::size_t next = first + 1;
+    for (; next < sides.size() && stations[sides[next]].at - stations[sides[first]].at <= kMerge; ++next) {
+      const bool fits = stations[sides[next]].at - stations[sides[first]].at <= kSame ||
+                        std::all_of(cluster.begin(), cluster.end(), [&](int s) {
+                          return mayShare(holes, a, stations[s].hole, stations[sides[next]].hole);
+                        });
+      if (!fits) break;
+      cluster.push_back(sides[next]);
+    }
+    double mean = 0;
+    for (int s : cluster) mean += stations[s].at / cluster.size();
+    for (int s : cluster) stations[s].at = mean;
+    first = next;
+  }
+}
+
+// Pockets' sides within kSnap of a rim or side line towards their hole moved onto it, if they stay kMinMargin
+// beyond it. [in,out] stations: one axis's.
+void snapPockets(std::vector<Station>& stations) {
+  for (Station& pocket : stations) {
+    if (pocket.kind != Station::Pocket) continue;
+    double best = pocket.at, nearest = kSnap;
+    for (const Station& line : stations) {
+      const double inward = (pocket.at - line.at) * pocket.outward;  // > 0: towards the hole
+      if (line.kind != Station::Pocket && inward > 0 && inward < nearest &&
+          (line.at - pocket.hole0) * pocket.outward >= kMinMargin)
+        best = line.at, nearest = inward;
+    }
+    pocket.at = best;
+  }
+}
+
+// One axis's grid lines: the stations' places, ascending and once each (those within kSame of the one before as
+// one: rounding), and between each two as many more as the quads between them need (one cell at the least).
+struct AxisLines {
+  std::vector<double> at;    // in quads, ascending: at[0] = 0 and at.back() the quads across (the rim's)
+  std::vector<int> station;  // per station, its line
+  int cells() const { return static_cast<int>(at.size()) - 1; }
+};
+
+// [in] stations: one axis's; [in] total: the quads across the square. Returns its lines.
+AxisLines axisLines(const std::vector<Station>& stations, double total) {
+  std::vector<double> all{0, total}, places;
+  for (const Station& s : stations) all.push_back(s.at);
+  std::sort(all.begin(), all.end());
+  for (double at : all)
+    if (places.empty() || at - places.back() > kSame) places.push_back(at);
+  places.back() = total;
+  AxisLines lines;
+  std::vector<int> lineOf;  // per place
+  for (std::size_t p = 0; p < places.size(); ++p) {
+    lineOf.push_back(static_cast<int>(lines.at.size()));
+    if (p + 1 == places.size()) {
+      lines.at.push_back(places[p]);
+      break;
+    }
+    const int cells = count(places[p + 1] - places[p] - kSame);  // a half quad rounded down, whatever the rounding
+    for (int c = 0; c < cells; ++c) lines.at.push_back(places[p] + (places[p + 1] - places[p]) * c / cells);
+  }
+  for (const Station& s : stations)  // the place at or just below it
+    lines.station.push_back(lineOf[std::upper_bound(places.begin(), places.end(), s.at + kSame) - places.begin() - 1]);
+  return lines;
+}
+
+// The grid's lines in the plane, falling with their index as holedGrid's, the outermost on the rim.
+GridLines planeLines(const std::array<AxisLines, 2>& axis, const std::array<AxisMeasure, 2>& measure) {
+  GridLines lines;
+  for (int a = 0; a < 2; ++a) {
+    std::vector<double>& plane = a == 0 ? lines.x : lines.y;
+    const int n = axis[a].cells();
+    for (int i = 0; i <= n; ++i) plane.push_back(i == 0 ? 1.0 : i == n ? -1.0 : measure[a].place(axis[a].at[n - i]));
+  }
+  return lines;
+}
+
+// A pocket's box of grid cells (Box: its corner 0 at +u, +v, where the lines' index is lowest).
+Box pocketCells(const GridHole& hole, const std::array<AxisLines, 2>& axis) {
+  const int u0 = axis[0].station[hole.boxLoAt[0]], u1 = axis[0].station[hole.boxHiAt[0]];
+  const int v0 = axis[1].station[hole.boxLoAt[1]], v1 = axis[1].station[hole.boxHiAt[1]];
+  return {axis[0].cells() - u1, axis[1].cells() - v1, u1 - u0, v1 - v0};
+}
+
+// A rectilinear hole's corners on the grid, in quads: corner j where the lines of sides j - 1 and j cross.
+std::vector<Eigen::Vector2d> cornerPlaces(const GridHole& hole, const std::array<AxisLines, 2>& axis) {
+  const int m = static_cast<int>(hole.corners.size());
+  std::vector<Eigen::Vector2d> at;
+  for (int j = 0; j < m; ++j) {
+    const int a = hole.sideAxis[j], before = (j + m - 1) % m;
+    Eigen::Vector2d c;
+    c[a] = axis[a].at[axis[a].station[hole.sideStation[j]]];
+    c[1 - a] = axis[1 - a].at[axis[1 - a].station[hole.sideStation[before]]];
+    at.push_back(c);
+  }
+  return at;
+}
+
+// Whether a point lies inside a polygon (even-odd rule).
+bool inside(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+    if ((polygon[i].y() > p.y()) != (polygon[j].y() > p.y()) &&
+        p.x() < polygon[j].x() + (polygon[i].x() - polygon[j].x()) * (p.y() - polygon[j].y()) /
+                                     (polygon[i].y() - polygon[j].y()))
+      in = !in;
+  return in;
+}
+
+// Whether each side of a rectilinear hole still spans one grid cell at least (merged lines may not close it).
+bool sidesOpen(const GridHole& hole, const std::array<AxisLines, 2>& axis) {
+  const int m = static_cast<int>(hole.corners.size());
+  for (int j = 0; j < m; ++j) {
+    const int b = 1 - hole.sideAxis[j];
+    if (axis[b].station[hole.sideStation[(j + m - 1) % m]] == axis[b].station[hole.sideStation[(j + 1) % m]])
+      return false;
+  }
+  return true;
+}
+
+// The cells the holes leave out of the grid: each pocket's box and each rectilinear hole's inside, per cell
+// (i, k) of holedGrid's numbering at [i * n1 + k]. [out] skip. Returns false if two holes take a cell or a
+// rectilinear hole's side closed.
+bool leaveOutHoles(const std::vector<GridHole>& holes, const std::array<AxisLines, 2>& axis, std::vector<char>& skip) {
+  const int n0 = axis[0].cells(), n1 = axis[1].cells();
+  skip.assign(n0 * n1, 0);
+  auto take = [&](int u, int v) { return skip[(n0 - 1 - u) * n1 + (n1 - 1 - v)]++ == 0; };  // ascending cell
+  for (const GridHole& hole : holes) {
+    if (!hole.rectilinear()) {
+      const Box box = pocketCells(hole, axis);
+      for (int i = box.i0; i < box.i0 + box.n0; ++i)
+        for (int k = box.k0; k < box.k0 + box.n1; ++k)
+          if (skip[i * n1 + k]++) return false;
+      continue;
+    }
+    if (!sidesOpen(hole, axis)) return false;
+    const std::vector<Eigen::Vector2d> polygon = cornerPlaces(hole, axis);
+    std::array<int, 2> lo{1 << 30, 1 << 30}, hi{-1, -1};
+    for (std::size_t j = 0; j < hole.corners.size(); ++j) {
+      const int a = hole.sideAxis[j], line = axis[a].station[hole.sideStation[j]];
+      lo[a] = std::min(lo[a], line), hi[a] = std::max(hi[a], line);
+    }
+    for (int u = lo[0]; u < hi[0]; ++u)
+      for (int v = lo[1]; v < hi[1]; ++v) {
+        const Eigen::Vector2d centre(0.5 * (axis[0].at[u] + axis[0].at[u + 1]), 0.5 * (axis[1].at[v] + axis[1].at[v + 1]));
+        if (inside(polygon, centre) && !take(u, v)) return false;
+      }
+  }
+  return true;
+}
+
+// A rectilinear hole's loop measured along its sides: each step by how far it goes, in quads, along the axis its
+// side runs along (so a side's points are where a grid line across the side crosses it).
+std::vector<double> sideMeasure(const SurfaceMap& map, const GridHole& hole, const std::array<AxisMeasure, 2>& measure) {
+  const int n = static_cast<int>(hole.loop.size()), m = static_cast<int>(hole.corners.size());
+  std::vector<double> along{0};
+  for (int j = 0; j < m; ++j) {
+    const int b = 1 - hole.sideAxis[j], end = j + 1 < m ? hole.corners[j + 1] : n;
+    for (int i = hole.corners[j]; i < end; ++i)
+      along.push_back(along.back() + std::abs(measure[b].quads(map.uv[hole.loop[(i + 1) % n]][b]) -
+                                              measure[b].quads(map.uv[hole.loop[i]][b])));
+  }
+  return along;
+}
+
+// The grid's nodes on a rectilinear hole's sides moved onto its loop: side j's from corner j to corner j + 1,
+// each where its line across the side crosses the loop (sideMeasure). [in,out] grid: nodes (addCells'); [in] map,
+// hole, axis, measure, lines.
+void snapSides(BlockGrid& grid, const SurfaceMap& map, const GridHole& hole, const std::array<AxisLines, 2>& axis,
+               const std::array<AxisMeasure, 2>& measure, const GridLines& lines) {
+  const std::vector<double> along = sideMeasure(map, hole, measure);
+  const int n = static_cast<int>(hole.loop.size()), m = static_cast<int>(hole.corners.size());
+  for (int j = 0; j < m; ++j) {
+    const int a = hole.sideAxis[j], b = 1 - a, line = axis[a].station[hole.sideStation[j]];
+    const int from = axis[b].station[hole.sideStation[(j + m - 1) % m]], to = axis[b].station[hole.sideStation[(j + 1) % m]];
+    const double s0 = along[hole.corners[j]], s1 = along[j + 1 < m ? hole.corners[j + 1] : n];
+    const int step = to > from ? 1 : -1;
+    for (int t = from; t != to + step; t += step) {
+      const double f = (axis[b].at[t] - axis[b].at[from]) / (axis[b].at[to] - axis[b].at[from]);
+      std::array<int, 2> asc;
+      asc[a] = line, asc[b] = t;
+      const int node = lines.node(axis[0].cells() - asc[0], axis[1].cells() - asc[1]);
+      grid.nodes[node] = loopPoint(map, hole.loop, along, s0 + f * (s1 - s0)).x;
+    }
+  }
+}
+
 }  // namespace
 
 BlockGrid oGrid(const SurfaceMap& map, const SizeField& size) {
@@ -227,6 +619,40 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
     addRing(grid, locate, lines, box, loopPoints(map, hole, corners, box.sides(), size), false, size);
   }
   dropUnusedNodes(grid.nodes, grid.quads);  // those inside the pockets
+  return grid;
+}
+
+BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size) {
+  if (map.empty() || map.boundary != MapBoundary::Square || map.holes.empty()) return {};
+  const MapLocator locate(map);
+  const std::array<AxisMeasure, 2> measure{AxisMeasure(locate, 0, size), AxisMeasure(locate, 1, size)};
+  std::array<std::vector<Station>, 2> stations;
+  std::vector<GridHole> holes = gridHoles(map, measure, stations);
+  if (!separatePockets(holes)) return {};
+  addPocketStations(holes, stations, {measure[0].total(), measure[1].total()});
+  std::array<AxisLines, 2> axis;
+  for (int a = 0; a < 2; ++a) {
+    mergeSides(stations[a], holes, a);
+    snapPockets(stations[a]);
+    axis[a] = axisLines(stations[a], measure[a].total());
+  }
+  std::vector<char> skip;
+  if (!leaveOutHoles(holes, axis, skip)) return {};
+  const GridLines lines = planeLines(axis, measure);
+  BlockGrid grid;
+  addCells(grid, locate, lines, skip);
+  grid.blocks = 1;
+  for (GridHole& hole : holes) {
+    if (hole.rectilinear()) {
+      snapSides(grid, map, hole, axis, measure, lines);
+      continue;
+    }
+    std::array<int, 4> corners;
+    if (!holeCorners(map, hole.loop, corners)) return {};
+    const Box box = pocketCells(hole, axis);
+    addRing(grid, locate, lines, box, loopPoints(map, hole.loop, corners, box.sides(), size), false, size);
+  }
+  dropUnusedNodes(grid.nodes, grid.quads);  // those inside the holes and pockets
   return grid;
 }
 
