@@ -186,11 +186,10 @@ bool holeCorners(const SurfaceMap& map, std::vector<int>& hole, std::array<int, 
 constexpr double kPocketMargin = 1.0;  // a pocket's box reaches this many quads beyond its hole, where there is room
 constexpr double kMinMargin = 0.25;    // a pocket's box snapped to a line is still this many quads beyond its hole
 constexpr double kSnap = 0.5;          // a pocket's side this many quads from a line or the rim is moved onto it
-constexpr double kMerge = 0.1;         // lines of two holes' sides this many quads apart are merged (their mean)
+constexpr double kMerge = 0.35;        // lines of two holes' sides this many quads apart are merged (their mean)
 constexpr double kSame = 1e-6;         // sides' lines this many quads apart are one (collinear sides, rounding)
-constexpr double kSharpTurn = 50 * M_PI / 180;  // a hole's loop turning more in the plane has a corner there
-constexpr double kAxisSlope = 0.1;  // a rectilinear hole's side runs along an axis within this slope (5.7 degrees)
-constexpr double kStraight = 0.05;  // and its points are this share of its length off its chord, at most
+constexpr double kOffSide = 0.5;  // a rectilinear hole's points are this many quads off their side's line, at most
+constexpr double kOffArea = 0.05;  // and its area this share off its sides' polygon's (a round hole's: 57 % more)
 
 // One axis of the square measured in quads: those the target size needs from -1 to u, averaged over the rim's two
 // sides along the axis (holedGrid's lines are the rim nodes' places averaged the same way).
@@ -238,6 +237,7 @@ struct Station {
   int hole = -1;     // Side, Pocket: whose
   int outward = 0;   // Pocket: +1 on the side of the box above its hole, -1 below
   double hole0 = 0;  // Pocket: the hole's extent on that side
+  std::array<double, 2> span{};  // Side: where the side runs along the other axis, in quads, ascending
 };
 
 // A hole of the shared grid, in quads of the two axis measures.
@@ -252,45 +252,59 @@ struct GridHole {
   bool rectilinear() const { return !corners.empty(); }
 };
 
-// Positions in a loop of the plane where it turns by more than kSharpTurn.
-std::vector<int> sharpTurns(const std::vector<Eigen::Vector2d>& p) {
-  const int n = static_cast<int>(p.size());
-  std::vector<int> turns;
-  for (int i = 0; i < n; ++i) {
-    const Eigen::Vector2d in = p[i] - p[(i + n - 1) % n], out = p[(i + 1) % n] - p[i];
-    if (std::abs(std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out))) > kSharpTurn) turns.push_back(i);
-  }
-  return turns;
+// The area of a polygon (positive counter-clockwise).
+double polygonArea(const std::vector<Eigen::Vector2d>& p) {
+  double twice = 0;
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) twice += p[j].x() * p[i].y() - p[i].x() * p[j].y();
+  return 0.5 * twice;
 }
 
-// The axis a loop's stretch from corner a to corner b keeps constant (0: u), or -1 if it does not run straight
-// along an axis of the plane. [in] p: the loop's points.
-int sideAxis(const std::vector<Eigen::Vector2d>& p, int a, int b) {
-  const int n = static_cast<int>(p.size());
-  const Eigen::Vector2d d = p[b % n] - p[a];
-  const int axis = std::abs(d.x()) < std::abs(d.y()) ? 0 : 1;
-  if (!(std::abs(d[axis]) <= kAxisSlope * std::abs(d[1 - axis]))) return -1;
-  const Eigen::Vector2d normal = Eigen::Vector2d(-d.y(), d.x()).normalized();
-  for (int i = a + 1; i < b; ++i)
-    if (std::abs((p[i % n] - p[a]).dot(normal)) > kStraight * d.norm()) return -1;
-  return axis;
+// A loop's sides along the axes: runs of its edges that go more along the same axis (in quads, so that a diagonal
+// is a diagonal), each from its corner (the run's first point) to the next. [in] q: the loop in quads.
+// [out] corners: ascending; [out] axes: per side, the axis it keeps (about) constant.
+void axisRuns(const std::vector<Eigen::Vector2d>& q, std::vector<int>& corners, std::vector<int>& axes) {
+  const int n = static_cast<int>(q.size());
+  auto keeps = [&](int i) {
+    const Eigen::Vector2d d = q[(i + 1) % n] - q[i];
+    return std::abs(d.x()) >= std::abs(d.y()) ? 1 : 0;
+  };
+  for (int i = 0; i < n; ++i)
+    if (keeps((i + n - 1) % n) != keeps(i)) corners.push_back(i), axes.push_back(keeps(i));
 }
 
-// Whether a hole runs along the axes, corner to corner, each side across the last: then its loop from corner 0,
-// its corners and the axis each side keeps. [in,out] hole; [in] map.
-bool rectilinear(const SurfaceMap& map, GridHole& hole) {
-  std::vector<Eigen::Vector2d> p;
-  for (int i : hole.loop) p.push_back(map.uv[i]);
-  std::vector<int> corners = sharpTurns(p);
-  if (corners.size() < 4 || corners.size() % 2) return false;
-  std::vector<int> axes;
-  for (std::size_t j = 0; j < corners.size(); ++j) {
-    const int end = j + 1 < corners.size() ? corners[j + 1] : corners[0] + static_cast<int>(p.size());
-    axes.push_back(sideAxis(p, corners[j], end));
-    if (axes.back() < 0 || (j > 0 && axes[j] == axes[j - 1])) return false;
+// Whether a hole runs along the axes, side after side, each across the last: its points within kOffSide of their
+// side's line (the mean of its ends'), its area within kOffArea of the polygon of those lines. A hole's loop as the
+// chordal surface has it can cut a notch's corner or overshoot it by a fraction of a quad: the sides' lines pass
+// such points by, the grid's nodes on the side are moved onto the loop (snapSides). Then sets its loop from corner
+// 0, its corners and sides' axes. [in] q: the loop in quads; [in,out] hole; [out] sides: per side, the station of
+// its line (in quads), its span.
+bool rectilinear(const std::vector<Eigen::Vector2d>& q, GridHole& hole, std::vector<Station>& sides) {
+  std::vector<int> corners, axes;
+  axisRuns(q, corners, axes);
+  const int n = static_cast<int>(q.size()), m = static_cast<int>(corners.size());
+  if (m < 4) return false;
+  std::vector<double> at;
+  for (int j = 0; j < m; ++j) {
+    const int a = axes[j], from = corners[j], to = j + 1 < m ? corners[j + 1] : corners[0] + n;
+    at.push_back(0.5 * (q[from][a] + q[to % n][a]));
+    Station side{at[j], Station::Side};
+    side.span = {q[from][1 - a], q[from][1 - a]};
+    for (int i = from; i <= to; ++i) {
+      if (std::abs(q[i % n][a] - at[j]) > kOffSide) return false;
+      side.span = {std::min(side.span[0], q[i % n][1 - a]), std::max(side.span[1], q[i % n][1 - a])};
+    }
+    sides.push_back(side);
   }
+  std::vector<Eigen::Vector2d> polygon;
+  for (int j = 0; j < m; ++j) {
+    Eigen::Vector2d c;
+    c[axes[j]] = at[j], c[1 - axes[j]] = at[(j + m - 1) % m];
+    polygon.push_back(c);
+  }
+  const double area = polygonArea(polygon);
+  if (!(std::abs(polygonArea(q) - area) <= kOffArea * std::abs(area))) return false;
   std::rotate(hole.loop.begin(), hole.loop.begin() + corners[0], hole.loop.end());
-  const int first = corners.front();
+  const int first = corners[0];
   for (int& c : corners) c -= first;
   hole.corners = corners, hole.sideAxis = axes;
   return true;
@@ -309,14 +323,14 @@ std::vector<GridHole> gridHoles(const SurfaceMap& map, const std::array<AxisMeas
       for (int p : loop) lo = std::min(lo, map.uv[p][a]), hi = std::max(hi, map.uv[p][a]);
       hole.lo[a] = measure[a].quads(lo), hole.hi[a] = measure[a].quads(hi);
     }
-    if (rectilinear(map, hole)) {
-      const int n = static_cast<int>(hole.loop.size());
-      for (std::size_t j = 0; j < hole.corners.size(); ++j) {
-        const int a = hole.sideAxis[j], from = hole.corners[j];
-        const int to = j + 1 < hole.corners.size() ? hole.corners[j + 1] : n;
-        const double u = 0.5 * (map.uv[hole.loop[from]][a] + map.uv[hole.loop[to % n]][a]);
+    std::vector<Eigen::Vector2d> q;
+    for (int p : loop) q.emplace_back(measure[0].quads(map.uv[p].x()), measure[1].quads(map.uv[p].y()));
+    if (std::vector<Station> sides; rectilinear(q, hole, sides)) {
+      for (std::size_t j = 0; j < sides.size(); ++j) {
+        const int a = hole.sideAxis[j];
         hole.sideStation.push_back(static_cast<int>(stations[a].size()));
-        stations[a].push_back({measure[a].quads(u), Station::Side, static_cast<int>(holes.size())});
+        sides[j].hole = static_cast<int>(holes.size());
+        stations[a].push_back(sides[j]);
       }
       hole.boxLo = hole.lo, hole.boxHi = hole.hi;
     } else {
@@ -364,17 +378,14 @@ void addPocketStations(std::vector<GridHole>& holes, std::array<std::vector<Stat
   }
 }
 
-// Whether the lines of two holes' sides along axis `a` may be one line: different holes beside each other (their
-// extents apart along the other axis).
-bool mayShare(const std::vector<GridHole>& holes, int a, int h, int g) {
-  const int o = 1 - a;
-  return h != g && (holes[h].hi[o] < holes[g].lo[o] || holes[g].hi[o] < holes[h].lo[o]);
-}
+// Whether the lines of two sides may be one line: they lie beside each other, not facing each other (their spans
+// along the other axis apart): the pieces of a side that a notch splits, the sides of holes in a row.
+bool mayShare(const Station& s, const Station& t) { return s.span[1] < t.span[0] || t.span[1] < s.span[0]; }
 
 // Rectilinear holes' side lines within kMerge of each other merged into their mean where they may share a line,
-// within kSame whatever their holes.
+// within kSame whatever their spans.
 // [in,out] stations: one axis's; [in] holes, a.
-void mergeSides(std::vector<Station>& stations, const std::vector<GridHole>& holes, int a) {
+void mergeSides(std::vector<Station>& stations) {
   std::vector<int> sides;
   for (std::size_t s = 0; s < stations.size(); ++s)
     if (stations[s].kind == Station::Side) sides.push_back(static_cast<int>(s));
@@ -385,7 +396,7 @@ void mergeSides(std::vector<Station>& stations, const std::vector<GridHole>& hol
     for (; next < sides.size() && stations[sides[next]].at - stations[sides[first]].at <= kMerge; ++next) {
       const bool fits = stations[sides[next]].at - stations[sides[first]].at <= kSame ||
                         std::all_of(cluster.begin(), cluster.end(), [&](int s) {
-                          return mayShare(holes, a, stations[s].hole, stations[sides[next]].hole);
+                          return mayShare(stations[s], stations[sides[next]]);
                         });
       if (!fits) break;
       cluster.push_back(sides[next]);
@@ -411,6 +422,50 @@ void snapPockets(std::vector<Station>& stations) {
     }
     pocket.at = best;
   }
+}
+
+// Where the ray from `from` through `through` first crosses a loop of the plane: the position along the loop
+// (segment i from point i to i + 1, plus the share of it), or -1 if it does not. [in] p: the loop's points.
+double rayHit(const std::vector<Eigen::Vector2d>& p, const Eigen::Vector2d& from, const Eigen::Vector2d& through) {
+  const Eigen::Vector2d d = through - from;
+  const int n = static_cast<int>(p.size());
+  double nearest = 1e300, at = -1;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d e = p[(i + 1) % n] - p[i], w = p[i] - from;
+    const double det = e.x() * d.y() - e.y() * d.x();  // solves from + s d = p[i] + t e
+    if (det == 0) continue;
+    const double s = (e.x() * w.y() - e.y() * w.x()) / det, t = (d.x() * w.y() - d.y() * w.x()) / det;
+    if (s > 0 && t >= 0 && t < 1 && s < nearest) nearest = s, at = i + t;
+  }
+  return at;
+}
+
+// The loop points of a pocket's ring seen from the hole's centre: each where the ray from the centre through the
+// box's node crosses the hole (an O-grid's straight spokes, square where the ring is thin); empty unless each
+// node's ray crosses it and they go round it once, in the walk's order. [in] map, hole, lines, box.
+std::vector<LoopPoint> spokePoints(const SurfaceMap& map, const std::vector<int>& hole, const GridLines& lines,
+                                   const Box& box) {
+  std::vector<Eigen::Vector2d> p;
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (int i : hole) p.push_back(map.uv[i]), centre += map.uv[i] / hole.size();
+  const int n = static_cast<int>(p.size());
+  std::vector<double> at;
+  for (int t = 0; t < box.around(); ++t) {
+    const auto [i, k] = box.walk(t);
+    at.push_back(rayHit(p, centre, lines.uv(i, k)));
+    if (at.back() < 0) return {};
+  }
+  int descents = 0;  // going round once: the positions fall once, where the walk passes the loop's first point
+  for (std::size_t t = 0; t < at.size(); ++t) descents += at[(t + 1) % at.size()] <= at[t];
+  if (descents != 1) return {};
+  std::vector<LoopPoint> points;
+  for (double a : at) {
+    const int i = static_cast<int>(a);
+    const double g = a - i;
+    const int j = hole[(i + 1) % n];
+    points.push_back({(1 - g) * map.points[hole[i]] + g * map.points[j], (1 - g) * p[i] + g * p[(i + 1) % n]});
+  }
+  return points;
 }
 
 // One axis's grid lines: the stations' places, ascending and once each (those within kSame of the one before as
@@ -632,7 +687,7 @@ BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size) {
   addPocketStations(holes, stations, {measure[0].total(), measure[1].total()});
   std::array<AxisLines, 2> axis;
   for (int a = 0; a < 2; ++a) {
-    mergeSides(stations[a], holes, a);
+    mergeSides(stations[a]);
     snapPockets(stations[a]);
     axis[a] = axisLines(stations[a], measure[a].total());
   }
@@ -647,10 +702,12 @@ BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size) {
       snapSides(grid, map, hole, axis, measure, lines);
       continue;
     }
-    std::array<int, 4> corners;
-    if (!holeCorners(map, hole.loop, corners)) return {};
     const Box box = pocketCells(hole, axis);
-    addRing(grid, locate, lines, box, loopPoints(map, hole.loop, corners, box.sides(), size), false, size);
+    std::vector<LoopPoint> ring = spokePoints(map, hole.loop, lines, box);
+    std::array<int, 4> corners;
+    if (ring.empty() && !holeCorners(map, hole.loop, corners)) return {};
+    if (ring.empty()) ring = loopPoints(map, hole.loop, corners, box.sides(), size);  // by arc length, as holedGrid
+    addRing(grid, locate, lines, box, ring, false, size);
   }
   dropUnusedNodes(grid.nodes, grid.quads);  // those inside the holes and pockets
   return grid;

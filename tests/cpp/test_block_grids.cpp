@@ -201,7 +201,7 @@ TEST(BlockGrids, SharedGridPocketsRoundOctagonsCloseTogether) {
   EXPECT_TRUE(holedGrid(mapToPlane(s, 1, MapBoundary::Square), unit).empty());
   const Shared g = expectSharedGrid(s, 6, 0.01);
   EXPECT_EQ(g.blocks, 1u + 4 * 6);
-  EXPECT_GT(g.quality.worst, 0.5);
+  EXPECT_GT(g.quality.worst, 0.55);  // unsmoothed; their spokes from the octagons' centres (0.24 by arc length)
   EXPECT_GT(g.quality.mean, 0.9);
 }
 
@@ -213,7 +213,7 @@ TEST(BlockGrids, SharedGridWithHolesNearTheRim) {
   EXPECT_TRUE(holedGrid(mapToPlane(c, 2, MapBoundary::Square), two).empty());
   const Shared octagon = expectSharedGrid(o, 1, 0.01, 2);
   EXPECT_EQ(octagon.blocks, 5u);  // its pocket's box on the rim
-  EXPECT_GT(octagon.quality.worst, 0.5);
+  EXPECT_GT(octagon.quality.worst, 0.55);
   EXPECT_GT(octagon.quality.mean, 0.9);
   const Shared cutout = expectSharedGrid(c, 1, 1e-9, 2);
   EXPECT_EQ(cutout.blocks, 1u);
