@@ -188,8 +188,8 @@ constexpr double kMinMargin = 0.25;    // a pocket's box snapped to a line is st
 constexpr double kSnap = 0.5;          // a pocket's side this many quads from a line or the rim is moved onto it
 constexpr double kMerge = 0.35;        // lines of two holes' sides this many quads apart are merged (their mean)
 constexpr double kSame = 1e-6;         // sides' lines this many quads apart are one (collinear sides, rounding)
-constexpr double kOffSide = 0.5;  // a rectilinear hole's points are this many quads off their side's line, at most
-constexpr double kOffArea = 0.05;  // and its area this share off its sides' polygon's (a round hole's: 57 % more)
+constexpr double kOffSide = 0.5;       // a rectilinear hole's points are this many quads off their side's line, at most
+constexpr double kOffArea = 0.05;      // and its area this share off its sides' polygon's (a round hole's: 57 % more)
 
 // One axis of the square measured in quads: those the target size needs from -1 to u, averaged over the rim's two
 // sides along the axis (holedGrid's lines are the rim nodes' places averaged the same way).
@@ -222,8 +222,8 @@ class AxisMeasure {
   }
   // y at x of the ascending table (xs, ys), linear between its entries, clamped to its ends.
   static double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
-    const std::size_t i = std::clamp<std::size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin(), 1,
-                                                  xs.size() - 1);
+    const std::size_t i =
+        std::clamp<std::size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin(), 1, xs.size() - 1);
     const double g = std::clamp((x - xs[i - 1]) / std::max(xs[i] - xs[i - 1], 1e-300), 0.0, 1.0);
     return ys[i - 1] + g * (ys[i] - ys[i - 1]);
   }
@@ -234,20 +234,19 @@ class AxisMeasure {
 struct Station {
   double at = 0;
   enum Kind { Rim, Side, Pocket } kind = Rim;
-  int hole = -1;     // Side, Pocket: whose
-  int outward = 0;   // Pocket: +1 on the side of the box above its hole, -1 below
-  double hole0 = 0;  // Pocket: the hole's extent on that side
+  int outward = 0;               // Pocket: +1 on the side of the box above its hole, -1 below
+  double hole0 = 0;              // Pocket: the hole's extent on that side
   std::array<double, 2> span{};  // Side: where the side runs along the other axis, in quads, ascending
 };
 
 // A hole of the shared grid, in quads of the two axis measures.
 struct GridHole {
-  std::vector<int> loop;  // map.holes[h]; a rectilinear one from its corner 0
+  std::vector<int> loop;             // map.holes[h]; a rectilinear one from its corner 0
   std::array<double, 2> lo{}, hi{};  // its extent
   // Rectilinear: its corners (positions in the loop, ascending), the axis each side (corner j to j + 1) keeps
   // constant and the station of its line; else empty.
   std::vector<int> corners, sideAxis, sideStation;
-  std::array<double, 2> boxLo{}, boxHi{};      // the pocket's box (a rectilinear hole: its extent)
+  std::array<double, 2> boxLo{}, boxHi{};               // the pocket's box (a rectilinear hole: its extent)
   std::array<int, 2> boxLoAt{-1, -1}, boxHiAt{-1, -1};  // the box's stations (pocket)
   bool rectilinear() const { return !corners.empty(); }
 };
@@ -329,7 +328,6 @@ std::vector<GridHole> gridHoles(const SurfaceMap& map, const std::array<AxisMeas
       for (std::size_t j = 0; j < sides.size(); ++j) {
         const int a = hole.sideAxis[j];
         hole.sideStation.push_back(static_cast<int>(stations[a].size()));
-        sides[j].hole = static_cast<int>(holes.size());
         stations[a].push_back(sides[j]);
       }
       hole.boxLo = hole.lo, hole.boxHi = hole.hi;
@@ -364,16 +362,15 @@ bool separatePockets(std::vector<GridHole>& holes) {
 // [in] total: per axis, the quads across the square.
 void addPocketStations(std::vector<GridHole>& holes, std::array<std::vector<Station>, 2>& stations,
                        const std::array<double, 2>& total) {
-  for (std::size_t h = 0; h < holes.size(); ++h) {
-    GridHole& hole = holes[h];
+  for (GridHole& hole : holes) {
     if (hole.rectilinear()) continue;
     for (int a = 0; a < 2; ++a) {
       if (hole.boxLo[a] < kSnap) hole.boxLo[a] = 0;
       if (hole.boxHi[a] > total[a] - kSnap) hole.boxHi[a] = total[a];
       hole.boxLoAt[a] = static_cast<int>(stations[a].size());
-      stations[a].push_back({hole.boxLo[a], Station::Pocket, static_cast<int>(h), -1, hole.lo[a]});
+      stations[a].push_back({hole.boxLo[a], Station::Pocket, -1, hole.lo[a]});
       hole.boxHiAt[a] = static_cast<int>(stations[a].size());
-      stations[a].push_back({hole.boxHi[a], Station::Pocket, static_cast<int>(h), 1, hole.hi[a]});
+      stations[a].push_back({hole.boxHi[a], Station::Pocket, 1, hole.hi[a]});
     }
   }
 }
@@ -383,8 +380,7 @@ void addPocketStations(std::vector<GridHole>& holes, std::array<std::vector<Stat
 bool mayShare(const Station& s, const Station& t) { return s.span[1] < t.span[0] || t.span[1] < s.span[0]; }
 
 // Rectilinear holes' side lines within kMerge of each other merged into their mean where they may share a line,
-// within kSame whatever their spans.
-// [in,out] stations: one axis's; [in] holes, a.
+// within kSame whatever their spans. [in,out] stations: one axis's.
 void mergeSides(std::vector<Station>& stations) {
   std::vector<int> sides;
   for (std::size_t s = 0; s < stations.size(); ++s)
@@ -395,9 +391,8 @@ void mergeSides(std::vector<Station>& stations) {
     std::size_t next = first + 1;
     for (; next < sides.size() && stations[sides[next]].at - stations[sides[first]].at <= kMerge; ++next) {
       const bool fits = stations[sides[next]].at - stations[sides[first]].at <= kSame ||
-                        std::all_of(cluster.begin(), cluster.end(), [&](int s) {
-                          return mayShare(stations[s], stations[sides[next]]);
-                        });
+                        std::all_of(cluster.begin(), cluster.end(),
+                                    [&](int s) { return mayShare(stations[s], stations[sides[next]]); });
       if (!fits) break;
       cluster.push_back(sides[next]);
     }
@@ -408,7 +403,7 @@ void mergeSides(std::vector<Station>& stations) {
   }
 }
 
-// Pockets' sides within kSnap of a rim or side line towards their hole moved onto it, if they stay kMinMargin
+// Pockets' sides within kSnap of a side's line towards their hole moved onto it, if they stay kMinMargin
 // beyond it. [in,out] stations: one axis's.
 void snapPockets(std::vector<Station>& stations) {
   for (Station& pocket : stations) {
@@ -537,8 +532,8 @@ bool inside(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& 
   bool in = false;
   for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
     if ((polygon[i].y() > p.y()) != (polygon[j].y() > p.y()) &&
-        p.x() < polygon[j].x() + (polygon[i].x() - polygon[j].x()) * (p.y() - polygon[j].y()) /
-                                     (polygon[i].y() - polygon[j].y()))
+        p.x() < polygon[j].x() +
+                    (polygon[i].x() - polygon[j].x()) * (p.y() - polygon[j].y()) / (polygon[i].y() - polygon[j].y()))
       in = !in;
   return in;
 }
@@ -578,7 +573,8 @@ bool leaveOutHoles(const std::vector<GridHole>& holes, const std::array<AxisLine
     }
     for (int u = lo[0]; u < hi[0]; ++u)
       for (int v = lo[1]; v < hi[1]; ++v) {
-        const Eigen::Vector2d centre(0.5 * (axis[0].at[u] + axis[0].at[u + 1]), 0.5 * (axis[1].at[v] + axis[1].at[v + 1]));
+        const Eigen::Vector2d centre(0.5 * (axis[0].at[u] + axis[0].at[u + 1]),
+                                     0.5 * (axis[1].at[v] + axis[1].at[v + 1]));
         if (inside(polygon, centre) && !take(u, v)) return false;
       }
   }
@@ -587,7 +583,8 @@ bool leaveOutHoles(const std::vector<GridHole>& holes, const std::array<AxisLine
 
 // A rectilinear hole's loop measured along its sides: each step by how far it goes, in quads, along the axis its
 // side runs along (so a side's points are where a grid line across the side crosses it).
-std::vector<double> sideMeasure(const SurfaceMap& map, const GridHole& hole, const std::array<AxisMeasure, 2>& measure) {
+std::vector<double> sideMeasure(const SurfaceMap& map, const GridHole& hole,
+                                const std::array<AxisMeasure, 2>& measure) {
   const int n = static_cast<int>(hole.loop.size()), m = static_cast<int>(hole.corners.size());
   std::vector<double> along{0};
   for (int j = 0; j < m; ++j) {
@@ -608,7 +605,8 @@ void snapSides(BlockGrid& grid, const SurfaceMap& map, const GridHole& hole, con
   const int n = static_cast<int>(hole.loop.size()), m = static_cast<int>(hole.corners.size());
   for (int j = 0; j < m; ++j) {
     const int a = hole.sideAxis[j], b = 1 - a, line = axis[a].station[hole.sideStation[j]];
-    const int from = axis[b].station[hole.sideStation[(j + m - 1) % m]], to = axis[b].station[hole.sideStation[(j + 1) % m]];
+    const int from = axis[b].station[hole.sideStation[(j + m - 1) % m]],
+              to = axis[b].station[hole.sideStation[(j + 1) % m]];
     const double s0 = along[hole.corners[j]], s1 = along[j + 1 < m ? hole.corners[j + 1] : n];
     const int step = to > from ? 1 : -1;
     for (int t = from; t != to + step; t += step) {

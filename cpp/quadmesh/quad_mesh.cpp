@@ -462,7 +462,8 @@ void addBlockGrid(std::vector<QuadMesh>& tries, BlockGrid grid, QuadLayout layou
 // the pockets would meet or reach the rim, the shared grid round all the holes), and if its rim has no four sharp
 // corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring).
 // [in] chordal; [in] square: its map onto the square; [in] o. Returns the tries.
-std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const SurfaceMap& square, const QuadMeshOptions& o) {
+std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const SurfaceMap& square,
+                                     const QuadMeshOptions& o) {
   const SizeField size = blockGridSize(chordal, o);
   std::vector<QuadMesh> tries;
   if (BlockGrid holed = holedGrid(square, size); !holed.empty())
@@ -472,8 +473,7 @@ std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const Surfac
   if (!square.empty() && !square.sharpCorners && square.holes.empty())
     addBlockGrid(tries, oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
   if (!square.empty() && square.holes.size() == 1)
-    addBlockGrid(tries, ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size),
-                 QuadLayout::Ring);
+    addBlockGrid(tries, ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size), QuadLayout::Ring);
   return tries;
 }
 

@@ -133,8 +133,9 @@ struct Shared {
   Quality quality;
 };
 
-// The shared grid of a flat surface with `holes` holes, at scale 1, 1e-3 and 1e3 (the quad size `quad` scaled with it): laid out, every quad valid, the surface's topology, its
-// area within `areaTolerance` (relative), the same counts and shape at every scale. Returns scale 1's.
+// The shared grid of a flat surface with `holes` holes, at scale 1, 1e-3 and 1e3 (the quad size `quad` scaled with it):
+// laid out, every quad valid, the surface's topology, its area within `areaTolerance` (relative), the same counts and
+// shape at every scale. Returns scale 1's.
 Shared expectSharedGrid(const ChordalSurface& surface, int holes, double areaTolerance, double quad = 1) {
   Shared first;
   for (const double factor : {1.0, 1e-3, 1e3}) {
@@ -172,9 +173,9 @@ TEST(BlockGrids, SharedGridRoundAGridOfCutouts) {
   const ChordalSurface s = rectangle(37, 27, holeRows(4, 3, 7, 6, 1, 1, 3, 3));
   EXPECT_TRUE(holedGrid(mapToPlane(s, 1, MapBoundary::Square), unit).empty());
   const Shared g = expectSharedGrid(s, 12, 1e-9);
-  EXPECT_EQ(g.blocks, 1u);                                // one structured block: every inside node regular
-  EXPECT_EQ(g.quads, 37u * 27 - 12 * 42);                 // unit squares
-  EXPECT_EQ(g.nodes, s.vertices.size());                  // on the surface's own vertices
+  EXPECT_EQ(g.blocks, 1u);                 // one structured block: every inside node regular
+  EXPECT_EQ(g.quads, 37u * 27 - 12 * 42);  // unit squares
+  EXPECT_EQ(g.nodes, s.vertices.size());   // on the surface's own vertices
   EXPECT_GT(g.quality.worst, 0.999);
 }
 
