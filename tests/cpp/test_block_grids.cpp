@@ -179,21 +179,48 @@ TEST(BlockGrids, SharedGridRoundAGridOfCutouts) {
   EXPECT_GT(g.quality.worst, 0.999);
 }
 
-TEST(BlockGrids, SharedGridFollowsNotchedCutouts) {
-  // a keyboard plate's cutouts: 3 x 2 of 6 x 6 cells, 1 apart across and 4 along, each with a notch of 2 x 1
-  // in the middle of its top and bottom sides
+namespace {
+
+// A keyboard plate's cutouts: 3 x 2 of 6 x 6 cells, 1 apart across and 4 along, each with a notch of 2 x 1 in the
+// middle of its top and bottom sides, in a plate of 25 x 22.
+std::vector<std::array<int, 4>> notchedCutouts() {
   std::vector<std::array<int, 4>> holes = holeRows(3, 2, 6, 6, 1, 4, 2, 3);
   for (std::size_t h = 0, n = holes.size(); h < n; ++h) {
     const auto [x0, x1, y0, y1] = holes[h];
     holes.push_back({x0 + 2, x0 + 4, y1, y1 + 1}), holes.push_back({x0 + 2, x0 + 4, y0 - 1, y0});
   }
-  const ChordalSurface s = rectangle(25, 22, holes);
+  return holes;
+}
+
+}  // namespace
+
+TEST(BlockGrids, SharedGridFollowsNotchedCutouts) {
+  const ChordalSurface s = rectangle(25, 22, notchedCutouts());
   EXPECT_TRUE(holedGrid(mapToPlane(s, 1, MapBoundary::Square), unit).empty());
   const Shared g = expectSharedGrid(s, 6, 1e-9);
   EXPECT_EQ(g.blocks, 1u);
   EXPECT_EQ(g.quads, 25u * 22 - 6 * (36 + 4));  // the notches' corners on grid nodes
   EXPECT_EQ(g.nodes, s.vertices.size());
   EXPECT_GT(g.quality.worst, 0.999);
+}
+
+// The chordal rim can cut a notch's corner (the keyboard plate's): each notch's far left corner moved 0.3 into the
+// notch. The cutouts are still laid out on the grid's lines, the corners' nodes on the moved points.
+TEST(BlockGrids, SharedGridFollowsNotchesWhoseCornersTheRimCuts) {
+  ChordalSurface s = rectangle(25, 22, notchedCutouts());
+  const std::vector<std::array<int, 4>> holes = notchedCutouts();
+  for (std::size_t h = 6; h < holes.size(); ++h) {
+    const bool top = h % 2 == 0;  // a notch above its cutout
+    const Vec3 corner(holes[h][0], top ? holes[h][3] : holes[h][2], 0);
+    for (Vec3& p : s.vertices)
+      if ((p - corner).norm() < 1e-9) p += Vec3(0.3, top ? -0.3 : 0.3, 0);
+  }
+  const Shared g = expectSharedGrid(s, 6, 1e-3);
+  EXPECT_EQ(g.blocks, 1u);
+  EXPECT_EQ(g.quads, 25u * 22 - 6 * (36 + 4));
+  EXPECT_GT(g.quality.worst, 0.5);
+  EXPECT_LT(g.quality.worst, 0.99);  // the quads at the cut corners
+  EXPECT_GT(g.quality.mean, 0.98);
 }
 
 TEST(BlockGrids, SharedGridPocketsRoundOctagonsCloseTogether) {
