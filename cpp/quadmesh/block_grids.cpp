@@ -403,17 +403,18 @@ void mergeSides(std::vector<Station>& stations) {
   }
 }
 
-// Pockets' sides within kSnap of a side's line towards their hole moved onto it, if they stay kMinMargin
-// beyond it. [in,out] stations: one axis's.
+// Pockets' sides within kSnap of another line (a side's, another pocket's: where the gaps between holes are
+// alike but for the chordal surface's noise) moved onto the nearest, if they stay kMinMargin beyond their hole: no
+// sliver of cells across the grid between them. In order, each onto the others' places as they are by then.
+// [in,out] stations: one axis's.
 void snapPockets(std::vector<Station>& stations) {
   for (Station& pocket : stations) {
     if (pocket.kind != Station::Pocket) continue;
     double best = pocket.at, nearest = kSnap;
     for (const Station& line : stations) {
-      const double inward = (pocket.at - line.at) * pocket.outward;  // > 0: towards the hole
-      if (line.kind != Station::Pocket && inward > 0 && inward < nearest &&
-          (line.at - pocket.hole0) * pocket.outward >= kMinMargin)
-        best = line.at, nearest = inward;
+      const double apart = std::abs(pocket.at - line.at);
+      if (apart > 0 && apart < nearest && (line.at - pocket.hole0) * pocket.outward >= kMinMargin)
+        best = line.at, nearest = apart;
     }
     pocket.at = best;
   }
