@@ -189,7 +189,8 @@ constexpr double kSnap = 0.5;          // a pocket's side this many quads from a
 constexpr double kMerge = 0.35;        // lines of two holes' sides this many quads apart are merged (their mean)
 constexpr double kSame = 1e-6;         // sides' lines this many quads apart are one (collinear sides, rounding)
 constexpr double kOffSide = 0.5;       // a rectilinear hole's points are this many quads off their side's line, at most
-constexpr double kOffArea = 0.05;      // and its area this share off its sides' polygon's (a round hole's: 57 % more)
+constexpr double kSharpCorner = 50 * M_PI / 180;  // a hole's loop turning more has a corner (as the rim's)
+constexpr double kOffArea = 0.05;  // and its area this share off its sides' polygon's (a round hole's: 57 % more)
 
 // One axis of the square measured in quads: those the target size needs from -1 to u, averaged over the rim's two
 // sides along the axis (holedGrid's lines are the rim nodes' places averaged the same way).
@@ -436,9 +437,36 @@ double rayHit(const std::vector<Eigen::Vector2d>& p, const Eigen::Vector2d& from
   return at;
 }
 
+// Whether positions along a loop go round it once, in order: they fall once, where they pass its first point.
+bool roundOnce(const std::vector<double>& at) {
+  int descents = 0;
+  for (std::size_t t = 0; t < at.size(); ++t) descents += at[(t + 1) % at.size()] <= at[t];
+  return descents == 1;
+}
+
+// Positions along a loop moved onto its sharp corners (turning more than kSharpCorner in space), each the nearest
+// one's, if they still go round it once: the ring's quads then keep the hole's corners. [in] map, hole;
+// [in,out] at: positions (point i + the share of the edge to i + 1).
+void onCorners(const SurfaceMap& map, const std::vector<int>& hole, std::vector<double>& at) {
+  const int n = static_cast<int>(hole.size());
+  std::vector<double> moved = at;
+  for (int c = 0; c < n; ++c) {
+    const Vec3 in = map.points[hole[c]] - map.points[hole[(c + n - 1) % n]],
+               out = map.points[hole[(c + 1) % n]] - map.points[hole[c]];
+    if (!(in.cross(out).norm() > std::sin(kSharpCorner) * in.norm() * out.norm() || in.dot(out) < 0)) continue;
+    std::size_t nearest = 0;
+    auto apart = [&](double a) { return std::min(std::abs(a - c), n - std::abs(a - c)); };
+    for (std::size_t t = 1; t < at.size(); ++t)
+      if (apart(at[t]) < apart(at[nearest])) nearest = t;
+    moved[nearest] = c;
+  }
+  if (roundOnce(moved)) at = moved;
+}
+
 // The loop points of a pocket's ring seen from the hole's centre: each where the ray from the centre through the
-// box's node crosses the hole (an O-grid's straight spokes, square where the ring is thin); empty unless each
-// node's ray crosses it and they go round it once, in the walk's order. [in] map, hole, lines, box.
+// box's node crosses the hole (an O-grid's straight spokes, square where the ring is thin), the nearest moved onto
+// each sharp corner (onCorners); empty unless each node's ray crosses it and they go round it once, in the walk's
+// order. [in] map, hole, lines, box.
 std::vector<LoopPoint> spokePoints(const SurfaceMap& map, const std::vector<int>& hole, const GridLines& lines,
                                    const Box& box) {
   std::vector<Eigen::Vector2d> p;
@@ -451,9 +479,8 @@ std::vector<LoopPoint> spokePoints(const SurfaceMap& map, const std::vector<int>
     at.push_back(rayHit(p, centre, lines.uv(i, k)));
     if (at.back() < 0) return {};
   }
-  int descents = 0;  // going round once: the positions fall once, where the walk passes the loop's first point
-  for (std::size_t t = 0; t < at.size(); ++t) descents += at[(t + 1) % at.size()] <= at[t];
-  if (descents != 1) return {};
+  if (!roundOnce(at)) return {};
+  onCorners(map, hole, at);
   std::vector<LoopPoint> points;
   for (double a : at) {
     const int i = static_cast<int>(a);
