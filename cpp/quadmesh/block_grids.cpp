@@ -190,6 +190,7 @@ constexpr double kMerge = 0.35;        // lines of two holes' sides this many qu
 constexpr double kSame = 1e-6;         // sides' lines this many quads apart are one (collinear sides, rounding)
 constexpr double kOffSide = 0.5;       // a rectilinear hole's points are this many quads off their side's line, at most
 constexpr double kSharpCorner = 50 * M_PI / 180;  // a hole's loop turning more has a corner (as the rim's)
+constexpr double kCrowded = 0.25;  // a pocket's spokes meet its hole this share of their even spacing apart, at least
 constexpr double kOffArea = 0.05;  // and its area this share off its sides' polygon's (a round hole's: 57 % more)
 
 // One axis of the square measured in quads: those the target size needs from -1 to u, averaged over the rim's two
@@ -405,16 +406,17 @@ void mergeSides(std::vector<Station>& stations) {
 }
 
 // Pockets' sides within kSnap of another line (a side's, another pocket's: where the gaps between holes are
-// alike but for the chordal surface's noise) moved onto the nearest, if they stay kMinMargin beyond their hole: no
-// sliver of cells across the grid between them. In order, each onto the others' places as they are by then.
-// [in,out] stations: one axis's.
+// alike but for the chordal surface's noise) moved onto the nearest, if they stay kMinMargin beyond their hole (or
+// move away from it): no sliver of cells across the grid between them. In order, each onto the others' places as they
+// are by then. [in,out] stations: one axis's.
 void snapPockets(std::vector<Station>& stations) {
   for (Station& pocket : stations) {
     if (pocket.kind != Station::Pocket) continue;
     double best = pocket.at, nearest = kSnap;
     for (const Station& line : stations) {
       const double apart = std::abs(pocket.at - line.at);
-      if (apart > 0 && apart < nearest && (line.at - pocket.hole0) * pocket.outward >= kMinMargin)
+      const double margin = (line.at - pocket.hole0) * pocket.outward;  // its box beyond its hole, if moved
+      if (apart > 0 && apart < nearest && margin >= std::min(kMinMargin, (pocket.at - pocket.hole0) * pocket.outward))
         best = line.at, nearest = apart;
     }
     pocket.at = best;
@@ -466,7 +468,8 @@ void onCorners(const SurfaceMap& map, const std::vector<int>& hole, std::vector<
 // The loop points of a pocket's ring seen from the hole's centre: each where the ray from the centre through the
 // box's node crosses the hole (an O-grid's straight spokes, square where the ring is thin), the nearest moved onto
 // each sharp corner (onCorners); empty unless each node's ray crosses it and they go round it once, in the walk's
-// order. [in] map, hole, lines, box.
+// order and no two are closer than kCrowded of their spacing were they even (spokes through box nodes that lines
+// crowd). [in] map, hole, lines, box.
 std::vector<LoopPoint> spokePoints(const SurfaceMap& map, const std::vector<int>& hole, const GridLines& lines,
                                    const Box& box) {
   std::vector<Eigen::Vector2d> p;
@@ -488,6 +491,9 @@ std::vector<LoopPoint> spokePoints(const SurfaceMap& map, const std::vector<int>
     const int j = hole[(i + 1) % n];
     points.push_back({(1 - g) * map.points[hole[i]] + g * map.points[j], (1 - g) * p[i] + g * p[(i + 1) % n]});
   }
+  const double even = arcLength(hole, map.points).back() / points.size();  // the points' spacing, were they even
+  for (std::size_t t = 0; t < points.size(); ++t)
+    if ((points[(t + 1) % points.size()].x - points[t].x).norm() < kCrowded * even) return {};
   return points;
 }
 
