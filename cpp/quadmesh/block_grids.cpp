@@ -236,6 +236,7 @@ class AxisMeasure {
 struct Station {
   double at = 0;
   enum Kind { Rim, Side, Pocket } kind = Rim;
+  int hole = -1;                 // Pocket: whose (in the shared grid's holes)
   int outward = 0;               // Pocket: +1 on the side of the box above its hole, -1 below
   double hole0 = 0;              // Pocket: the hole's extent on that side
   std::array<double, 2> span{};  // Side: where the side runs along the other axis, in quads, ascending
@@ -360,21 +361,41 @@ bool separatePockets(std::vector<GridHole>& holes) {
   return true;
 }
 
-// The stations of the pockets' boxes, a box's side within kSnap of the rim on it. [in,out] holes, stations;
+// The stations of the rim and of the pockets' boxes, a box kept inside the square. [in,out] holes, stations;
 // [in] total: per axis, the quads across the square.
 void addPocketStations(std::vector<GridHole>& holes, std::array<std::vector<Station>, 2>& stations,
                        const std::array<double, 2>& total) {
-  for (GridHole& hole : holes) {
+  for (int a = 0; a < 2; ++a) stations[a].push_back({0, Station::Rim}), stations[a].push_back({total[a], Station::Rim});
+  for (std::size_t h = 0; h < holes.size(); ++h) {
+    GridHole& hole = holes[h];
     if (hole.rectilinear()) continue;
     for (int a = 0; a < 2; ++a) {
-      if (hole.boxLo[a] < kSnap) hole.boxLo[a] = 0;
-      if (hole.boxHi[a] > total[a] - kSnap) hole.boxHi[a] = total[a];
+      hole.boxLo[a] = std::max(hole.boxLo[a], 0.0), hole.boxHi[a] = std::min(hole.boxHi[a], total[a]);
       hole.boxLoAt[a] = static_cast<int>(stations[a].size());
-      stations[a].push_back({hole.boxLo[a], Station::Pocket, -1, hole.lo[a]});
+      stations[a].push_back({hole.boxLo[a], Station::Pocket, static_cast<int>(h), -1, hole.lo[a]});
       hole.boxHiAt[a] = static_cast<int>(stations[a].size());
-      stations[a].push_back({hole.boxHi[a], Station::Pocket, 1, hole.hi[a]});
+      stations[a].push_back({hole.boxHi[a], Station::Pocket, static_cast<int>(h), 1, hole.hi[a]});
     }
   }
+}
+
+// Where a hole's box runs along axis a as the stations have it by now (a rectilinear hole: its extent).
+std::array<double, 2> boxAlong(const GridHole& hole, const std::array<std::vector<Station>, 2>& stations, int a) {
+  if (hole.rectilinear()) return {hole.lo[a], hole.hi[a]};
+  return {stations[a][hole.boxLoAt[a]].at, stations[a][hole.boxHiAt[a]].at};
+}
+
+// Whether moving a pocket's side along axis a from `from` to `to` would run it into another hole's box.
+bool runsInto(const std::vector<GridHole>& holes, const std::array<std::vector<Station>, 2>& stations, int a,
+              int pocket, double from, double to) {
+  const std::array<double, 2> own = boxAlong(holes[pocket], stations, 1 - a);
+  for (std::size_t g = 0; g < holes.size(); ++g) {
+    if (static_cast<int>(g) == pocket) continue;
+    const std::array<double, 2> across = boxAlong(holes[g], stations, 1 - a), along = boxAlong(holes[g], stations, a);
+    if (across[0] < own[1] && own[0] < across[1] && along[0] < std::max(from, to) && std::min(from, to) < along[1])
+      return true;
+  }
+  return false;
 }
 
 // Whether the lines of two sides may be one line: they lie beside each other, not facing each other (their spans
@@ -405,18 +426,20 @@ void mergeSides(std::vector<Station>& stations) {
   }
 }
 
-// Pockets' sides within kSnap of another line (a side's, another pocket's: where the gaps between holes are
-// alike but for the chordal surface's noise) moved onto the nearest, if they stay kMinMargin beyond their hole (or
-// move away from it): no sliver of cells across the grid between them. In order, each onto the others' places as they
-// are by then. [in,out] stations: one axis's.
-void snapPockets(std::vector<Station>& stations) {
-  for (Station& pocket : stations) {
+// Pockets' sides within kSnap of another line (the rim, a side's, another pocket's: where the gaps between holes
+// are alike but for the chordal surface's noise) moved onto the nearest, if they stay kMinMargin beyond their hole
+// (or move away from it) and run into no other hole's box: no sliver of cells across the grid between them. In
+// order, each onto the others' places as they are by then. [in,out] stations: along axis a (the other's to test);
+// [in] holes, a.
+void snapPockets(std::array<std::vector<Station>, 2>& stations, const std::vector<GridHole>& holes, int a) {
+  for (Station& pocket : stations[a]) {
     if (pocket.kind != Station::Pocket) continue;
     double best = pocket.at, nearest = kSnap;
-    for (const Station& line : stations) {
+    for (const Station& line : stations[a]) {
       const double apart = std::abs(pocket.at - line.at);
       const double margin = (line.at - pocket.hole0) * pocket.outward;  // its box beyond its hole, if moved
-      if (apart > 0 && apart < nearest && margin >= std::min(kMinMargin, (pocket.at - pocket.hole0) * pocket.outward))
+      if (apart > 0 && apart < nearest && margin >= std::min(kMinMargin, (pocket.at - pocket.hole0) * pocket.outward) &&
+          !runsInto(holes, stations, a, pocket.hole, pocket.at, line.at))
         best = line.at, nearest = apart;
     }
     pocket.at = best;
@@ -720,7 +743,7 @@ BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size) {
   std::array<AxisLines, 2> axis;
   for (int a = 0; a < 2; ++a) {
     mergeSides(stations[a]);
-    snapPockets(stations[a]);
+    snapPockets(stations, holes, a);
     axis[a] = axisLines(stations[a], measure[a].total());
   }
   std::vector<char> skip;

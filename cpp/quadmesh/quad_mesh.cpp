@@ -28,6 +28,10 @@ constexpr double kOffSurface = 1.0;
 constexpr int kMaxStrip = 20;             // quads between two leftover triangles that are paired (quad_completion)
 constexpr int kCurveSamples = 64;         // points along a patch curve to measure it
 constexpr double kStructuredMean = 0.98;  // mean quad scaled Jacobian of a try that needs no other
+// The shared grid round many holes is kept only with no quad below this (issue 19's bar for the hexes): where its
+// layout fits the surface badly (a rounded rim's corner in a grid cell, a hole by a crooked rim), Gmsh meshes it
+// as before.
+constexpr double kSharedWorst = 0.5;
 constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  // of a structured patch
 
 // Gmsh is one process-wide session: open it for this stage only, and always close it.
@@ -490,7 +494,8 @@ struct Ranked {
 
 // Block grid tries finished side by side (a single try keeps its own parallel loops: an inactive region does not
 // nest them), then ranked in order; one with an inverted quad (its layout does not fit the surface) or another
-// topology is refused. [in,out] blocks: the tries; [in,out] ranked. Returns whether the holed grid was refused.
+// topology is refused, the shared grid also with a quad below kSharedWorst. [in,out] blocks: the tries; [in,out]
+// ranked. Returns whether the holed grid was refused.
 bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal, const QuadMeshOptions& o,
                     long chordalEuler, Ranked& ranked) {
   std::vector<QuadScore> scores(blocks.size());
@@ -501,7 +506,8 @@ bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal
   }
   bool holedRefused = false;
   for (std::size_t i = 0; i < blocks.size(); ++i)
-    if (!scores[i].topologyChanged && scores[i].inverted == 0)
+    if (!scores[i].topologyChanged && scores[i].inverted == 0 &&
+        (blocks[i].layout != QuadLayout::SharedGrid || scores[i].worst >= kSharedWorst))
       ranked.keep(blocks[i], scores[i]);
     else
       holedRefused |= blocks[i].layout == QuadLayout::Grid;
