@@ -174,6 +174,508 @@ bool holeCorners(const SurfaceMap& map, std::vector<int>& hole, std::array<int, 
   return corners[0] < corners[1] && corners[1] < corners[2] && corners[2] < corners[3];
 }
 
+// ---------------------------------------------------------------------------------------------------------------
+// The shared grid round many holes (issue 19): where pockets of neighbouring holes would meet or one would reach
+// the rim, one tensor grid is laid over the whole square, its lines through every hole's sides: a rectilinear hole
+// (its loop runs along the axes in the plane, corner to corner: a cutout, with its notches) is a block of grid
+// cells left out, its loop on their lines, as a quad layout traced from the holes' corners would have it (the
+// lines of the motorcycle graph run on to the rim here, so every node inside is regular); any other hole gets a
+// pocket of four blocks as in holedGrid, its box shrunk to half the gap to the next hole or snapped to the rim.
+// ---------------------------------------------------------------------------------------------------------------
+
+constexpr double kPocketMargin = 1.0;  // a pocket's box reaches this many quads beyond its hole, where there is room
+constexpr double kMinMargin = 0.25;    // a pocket's box snapped to a line is still this many quads beyond its hole
+constexpr double kSnap = 0.5;          // a pocket's side this many quads from a line or the rim is moved onto it
+constexpr double kMerge = 0.35;        // lines of two holes' sides this many quads apart are merged (their mean)
+constexpr double kSame = 1e-6;         // sides' lines this many quads apart are one (collinear sides, rounding)
+constexpr double kOffSide = 0.5;       // a rectilinear hole's points are this many quads off their side's line, at most
+constexpr double kSharpCorner = 50 * M_PI / 180;  // a hole's loop turning more has a corner (as the rim's)
+constexpr double kCrowded = 0.25;  // a pocket's spokes meet its hole this share of their even spacing apart, at least
+constexpr double kOffArea = 0.05;  // and its area this share off its sides' polygon's (a round hole's: 57 % more)
+
+// One axis of the square measured in quads: those the target size needs from -1 to u, averaged over the rim's two
+// sides along the axis (holedGrid's lines are the rim nodes' places averaged the same way).
+class AxisMeasure {
+ public:
+  // [in] locate: the map's locator; [in] axis: 0 for u, 1 for v; [in] size: the target size.
+  AxisMeasure(const MapLocator& locate, int axis, const SizeField& size) {
+    std::array<PlaneLine, 2> sides;
+    for (int s = 0; s < 2; ++s) {
+      Eigen::Vector2d from = Eigen::Vector2d::Constant(s == 0 ? -1.0 : 1.0), to = from;
+      from[axis] = -1, to[axis] = 1;
+      sides[s] = planeLine(locate, from, {locate(to), to}, size);
+    }
+    const int samples = static_cast<int>(std::max(sides[0].quads.size(), sides[1].quads.size())) - 1;
+    for (int i = 0; i <= samples; ++i) {
+      const double f = static_cast<double>(i) / samples;
+      u_.push_back(-1 + 2 * f), q_.push_back(0.5 * (at(sides[0].quads, f) + at(sides[1].quads, f)));
+    }
+  }
+  double quads(double u) const { return interpolate(u_, q_, u); }  // from -1 to u
+  double place(double q) const { return interpolate(q_, u_, q); }  // the u where quads(u) = q
+  double total() const { return q_.back(); }
+
+ private:
+  // The measure at a share f of a line's evenly spaced samples.
+  static double at(const std::vector<double>& samples, double f) {
+    const double s = f * (samples.size() - 1);
+    const std::size_t i = std::min(static_cast<std::size_t>(s), samples.size() - 2);
+    return samples[i] + (s - i) * (samples[i + 1] - samples[i]);
+  }
+  // y at x of the ascending table (xs, ys), linear between its entries, clamped to its ends.
+  static double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+    const std::size_t i =
+        std::clamp<std::size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin(), 1, xs.size() - 1);
+    const double g = std::clamp((x - xs[i - 1]) / std::max(xs[i] - xs[i - 1], 1e-300), 0.0, 1.0);
+    return ys[i - 1] + g * (ys[i] - ys[i - 1]);
+  }
+  std::vector<double> u_, q_;
+};
+
+// A grid line being laid out, along one axis: where it crosses it, in quads (AxisMeasure), and what put it there.
+struct Station {
+  double at = 0;
+  enum Kind { Rim, Side, Pocket } kind = Rim;
+  int hole = -1;                 // Pocket: whose (in the shared grid's holes)
+  int outward = 0;               // Pocket: +1 on the side of the box above its hole, -1 below
+  double hole0 = 0;              // Pocket: the hole's extent on that side
+  std::array<double, 2> span{};  // Side: where the side runs along the other axis, in quads, ascending
+};
+
+// A hole of the shared grid, in quads of the two axis measures.
+struct GridHole {
+  std::vector<int> loop;             // map.holes[h]; a rectilinear one from its corner 0
+  std::array<double, 2> lo{}, hi{};  // its extent
+  // Rectilinear: its corners (positions in the loop, ascending), the axis each side (corner j to j + 1) keeps
+  // constant and the station of its line; else empty.
+  std::vector<int> corners, sideAxis, sideStation;
+  std::array<double, 2> boxLo{}, boxHi{};               // the pocket's box (a rectilinear hole: its extent)
+  std::array<int, 2> boxLoAt{-1, -1}, boxHiAt{-1, -1};  // the box's stations (pocket)
+  bool rectilinear() const { return !corners.empty(); }
+};
+
+// The area of a polygon (positive counter-clockwise).
+double polygonArea(const std::vector<Eigen::Vector2d>& p) {
+  double twice = 0;
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) twice += p[j].x() * p[i].y() - p[i].x() * p[j].y();
+  return 0.5 * twice;
+}
+
+// A loop's sides along the axes: runs of its edges that go more along the same axis (in quads, so that a diagonal
+// is a diagonal), each from its corner (the run's first point) to the next. [in] q: the loop in quads.
+// [out] corners: ascending; [out] axes: per side, the axis it keeps (about) constant.
+void axisRuns(const std::vector<Eigen::Vector2d>& q, std::vector<int>& corners, std::vector<int>& axes) {
+  const int n = static_cast<int>(q.size());
+  auto keeps = [&](int i) {
+    const Eigen::Vector2d d = q[(i + 1) % n] - q[i];
+    return std::abs(d.x()) >= std::abs(d.y()) ? 1 : 0;
+  };
+  for (int i = 0; i < n; ++i)
+    if (keeps((i + n - 1) % n) != keeps(i)) corners.push_back(i), axes.push_back(keeps(i));
+}
+
+// Whether a hole runs along the axes, side after side, each across the last: its points within kOffSide of their
+// side's line (the mean of its ends'), its area within kOffArea of the polygon of those lines. A hole's loop as the
+// chordal surface has it can cut a notch's corner or overshoot it by a fraction of a quad: the sides' lines pass
+// such points by, the grid's nodes on the side are moved onto the loop (snapSides). Then sets its loop from corner
+// 0, its corners and sides' axes. [in] q: the loop in quads; [in,out] hole; [out] sides: per side, the station of
+// its line (in quads), its span.
+bool rectilinear(const std::vector<Eigen::Vector2d>& q, GridHole& hole, std::vector<Station>& sides) {
+  std::vector<int> corners, axes;
+  axisRuns(q, corners, axes);
+  const int n = static_cast<int>(q.size()), m = static_cast<int>(corners.size());
+  if (m < 4) return false;
+  std::vector<double> at;
+  for (int j = 0; j < m; ++j) {
+    const int a = axes[j], from = corners[j], to = j + 1 < m ? corners[j + 1] : corners[0] + n;
+    at.push_back(0.5 * (q[from][a] + q[to % n][a]));
+    Station side{at[j], Station::Side};
+    side.span = {q[from][1 - a], q[from][1 - a]};
+    for (int i = from; i <= to; ++i) {
+      if (std::abs(q[i % n][a] - at[j]) > kOffSide) return false;
+      side.span = {std::min(side.span[0], q[i % n][1 - a]), std::max(side.span[1], q[i % n][1 - a])};
+    }
+    sides.push_back(side);
+  }
+  std::vector<Eigen::Vector2d> polygon;
+  for (int j = 0; j < m; ++j) {
+    Eigen::Vector2d c;
+    c[axes[j]] = at[j], c[1 - axes[j]] = at[(j + m - 1) % m];
+    polygon.push_back(c);
+  }
+  const double area = polygonArea(polygon);
+  if (!(std::abs(polygonArea(q) - area) <= kOffArea * std::abs(area))) return false;
+  std::rotate(hole.loop.begin(), hole.loop.begin() + corners[0], hole.loop.end());
+  const int first = corners[0];
+  for (int& c : corners) c -= first;
+  hole.corners = corners, hole.sideAxis = axes;
+  return true;
+}
+
+// The shared grid's holes with their extents, and the stations of the rectilinear ones' sides.
+// [in] map, measure; [out] stations: per axis, those added. Returns the holes.
+std::vector<GridHole> gridHoles(const SurfaceMap& map, const std::array<AxisMeasure, 2>& measure,
+                                std::array<std::vector<Station>, 2>& stations) {
+  std::vector<GridHole> holes;
+  for (const std::vector<int>& loop : map.holes) {
+    GridHole hole;
+    hole.loop = loop;
+    for (int a = 0; a < 2; ++a) {
+      double lo = 1e300, hi = -1e300;
+      for (int p : loop) lo = std::min(lo, map.uv[p][a]), hi = std::max(hi, map.uv[p][a]);
+      hole.lo[a] = measure[a].quads(lo), hole.hi[a] = measure[a].quads(hi);
+    }
+    std::vector<Eigen::Vector2d> q;
+    for (int p : loop) q.emplace_back(measure[0].quads(map.uv[p].x()), measure[1].quads(map.uv[p].y()));
+    if (std::vector<Station> sides; rectilinear(q, hole, sides)) {
+      for (std::size_t j = 0; j < sides.size(); ++j) {
+        const int a = hole.sideAxis[j];
+        hole.sideStation.push_back(static_cast<int>(stations[a].size()));
+        stations[a].push_back(sides[j]);
+      }
+      hole.boxLo = hole.lo, hole.boxHi = hole.hi;
+    } else {
+      for (int a = 0; a < 2; ++a)
+        hole.boxLo[a] = hole.lo[a] - kPocketMargin, hole.boxHi[a] = hole.hi[a] + kPocketMargin;
+    }
+    holes.push_back(std::move(hole));
+  }
+  return holes;
+}
+
+// Pockets that would meet another hole's box shrunk to half the gap between the two holes, along the axis where
+// the gap is widest. [in,out] holes. Returns false if two holes' extents overlap along both axes.
+bool separatePockets(std::vector<GridHole>& holes) {
+  for (std::size_t i = 0; i < holes.size(); ++i)
+    for (std::size_t j = i + 1; j < holes.size(); ++j) {
+      GridHole &a = holes[i], &b = holes[j];
+      auto overlap = [&](int x) { return a.boxLo[x] < b.boxHi[x] && b.boxLo[x] < a.boxHi[x]; };
+      if (!overlap(0) || !overlap(1)) continue;
+      auto gap = [&](int x) { return std::max(b.lo[x] - a.hi[x], a.lo[x] - b.hi[x]); };
+      const int x = gap(0) >= gap(1) ? 0 : 1;
+      if (!(gap(x) > 0)) return false;
+      GridHole &below = a.hi[x] <= b.lo[x] ? a : b, &above = &below == &a ? b : a;
+      const double middle = 0.5 * (below.hi[x] + above.lo[x]);
+      below.boxHi[x] = std::min(below.boxHi[x], middle), above.boxLo[x] = std::max(above.boxLo[x], middle);
+    }
+  return true;
+}
+
+// The stations of the rim and of the pockets' boxes, a box kept inside the square. [in,out] holes, stations;
+// [in] total: per axis, the quads across the square.
+void addPocketStations(std::vector<GridHole>& holes, std::array<std::vector<Station>, 2>& stations,
+                       const std::array<double, 2>& total) {
+  for (int a = 0; a < 2; ++a) stations[a].push_back({0, Station::Rim}), stations[a].push_back({total[a], Station::Rim});
+  for (std::size_t h = 0; h < holes.size(); ++h) {
+    GridHole& hole = holes[h];
+    if (hole.rectilinear()) continue;
+    for (int a = 0; a < 2; ++a) {
+      hole.boxLo[a] = std::max(hole.boxLo[a], 0.0), hole.boxHi[a] = std::min(hole.boxHi[a], total[a]);
+      hole.boxLoAt[a] = static_cast<int>(stations[a].size());
+      stations[a].push_back({hole.boxLo[a], Station::Pocket, static_cast<int>(h), -1, hole.lo[a]});
+      hole.boxHiAt[a] = static_cast<int>(stations[a].size());
+      stations[a].push_back({hole.boxHi[a], Station::Pocket, static_cast<int>(h), 1, hole.hi[a]});
+    }
+  }
+}
+
+// Where a hole's box runs along axis a as the stations have it by now (a rectilinear hole: its extent).
+std::array<double, 2> boxAlong(const GridHole& hole, const std::array<std::vector<Station>, 2>& stations, int a) {
+  if (hole.rectilinear()) return {hole.lo[a], hole.hi[a]};
+  return {stations[a][hole.boxLoAt[a]].at, stations[a][hole.boxHiAt[a]].at};
+}
+
+// Whether moving a pocket's side along axis a from `from` to `to` would run it into another hole's box.
+bool runsInto(const std::vector<GridHole>& holes, const std::array<std::vector<Station>, 2>& stations, int a,
+              int pocket, double from, double to) {
+  const std::array<double, 2> own = boxAlong(holes[pocket], stations, 1 - a);
+  for (std::size_t g = 0; g < holes.size(); ++g) {
+    if (static_cast<int>(g) == pocket) continue;
+    const std::array<double, 2> across = boxAlong(holes[g], stations, 1 - a), along = boxAlong(holes[g], stations, a);
+    if (across[0] < own[1] && own[0] < across[1] && along[0] < std::max(from, to) && std::min(from, to) < along[1])
+      return true;
+  }
+  return false;
+}
+
+// Whether the lines of two sides may be one line: they lie beside each other, not facing each other (their spans
+// along the other axis apart): the pieces of a side that a notch splits, the sides of holes in a row.
+bool mayShare(const Station& s, const Station& t) { return s.span[1] < t.span[0] || t.span[1] < s.span[0]; }
+
+// Rectilinear holes' side lines within kMerge of each other merged into their mean where they may share a line,
+// within kSame whatever their spans. [in,out] stations: one axis's.
+void mergeSides(std::vector<Station>& stations) {
+  std::vector<int> sides;
+  for (std::size_t s = 0; s < stations.size(); ++s)
+    if (stations[s].kind == Station::Side) sides.push_back(static_cast<int>(s));
+  std::stable_sort(sides.begin(), sides.end(), [&](int s, int t) { return stations[s].at < stations[t].at; });
+  for (std::size_t first = 0; first < sides.size();) {
+    std::vector<int> cluster{sides[first]};
+    std::size_t next = first + 1;
+    for (; next < sides.size() && stations[sides[next]].at - stations[sides[first]].at <= kMerge; ++next) {
+      const bool fits = stations[sides[next]].at - stations[sides[first]].at <= kSame ||
+                        std::all_of(cluster.begin(), cluster.end(),
+                                    [&](int s) { return mayShare(stations[s], stations[sides[next]]); });
+      if (!fits) break;
+      cluster.push_back(sides[next]);
+    }
+    double mean = 0;
+    for (int s : cluster) mean += stations[s].at / cluster.size();
+    for (int s : cluster) stations[s].at = mean;
+    first = next;
+  }
+}
+
+// Pockets' sides within kSnap of another line (the rim, a side's, another pocket's: where the gaps between holes
+// are alike but for the chordal surface's noise) moved onto the nearest, if they stay kMinMargin beyond their hole
+// (or move away from it) and run into no other hole's box: no sliver of cells across the grid between them. In
+// order, each onto the others' places as they are by then. [in,out] stations: along axis a (the other's to test);
+// [in] holes, a.
+void snapPockets(std::array<std::vector<Station>, 2>& stations, const std::vector<GridHole>& holes, int a) {
+  for (Station& pocket : stations[a]) {
+    if (pocket.kind != Station::Pocket) continue;
+    double best = pocket.at, nearest = kSnap;
+    for (const Station& line : stations[a]) {
+      const double apart = std::abs(pocket.at - line.at);
+      const double margin = (line.at - pocket.hole0) * pocket.outward;  // its box beyond its hole, if moved
+      if (apart > 0 && apart < nearest && margin >= std::min(kMinMargin, (pocket.at - pocket.hole0) * pocket.outward) &&
+          !runsInto(holes, stations, a, pocket.hole, pocket.at, line.at))
+        best = line.at, nearest = apart;
+    }
+    pocket.at = best;
+  }
+}
+
+// Where the ray from `from` through `through` first crosses a loop of the plane: the position along the loop
+// (segment i from point i to i + 1, plus the share of it), or -1 if it does not. [in] p: the loop's points.
+double rayHit(const std::vector<Eigen::Vector2d>& p, const Eigen::Vector2d& from, const Eigen::Vector2d& through) {
+  const Eigen::Vector2d d = through - from;
+  const int n = static_cast<int>(p.size());
+  double nearest = 1e300, at = -1;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d e = p[(i + 1) % n] - p[i], w = p[i] - from;
+    const double det = e.x() * d.y() - e.y() * d.x();  // solves from + s d = p[i] + t e
+    if (det == 0) continue;
+    const double s = (e.x() * w.y() - e.y() * w.x()) / det, t = (d.x() * w.y() - d.y() * w.x()) / det;
+    if (s > 0 && t >= 0 && t < 1 && s < nearest) nearest = s, at = i + t;
+  }
+  return at;
+}
+
+// Whether positions along a loop go round it once, in order: they fall once, where they pass its first point.
+bool roundOnce(const std::vector<double>& at) {
+  int descents = 0;
+  for (std::size_t t = 0; t < at.size(); ++t) descents += at[(t + 1) % at.size()] <= at[t];
+  return descents == 1;
+}
+
+// Positions along a loop moved onto its sharp corners (turning more than kSharpCorner in space), each the nearest
+// one's, if they still go round it once: the ring's quads then keep the hole's corners. [in] map, hole;
+// [in,out] at: positions (point i + the share of the edge to i + 1).
+void onCorners(const SurfaceMap& map, const std::vector<int>& hole, std::vector<double>& at) {
+  const int n = static_cast<int>(hole.size());
+  std::vector<double> moved = at;
+  for (int c = 0; c < n; ++c) {
+    const Vec3 in = map.points[hole[c]] - map.points[hole[(c + n - 1) % n]],
+               out = map.points[hole[(c + 1) % n]] - map.points[hole[c]];
+    if (!(in.cross(out).norm() > std::sin(kSharpCorner) * in.norm() * out.norm() || in.dot(out) < 0)) continue;
+    std::size_t nearest = 0;
+    auto apart = [&](double a) { return std::min(std::abs(a - c), n - std::abs(a - c)); };
+    for (std::size_t t = 1; t < at.size(); ++t)
+      if (apart(at[t]) < apart(at[nearest])) nearest = t;
+    moved[nearest] = c;
+  }
+  if (roundOnce(moved)) at = moved;
+}
+
+// The loop points of a pocket's ring seen from the hole's centre: each where the ray from the centre through the
+// box's node crosses the hole (an O-grid's straight spokes, square where the ring is thin), the nearest moved onto
+// each sharp corner (onCorners); empty unless each node's ray crosses it and they go round it once, in the walk's
+// order and no two are closer than kCrowded of their spacing were they even (spokes through box nodes that lines
+// crowd). [in] map, hole, lines, box.
+std::vector<LoopPoint> spokePoints(const SurfaceMap& map, const std::vector<int>& hole, const GridLines& lines,
+                                   const Box& box) {
+  std::vector<Eigen::Vector2d> p;
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (int i : hole) p.push_back(map.uv[i]), centre += map.uv[i] / hole.size();
+  const int n = static_cast<int>(p.size());
+  std::vector<double> at;
+  for (int t = 0; t < box.around(); ++t) {
+    const auto [i, k] = box.walk(t);
+    at.push_back(rayHit(p, centre, lines.uv(i, k)));
+    if (at.back() < 0) return {};
+  }
+  if (!roundOnce(at)) return {};
+  onCorners(map, hole, at);
+  std::vector<LoopPoint> points;
+  for (double a : at) {
+    const int i = static_cast<int>(a);
+    const double g = a - i;
+    const int j = hole[(i + 1) % n];
+    points.push_back({(1 - g) * map.points[hole[i]] + g * map.points[j], (1 - g) * p[i] + g * p[(i + 1) % n]});
+  }
+  const double even = arcLength(hole, map.points).back() / points.size();  // the points' spacing, were they even
+  for (std::size_t t = 0; t < points.size(); ++t)
+    if ((points[(t + 1) % points.size()].x - points[t].x).norm() < kCrowded * even) return {};
+  return points;
+}
+
+// One axis's grid lines: the stations' places, ascending and once each (those within kSame of the one before as
+// one: rounding), and between each two as many more as the quads between them need (one cell at the least).
+struct AxisLines {
+  std::vector<double> at;    // in quads, ascending: at[0] = 0 and at.back() the quads across (the rim's)
+  std::vector<int> station;  // per station, its line
+  int cells() const { return static_cast<int>(at.size()) - 1; }
+};
+
+// [in] stations: one axis's; [in] total: the quads across the square. Returns its lines.
+AxisLines axisLines(const std::vector<Station>& stations, double total) {
+  std::vector<double> all{0, total}, places;
+  for (const Station& s : stations) all.push_back(s.at);
+  std::sort(all.begin(), all.end());
+  for (double at : all)
+    if (places.empty() || at - places.back() > kSame) places.push_back(at);
+  places.back() = total;
+  AxisLines lines;
+  std::vector<int> lineOf;  // per place
+  for (std::size_t p = 0; p < places.size(); ++p) {
+    lineOf.push_back(static_cast<int>(lines.at.size()));
+    if (p + 1 == places.size()) {
+      lines.at.push_back(places[p]);
+      break;
+    }
+    const int cells = count(places[p + 1] - places[p] - kSame);  // a half quad rounded down, whatever the rounding
+    for (int c = 0; c < cells; ++c) lines.at.push_back(places[p] + (places[p + 1] - places[p]) * c / cells);
+  }
+  for (const Station& s : stations)  // the place at or just below it
+    lines.station.push_back(lineOf[std::upper_bound(places.begin(), places.end(), s.at + kSame) - places.begin() - 1]);
+  return lines;
+}
+
+// The grid's lines in the plane, falling with their index as holedGrid's, the outermost on the rim.
+GridLines planeLines(const std::array<AxisLines, 2>& axis, const std::array<AxisMeasure, 2>& measure) {
+  GridLines lines;
+  for (int a = 0; a < 2; ++a) {
+    std::vector<double>& plane = a == 0 ? lines.x : lines.y;
+    const int n = axis[a].cells();
+    for (int i = 0; i <= n; ++i) plane.push_back(i == 0 ? 1.0 : i == n ? -1.0 : measure[a].place(axis[a].at[n - i]));
+  }
+  return lines;
+}
+
+// A pocket's box of grid cells (Box: its corner 0 at +u, +v, where the lines' index is lowest).
+Box pocketCells(const GridHole& hole, const std::array<AxisLines, 2>& axis) {
+  const int u0 = axis[0].station[hole.boxLoAt[0]], u1 = axis[0].station[hole.boxHiAt[0]];
+  const int v0 = axis[1].station[hole.boxLoAt[1]], v1 = axis[1].station[hole.boxHiAt[1]];
+  return {axis[0].cells() - u1, axis[1].cells() - v1, u1 - u0, v1 - v0};
+}
+
+// A rectilinear hole's corners on the grid, in quads: corner j where the lines of sides j - 1 and j cross.
+std::vector<Eigen::Vector2d> cornerPlaces(const GridHole& hole, const std::array<AxisLines, 2>& axis) {
+  const int m = static_cast<int>(hole.corners.size());
+  std::vector<Eigen::Vector2d> at;
+  for (int j = 0; j < m; ++j) {
+    const int a = hole.sideAxis[j], before = (j + m - 1) % m;
+    Eigen::Vector2d c;
+    c[a] = axis[a].at[axis[a].station[hole.sideStation[j]]];
+    c[1 - a] = axis[1 - a].at[axis[1 - a].station[hole.sideStation[before]]];
+    at.push_back(c);
+  }
+  return at;
+}
+
+// Whether a point lies inside a polygon (even-odd rule).
+bool inside(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+    if ((polygon[i].y() > p.y()) != (polygon[j].y() > p.y()) &&
+        p.x() < polygon[j].x() +
+                    (polygon[i].x() - polygon[j].x()) * (p.y() - polygon[j].y()) / (polygon[i].y() - polygon[j].y()))
+      in = !in;
+  return in;
+}
+
+// Whether each side of a rectilinear hole still spans one grid cell at least (merged lines may not close it).
+bool sidesOpen(const GridHole& hole, const std::array<AxisLines, 2>& axis) {
+  const int m = static_cast<int>(hole.corners.size());
+  for (int j = 0; j < m; ++j) {
+    const int b = 1 - hole.sideAxis[j];
+    if (axis[b].station[hole.sideStation[(j + m - 1) % m]] == axis[b].station[hole.sideStation[(j + 1) % m]])
+      return false;
+  }
+  return true;
+}
+
+// The cells the holes leave out of the grid: each pocket's box and each rectilinear hole's inside, per cell
+// (i, k) of holedGrid's numbering at [i * n1 + k]. [out] skip. Returns false if two holes take a cell or a
+// rectilinear hole's side closed.
+bool leaveOutHoles(const std::vector<GridHole>& holes, const std::array<AxisLines, 2>& axis, std::vector<char>& skip) {
+  const int n0 = axis[0].cells(), n1 = axis[1].cells();
+  skip.assign(n0 * n1, 0);
+  auto take = [&](int u, int v) { return skip[(n0 - 1 - u) * n1 + (n1 - 1 - v)]++ == 0; };  // ascending cell
+  for (const GridHole& hole : holes) {
+    if (!hole.rectilinear()) {
+      const Box box = pocketCells(hole, axis);
+      for (int i = box.i0; i < box.i0 + box.n0; ++i)
+        for (int k = box.k0; k < box.k0 + box.n1; ++k)
+          if (skip[i * n1 + k]++) return false;
+      continue;
+    }
+    if (!sidesOpen(hole, axis)) return false;
+    const std::vector<Eigen::Vector2d> polygon = cornerPlaces(hole, axis);
+    std::array<int, 2> lo{1 << 30, 1 << 30}, hi{-1, -1};
+    for (std::size_t j = 0; j < hole.corners.size(); ++j) {
+      const int a = hole.sideAxis[j], line = axis[a].station[hole.sideStation[j]];
+      lo[a] = std::min(lo[a], line), hi[a] = std::max(hi[a], line);
+    }
+    for (int u = lo[0]; u < hi[0]; ++u)
+      for (int v = lo[1]; v < hi[1]; ++v) {
+        const Eigen::Vector2d centre(0.5 * (axis[0].at[u] + axis[0].at[u + 1]),
+                                     0.5 * (axis[1].at[v] + axis[1].at[v + 1]));
+        if (inside(polygon, centre) && !take(u, v)) return false;
+      }
+  }
+  return true;
+}
+
+// A rectilinear hole's loop measured along its sides: each step by how far it goes, in quads, along the axis its
+// side runs along (so a side's points are where a grid line across the side crosses it).
+std::vector<double> sideMeasure(const SurfaceMap& map, const GridHole& hole,
+                                const std::array<AxisMeasure, 2>& measure) {
+  const int n = static_cast<int>(hole.loop.size()), m = static_cast<int>(hole.corners.size());
+  std::vector<double> along{0};
+  for (int j = 0; j < m; ++j) {
+    const int b = 1 - hole.sideAxis[j], end = j + 1 < m ? hole.corners[j + 1] : n;
+    for (int i = hole.corners[j]; i < end; ++i)
+      along.push_back(along.back() + std::abs(measure[b].quads(map.uv[hole.loop[(i + 1) % n]][b]) -
+                                              measure[b].quads(map.uv[hole.loop[i]][b])));
+  }
+  return along;
+}
+
+// The grid's nodes on a rectilinear hole's sides moved onto its loop: side j's from corner j to corner j + 1,
+// each where its line across the side crosses the loop (sideMeasure). [in,out] grid: nodes (addCells'); [in] map,
+// hole, axis, measure, lines.
+void snapSides(BlockGrid& grid, const SurfaceMap& map, const GridHole& hole, const std::array<AxisLines, 2>& axis,
+               const std::array<AxisMeasure, 2>& measure, const GridLines& lines) {
+  const std::vector<double> along = sideMeasure(map, hole, measure);
+  const int n = static_cast<int>(hole.loop.size()), m = static_cast<int>(hole.corners.size());
+  for (int j = 0; j < m; ++j) {
+    const int a = hole.sideAxis[j], b = 1 - a, line = axis[a].station[hole.sideStation[j]];
+    const int from = axis[b].station[hole.sideStation[(j + m - 1) % m]],
+              to = axis[b].station[hole.sideStation[(j + 1) % m]];
+    const double s0 = along[hole.corners[j]], s1 = along[j + 1 < m ? hole.corners[j + 1] : n];
+    const int step = to > from ? 1 : -1;
+    for (int t = from; t != to + step; t += step) {
+      const double f = (axis[b].at[t] - axis[b].at[from]) / (axis[b].at[to] - axis[b].at[from]);
+      std::array<int, 2> asc;
+      asc[a] = line, asc[b] = t;
+      const int node = lines.node(axis[0].cells() - asc[0], axis[1].cells() - asc[1]);
+      grid.nodes[node] = loopPoint(map, hole.loop, along, s0 + f * (s1 - s0)).x;
+    }
+  }
+}
+
 }  // namespace
 
 BlockGrid oGrid(const SurfaceMap& map, const SizeField& size) {
@@ -227,6 +729,42 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
     addRing(grid, locate, lines, box, loopPoints(map, hole, corners, box.sides(), size), false, size);
   }
   dropUnusedNodes(grid.nodes, grid.quads);  // those inside the pockets
+  return grid;
+}
+
+BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size) {
+  if (map.empty() || map.boundary != MapBoundary::Square || map.holes.empty()) return {};
+  const MapLocator locate(map);
+  const std::array<AxisMeasure, 2> measure{AxisMeasure(locate, 0, size), AxisMeasure(locate, 1, size)};
+  std::array<std::vector<Station>, 2> stations;
+  std::vector<GridHole> holes = gridHoles(map, measure, stations);
+  if (!separatePockets(holes)) return {};
+  addPocketStations(holes, stations, {measure[0].total(), measure[1].total()});
+  std::array<AxisLines, 2> axis;
+  for (int a = 0; a < 2; ++a) {
+    mergeSides(stations[a]);
+    snapPockets(stations, holes, a);
+    axis[a] = axisLines(stations[a], measure[a].total());
+  }
+  std::vector<char> skip;
+  if (!leaveOutHoles(holes, axis, skip)) return {};
+  const GridLines lines = planeLines(axis, measure);
+  BlockGrid grid;
+  addCells(grid, locate, lines, skip);
+  grid.blocks = 1;
+  for (GridHole& hole : holes) {
+    if (hole.rectilinear()) {
+      snapSides(grid, map, hole, axis, measure, lines);
+      continue;
+    }
+    const Box box = pocketCells(hole, axis);
+    std::vector<LoopPoint> ring = spokePoints(map, hole.loop, lines, box);
+    std::array<int, 4> corners;
+    if (ring.empty() && !holeCorners(map, hole.loop, corners)) return {};
+    if (ring.empty()) ring = loopPoints(map, hole.loop, corners, box.sides(), size);  // by arc length, as holedGrid
+    addRing(grid, locate, lines, box, ring, false, size);
+  }
+  dropUnusedNodes(grid.nodes, grid.quads);  // those inside the holes and pockets
   return grid;
 }
 

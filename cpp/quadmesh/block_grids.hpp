@@ -28,6 +28,21 @@ BlockGrid oGrid(const SurfaceMap& map, const SizeField& size);
 // map, or if two pockets meet or one reaches the rim.
 BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size);
 
+// Grid of a surface mapped onto the square with holes whose pockets would meet or reach the rim (issue 19): one
+// tensor grid over the square, its lines through every hole's sides and spaced by the quads the target size needs
+// between them, averaged over the rim's two sides along each axis (one cell at the least). A rectilinear hole
+// (runs of its edges along one axis each, within half a quad of their side's line, its area within 5 % of their
+// polygon's: a cutout, its notches too, where the chordal rim may cut a corner) is the block of cells inside its
+// sides' lines left out, the nodes on its sides moved onto its loop, corners on corners (a layout traced from the
+// holes' corners on to the rim, as a motorcycle graph's, every node inside regular); any other hole gets
+// holedGrid's pocket, its box one quad beyond the hole where there is room, else half way to the next hole, on the
+// rim if it would come within half a quad of it, its ring's nodes on the hole where spokes from the hole's centre
+// through the box's nodes cross it. Lines of sides that do not face each other (pieces of a side a notch splits,
+// holes in a row) within 0.35 quad are merged; a pocket's side within half a quad of another line is moved onto it.
+// [in] map: the square map; [in] size: the target size. Returns the grid (blocks: 1 and 4 per pocket); empty for
+// any other map, a surface without holes, or where two holes' extents overlap along both axes.
+BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size);
+
 // Ring grid of a surface mapped onto the annulus's rectangle (a tube, a ring): `around` x `across`
 // quads evenly spaced in it (square where the map is conformal), the rim rows on the rims by arc
 // length, periodic round the ring: every node is regular. Empty for any other map.

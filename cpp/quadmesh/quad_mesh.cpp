@@ -28,6 +28,10 @@ constexpr double kOffSurface = 1.0;
 constexpr int kMaxStrip = 20;             // quads between two leftover triangles that are paired (quad_completion)
 constexpr int kCurveSamples = 64;         // points along a patch curve to measure it
 constexpr double kStructuredMean = 0.98;  // mean quad scaled Jacobian of a try that needs no other
+// The shared grid round many holes is kept only with no quad below this (issue 19's bar for the hexes): where its
+// layout fits the surface badly (a rounded rim's corner in a grid cell, a hole by a crooked rim), Gmsh meshes it
+// as before.
+constexpr double kSharedWorst = 0.5;
 constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  // of a structured patch
 
 // Gmsh is one process-wide session: open it for this stage only, and always close it.
@@ -410,27 +414,40 @@ QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOp
   return scoreQuads(q, chordal, chordalEuler, o.acceptableQuad);
 }
 
-// The structured block grids of the chordal surface (block_grids.hpp): a grid with a pocket round
-// each hole, and if its rim has no four sharp corners, an O-grid too (if it is a disc), and a ring grid
-// if it has two rims (a tube, a ring).
-std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const QuadMeshOptions& o) {
-  const SizeField size = [&](const Vec3& p) {
-    return o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, p);
+// The target quad size of the block grids at a point (uniform, or the adaptive sizing's).
+SizeField blockGridSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+  const ChordalLocator* surface = &chordal;
+  const QuadMeshOptions* options = &o;
+  return [surface, options](const Vec3& p) {
+    return options->vertexSize.empty() ? options->size : sizeAt(*surface, options->vertexSize, p);
   };
+}
+
+// A block grid as a try, if it has quads. [in,out] tries; [in] grid, layout.
+void addBlockGrid(std::vector<QuadMesh>& tries, BlockGrid grid, QuadLayout layout) {
+  if (grid.empty()) return;
+  QuadMesh q;
+  q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks,
+  q.layout = layout;
+  tries.push_back(std::move(q));
+}
+
+// The structured block grids of the chordal surface (block_grids.hpp): a grid with a pocket round each hole (where
+// the pockets would meet or reach the rim, the shared grid round all the holes), and if its rim has no four sharp
+// corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring).
+// [in] chordal; [in] square: its map onto the square; [in] o. Returns the tries.
+std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const SurfaceMap& square,
+                                     const QuadMeshOptions& o) {
+  const SizeField size = blockGridSize(chordal, o);
   std::vector<QuadMesh> tries;
-  auto add = [&](BlockGrid grid, QuadLayout layout) {
-    if (grid.empty()) return;
-    QuadMesh q;
-    q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks,
-    q.layout = layout;
-    tries.push_back(std::move(q));
-  };
-  const SurfaceMap square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
-  add(holedGrid(square, size), QuadLayout::Grid);
+  if (BlockGrid holed = holedGrid(square, size); !holed.empty())
+    addBlockGrid(tries, std::move(holed), QuadLayout::Grid);
+  else if (!square.holes.empty())
+    addBlockGrid(tries, sharedGrid(square, size), QuadLayout::SharedGrid);
   if (!square.empty() && !square.sharpCorners && square.holes.empty())
-    add(oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
+    addBlockGrid(tries, oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
   if (!square.empty() && square.holes.size() == 1)
-    add(ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size), QuadLayout::Ring);
+    addBlockGrid(tries, ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size), QuadLayout::Ring);
   return tries;
 }
 
@@ -445,21 +462,39 @@ struct Ranked {
   }
 };
 
-// Structured block grids first: where one has square enough quads, Gmsh is not needed. A grid with an inverted
-// quad (its layout does not fit the surface) is never kept. The block grids are independent tries: finished side
-// by side, then ranked in order. (A single try keeps its own parallel loops: an inactive region does not nest
-// them.)
-Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
-  Ranked ranked;
-  std::vector<QuadMesh> blocks = blockGridQuads(chordal, o);
+// Block grid tries finished side by side (a single try keeps its own parallel loops: an inactive region does not
+// nest them), then ranked in order; one with an inverted quad (its layout does not fit the surface) or another
+// topology is refused, the shared grid also with a quad below kSharedWorst. [in,out] blocks: the tries; [in,out]
+// ranked. Returns whether the holed grid was refused.
+bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal, const QuadMeshOptions& o,
+                    long chordalEuler, Ranked& ranked) {
   std::vector<QuadScore> scores(blocks.size());
 #pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
   for (long i = 0; i < static_cast<long>(blocks.size()); ++i) {
     blocks[i].nodes = onChordalSurface(blocks[i], chordal).onSurface;
     scores[i] = finishTry(blocks[i], chordal, o, chordalEuler);
   }
+  bool holedRefused = false;
   for (std::size_t i = 0; i < blocks.size(); ++i)
-    if (!scores[i].topologyChanged && scores[i].inverted == 0) ranked.keep(blocks[i], scores[i]);
+    if (!scores[i].topologyChanged && scores[i].inverted == 0 &&
+        (blocks[i].layout != QuadLayout::SharedGrid || scores[i].worst >= kSharedWorst))
+      ranked.keep(blocks[i], scores[i]);
+    else
+      holedRefused |= blocks[i].layout == QuadLayout::Grid;
+  return holedRefused;
+}
+
+// Structured block grids first: where one has square enough quads, Gmsh is not needed. Where the holed grid is
+// refused, the shared grid round all the holes is tried in its place.
+Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
+  Ranked ranked;
+  const SurfaceMap square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
+  std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o);
+  if (rankBlockGrids(blocks, chordal, o, chordalEuler, ranked)) {
+    std::vector<QuadMesh> shared;
+    addBlockGrid(shared, sharedGrid(square, blockGridSize(chordal, o)), QuadLayout::SharedGrid);
+    rankBlockGrids(shared, chordal, o, chordalEuler, ranked);
+  }
   return ranked;
 }
 

@@ -22,8 +22,9 @@ struct QuadTries {
 };
 
 // How the quads were laid out: by Gmsh on its patches (some of them structured, the rest
-// unstructured), or as structured block grids in a map of the surface (block_grids.hpp).
-enum class QuadLayout { Gmsh, Grid, OGrid, Ring };
+// unstructured), or as structured block grids in a map of the surface (block_grids.hpp: holedGrid, sharedGrid,
+// oGrid, ringGrid).
+enum class QuadLayout { Gmsh, Grid, SharedGrid, OGrid, Ring };
 
 struct QuadMesh {
   std::vector<Vec3> nodes;                // on the chordal surface

@@ -76,6 +76,8 @@ const char* layoutName(QuadLayout layout) {
   switch (layout) {
     case QuadLayout::Grid:
       return "grid";
+    case QuadLayout::SharedGrid:
+      return "shared-grid";
     case QuadLayout::OGrid:
       return "o-grid";
     case QuadLayout::Ring:

@@ -96,3 +96,154 @@ TEST(BlockGrids, PocketsThatMeetAreRefused) {
   ASSERT_EQ(map.holes.size(), 2u);
   EXPECT_TRUE(holedGrid(map, unit).empty());
 }
+
+namespace {
+
+// The surface scaled by `factor` about the origin.
+ChordalSurface scaled(ChordalSurface s, double factor) {
+  for (Vec3& p : s.vertices) p *= factor;
+  return s;
+}
+
+// The area of a flat surface's facets (quads split on a diagonal).
+double area(const ChordalSurface& s) {
+  double a = 0;
+  for (const auto& f : s.facets) {
+    const Vec3 &p = s.vertices[f[0]], &q = s.vertices[f[1]], &r = s.vertices[f[2]];
+    a += 0.5 * (q - p).cross(r - p).norm();
+    if (f[3] >= 0) a += 0.5 * (r - p).cross(s.vertices[f[3]] - p).norm();
+  }
+  return a;
+}
+
+// Holes of w x h cells in `columns` x `rows`, `gapX` and `gapY` cells apart, the first at (x0, y0).
+std::vector<std::array<int, 4>> holeRows(int columns, int rows, int w, int h, int gapX, int gapY, int x0, int y0) {
+  std::vector<std::array<int, 4>> holes;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const int x = x0 + i * (w + gapX), y = y0 + j * (h + gapY);
+      holes.push_back({x, x + w, y, y + h});
+    }
+  return holes;
+}
+
+// What the shared grid of a surface gave.
+struct Shared {
+  std::size_t quads = 0, nodes = 0, blocks = 0;
+  Quality quality;
+};
+
+// The shared grid of a flat surface with `holes` holes, at scale 1, 1e-3 and 1e3 (the quad size `quad` scaled with it):
+// laid out, every quad valid, the surface's topology, its area within `areaTolerance` (relative), the same counts and
+// shape at every scale. Returns scale 1's.
+Shared expectSharedGrid(const ChordalSurface& surface, int holes, double areaTolerance, double quad = 1) {
+  Shared first;
+  for (const double factor : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE(factor);
+    const ChordalSurface s = scaled(surface, factor);
+    const SizeField size = [&](const Vec3&) { return quad * factor; };
+    const SurfaceMap map = mapToPlane(s, quad * factor, MapBoundary::Square);
+    EXPECT_EQ(map.holes.size(), static_cast<std::size_t>(holes));
+    const BlockGrid g = sharedGrid(map, size);
+    EXPECT_FALSE(g.empty());
+    if (g.empty()) return first;
+    EXPECT_EQ(euler(g), 1 - holes);
+    Quality q = quality(g);
+    EXPECT_GT(q.worst, 0);
+    EXPECT_NEAR(q.area, area(s), areaTolerance * area(s));
+    q.area /= factor * factor;
+    const Shared now{g.quads.size(), g.nodes.size(), g.blocks, q};
+    if (factor == 1.0) {
+      first = now;
+      continue;
+    }
+    EXPECT_EQ(now.quads, first.quads);
+    EXPECT_EQ(now.nodes, first.nodes);
+    EXPECT_EQ(now.blocks, first.blocks);
+    EXPECT_NEAR(now.quality.worst, first.quality.worst, 1e-6);
+    EXPECT_NEAR(now.quality.mean, first.quality.mean, 1e-6);
+  }
+  return first;
+}
+
+}  // namespace
+
+TEST(BlockGrids, SharedGridRoundAGridOfCutouts) {
+  // 4 x 3 cutouts of 7 x 6 cells, 1 apart: the pockets would meet; the grid's lines run along the cutouts' sides
+  const ChordalSurface s = rectangle(37, 27, holeRows(4, 3, 7, 6, 1, 1, 3, 3));
+  EXPECT_TRUE(holedGrid(mapToPlane(s, 1, MapBoundary::Square), unit).empty());
+  const Shared g = expectSharedGrid(s, 12, 1e-9);
+  EXPECT_EQ(g.blocks, 1u);                 // one structured block: every inside node regular
+  EXPECT_EQ(g.quads, 37u * 27 - 12 * 42);  // unit squares
+  EXPECT_EQ(g.nodes, s.vertices.size());   // on the surface's own vertices
+  EXPECT_GT(g.quality.worst, 0.999);
+}
+
+namespace {
+
+// A keyboard plate's cutouts: 3 x 2 of 6 x 6 cells, 1 apart across and 4 along, each with a notch of 2 x 1 in the
+// middle of its top and bottom sides, in a plate of 25 x 22.
+std::vector<std::array<int, 4>> notchedCutouts() {
+  std::vector<std::array<int, 4>> holes = holeRows(3, 2, 6, 6, 1, 4, 2, 3);
+  for (std::size_t h = 0, n = holes.size(); h < n; ++h) {
+    const auto [x0, x1, y0, y1] = holes[h];
+    holes.push_back({x0 + 2, x0 + 4, y1, y1 + 1}), holes.push_back({x0 + 2, x0 + 4, y0 - 1, y0});
+  }
+  return holes;
+}
+
+}  // namespace
+
+TEST(BlockGrids, SharedGridFollowsNotchedCutouts) {
+  const ChordalSurface s = rectangle(25, 22, notchedCutouts());
+  EXPECT_TRUE(holedGrid(mapToPlane(s, 1, MapBoundary::Square), unit).empty());
+  const Shared g = expectSharedGrid(s, 6, 1e-9);
+  EXPECT_EQ(g.blocks, 1u);
+  EXPECT_EQ(g.quads, 25u * 22 - 6 * (36 + 4));  // the notches' corners on grid nodes
+  EXPECT_EQ(g.nodes, s.vertices.size());
+  EXPECT_GT(g.quality.worst, 0.999);
+}
+
+// The chordal rim can cut a notch's corner (the keyboard plate's): each notch's far left corner moved 0.3 into the
+// notch. The cutouts are still laid out on the grid's lines, the corners' nodes on the moved points.
+TEST(BlockGrids, SharedGridFollowsNotchesWhoseCornersTheRimCuts) {
+  ChordalSurface s = rectangle(25, 22, notchedCutouts());
+  const std::vector<std::array<int, 4>> holes = notchedCutouts();
+  for (std::size_t h = 6; h < holes.size(); ++h) {
+    const bool top = h % 2 == 0;  // a notch above its cutout
+    const Vec3 corner(holes[h][0], top ? holes[h][3] : holes[h][2], 0);
+    for (Vec3& p : s.vertices)
+      if ((p - corner).norm() < 1e-9) p += Vec3(0.3, top ? -0.3 : 0.3, 0);
+  }
+  const Shared g = expectSharedGrid(s, 6, 1e-3);
+  EXPECT_EQ(g.blocks, 1u);
+  EXPECT_EQ(g.quads, 25u * 22 - 6 * (36 + 4));
+  EXPECT_GT(g.quality.worst, 0.5);
+  EXPECT_LT(g.quality.worst, 0.99);  // the quads at the cut corners
+  EXPECT_GT(g.quality.mean, 0.98);
+}
+
+TEST(BlockGrids, SharedGridPocketsRoundOctagonsCloseTogether) {
+  // 3 x 2 octagons (6 x 5 cells, chamfered) 1 cell apart: no line follows them; pockets half way to the next
+  const ChordalSurface s = rectangle(30, 20, holeRows(3, 2, 6, 5, 1, 1, 3, 3), true);
+  EXPECT_TRUE(holedGrid(mapToPlane(s, 1, MapBoundary::Square), unit).empty());
+  const Shared g = expectSharedGrid(s, 6, 0.01);
+  EXPECT_EQ(g.blocks, 1u + 4 * 6);
+  EXPECT_GT(g.quality.worst, 0.55);  // unsmoothed; their spokes from the octagons' centres (0.24 by arc length)
+  EXPECT_GT(g.quality.mean, 0.9);
+}
+
+TEST(BlockGrids, SharedGridWithHolesNearTheRim) {
+  // quads of 2: an octagon and a cutout half a quad from the rim, where holedGrid's pockets would leave the square
+  const ChordalSurface o = rectangle(24, 16, {{3, 11, 1, 8}}, true), c = rectangle(24, 16, {{14, 20, 11, 15}});
+  const SizeField two = [](const Vec3&) { return 2.0; };
+  EXPECT_TRUE(holedGrid(mapToPlane(o, 2, MapBoundary::Square), two).empty());
+  EXPECT_TRUE(holedGrid(mapToPlane(c, 2, MapBoundary::Square), two).empty());
+  const Shared octagon = expectSharedGrid(o, 1, 0.01, 2);
+  EXPECT_EQ(octagon.blocks, 5u);  // its pocket's box on the rim
+  EXPECT_GT(octagon.quality.worst, 0.55);
+  EXPECT_GT(octagon.quality.mean, 0.9);
+  const Shared cutout = expectSharedGrid(c, 1, 1e-9, 2);
+  EXPECT_EQ(cutout.blocks, 1u);
+  EXPECT_GT(cutout.quality.worst, 0.999);
+}

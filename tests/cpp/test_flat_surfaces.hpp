@@ -27,8 +27,10 @@ inline ChordalSurface withoutUnusedVertices(const ChordalSurface& s) {
 }
 
 // A flat nx x ny rectangle of unit quads, normal +z, without the cells whose lower left corner is
-// in [hx0, hx1) x [hy0, hy1) for each hole (hx0, hx1, hy0, hy1).
-inline ChordalSurface rectangle(int nx, int ny, const std::vector<std::array<int, 4>>& holes = {}) {
+// in [hx0, hx1) x [hy0, hy1) for each hole (hx0, hx1, hy0, hy1). `chamfered`: each hole's four corner
+// cells keep their outer half (a triangle), so the holes are octagons with 45 degree chamfers.
+inline ChordalSurface rectangle(int nx, int ny, const std::vector<std::array<int, 4>>& holes = {},
+                                bool chamfered = false) {
   ChordalSurface s;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) s.vertices.emplace_back(i, j, 0), s.normals.push_back(Vec3::UnitZ());
@@ -40,6 +42,12 @@ inline ChordalSurface rectangle(int nx, int ny, const std::vector<std::array<int
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
       if (!inHole(i, j)) s.facets.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
+  for (const auto& [x0, x1, y0, y1] : chamfered ? holes : std::vector<std::array<int, 4>>{}) {
+    s.facets.push_back({v(x0, y0), v(x0 + 1, y0), v(x0, y0 + 1), -1});
+    s.facets.push_back({v(x1 - 1, y0), v(x1, y0), v(x1, y0 + 1), -1});
+    s.facets.push_back({v(x1, y1 - 1), v(x1, y1), v(x1 - 1, y1), -1});
+    s.facets.push_back({v(x0, y1 - 1), v(x0 + 1, y1), v(x0, y1), -1});
+  }
   return withoutUnusedVertices(s);
 }
 

@@ -58,6 +58,24 @@ TEST(QuadMesh, RectangleWithAHoleKeepsTheHole) {
   expectTiling(rectangle(20, 10, {{8, 12, 4, 6}}), 20, 10, 8, std::sqrt(0.5) - 1e-9);
 }
 
+// 4 x 3 cutouts of 7 x 6 cells, 1 apart: the holed grid's pockets round them would meet, the shared grid's lines
+// run along the cutouts' sides: unit squares, no Gmsh try.
+TEST(QuadMesh, GridOfCutoutsGetsTheSharedGrid) {
+  std::vector<std::array<int, 4>> holes;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 4; ++i) holes.push_back({3 + 8 * i, 10 + 8 * i, 3 + 7 * j, 9 + 7 * j});
+  const ChordalSurface surface = rectangle(37, 27, holes);
+  expectTiling(surface, 37, 27, 12 * 42, 0.999);
+  const ChordalLocator chordal(surface);
+  QuadMeshOptions o;
+  o.size = 1;
+  const QuadMesh q = meshChordalSurface(chordal, o);
+  EXPECT_EQ(q.layout, QuadLayout::SharedGrid);
+  EXPECT_EQ(q.quads.size(), 37u * 27 - 12 * 42);
+  EXPECT_EQ(q.structuredPatches, 1u);
+  EXPECT_EQ(q.tries.run, 0u);
+}
+
 // Two quads side by side: every node is on the rim; the middle nodes' rim neighbours are along the long sides.
 TEST(QuadMesh, RimEdgeNeighboursOfAStrip) {
   QuadMesh q;
