@@ -70,9 +70,8 @@ bool insidePolygon(const std::vector<Eigen::Vector2d>& p, const Eigen::Vector2d&
 
 // Distance from p to the segment ab, and where its nearest point is along it (0 at a, 1 at b).
 std::pair<double, double> toSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 d = b - a;
-  const double t = std::clamp(d.squaredNorm() > 0 ? (p - a).dot(d) / d.squaredNorm() : 0.0, 0.0, 1.0);
-  return {(a + t * d - p).norm(), t};
+  const double t = nearestOnSegment(a, b, p);
+  return {(a + t * (b - a) - p).norm(), t};
 }
 
 std::array<Triangle, 2> triangles(const std::vector<Vec3>& nodes, const Quad& q) {
@@ -221,11 +220,18 @@ std::vector<Edge> rimPieces(const Nodes& nodes, const std::vector<Edge>& rim, co
   return pieces;
 }
 
-GapEdges gapEdges(const Nodes& nodes, const Plane& plane, const QuadMesh& sheet, const FootprintQuads& footprint,
-                  const Gap& gap, double size) {
-  std::map<std::pair<int, int>, int> quadsOfEdge;  // undirected sheet edge -> how many sheet quads have it
+// How many of the sheet's quads have each (undirected) edge.
+using EdgeUses = std::map<std::pair<int, int>, int>;
+
+EdgeUses edgeUses(const QuadMesh& sheet) {
+  EdgeUses uses;
   for (const Quad& q : sheet.quads)
-    for (int c = 0; c < 4; ++c) ++quadsOfEdge[std::minmax(q[c], q[(c + 1) % 4])];
+    for (int c = 0; c < 4; ++c) ++uses[std::minmax(q[c], q[(c + 1) % 4])];
+  return uses;
+}
+
+GapEdges gapEdges(const Nodes& nodes, const Plane& plane, const QuadMesh& sheet, const EdgeUses& quadsOfEdge,
+                  const FootprintQuads& footprint, const Gap& gap, double size) {
   std::set<Edge> inGap;
   for (int q : gap.sheetQuads) {
     const Quad c = counterClockwise(nodes, plane, sheet.quads[q]);
@@ -235,7 +241,7 @@ GapEdges gapEdges(const Nodes& nodes, const Plane& plane, const QuadMesh& sheet,
   std::vector<Edge> rim;
   for (const auto& [a, b] : inGap) {
     if (inGap.count({b, a})) continue;
-    if (quadsOfEdge[std::minmax(a, b)] > 1)
+    if (quadsOfEdge.at(std::minmax(a, b)) > 1)
       g.edges.emplace_back(a, b);  // shared with a quad kept
     else
       rim.emplace_back(a, b);
@@ -446,10 +452,7 @@ QuadMesh gmshGapQuads(const std::vector<Eigen::Vector2d>& at, const std::vector<
                       const std::vector<Surface>& surfaces, int algorithm) {
   const ChildResult run = runInChildProcess(
       [&] {
-        gmsh::initialize();
-        gmsh::option::setNumber("General.Terminal", 0);
-        gmsh::option::setNumber("General.NumThreads", 1);  // deterministic output
-        try {
+        return inGmshSession([&] {
           gmsh::model::add("gap");
           const std::set<int> used = addGapGeometry(at, spacing, surfaces);
           gmsh::option::setNumber("Mesh.RecombineAll", 1);
@@ -458,18 +461,11 @@ QuadMesh gmshGapQuads(const std::vector<Eigen::Vector2d>& at, const std::vector<
           gmsh::option::setNumber("Mesh.RandomFactor", 1e-9);
           gmsh::option::setNumber("Mesh.Algorithm", algorithm);
           gmsh::model::mesh::generate(2);
-          const QuadMesh q = collectGapQuads(at, used);
-          gmsh::finalize();
-          return toBytes(q);
-        } catch (...) {
-          std::string last;
-          gmsh::logger::getLastError(last);
-          gmsh::finalize();
-          throw geometryError("Gmsh: " + (last.empty() ? std::string("unknown error") : last));
-        }
+          return toBytes(collectGapQuads(at, used));
+        });
       },
       kGmshSeconds);
-  if (!run.ok) throw geometryError("junction: the gap round a wall's foot was not meshed (" + run.failure + ")");
+  if (!run.ok) throw geometryError("junction: the gap round a wall's foot was not meshed (Gmsh: " + run.failure + ")");
   QuadMesh q = fromBytes(run.output);
   if (q.holes > 0)
     throw geometryError("junction: Gmsh left " + std::to_string(q.holes) + " triangles in the gap round a wall's foot");
@@ -566,9 +562,10 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
   const std::vector<Gap> gaps = gapsRoundFeet(sheet, footprint, size, band, removed);
   std::vector<Quad> added;  // in the numbering of `nodes`
   FootprintInsertion out;
+  const EdgeUses quadsOfEdge = edgeUses(sheet);
   for (const Gap& gap : gaps) {
     const Plane plane = gapPlane(nodes, sheet, footprint, gap);
-    const GapEdges edges = gapEdges(nodes, plane, sheet, footprint, gap, size);
+    const GapEdges edges = gapEdges(nodes, plane, sheet, quadsOfEdge, footprint, gap, size);
     std::vector<Loop> loops = chainLoops(edges.edges);
     dropTinyRimEdges(nodes, edges.free, size, loops);
     std::vector<Surface> surfaces = surfacesOf(nodes, plane, loops);

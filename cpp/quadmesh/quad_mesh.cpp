@@ -34,16 +34,6 @@ constexpr double kStructuredMean = 0.98;  // mean quad scaled Jacobian of a try 
 constexpr double kSharedWorst = 0.5;
 constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  // of a structured patch
 
-// Gmsh is one process-wide session: open it for this stage only, and always close it.
-struct GmshSession {
-  GmshSession() {
-    gmsh::initialize();
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.NumThreads", 1);  // deterministic output
-  }
-  ~GmshSession() { gmsh::finalize(); }
-};
-
 // The chordal facets as one discrete Gmsh surface of triangles (each quad split on a diagonal).
 void addChordalTriangles(const ChordalSurface& chordal) {
   const int surface = gmsh::model::addDiscreteEntity(2);
@@ -274,8 +264,7 @@ GmshTry gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const
   const ChordalSurface& chordal = locator.surface();
   const ChildResult run = runInChildProcess(
       [&] {
-        GmshSession session;
-        try {
+        return inGmshSession([&] {
           gmsh::model::add("chordal_surface");
           addChordalTriangles(chordal);
           const double toRadians = M_PI / 180.0;
@@ -290,13 +279,7 @@ GmshTry gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const
           QuadMesh q = collectQuads();
           q.structuredPatches = structured;
           return toBytes(q);
-        } catch (const std::exception&) {
-          throw;
-        } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
-          std::string last;
-          gmsh::logger::getLastError(last);
-          throw geometryError(last.empty() ? "unknown Gmsh error" : last);
-        }
+        });
       },
       budget);
   if (!run.ok) return {{}, "Gmsh " + run.failure, run.timedOut};
@@ -612,6 +595,33 @@ QuadMesh fromBytes(const std::string& bytes) {
   for (Vec3& p : q.nodes) std::memcpy(p.data(), at, 3 * sizeof(double)), at += 3 * sizeof(double);
   std::memcpy(static_cast<void*>(q.quads.data()), at, quadBytes);
   return q;
+}
+
+namespace {
+
+// Gmsh is one process-wide session: open it for one piece of work only, and always close it.
+struct GmshSession {
+  GmshSession() {
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.NumThreads", 1);  // deterministic output
+  }
+  ~GmshSession() { gmsh::finalize(); }
+};
+
+}  // namespace
+
+std::string inGmshSession(const std::function<std::string()>& work) {
+  GmshSession session;
+  try {
+    return work();
+  } catch (const std::exception&) {
+    throw;
+  } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
+    std::string last;
+    gmsh::logger::getLastError(last);
+    throw geometryError(last.empty() ? "unknown Gmsh error" : last);
+  }
 }
 
 }  // namespace hexlayer

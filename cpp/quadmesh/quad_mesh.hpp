@@ -99,6 +99,11 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& quads);
 // saying why) if no try gave any.
 QuadMesh tryQuadMeshes(const ChordalLocator& chordal, const QuadMeshOptions& options);
 
+// Runs work() between gmsh::initialize and gmsh::finalize (quiet, one thread: deterministic output), finalizing
+// whatever happens; Gmsh 4.8's own errors (its error code thrown, the message in its logger) become geometryError.
+// Meant for a child process (child_process.hpp): Gmsh is one session per process. [in] work. Returns its bytes.
+std::string inGmshSession(const std::function<std::string()>& work);
+
 // A quad mesh as bytes and back, to cross from a child process that runs Gmsh (child_process.hpp). fromBytes throws
 // internalError if the bytes are not a whole mesh.
 std::string toBytes(const QuadMesh& q);
