@@ -6,11 +6,19 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRepLib.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <GCE2d_MakeSegment.hxx>
 #include <GProp_GProps.hxx>
+#include <GeomAdaptor_Surface.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
+#include <Geom_Plane.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
+#include <ShapeAnalysis_Surface.hxx>
+#include <ShapeFix_Face.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_HSequenceOfShape.hxx>
@@ -117,10 +125,23 @@ gp_Vec outward(const TopoDS_Wire& wire, const gp_Pnt& at, double tolerance) {
   return gp_Vec(0, 0, 0);
 }
 
-// The foot edges joined into closed wires. Open chains are closed by straight segments between their free ends:
-// first an end and the end it runs on to (a rib's foot continued under a rib crossing it), then the nearest free
-// ends (a foot running to the wall's edge, a partition's two edges between walls).
-std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, double tolerance) {
+// The edge from a to b on the base wall's surface: a straight segment on a plane, a segment of the surface's
+// parameter plane on any other (a rib's foot closed along a shell's ruling or its rim).
+TopoDS_Edge edgeOnSurface(const Handle(Geom_Surface) & surface, const gp_Pnt& a, const gp_Pnt& b, double tolerance) {
+  if (GeomAdaptor_Surface(surface).GetType() == GeomAbs_Plane) return BRepBuilderAPI_MakeEdge(a, b).Edge();
+  ShapeAnalysis_Surface uv(surface);
+  const gp_Pnt2d ua = uv.ValueOfUV(a, tolerance), ub = uv.ValueOfUV(b, tolerance);
+  if (ua.Distance(ub) <= gp::Resolution()) return BRepBuilderAPI_MakeEdge(a, b).Edge();
+  TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(GCE2d_MakeSegment(ua, ub).Value(), surface).Edge();
+  BRepLib::BuildCurves3d(edge);
+  return edge;
+}
+
+// The foot edges joined into closed wires. Open chains are closed by segments on the base wall's surface between
+// their free ends: first an end and the end it runs on to (a rib's foot continued under a rib crossing it), then
+// the nearest free ends (a foot running to the wall's edge, a partition's two edges between walls).
+std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, const Handle(Geom_Surface) & surface,
+                                     double tolerance) {
   Handle(TopTools_HSequenceOfShape) in = new TopTools_HSequenceOfShape, wires;
   for (const TopoDS_Edge& e : edges) in->Append(e);
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, wires);
@@ -147,7 +168,7 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, doub
             best = ends[i].Distance(ends[j]), bi = i, bj = j;
       if (!std::isfinite(best)) break;
       used[bi] = used[bj] = 1;
-      in->Append(BRepBuilderAPI_MakeEdge(ends[bi], ends[bj]).Edge());
+      in->Append(edgeOnSurface(surface, ends[bi], ends[bj], tolerance));
     }
   Handle(TopTools_HSequenceOfShape) closed;
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, closed);
@@ -156,45 +177,78 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, doub
   return result;
 }
 
-// The foot edges of standing sheet s grouped by the plane of the base wall they lie on (a rib running across a
-// plate splits its top into two faces, one plane).
-struct PlaneEdges {
-  gp_Pln plane;
-  int face;  // the first base face on it
-  int base;  // its sheet
+// The foot edges of standing sheet s grouped by the surface of the base wall they lie on: one plane (a rib running
+// across a plate splits its top into two faces), or one curved face's surface.
+struct SurfaceEdges {
+  Handle(Geom_Surface) surface;
+  std::optional<gp_Pln> plane;  // if the surface is planar
+  int face;                     // the first base face on it
+  int base;                     // its sheet
   std::vector<TopoDS_Edge> edges;
 };
 
-std::vector<PlaneEdges> footEdgesByPlane(const Junctions& j, int s) {
-  const double tolerance = kJoin * j.cad.diagonal;
-  std::vector<PlaneEdges> planes;
-  for (const auto& [base, edges] : footEdges(j, s)) {
-    const std::optional<gp_Pln> flat = planeOf(j.cad.faces(base + 1), tolerance);
-    if (!flat)
-      throw geometryError("T-junction: the sheet at " + sheetPlace(j.cad, j.sheets[s]) + " stands on a curved wall (" +
-                          inputFaceName(j.cad, base) + "), which junction meshing does not cut yet");
-    const gp_Pln plane = *flat;
-    const int sheet = j.sheetOf[base];
-    auto same = [&](const PlaneEdges& p) {
-      return p.base == sheet && p.plane.Axis().IsParallel(plane.Axis(), 1e-9) &&
-             p.plane.Distance(plane.Location()) <= tolerance;
-    };
-    auto at = std::find_if(planes.begin(), planes.end(), same);
-    if (at == planes.end()) at = planes.insert(planes.end(), PlaneEdges{plane, base, sheet, {}});
-    at->edges.insert(at->edges.end(), edges.begin(), edges.end());
-  }
-  return planes;
+// Whether the face lies on `surface` (a rib's foot splits a shell's wall into faces of one cylinder, each its own
+// surface in the file): a 3 x 3 grid of points over the face's parameter box lies on it.
+bool sameSurface(const Handle(Geom_Surface) & surface, const TopoDS_Face& face, double tolerance) {
+  ShapeAnalysis_Surface on(surface);
+  const BRepAdaptor_Surface other(face);
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  for (int i = 0; i <= 2; ++i)
+    for (int k = 0; k <= 2; ++k) {
+      on.ValueOfUV(other.Value(u0 + 0.5 * i * (u1 - u0), v0 + 0.5 * k * (v1 - v0)), tolerance);
+      if (on.Gap() > tolerance) return false;
+    }
+  return true;
 }
 
-// The feet of standing sheet s: faces on the planes of the base's walls under it, bounded by its foot edges.
+std::vector<SurfaceEdges> footEdgesBySurface(const Junctions& j, int s) {
+  const double tolerance = kJoin * j.cad.diagonal;
+  std::vector<SurfaceEdges> surfaces;
+  for (const auto& [base, edges] : footEdges(j, s)) {
+    const TopoDS_Face& face = TopoDS::Face(j.cad.faces(base + 1));
+    const std::optional<gp_Pln> plane = planeOf(face, tolerance);
+    const Handle(Geom_Surface) surface = plane ? new Geom_Plane(*plane) : BRep_Tool::Surface(face);
+    const int sheet = j.sheetOf[base];
+    auto same = [&](const SurfaceEdges& p) {
+      if (p.base != sheet) return false;
+      if (!plane || !p.plane) return !plane && !p.plane && sameSurface(p.surface, face, tolerance);
+      return p.plane->Axis().IsParallel(plane->Axis(), 1e-9) && p.plane->Distance(plane->Location()) <= tolerance;
+    };
+    auto at = std::find_if(surfaces.begin(), surfaces.end(), same);
+    if (at == surfaces.end()) at = surfaces.insert(surfaces.end(), SurfaceEdges{surface, plane, base, sheet, {}});
+    at->edges.insert(at->edges.end(), edges.begin(), edges.end());
+  }
+  return surfaces;
+}
+
+// The face on the surface bounded by `wire`, its missing curves on the surface added, its wire turned to bound
+// the finite side; none if it cannot be made.
+std::optional<TopoDS_Face> faceOn(const SurfaceEdges& on, const TopoDS_Wire& wire, double tolerance) {
+  if (on.plane) {
+    BRepBuilderAPI_MakeFace face(*on.plane, wire, true);
+    if (!face.IsDone()) return std::nullopt;
+    return face.Face();
+  }
+  for (const TopoDS_Wire& w : {wire, TopoDS::Wire(wire.Reversed())}) {
+    BRepBuilderAPI_MakeFace face(on.surface, w, true);
+    if (!face.IsDone()) continue;
+    ShapeFix_Face fix(face.Face());
+    fix.SetPrecision(tolerance);
+    fix.Perform();
+    if (areaOf(fix.Face()) > 0 && BRepCheck_Analyzer(fix.Face()).IsValid()) return fix.Face();
+  }
+  return std::nullopt;
+}
+
+// The feet of standing sheet s: faces on the surfaces of the base's walls under it, bounded by its foot edges.
 std::vector<Foot> footFaces(const Junctions& j, int s) {
   std::vector<Foot> feet;
-  for (const PlaneEdges& p : footEdgesByPlane(j, s))
-    for (const TopoDS_Wire& wire : closedWires(p.edges, kJoin * j.cad.diagonal)) {
-      BRepBuilderAPI_MakeFace face(p.plane, wire, true);
-      if (!face.IsDone()) continue;
-      feet.push_back({s, p.base, p.face, face.Face(), areaOf(face.Face())});
-    }
+  const double tolerance = kJoin * j.cad.diagonal;
+  for (const SurfaceEdges& on : footEdgesBySurface(j, s))
+    for (const TopoDS_Wire& wire : closedWires(on.edges, on.surface, tolerance))
+      if (const std::optional<TopoDS_Face> face = faceOn(on, wire, tolerance))
+        feet.push_back({s, on.base, on.face, *face, areaOf(*face)});
   if (feet.empty())
     throw geometryError("T-junction: no foot found for the sheet at " + sheetPlace(j.cad, j.sheets[s]) +
                         " on the sheet it stands on");

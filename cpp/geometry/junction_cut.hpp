@@ -1,8 +1,8 @@
 // Junctions, first step (issue 18; ../shared/design/junctions.md): the part cut into pieces of one sheet each, as
 // an analyst cuts a ribbed part by hand before sweeping it. Every sheet that stands on the base sheet (a rib on a
 // plate, a boss, a partition on a floor) is cut off along the base's wall under it: the cut face, its foot, lies
-// in that wall's surface; it is a rim face of the standing piece and a piece of the base piece's wall. Each piece
-// is then a part the one-sheet method meshes (its chordal surface is 2-manifold).
+// in that wall's surface (flat or curved); it is a rim face of the standing piece and a piece of the base piece's wall.
+// Each piece is then a part the one-sheet method meshes (its chordal surface is 2-manifold).
 #pragma once
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
@@ -42,9 +42,9 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
 // [in] cad: the solid; [in] sides: its faces' sides (classifyWallSides); [in] sheets: findSheets's, the first
 // the base. Every other sheet is cut off along the base's wall faces it stands on (the concave edges between
 // its faces, walls and their rim faces, and the base's walls bound its foot; a foot running to the wall's
-// edge is closed along it). The base's walls under a foot must be planar.
-// Throws geometryError naming the sheet's place if a foot is not on a plane, or the cut does not give one
-// piece per sheet. [out] (returned) the pieces, their feet and the origin of every piece's face.
+// edge is closed along it, on the wall's surface: plane, cylinder or any other).
+// Throws geometryError naming the sheet's place if no foot can be made, or the cut does not give one piece per
+// sheet. [out] (returned) the pieces, their feet and the origin of every piece's face.
 JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets);
 
 }  // namespace hexlayer

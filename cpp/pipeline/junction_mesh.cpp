@@ -1,6 +1,8 @@
 #include "pipeline/junction_mesh.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <BRep_Tool.hxx>
 #include <gp_Pln.hxx>
 
 #include <algorithm>
@@ -41,32 +43,51 @@ void shareMidEdgeNodes(const HexMesh& sheet, const HexMesh& walls, std::vector<i
 
 }  // namespace
 
-std::vector<FootPlane> footPlanes(const JunctionCut& cut, int sheet, int base) {
-  std::vector<FootPlane> planes;
-  for (const Foot& f : cut.feet) {
-    if (f.sheet != sheet || f.base != base) continue;
-    const gp_Pln plane = BRepAdaptor_Surface(f.face).Plane();
+FootSurface::FootSurface(const TopoDS_Face& foot, double tolerance) : tolerance_(tolerance) {
+  BRepBndLib::AddOptimal(foot, box_, false, false);  // its curves', not its triangulation's
+  box_.Enlarge(tolerance);
+  const BRepAdaptor_Surface surface(foot);
+  if (surface.GetType() == GeomAbs_Plane) {
+    const gp_Pln plane = surface.Plane();
     const gp_XYZ n = plane.Axis().Direction().XYZ(), o = plane.Location().XYZ();
-    planes.push_back({Vec3(n.X(), n.Y(), n.Z()), n.Dot(o)});
+    plane_.emplace(Vec3(n.X(), n.Y(), n.Z()), n.Dot(o));
+  } else {
+    surface_ = std::make_shared<ShapeAnalysis_Surface>(BRep_Tool::Surface(foot));
   }
-  return planes;
 }
 
-WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, const std::vector<FootPlane>& feet, double tolerance) {
+bool FootSurface::holds(const Vec3& p) {
+  const gp_Pnt at(p.x(), p.y(), p.z());
+  if (box_.IsOut(at)) return false;
+  if (plane_) return std::abs(p.dot(plane_->first) - plane_->second) <= tolerance_;
+  surface_->ValueOfUV(at, tolerance_);
+  return surface_->Gap() <= tolerance_;
+}
+
+std::vector<FootSurface> footSurfaces(const JunctionCut& cut, int sheet, int base, double tolerance) {
+  std::vector<FootSurface> surfaces;
+  for (const Foot& f : cut.feet)
+    if (f.sheet == sheet && f.base == base) surfaces.emplace_back(f.face, tolerance);
+  return surfaces;
+}
+
+WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet) {
   const int m = wall.layers, stride = m + 1;
-  // The plane quad node q's sweep column lies on, or -1.
-  auto planeOf = [&](int q) {
-    for (std::size_t f = 0; f < feet.size(); ++f) {
-      bool on = (q + 1) * stride <= static_cast<int>(wall.nodes.size());
-      for (int k = 0; on && k <= m; ++k)
-        on = std::abs(wall.nodes[q * stride + k].dot(feet[f].normal) - feet[f].offset) <= tolerance;
-      if (on) return static_cast<int>(f);
-    }
-    return -1;
-  };
-  std::vector<int> plane(quads.nodes.size());
-  for (std::size_t q = 0; q < quads.nodes.size(); ++q) plane[q] = planeOf(static_cast<int>(q));
   const std::vector<std::vector<int>> rim = rimEdgeNeighbours(quads);
+  // Per foot, whether quad node q's sweep column lies on it (only rim nodes can; a node where feet meet, on a bend's
+  // seam, on both).
+  std::vector<std::vector<char>> on(feet.size(), std::vector<char>(quads.nodes.size(), 0));
+  for (int q = 0; q < static_cast<int>(quads.nodes.size()); ++q) {
+    if (rim[q].empty() || (q + 1) * stride > static_cast<int>(wall.nodes.size())) continue;
+    for (std::size_t f = 0; f < feet.size(); ++f) {
+      bool all = true;
+      for (int k = 0; all && k <= m; ++k) all = feet[f].holds(wall.nodes[q * stride + k]);
+      on[f][q] = all;
+    }
+  }
+  auto onOneFoot = [&](int a, int b) {
+    return std::any_of(on.begin(), on.end(), [&](const std::vector<char>& f) { return f[a] && f[b]; });
+  };
   WallFoot foot;
   std::map<int, int> index;  // the wall's hex node -> footprint node
   auto node = [&](int n) {
@@ -77,7 +98,7 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, const std::vector<
   std::vector<int> footEdges(quads.nodes.size(), 0);
   for (int a = 0; a < static_cast<int>(quads.nodes.size()); ++a)
     for (int b : rim[a]) {
-      if (b <= a || plane[a] < 0 || plane[a] != plane[b]) continue;
+      if (b <= a || !onOneFoot(a, b)) continue;
       ++footEdges[a], ++footEdges[b];
       for (int k = 0; k < m; ++k)
         foot.footprint.quads.push_back(

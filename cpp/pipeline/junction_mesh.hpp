@@ -5,6 +5,11 @@
 // and the sheet's swept nodes under each foot are the wall's foot nodes, by id (append.hpp's joinHexMesh). Every hex
 // is a hex of one sheet.
 #pragma once
+#include <Bnd_Box.hxx>
+#include <ShapeAnalysis_Surface.hxx>
+
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/types.hpp"
@@ -14,15 +19,24 @@
 
 namespace hexlayer {
 
-// A plane a foot lies on: the points p with p · normal = offset.
-struct FootPlane {
-  Vec3 normal = Vec3::UnitZ();
-  double offset = 0;
+// The surface a foot lies on (a plane, a cylinder, any), and how far a point near the foot is from it.
+class FootSurface {
+ public:
+  // [in] foot: a foot face of the cut (JunctionCut::feet); [in] tolerance: how near a point lies to it.
+  FootSurface(const TopoDS_Face& foot, double tolerance);
+  // Whether p lies on the foot's surface, within the foot's box.
+  bool holds(const Vec3& p);
+
+ private:
+  double tolerance_;
+  Bnd_Box box_;
+  std::optional<std::pair<Vec3, double>> plane_;  // normal, offset
+  std::shared_ptr<ShapeAnalysis_Surface> surface_;
 };
 
-// [in] cut; [in] sheet: a standing sheet's index (its piece's); [in] base: the sheet it stands on. Returns the planes
-// of its feet on that sheet (cutAtJunctions' feet are planar).
-std::vector<FootPlane> footPlanes(const JunctionCut& cut, int sheet, int base);
+// [in] cut; [in] sheet: a standing sheet's index (its piece's); [in] base: the sheet it stands on; [in] tolerance.
+// Returns the surfaces of its feet on that sheet.
+std::vector<FootSurface> footSurfaces(const JunctionCut& cut, int sheet, int base, double tolerance);
 
 // A standing wall's feet as its hexes have them.
 struct WallFoot {
@@ -32,10 +46,10 @@ struct WallFoot {
 };
 
 // [in] wall: hexes swept from `quads` (sweep.hpp's layout: quad node q's sweep column is the hex nodes q (m + 1) + k,
-// k = 0..m); [in] quads; [in] feet: the planes of the wall's feet; [in] tolerance: how near a node lies to its plane.
-// Returns the footprint: for every rim edge of the quads whose two sweep columns lie on one foot plane, the m quads
-// between the columns. Throws geometryError if there is none.
-WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, const std::vector<FootPlane>& feet, double tolerance);
+// k = 0..m); [in] quads; [in,out] feet: the surfaces of the wall's feet (footSurfaces).
+// Returns the footprint: for every rim edge of the quads whose two sweep columns lie on one foot's surface, the m
+// quads between the columns. Throws geometryError if there is none.
+WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet);
 
 // Per node of the sheet's hexes, the standing walls' node it is, or -1: for every footprint node f the end of the
 // sweep column of quad node column[f] nearer to it is walls' node wallNode[f]; for 20-node hexes the mid-edge node

@@ -427,8 +427,9 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
                          ? meshSolid(t.cut.pieces[s], o)
                          : meshSolid(t.cut.pieces[s], o, [&](const CadSolid& c, QuadStage& stage) {
                              const ChordalLocator locator(stage.chordal);
-                             FootprintQuads onSheet = footprint;
-                             for (Vec3& p : onSheet.nodes) p = locator.locate(p * c.unit).point;
+                             FootprintQuads onWall = footprint;
+                             for (Vec3& p : onWall.nodes) p *= c.unit;
+                             const FootprintQuads onSheet = onChordalSurface(onWall, locator);
                              inserted = insertFootprints(stage.quads, onSheet, locator, meanEdge(stage.quads));
                              stage.quads = inserted.quads;
                            });
@@ -443,7 +444,8 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
   for (const Foot& f : t.cut.feet)
     if (f.sheet == s) bases.insert(f.base);
   for (int b : bases) {
-    WallFoot foot = wallFoot(piece.mesh, piece.quadMesh, footPlanes(t.cut, s, b), tolerance);
+    std::vector<FootSurface> surfaces = footSurfaces(t.cut, s, b, tolerance);
+    WallFoot foot = wallFoot(piece.mesh, piece.quadMesh, surfaces);
     for (int& n : foot.wallNode) n = id[n];
     t.feet[s][b] = std::move(foot);
   }
@@ -458,13 +460,13 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   JunctionPieces t;
   t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });  // sheets: crossings merged
   t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size());
-  // A tenth of a layer: a sheet's walls meet a foot where the standing wall's hexes end.
-  // The pieces are not validated on their own (a small boss's ring of quads loses a few % of its volume, not of the
-  // part's): the joined mesh is, as any part's.
+  // The sheet's node under a foot node is known by its column (the footprint's quad node); it is checked to be the
+  // column's end nearer to the foot within a third of the wall's thickness (the sheet's rim and poor hexes are
+  // smoothed after the sweep, and in a bend its chordal facets are coarser than the wall), then is the foot's node.
   MeshOptions piece = o;
   piece.force = true;
   for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s)
-    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.1);
+    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, o.layers / 3.0);
   return t;
 }
 
@@ -539,7 +541,11 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
     j.minScaledJacobian = hexes.minScaledJacobian, j.meanScaledJacobian = hexes.meanScaledJacobian;
     r.junctions.push_back(j);
   }
-  enforceValidation(r.mesh, o);
+  try {
+    enforceValidation(r.mesh, o);
+  } catch (const Error& e) {  // the joined mesh is not valid: the junctions are refused (--force writes it)
+    throw junctionRefusal(cad, sheets, e.what());
+  }
   return std::move(result);
 }
 

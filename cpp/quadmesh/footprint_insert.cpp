@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -14,6 +16,7 @@
 #include "core/union_find.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
+#include "quadmesh/surface_map.hpp"
 
 namespace hexlayer {
 namespace {
@@ -23,24 +26,17 @@ constexpr double kOverlap = 1e-3;       // of the quad size: a foot this near an
 constexpr double kCoincide = 1e-2;      // of kOnRim: a rim node this near a footprint node is that node
 constexpr double kOnRim = 0.1;          // of the quad size: a footprint node this near the sheet's rim lies on it
 constexpr double kTinyEdge = 0.3;       // of the quad size: a rim node of the gap this near a footprint's is dropped
-constexpr double kFlatCosine = 0.866;   // cos 30°: the gap's quads lean at most this far from its plane
 constexpr int kMaxStrip = 20;           // quads between two leftover triangles that are paired (quad_completion)
 constexpr double kGmshSeconds = 120;    // a gap's Gmsh run (it takes milliseconds)
 constexpr int kGapAlgorithms[] = {6, 5, 1};      // Gmsh's 2D algorithms tried: frontal-Delaunay, Delaunay, MeshAdapt
 constexpr double kGapSpacing[] = {1, 0.7, 0.5};  // of the boundary's edge lengths: the gap's mesh sizes tried
 constexpr double kGoodGap = 0.3;                 // scaled Jacobian of the gap's worst quad that needs no finer try
+constexpr int kAlongNormal = 4;                  // steps of a footprint node onto the chordal surface along a normal
 constexpr int kSmoothing = 10;                   // iterations of the gap's quads (as the quad stage's)
 
 using Quad = std::array<int, 4>;
 using Edge = std::pair<int, int>;  // directed, the gap on its left
 using Loop = std::vector<int>;     // nodes in order, the gap on the left
-
-// A plane and 2D coordinates in it.
-struct Plane {
-  Vec3 origin = Vec3::Zero(), normal = Vec3::UnitZ(), e1 = Vec3::UnitX(), e2 = Vec3::UnitY();
-  Eigen::Vector2d at(const Vec3& p) const { return {(p - origin).dot(e1), (p - origin).dot(e2)}; }
-  Vec3 lift(const Eigen::Vector2d& q) const { return origin + q.x() * e1 + q.y() * e2; }
-};
 
 // Twice the quad's vector area: along its normal.
 Vec3 areaVector(const std::vector<Vec3>& nodes, const Quad& q) {
@@ -144,37 +140,76 @@ std::vector<Gap> gapsRoundFeet(const QuadMesh& sheet, const FootprintQuads& foot
   return out;
 }
 
-// The gap's plane: through its footprints' centre, normal their mean. Throws if the sheet's quads there lean from
-// it by more than kFlatCosine (a foot across a bend).
-Plane gapPlane(const Nodes& nodes, const QuadMesh& sheet, const FootprintQuads& footprint, const Gap& gap) {
-  Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
-  const Vec3 first = areaVector(footprint.nodes, footprint.quads[gap.footprintQuads.front()]);
-  double count = 0;
-  for (int q : gap.footprintQuads) {
-    const Vec3 n = areaVector(footprint.nodes, footprint.quads[q]);
-    normal += n.dot(first) < 0 ? Vec3(-n) : n;
-    for (int v : footprint.quads[q]) centre += footprint.nodes[v], ++count;
-  }
-  Plane plane;
-  plane.origin = centre / count, plane.normal = normal.normalized();
-  plane.e1 = plane.normal.unitOrthogonal(), plane.e2 = plane.normal.cross(plane.e1);
-  for (int q : gap.sheetQuads) {
-    const Vec3 n = areaVector(sheet.nodes, sheet.quads[q]);
-    if (std::abs(n.dot(plane.normal)) < kFlatCosine * n.norm()) {
+// The gap unfolded onto the plane: the sheet's quads taken out, on a diagonal, by the least-squares conformal map
+// (surface_map.hpp), so that a gap on a curved sheet or across a bend is meshed in 2D as a flat one is. 2D
+// coordinates of the points near the gap, 2D points back on it, and the sheet's side seen counter-clockwise in 2D.
+class GapMap {
+ public:
+  // Throws geometryError if the quads do not unfold (not one patch, or folded).
+  GapMap(const QuadMesh& sheet, const Gap& gap) {
+    std::map<int, int> local;  // the sheet's node -> the map's point
+    std::vector<Vec3> points;
+    std::vector<std::array<int, 3>> triangles;
+    auto point = [&](int n) {
+      const auto [it, added] = local.emplace(n, static_cast<int>(points.size()));
+      if (added) points.push_back(sheet.nodes[n]);
+      return it->second;
+    };
+    for (int q : gap.sheetQuads) {
+      const Quad& c = sheet.quads[q];
+      triangles.push_back({point(c[0]), point(c[1]), point(c[2])});
+      triangles.push_back({point(c[0]), point(c[2]), point(c[3])});
+    }
+    map_ = unfoldConformally(std::move(points), std::move(triangles));
+    if (map_.empty()) {
+      const Vec3& p = sheet.nodes[sheet.quads[gap.sheetQuads.front()][0]];
       std::ostringstream msg;
-      const Vec3& p = nodes.at[sheet.quads[q][0]];
-      msg << "junction: the sheet under a wall's foot is not flat near (" << p.x() << ", " << p.y() << ", " << p.z()
-          << ") (feet across a bend are not meshed yet)";
+      msg << "junction: the sheet round a wall's foot near (" << p.x() << ", " << p.y() << ", " << p.z()
+          << ") does not unfold onto a plane";
       throw geometryError(msg.str());
     }
+    locator_ = std::make_unique<MapLocator>(map_);
   }
-  return plane;
-}
+  GapMap(const GapMap&) = delete;  // locator_ refers to map_
+  GapMap& operator=(const GapMap&) = delete;
 
-// The quad turned counter-clockwise in the plane.
-Quad counterClockwise(const Nodes& nodes, const Plane& plane, Quad q) {
+  // The point p of the nearest triangle's plane, in 2D (its affine weights there, not clamped to it).
+  Eigen::Vector2d at(const Vec3& p) const {
+    const auto& t = map_.triangles[nearest(p)];
+    const Vec3 &a = map_.points[t[0]], &b = map_.points[t[1]], &c = map_.points[t[2]];
+    Eigen::Matrix<double, 3, 2> e;
+    e << b - a, c - a;
+    const Eigen::Vector2d st = (e.transpose() * e).ldlt().solve(e.transpose() * (p - a));
+    return map_.uv[t[0]] + st.x() * (map_.uv[t[1]] - map_.uv[t[0]]) + st.y() * (map_.uv[t[2]] - map_.uv[t[0]]);
+  }
+  // The gap's point at q (on the sheet's quads; put it on the chordal surface after).
+  Vec3 lift(const Eigen::Vector2d& q) const { return (*locator_)(q); }
+  // The sheet's normal near p, on the side from which the map is counter-clockwise.
+  Vec3 normal(const Vec3& p) const {
+    const auto& t = map_.triangles[nearest(p)];
+    const Vec3 &a = map_.points[t[0]], &b = map_.points[t[1]], &c = map_.points[t[2]];
+    return (b - a).cross(c - a).normalized();
+  }
+
+ private:
+  int nearest(const Vec3& p) const {
+    int best = 0;
+    double bestD2 = std::numeric_limits<double>::infinity();
+    for (int t = 0; t < static_cast<int>(map_.triangles.size()); ++t) {
+      const auto& c = map_.triangles[t];
+      const double d2 = squaredDistanceToTriangle(p, {map_.points[c[0]], map_.points[c[1]], map_.points[c[2]]});
+      if (d2 < bestD2) bestD2 = d2, best = t;
+    }
+    return best;
+  }
+  SurfaceMap map_;
+  std::unique_ptr<MapLocator> locator_;
+};
+
+// The quad turned counter-clockwise in the gap's map.
+Quad counterClockwise(const Nodes& nodes, const GapMap& map, Quad q) {
   std::vector<Eigen::Vector2d> p;
-  for (int n : q) p.push_back(plane.at(nodes.at[n]));
+  for (int n : q) p.push_back(map.at(nodes.at[n]));
   if (signedArea(p) < 0) std::reverse(q.begin(), q.end());
   return q;
 }
@@ -230,11 +265,11 @@ EdgeUses edgeUses(const QuadMesh& sheet) {
   return uses;
 }
 
-GapEdges gapEdges(const Nodes& nodes, const Plane& plane, const QuadMesh& sheet, const EdgeUses& quadsOfEdge,
+GapEdges gapEdges(const Nodes& nodes, const GapMap& map, const QuadMesh& sheet, const EdgeUses& quadsOfEdge,
                   const FootprintQuads& footprint, const Gap& gap, double size) {
   std::set<Edge> inGap;
   for (int q : gap.sheetQuads) {
-    const Quad c = counterClockwise(nodes, plane, sheet.quads[q]);
+    const Quad c = counterClockwise(nodes, map, sheet.quads[q]);
     for (int k = 0; k < 4; ++k) inGap.emplace(c[k], c[(k + 1) % 4]);
   }
   GapEdges g;
@@ -251,7 +286,7 @@ GapEdges gapEdges(const Nodes& nodes, const Plane& plane, const QuadMesh& sheet,
   for (int q : gap.footprintQuads) {
     Quad c = footprint.quads[q];
     for (int& n : c) n += offset;
-    c = counterClockwise(nodes, plane, c);
+    c = counterClockwise(nodes, map, c);
     for (int k = 0; k < 4; ++k) inFoot.emplace(c[k], c[(k + 1) % 4]);
   }
   const double tolerance = kOnRim * size;
@@ -317,28 +352,28 @@ void dropTinyRimEdges(const Nodes& nodes, const std::set<Edge>& free, double siz
 // One planar surface of the gap: its outer loop, then its holes.
 using Surface = std::vector<Loop>;
 
-std::vector<Eigen::Vector2d> inPlane(const Nodes& nodes, const Plane& plane, const Loop& loop) {
+std::vector<Eigen::Vector2d> inPlane(const Nodes& nodes, const GapMap& map, const Loop& loop) {
   std::vector<Eigen::Vector2d> p;
-  for (int n : loop) p.push_back(plane.at(nodes.at[n]));
+  for (int n : loop) p.push_back(map.at(nodes.at[n]));
   return p;
 }
 
 // The loops sorted into surfaces: counter-clockwise ones are outer loops (the gap on the left), each clockwise one a
 // hole of the smallest outer loop round it.
-std::vector<Surface> surfacesOf(const Nodes& nodes, const Plane& plane, const std::vector<Loop>& loops) {
+std::vector<Surface> surfacesOf(const Nodes& nodes, const GapMap& map, const std::vector<Loop>& loops) {
   std::vector<std::size_t> outer, holes;
   std::vector<double> area(loops.size());
   for (std::size_t k = 0; k < loops.size(); ++k) {
-    area[k] = signedArea(inPlane(nodes, plane, loops[k]));
+    area[k] = signedArea(inPlane(nodes, map, loops[k]));
     (area[k] > 0 ? outer : holes).push_back(k);
   }
   std::vector<Surface> surfaces;
   for (std::size_t k : outer) surfaces.push_back({loops[k]});
   for (std::size_t h : holes) {
     int best = -1;
-    const Eigen::Vector2d p = plane.at(nodes.at[loops[h].front()]);
+    const Eigen::Vector2d p = map.at(nodes.at[loops[h].front()]);
     for (std::size_t s = 0; s < outer.size(); ++s)
-      if (insidePolygon(inPlane(nodes, plane, loops[outer[s]]), p) && (best < 0 || area[outer[s]] < area[outer[best]]))
+      if (insidePolygon(inPlane(nodes, map, loops[outer[s]]), p) && (best < 0 || area[outer[s]] < area[outer[best]]))
         best = static_cast<int>(s);
     if (best < 0) throw geometryError("junction: a loop of the gap round a wall's foot lies outside it");
     surfaces[best].push_back(loops[h]);
@@ -490,11 +525,11 @@ void checkGapQuads(const QuadMesh& q, const std::vector<Surface>& surfaces) {
 
 // The gap's quads on the sheet: its boundary nodes where they are, the others lifted from the plane onto the chordal
 // surface and smoothed (quad_smoothing; the boundary stays). [in] at: every node so far (the first at.size() of
-// the quads'); [in] plane, chordal; [in,out] q: Gmsh's quads in the plane, then on the sheet. Returns the worst
-// quad's scaled Jacobian, turned the plane's way (<= 0: one is folded).
-double smoothGap(const std::vector<Vec3>& at, const Plane& plane, const ChordalLocator& chordal, QuadMesh& q) {
+// the quads'); [in] map, chordal; [in,out] q: Gmsh's quads in the map, then on the sheet. Returns the worst
+// quad's scaled Jacobian, turned the map's way (<= 0: one is folded).
+double smoothGap(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal, QuadMesh& q) {
   for (std::size_t n = 0; n < q.nodes.size(); ++n)
-    q.nodes[n] = n < at.size() ? at[n] : chordal.locate(plane.lift({q.nodes[n].x(), q.nodes[n].y()})).point;
+    q.nodes[n] = n < at.size() ? at[n] : chordal.locate(map.lift({q.nodes[n].x(), q.nodes[n].y()})).point;
   QuadMesh local;  // the gap's nodes only
   std::map<int, int> index;
   std::vector<int> of;
@@ -513,19 +548,22 @@ double smoothGap(const std::vector<Vec3>& at, const Plane& plane, const ChordalL
   for (const Quad& quad : q.quads) {
     const std::array<Vec3, 4> c{q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]};
     const double sj = quadScaledJacobian(c);
-    worst = std::min(worst, (c[2] - c[0]).cross(c[3] - c[1]).dot(plane.normal) < 0 ? -sj : sj);
+    const Vec3 normal = map.normal(0.25 * (c[0] + c[1] + c[2] + c[3]));
+    worst = std::min(worst, (c[2] - c[0]).cross(c[3] - c[1]).dot(normal) < 0 ? -sj : sj);
   }
   return worst;
 }
 
 // The gap's quads on the sheet: of Gmsh's algorithms (kGapAlgorithms) the one whose worst quad, smoothed, is best;
 // finer (kGapSpacing) while none of them gives quads only, all at least kGoodGap.
-// [in] at: every node so far; [in] plane, chordal, surfaces; [out] worst: its worst quad's scaled Jacobian. Throws
+// [in] at: every node so far; [in] map, chordal, surfaces; [out] worst: its worst quad's scaled Jacobian. Throws
 // geometryError if none gives unfolded quads.
-QuadMesh gapQuads(const std::vector<Vec3>& at, const Plane& plane, const ChordalLocator& chordal,
+QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
                   const std::vector<Surface>& surfaces, double& worst) {
-  std::vector<Eigen::Vector2d> flat;
-  for (const Vec3& p : at) flat.push_back(plane.at(p));
+  std::vector<Eigen::Vector2d> flat(at.size(), Eigen::Vector2d::Zero());  // the surfaces' nodes only are Gmsh's
+  for (const Surface& s : surfaces)
+    for (const Loop& loop : s)
+      for (int n : loop) flat[n] = map.at(at[n]);
   QuadMesh best;
   double bestWorst = 0;
   std::string failure = "its quads are folded";
@@ -536,7 +574,7 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const Plane& plane, const Chordal
       try {
         QuadMesh q = gmshGapQuads(flat, spacing, surfaces, algorithm);
         checkGapQuads(q, surfaces);
-        if (const double worst = smoothGap(at, plane, chordal, q); worst > bestWorst)
+        if (const double worst = smoothGap(at, map, chordal, q); worst > bestWorst)
           best = std::move(q), bestWorst = worst;
       } catch (const Error& e) {
         failure = e.what();
@@ -551,6 +589,23 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const Plane& plane, const Chordal
 
 }  // namespace
 
+FootprintQuads onChordalSurface(FootprintQuads footprint, const ChordalLocator& chordal) {
+  std::vector<Vec3> normal(footprint.nodes.size(), Vec3::Zero());
+  for (const Quad& q : footprint.quads) {
+    Vec3 n = areaVector(footprint.nodes, q);
+    if (n.dot(normal[q[0]]) < 0) n = -n;  // a wall's normal, either way
+    for (int c : q) normal[c] += n.dot(normal[c]) < 0 ? Vec3(-n) : n;
+  }
+  for (std::size_t k = 0; k < footprint.nodes.size(); ++k) {
+    const Vec3 p = footprint.nodes[k], n = normal[k].normalized();
+    Vec3 at = chordal.locate(p).point;
+    for (int step = 0; step < kAlongNormal && n.allFinite(); ++step)  // onto the line p + t n, then the surface
+      at = chordal.locate(p + (at - p).dot(n) * n).point;
+    footprint.nodes[k] = at;
+  }
+  return footprint;
+}
+
 // insertFootprints with the sheet's quads within `band` of a footprint meshed again.
 FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& footprint, const ChordalLocator& chordal,
                                 double size, double band) {
@@ -564,14 +619,14 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
   FootprintInsertion out;
   const EdgeUses quadsOfEdge = edgeUses(sheet);
   for (const Gap& gap : gaps) {
-    const Plane plane = gapPlane(nodes, sheet, footprint, gap);
-    const GapEdges edges = gapEdges(nodes, plane, sheet, quadsOfEdge, footprint, gap, size);
+    const GapMap map(sheet, gap);
+    const GapEdges edges = gapEdges(nodes, map, sheet, quadsOfEdge, footprint, gap, size);
     std::vector<Loop> loops = chainLoops(edges.edges);
     dropTinyRimEdges(nodes, edges.free, size, loops);
-    std::vector<Surface> surfaces = surfacesOf(nodes, plane, loops);
+    std::vector<Surface> surfaces = surfacesOf(nodes, map, loops);
     evenBoundaries(nodes, edges.free, surfaces);
     double worst = 0;
-    const QuadMesh q = gapQuads(nodes.at, plane, chordal, surfaces, worst);  // its first nodes are nodes.at
+    const QuadMesh q = gapQuads(nodes.at, map, chordal, surfaces, worst);  // its first nodes are nodes.at
     out.worstQuad = std::min(out.worstQuad, worst);
     nodes.at.insert(nodes.at.end(), q.nodes.begin() + static_cast<long>(nodes.at.size()), q.nodes.end());
     added.insert(added.end(), q.quads.begin(), q.quads.end());

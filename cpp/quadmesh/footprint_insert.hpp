@@ -21,6 +21,13 @@ struct FootprintQuads {
   std::vector<std::array<int, 4>> quads;  // each foot a strip (or a ring) of them, any orientation
 };
 
+// The footprint put on the sheet's chordal surface: each node where the line through it along the sheet's wall normal
+// there (its footprint quads' mean normal: the foot lies on the wall) meets the surface, as the sheet's sweep lines
+// run (sweep_to_walls.hpp aims them across the walls), so that the sweep line from there ends at the node also where
+// the chordal facets stand oblique to the walls (a bend's facets, coarser than the bend).
+// [in] footprint: on the sheet's wall; [in] chordal. Returns it on the chordal surface.
+FootprintQuads onChordalSurface(FootprintQuads footprint, const ChordalLocator& chordal);
+
 struct FootprintInsertion {
   QuadMesh quads;                                 // the sheet's quads carrying the footprints
   std::vector<int> node;                          // per footprint node, its node in `quads`

@@ -6,7 +6,9 @@
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
+#include <map>
 #include <queue>
 #include <unordered_map>
 
@@ -356,6 +358,55 @@ SurfaceMap mapAnnulus(SurfaceMap map, std::vector<std::vector<int>> loops) {
   return map;
 }
 
+// The triangles turned to one orientation, across every shared edge (breadth first from the first). False if
+// they are not connected, or not orientable.
+bool orientAlike(std::vector<std::array<int, 3>>& triangles) {
+  std::map<std::pair<int, int>, std::vector<int>> ofEdge;
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+    for (int k = 0; k < 3; ++k) ofEdge[std::minmax(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
+  std::vector<char> done(triangles.size(), 0);
+  std::queue<int> next;
+  next.push(0), done[0] = 1;
+  std::size_t reached = 1;
+  while (!next.empty()) {
+    const int t = next.front();
+    next.pop();
+    for (int k = 0; k < 3; ++k) {
+      const int a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+      for (int u : ofEdge[std::minmax(a, b)]) {
+        if (u == t) continue;
+        std::array<int, 3>& tri = triangles[u];
+        bool same = false;  // u runs along a -> b as t does: turned the other way
+        for (int m = 0; m < 3; ++m) same = same || (tri[m] == a && tri[(m + 1) % 3] == b);
+        if (done[u]) {
+          if (same) return false;
+          continue;
+        }
+        if (same) std::swap(tri[1], tri[2]);
+        done[u] = 1, ++reached, next.push(u);
+      }
+    }
+  }
+  return reached == triangles.size();
+}
+
+// Per triangle, its corners in a frame of its own plane (the first at 0, the second on the x axis), as complex
+// numbers: LSCM's W_j = (z_{j+2} - z_{j+1}) / sqrt(2 A) (Eq. 5), by corner.
+std::array<std::complex<double>, 3> conformalWeights(const std::vector<Vec3>& x, const std::array<int, 3>& t) {
+  const Vec3 e = x[t[1]] - x[t[0]], f = x[t[2]] - x[t[0]];
+  const Vec3 e1 = e.normalized(), e2 = e.cross(f).cross(e).normalized();
+  const std::array<std::complex<double>, 3> z{0.0, {e.norm(), 0.0}, {f.dot(e1), f.dot(e2)}};
+  const double twiceArea = e.cross(f).norm();
+  std::array<std::complex<double>, 3> w;
+  for (int j = 0; j < 3; ++j) w[j] = (z[(j + 2) % 3] - z[(j + 1) % 3]) / std::sqrt(twiceArea);
+  return w;
+}
+
+double signedArea2(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const Eigen::Vector2d u = b - a, v = c - a;
+  return 0.5 * (u.x() * v.y() - u.y() * v.x());
+}
+
 }  // namespace
 
 std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Vec3>& x) {
@@ -434,8 +485,16 @@ LoopPoint loopPoint(const SurfaceMap& map, const std::vector<int>& loop, const s
   return {(1 - g) * map.points[a] + g * map.points[b], (1 - g) * map.uv[a] + g * map.uv[b]};
 }
 
-MapLocator::MapLocator(const SurfaceMap& map)
-    : map_(map), triangles_(2.0 / std::sqrt(static_cast<double>(map.triangles.size()) + 1)) {
+// A cell size for the map's triangles: its extent in the plane over the square root of their count (the square's
+// and the disc's extent is 2).
+double mapCell(const SurfaceMap& map) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Eigen::Vector2d& p : map.uv) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double extent = map.uv.empty() ? 2.0 : (hi - lo).maxCoeff();
+  return extent / std::sqrt(static_cast<double>(map.triangles.size()) + 1);
+}
+
+MapLocator::MapLocator(const SurfaceMap& map) : map_(map), triangles_(mapCell(map)) {
   for (size_t t = 0; t < map.triangles.size(); ++t) {
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for (int p : map.triangles[t]) lo = lo.cwiseMin(at(p)), hi = hi.cwiseMax(at(p));
@@ -468,6 +527,62 @@ Vec3 MapLocator::periodic(const Eigen::Vector2d& uv, double period) const {
     if (best.miss > 0)
       if (const Found other = find(uv + Eigen::Vector2d(shift, 0)); other.miss < best.miss) best = other;
   return best.point;
+}
+
+SurfaceMap unfoldConformally(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles) {
+  SurfaceMap map;
+  if (triangles.empty() || !orientAlike(triangles)) return map;
+  const int n = static_cast<int>(points.size());
+  // Two points pinned: the first triangle's first corner at 0, the point farthest from it on the x axis.
+  const int p0 = triangles[0][0];
+  int p1 = p0;
+  for (int i = 0; i < n; ++i)
+    if ((points[i] - points[p0]).squaredNorm() > (points[p1] - points[p0]).squaredNorm()) p1 = i;
+  if (p1 == p0) return map;
+  std::vector<Eigen::Vector2d> uv(n, Eigen::Vector2d::Zero());
+  uv[p1] = {(points[p1] - points[p0]).norm(), 0};
+  // Unknowns u_i, v_i (2 i, 2 i + 1) of the free points; per triangle the real and imaginary parts of
+  // sum_j W_j (u_j + i v_j) (Eq. 5) are two rows of the least-squares system A x = b.
+  std::vector<int> column(n, -1);
+  int free = 0;
+  for (int i = 0; i < n; ++i)
+    if (i != p0 && i != p1) column[i] = free++;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(2 * static_cast<long>(triangles.size()));
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const auto w = conformalWeights(points, triangles[t]);
+    const int re = static_cast<int>(2 * t), im = re + 1;
+    for (int j = 0; j < 3; ++j) {
+      const int i = triangles[t][j];
+      const double a = w[j].real(), c = w[j].imag();  // W U = (a u - c v) + i (c u + a v)
+      if (column[i] < 0) {
+        b[re] -= a * uv[i].x() - c * uv[i].y(), b[im] -= c * uv[i].x() + a * uv[i].y();
+        continue;
+      }
+      entries.emplace_back(re, 2 * column[i], a), entries.emplace_back(re, 2 * column[i] + 1, -c);
+      entries.emplace_back(im, 2 * column[i], c), entries.emplace_back(im, 2 * column[i] + 1, a);
+    }
+  }
+  Eigen::SparseMatrix<double> a(2 * static_cast<long>(triangles.size()), 2 * free);
+  a.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(a.transpose()) * a;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+  if (solver.info() != Eigen::Success) return map;
+  const Eigen::VectorXd x = solver.solve(a.transpose() * b);
+  if (solver.info() != Eigen::Success || !x.allFinite()) return map;
+  for (int i = 0; i < n; ++i)
+    if (column[i] >= 0) uv[i] = {x[2 * column[i]], x[2 * column[i] + 1]};
+  double area3 = 0, area2 = 0;
+  for (const auto& t : triangles) {
+    area3 += 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
+    const double a2 = signedArea2(uv[t[0]], uv[t[1]], uv[t[2]]);
+    if (!(a2 > 0)) return map;  // folded
+    area2 += a2;
+  }
+  const double scale = std::sqrt(area3 / area2);
+  for (Eigen::Vector2d& p : uv) p *= scale;
+  map.points = std::move(points), map.triangles = std::move(triangles), map.uv = std::move(uv);
+  return map;
 }
 
 }  // namespace hexlayer

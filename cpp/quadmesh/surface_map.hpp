@@ -47,6 +47,13 @@ struct SurfaceMap {
 // along the diagonals of its principal axes; the rim's turning is measured over `window` (about a quad) on either side.
 SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary boundary);
 
+// The triangles unfolded onto the plane by the least-squares conformal map (LSCM, Lévy, Petitjean, Ray and Maillot
+// 2002, Eq. 5): the boundary free, every triangle's angles kept as far as the surface allows (a strip across a bend,
+// a piece of a cylinder unfold exactly), two points pinned, then scaled to the triangles' area. [in] points;
+// [in] triangles: a connected patch, any orientation. Returns the map (the triangles turned to one orientation,
+// counter-clockwise in uv; no rim loops); empty if the patch is not connected and orientable, or a triangle folds.
+SurfaceMap unfoldConformally(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles);
+
 // 3D arc length along a loop from its first point: up to point i at [i], the whole loop at [size].
 std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Vec3>& x);
 

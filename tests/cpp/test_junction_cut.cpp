@@ -3,7 +3,9 @@
 // wall. Run on a plate with a rib inside it, a rib running across it (a foot open at the plate's rims, closed
 // along them), two ribs, and on copies scaled by 1e-3 and 1e3.
 #include <gtest/gtest.h>
+#include <BRepAdaptor_Surface.hxx>
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp.hxx>
@@ -11,6 +13,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
+#include <algorithm>
 #include <set>
 #include <string>
 #include <tuple>
@@ -146,18 +149,52 @@ TEST(JunctionCut, OneSheetIsItsOwnPiece) {
   for (int f = 0; f < cad.faces.Extent(); ++f) EXPECT_EQ(cut.faceOrigin[0][f], f);
 }
 
-// A rib on a curved wall is refused by name (the cut along a curved wall is not built yet).
-TEST(JunctionCut, CurvedBaseWallIsNamed) {
-  const TopoDS_Solid solid =
-      readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/junctions/shell_rib.step").at(0);
-  const CadSolid cad = prepareSolid(solid, normalizingUnit(solid));
-  const WallSides sides = classifyWallSides(cad);
-  try {
-    cutAtJunctions(cad, sides, findSheets(cad, sides));
-    FAIL() << "a rib on a curved wall was cut";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
-    EXPECT_NE(std::string(e.what()).find("stands on a curved wall (Face"), std::string::npos) << e.what();
+// A junction sample scaled by s, cut at its junctions (its ribs crossing merged first).
+struct SampleCut {
+  CadSolid cad;
+  std::vector<Sheet> sheets;
+  JunctionCut cut;
+};
+
+SampleCut cutSample(const std::string& name, double s) {
+  const TopoDS_Solid read =
+      readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/junctions/" + name + ".step").at(0);
+  const TopoDS_Solid solid = test_boxes::scaled(read, s);
+  SampleCut c{prepareSolid(solid, normalizingUnit(solid)), {}, {}};
+  const WallSides sides = classifyWallSides(c.cad);
+  c.sheets = mergeCrossingRibs(c.cad, sides, findSheets(c.cad, sides));
+  c.cut = cutAtJunctions(c.cad, sides, c.sheets);
+  return c;
+}
+
+// Every piece is one sheet and the pieces' volumes are the part's.
+void expectPiecesAddUp(const SampleCut& c) {
+  double volume = 0;
+  for (const TopoDS_Solid& p : c.cut.pieces) {
+    volume += volumeOf(p);
+    const CadSolid piece = prepareSolid(p, normalizingUnit(p));
+    EXPECT_EQ(findSheets(piece, classifyWallSides(piece)).size(), 1u);
+  }
+  EXPECT_NEAR(volume / c.cad.volume, 1, 1e-9);
+}
+
+// Walls standing on curved walls: a rib along a cylindrical shell (its foot on the shell's inner cylinder, closed
+// along its rulings), a partition across an open box's floor, bends and walls, a gusset in an L-bracket's bend (feet
+// on planes and cylinders). Two pieces of one sheet each, a foot on a cylinder, the volumes adding up, on copies
+// scaled by 1e-3 and 1e3.
+TEST(JunctionCut, WallsOnCurvedWalls) {
+  for (const auto& [name, feet] :
+       {std::pair{"shell_rib", 1u}, std::pair{"box_partition", 5u}, std::pair{"lbracket_gusset", 3u}}) {
+    for (double s : {1.0, 1e-3, 1e3}) {
+      SCOPED_TRACE(std::string(name) + " x " + std::to_string(s));
+      const SampleCut c = cutSample(name, s);
+      ASSERT_EQ(c.cut.pieces.size(), 2u);
+      EXPECT_EQ(c.cut.feet.size(), feet);
+      EXPECT_TRUE(std::any_of(c.cut.feet.begin(), c.cut.feet.end(),
+                              [](const Foot& f) { return BRepAdaptor_Surface(f.face).GetType() == GeomAbs_Cylinder; }));
+      expectPiecesAddUp(c);
+      expectFaceOrigins(c.cad, c.cut);
+    }
   }
 }
 
@@ -170,28 +207,16 @@ TEST(JunctionCut, WallsStandingOnWalls) {
        {std::tuple{"plate_ribs_tee", 3u, 1u}, std::tuple{"plate_rib_grid", 9u, 6u}}) {
     for (double s : {1.0, 1e-3, 1e3}) {
       SCOPED_TRACE(std::string(name) + " x " + std::to_string(s));
-      const TopoDS_Solid read =
-          readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/junctions/" + name + ".step").at(0);
-      const TopoDS_Solid solid = test_boxes::scaled(read, s);
-      const CadSolid cad = prepareSolid(solid, normalizingUnit(solid));
-      const WallSides sides = classifyWallSides(cad);
-      const std::vector<Sheet> merged = mergeCrossingRibs(cad, sides, findSheets(cad, sides));
-      ASSERT_EQ(merged.size(), sheets);
-      const JunctionCut cut = cutAtJunctions(cad, sides, merged);
-      ASSERT_EQ(cut.pieces.size(), sheets);
+      const SampleCut c = cutSample(name, s);
+      ASSERT_EQ(c.sheets.size(), sheets);
+      ASSERT_EQ(c.cut.pieces.size(), sheets);
       std::set<int> standingOnWalls;
-      for (const Foot& f : cut.feet) {
+      for (const Foot& f : c.cut.feet) {
         EXPECT_LT(f.base, f.sheet);
         if (f.base > 0) standingOnWalls.insert(f.sheet);
       }
       EXPECT_EQ(standingOnWalls.size(), onWalls);
-      double volume = 0;
-      for (const TopoDS_Solid& p : cut.pieces) {
-        volume += volumeOf(p);
-        const CadSolid piece = prepareSolid(p, normalizingUnit(p));
-        EXPECT_EQ(findSheets(piece, classifyWallSides(piece)).size(), 1u);
-      }
-      EXPECT_NEAR(volume / cad.volume, 1, 1e-9);
+      expectPiecesAddUp(c);
     }
   }
 }

@@ -58,7 +58,8 @@ void expectJoined(const std::vector<Box>& parts, int layers, int order = 1) {
     std::vector<int> wallNode;
     for (int w = 1; w < static_cast<int>(c.cut.pieces.size()); ++w) {
       const MeshResult wall = meshSolid(c.cut.pieces[w], o);
-      const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, footPlanes(c.cut, w, 0), 1e-6 * k);
+      std::vector<FootSurface> feet = footSurfaces(c.cut, w, 0, 1e-6 * k);
+      const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, feet);
       EXPECT_FALSE(foot.ring);
       EXPECT_EQ(foot.footprint.quads.size() % layers, 0u);
       for (const auto& q : foot.footprint.quads) {
@@ -141,7 +142,8 @@ TEST(JunctionMesh, ABossFootIsARing) {
   ASSERT_EQ(c.cut.pieces.size(), 2u);
   MeshOptions o;
   const MeshResult wall = meshSolid(c.cut.pieces[1], o);
-  const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, footPlanes(c.cut, 1, 0), 1e-6);
+  std::vector<FootSurface> feet = footSurfaces(c.cut, 1, 0, 1e-6);
+  const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, feet);
   EXPECT_TRUE(foot.ring);
   EXPECT_EQ(foot.footprint.nodes.size(), foot.footprint.quads.size() / o.layers * (o.layers + 1));
 }

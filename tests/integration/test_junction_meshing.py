@@ -40,8 +40,12 @@ from hex_geometry import HEX_EDGES, HEX_FACES, boundary_quads, hex_scaled_jacobi
 
 # The part and its junctions' kinds: a rib's foot a strip ("T"), a boss's a ring.
 PARTS = {"plate_rib": ["T"], "plate_rib_thin": ["T"], "plate_rib_thick": ["T"], "plate_rib_split": ["T"],
-         "plate_rib_inside": ["T"], "plate_boss": ["ring"], "plate_ribs_tee": ["T", "T"]}
-STRAIGHT = {part for part, kinds in PARTS.items() if "ring" not in kinds}  # every edge straight, every wall flat
+         "plate_rib_inside": ["T"], "plate_boss": ["ring"], "plate_ribs_tee": ["T", "T"],
+         # Walls standing on curved walls: a rib along a cylindrical shell, a partition across an open box's floor,
+         # its bends and two walls (its foot across two bends).
+         "shell_rib": ["T"], "box_partition": ["T"]}
+# Every edge straight, every wall flat.
+STRAIGHT = {part for part, kinds in PARTS.items() if "ring" not in kinds} - {"shell_rib", "box_partition"}
 RUNS = ((2, 1), (3, 1), (2, 2))  # (layers, order)
 MIN_SJ, MEAN_SJ, JUNCTION_MEAN_SJ = 0.2, 0.9, 0.8
 VOLUME_TOL, AREA_TOL = 0.02, 0.01

@@ -10,7 +10,7 @@ Checked for each part:
     "(x, y, z) [FaceN ...]", lies within the named faces' bounding box (Gmsh's; face tags in file order are FaceN)
     enlarged by the part's thickest wall; the two twins whose chordal surface does not branch (a rib flush with the
     plate's edge is an L, a bore through the plate a collar) are meshed instead, and so are the walls standing on a
-    flat plate (issue 18: JUNCTIONS_MESHED; test_junction_meshing.py checks their meshes);
+    flat or curved sheet (issue 18: JUNCTIONS_MESHED; test_junction_meshing.py checks their meshes);
 (c) with --drop-junctions it is meshed, the junctions it left out listed in the report.
 (b) records what today's CLI does; it changes as more junctions are meshed (issue 18).
 
@@ -31,10 +31,10 @@ REL_TOL = 1e-6
 # the plate's edge) and a collar (the bore through the plate, the plate turned up round the hole), and the junctions
 # meshed so far. When all junctions are meshed, (b) becomes "meshes with exit 0" for every part.
 MANIFOLD = {"plate_rib_rim", "plate_boss_collar"}
-# Junctions meshed by default (issue 18): walls standing on a flat sheet, their feet on its wall (a rib's a strip, a
-# boss's a ring).
+# Junctions meshed by default (issue 18): walls standing on a sheet, their feet on its wall (a rib's a strip, a
+# boss's a ring), flat or curved (a rib in a cylindrical shell, a partition across a box's floor and bends).
 JUNCTIONS_MESHED = {"plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside",
-                    "plate_boss", "plate_ribs_tee"}
+                    "plate_boss", "plate_ribs_tee", "shell_rib", "box_partition"}
 MESHED_TODAY = MANIFOLD | JUNCTIONS_MESHED
 JUNCTION_WORDS = ("T-junction", "face a wall on its own side")
 # Today's CLI with --drop-junctions: every part meshed (exit 0), the main sheet without its ribs, bosses and
