@@ -3,6 +3,7 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Splitter.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -11,10 +12,14 @@
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <GCE2d_MakeSegment.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAdaptor_Surface.hxx>
+#include <GeomLib.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_BezierSurface.hxx>
 #include <Geom_Plane.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <ShapeAnalysis_Surface.hxx>
@@ -202,13 +207,32 @@ bool sameSurface(const Handle(Geom_Surface) & surface, const TopoDS_Face& face, 
   return true;
 }
 
+// A B-spline or Bézier surface extended by `length` past each of its four boundaries (a shell's wall written as
+// B-splines, one patch per face, ends where the wall standing on it begins: its foot lies beyond); any other
+// surface as it is (planes, cylinders and their trimmed pieces reach on).
+Handle(Geom_Surface) extendedSurface(const Handle(Geom_Surface) & surface, double length) {
+  if (surface->DynamicType() != STANDARD_TYPE(Geom_BSplineSurface) &&
+      surface->DynamicType() != STANDARD_TYPE(Geom_BezierSurface))
+    return surface;
+  Handle(Geom_BoundedSurface) extended = Handle(Geom_BoundedSurface)::DownCast(surface->Copy());
+  for (const bool inU : {true, false})
+    for (const bool after : {true, false}) GeomLib::ExtendSurfByLength(extended, length, 1, inU, after);
+  return extended;
+}
+
 std::vector<SurfaceEdges> footEdgesBySurface(const Junctions& j, int s) {
   const double tolerance = kJoin * j.cad.diagonal;
   std::vector<SurfaceEdges> surfaces;
-  for (const auto& [base, edges] : footEdges(j, s)) {
+  const std::map<int, std::vector<TopoDS_Edge>> edgesOn = footEdges(j, s);
+  Bnd_Box box;  // round every foot edge
+  for (const auto& [base, edges] : edgesOn)
+    for (const TopoDS_Edge& e : edges) BRepBndLib::Add(e, box);
+  const double reach = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
+  for (const auto& [base, edges] : edgesOn) {
     const TopoDS_Face& face = TopoDS::Face(j.cad.faces(base + 1));
     const std::optional<gp_Pln> plane = planeOf(face, tolerance);
-    const Handle(Geom_Surface) surface = plane ? new Geom_Plane(*plane) : BRep_Tool::Surface(face);
+    const Handle(Geom_Surface) surface =
+        plane ? new Geom_Plane(*plane) : extendedSurface(BRep_Tool::Surface(face), reach);
     const int sheet = j.sheetOf[base];
     auto same = [&](const SurfaceEdges& p) {
       if (p.base != sheet) return false;

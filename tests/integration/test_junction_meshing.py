@@ -1,8 +1,10 @@
-"""Issue 18: walls standing on a flat plate meshed all-hex and conformal by default, no flag: the junction samples
-plate_rib (a rib rim to rim: a T), plate_rib_thin (the rib half the plate's thickness), plate_rib_thick (1.5 x),
-plate_rib_split (faces the boolean left split), plate_rib_inside (the rib ending inside the plate) and plate_boss
-(a hollow boss: its foot a ring) and plate_ribs_tee (a rib standing on the plate and on another rib), with 2 and 3
-layers, and at order 2 (20-node hexes) with 2 layers.
+"""Issue 18: walls standing on a plate or a curved sheet meshed all-hex and conformal by default, no flag: the
+junction samples plate_rib (a rib rim to rim: a T), plate_rib_thin (the rib half the plate's thickness),
+plate_rib_thick (1.5 x), plate_rib_split (faces the boolean left split), plate_rib_inside (the rib ending inside the
+plate) and plate_boss (a hollow boss: its foot a ring), plate_ribs_tee (a rib standing on the plate and on another
+rib), shell_rib (a rib along a cylindrical shell) and box_partition (a partition across an open box's floor, bends
+and walls), with 2 and 3 layers, and at order 2 (20-node hexes) with 2 layers; twins of the last two in metres and
+turned.
 
 Checked on the written .inp with tools of their own, not the mesher's report:
 - every element an 8-node hex (20-node at order 2) of positive volume;
@@ -90,15 +92,34 @@ def write_holed_ribbed_plate(path, scale, turn):
         bore = occ.addCylinder(45, 10, 2, 0, 0, 11, 2)
         boss_ring, _ = occ.cut([(3, boss)], [(3, bore)])
         fused, _ = occ.fuse(body, [(3, oblique), (3, rim_rib)] + boss_ring)
-        occ.synchronize()
-        volumes = gmsh.model.getEntities(3)
-        if turn:
-            occ.rotate(volumes, 0, 0, 0, 1, 2, 3, turn * np.pi / 180)
-        if scale != 1:  # OpenCASCADE's scaling writes the planes as B-spline surfaces
-            occ.dilate(volumes, 0, 0, 0, scale, scale, scale)
-        occ.synchronize()
-        gmsh.write(path)
-        return sum(occ.getMass(3, tag) for _, tag in volumes)
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
+def turned_and_scaled(gmsh, path, scale, turn):
+    """Turns the model's volumes by `turn` degrees about the axis (1, 2, 3), scales them by `scale` and writes them
+    as STEP; returns their volume (Gmsh's)."""
+    occ = gmsh.model.occ
+    occ.synchronize()
+    volumes = gmsh.model.getEntities(3)
+    if turn:
+        occ.rotate(volumes, 0, 0, 0, 1, 2, 3, turn * np.pi / 180)
+    if scale != 1:  # OpenCASCADE's scaling writes planes and cylinders as B-spline surfaces
+        occ.dilate(volumes, 0, 0, 0, scale, scale, scale)
+    occ.synchronize()
+    gmsh.write(path)
+    return sum(occ.getMass(3, tag) for _, tag in volumes)
+
+
+def write_sample_twin(part, path, scale, turn):
+    """Writes a junction sample turned and scaled (turned_and_scaled); returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        gmsh.model.occ.importShapes(os.path.join(samples_dir(), part + ".step"))
+        return turned_and_scaled(gmsh, path, scale, turn)
     finally:
         gmsh.finalize()
 
@@ -218,6 +239,16 @@ class JunctionMeshing(unittest.TestCase):
             for layers in (2, 3):
                 with self.subTest(part=name, layers=layers):
                     self.check_part(name, step, layers, 1, ["T", "T", "ring"])
+
+    def test_walls_on_curved_walls_twins(self):
+        """The rib in the cylindrical shell in metres (x 1e-3: the shell's cylinders become B-spline surfaces, one
+        patch per face, that end where the rib begins) and the partitioned box turned 30 degrees about a skew axis."""
+        for name, part, scale, turn in (("shell_rib_metres", "shell_rib", 1e-3, 0.0),
+                                        ("box_partition_turned", "box_partition", 1.0, 30.0)):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_sample_twin(part, step, scale, turn)
+            with self.subTest(part=name):
+                self.check_part(name, step, 2, 1, ["T"])
 
     def test_ribs_on_plates(self):
         for part in PARTS:
