@@ -7,6 +7,8 @@
 
 #include <algorithm>
 
+#include "geometry/bnd_box.hpp"
+
 namespace hexlayer {
 
 namespace {
@@ -16,12 +18,7 @@ Box faceBox(const TopoDS_Shape& face, double tolerance) {
   Bnd_Box b;
   BRepBndLib::Add(face, b, false);  // from the surface, not the triangulation (which may lie inside it)
   b.Enlarge(tolerance);
-  Box box;
-  if (b.IsVoid()) return box;
-  double x0, y0, z0, x1, y1, z1;
-  b.Get(x0, y0, z0, x1, y1, z1);
-  box.add(Vec3(x0, y0, z0)), box.add(Vec3(x1, y1, z1));
-  return box;
+  return boxOf(b);
 }
 
 std::vector<Box> faceBoxes(const CadSolid& cad, double tolerance) {
