@@ -79,6 +79,15 @@ std::optional<FacePoint> WallProjector::project(Side side, const Vec3& p) const 
   return nearest(faces_[sideIndex(side)], p);
 }
 
+bool WallProjector::mayReach(Side side, const Vec3& p, double reach) const {
+  const PieceSet& set = faces_[sideIndex(side)];
+  if (!set.tree) return !set.pieces.empty();
+  bool found = false;
+  set.tree->traverse([&](const Box& b) { return mayBeWithin(p, b, reach); },
+                     [&](int k) { return found = mayBeWithin(p, boxOf(pieces_[set.pieces[k]].box), reach); });
+  return found;
+}
+
 std::optional<FacePoint> WallProjector::projectOntoFace(int face, const Vec3& p) const {
   const int piece = face >= 0 && face < static_cast<int>(pieceOfFace_.size()) ? pieceOfFace_[face] : -1;
   if (piece < 0) return std::nullopt;

@@ -31,6 +31,10 @@ class WallProjector {
   // edge: one of the faces there); nullopt for a side without faces.
   std::optional<FacePoint> project(Side side, const Vec3& p) const;
 
+  // False if every face of the `side` wall is farther than `reach` from p by its box (then project(side, p) is
+  // farther too); true if one may be nearer. [in] reach: >= 0.
+  bool mayReach(Side side, const Vec3& p, double reach) const;
+
   // The point nearest to p on the one face `face` (0-based in CadSolid::faces); nullopt if it has no side.
   std::optional<FacePoint> projectOntoFace(int face, const Vec3& p) const;
 

@@ -112,14 +112,10 @@ struct CornerEdge {
 
 constexpr int kCornerSamples = 64;
 
-std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides, const WallProjector& walls) {
+// The sharp CAD edges where two lateral faces meet, as CornerEdges (not yet oriented nor checked to join the walls).
+std::vector<CornerEdge> cornerCandidates(const CadSolid& cad, const WallSides& sides) {
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
-  const double tolerance = 1e-6 * cad.diagonal;
-  auto on = [&](Side side, const Vec3& p) {
-    const std::optional<FacePoint> q = walls.project(side, p);
-    return q && (q->point - p).norm() <= tolerance;
-  };
   std::vector<CornerEdge> corners;
   for (int e = 1; e <= edgeFaces.Extent(); ++e) {
     const TopoDS_Edge edge = TopoDS::Edge(edgeFaces.FindKey(e));
@@ -138,11 +134,33 @@ std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides,
       const gp_Pnt p = curve.Value(even.Parameter(k));
       corner.points.emplace_back(p.X(), p.Y(), p.Z());
     }
+    corners.push_back(std::move(corner));
+  }
+  return corners;
+}
+
+// The candidates that run from the bottom wall to the top (their ends within 1e-6 part diagonals of them), bottom
+// end first, in their order. The ends are tested in parallel (a wall's projection is costly on a face with many
+// edges; one whose faces' boxes are all farther than twice the tolerance is not asked).
+std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides, const WallProjector& walls) {
+  std::vector<CornerEdge> candidates = cornerCandidates(cad, sides);
+  const double tolerance = 1e-6 * cad.diagonal;
+  auto on = [&](Side side, const Vec3& p) {
+    if (!walls.mayReach(side, p, 2 * tolerance)) return false;
+    const std::optional<FacePoint> q = walls.project(side, p);
+    return q && (q->point - p).norm() <= tolerance;
+  };
+  std::vector<char> joins(candidates.size(), 0);
+#pragma omp parallel for schedule(dynamic, 8)
+  for (long i = 0; i < static_cast<long>(candidates.size()); ++i) {
+    CornerEdge& corner = candidates[i];
     if (on(Side::Top, corner.points.front()) && on(Side::Bottom, corner.points.back()))
       std::reverse(corner.points.begin(), corner.points.end());
-    if (on(Side::Bottom, corner.points.front()) && on(Side::Top, corner.points.back()))
-      corners.push_back(std::move(corner));
+    joins[i] = on(Side::Bottom, corner.points.front()) && on(Side::Top, corner.points.back());
   }
+  std::vector<CornerEdge> corners;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (joins[i]) corners.push_back(std::move(candidates[i]));
   return corners;
 }
 
