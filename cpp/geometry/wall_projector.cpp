@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/box_tree.hpp"
 #include "core/threads.hpp"
 #include "geometry/bnd_box.hpp"
 
@@ -64,6 +65,8 @@ WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides)
   }
   for (std::vector<Distance>& perThread : tools_) perThread.resize(pieces_.size());
 }
+
+WallProjector::~WallProjector() = default;
 
 // [in] all: the pieces; [in] ids: the set's, ascending. Returns the set with its box tree.
 WallProjector::PieceSet WallProjector::pieceSet(const std::vector<Piece>& all, std::vector<int> ids) {

@@ -13,12 +13,13 @@
 #include <optional>
 #include <vector>
 
-#include "core/box_tree.hpp"
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
 #include "geometry/wall_sides.hpp"
 
 namespace hexlayer {
+
+class BoxTree;
 
 // The queries may run on several OpenMP threads at once: each thread keeps its own OpenCASCADE distance tools
 // (one per face or edge, built at its first query), the answers are the same bits on any thread.
@@ -26,6 +27,7 @@ class WallProjector {
  public:
   // [in] cad, sides: read at construction; cad's shapes are kept (by handle), not the objects.
   WallProjector(const CadSolid& cad, const WallSides& sides);
+  ~WallProjector();
   // The point nearest to p on the faces of the `side` wall (inside a face, on its edges or
   // vertices: trimmed faces, not their underlying surfaces), with the face it was found on (on a CAD
   // edge: one of the faces there); nullopt for a side without faces.
