@@ -2,7 +2,7 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
-#include <BRepClass_FaceClassifier.hxx>
+#include <BRepClass_FClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -102,7 +102,7 @@ CadFaces::CadFaces(const CadSolid& cad) : keepsFirstVertex_(OSD_ThreadPool::Defa
 }
 
 CadFaceProbe::CadFaceProbe(const CadFaces& faces)
-    : faces_(faces), surfaces_(faces.count()), curves_(faces.edgeCount()) {}
+    : faces_(faces), surfaces_(faces.count()), curves_(faces.edgeCount()), explorers_(faces.count()) {}
 
 // The face's surface and its extrema tool, set up as BRepExtrema_ExtPF::Initialize does.
 CadFaceProbe::Surface& CadFaceProbe::surface(int face) {
@@ -131,8 +131,9 @@ BRepExtrema_ExtPC& CadFaceProbe::curve(int edge) {
 }
 
 // BRepExtrema's state of a foot point (u, v) on the face: from the face's UvBoundary, or near its
-// boundary from BRepClass_FaceClassifier with the face's tolerance, as BRepExtrema_ExtPF classifies.
-TopAbs_State CadFaceProbe::classify(int face, double u, double v) const {
+// boundary from BRepClass_FaceClassifier with the face's tolerance, as BRepExtrema_ExtPF classifies (its
+// Perform(face, point, tolerance): a BRepClass_FaceExplorer with the default gap tolerance and no boxes).
+TopAbs_State CadFaceProbe::classify(int face, double u, double v) {
   const CadFaces::Face& f = faces_.face(face);
   switch (f.boundary->side(u, v)) {
     case UvBoundary::Side::Inside:
@@ -140,8 +141,17 @@ TopAbs_State CadFaceProbe::classify(int face, double u, double v) const {
     case UvBoundary::Side::Outside:
       return TopAbs_OUT;
     default:
-      return BRepClass_FaceClassifier(f.face, gp_Pnt2d(u, v), f.tolerance).State();
+      break;
   }
+  std::unique_ptr<BRepClass_FaceExplorer>& explorer = explorers_[face];
+  if (!explorer) {
+    explorer = std::make_unique<BRepClass_FaceExplorer>(f.face);
+    explorer->SetMaxTolerance(0.1);
+    explorer->SetUseBndBox(false);
+  }
+  BRepClass_FClassifier classifier;
+  classifier.Perform(*explorer, gp_Pnt2d(u, v), f.tolerance);
+  return classifier.State();
 }
 
 // The distance BRepExtrema_DistanceSS finds from p to the inside of the face: the nearest extremum of

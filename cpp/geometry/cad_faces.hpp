@@ -2,6 +2,7 @@
 // asks of a mesh node (distance to the trimmed face below the face's tolerance).
 #pragma once
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepClass_FaceExplorer.hxx>
 #include <BRepExtrema_ExtPC.hxx>
 #include <Bnd_Box.hxx>
 #include <Extrema_ExtPS.hxx>
@@ -91,7 +92,7 @@ class CadFaceProbe {
   };
   Surface& surface(int face);
   BRepExtrema_ExtPC& curve(int edge);
-  TopAbs_State classify(int face, double u, double v) const;
+  TopAbs_State classify(int face, double u, double v);
   std::optional<double> faceDistance(int face, const gp_Pnt& p);
   std::optional<double> edgeDistance(int edge, const TopoDS_Vertex& vertex);
   double vertexDistance(const CadFaces::Face& f, const gp_Pnt& p) const;
@@ -101,6 +102,9 @@ class CadFaceProbe {
   const CadFaces& faces_;
   std::vector<std::unique_ptr<Surface>> surfaces_;          // per face, built at its first query
   std::vector<std::unique_ptr<BRepExtrema_ExtPC>> curves_;  // per edge, built at its first query
+  // Per face, BRepClass_FaceClassifier's explorer as it sets one up (its edge map and parameter bounds), built at the
+  // face's first exact classification: the classifier rewinds it for every point.
+  std::vector<std::unique_ptr<BRepClass_FaceExplorer>> explorers_;
 };
 
 }  // namespace hexlayer

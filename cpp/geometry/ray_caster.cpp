@@ -7,6 +7,8 @@
 
 #include <algorithm>
 
+#include "geometry/bnd_box.hpp"
+
 namespace hexlayer {
 
 namespace {
@@ -16,12 +18,7 @@ Box faceBox(const TopoDS_Shape& face, double tolerance) {
   Bnd_Box b;
   BRepBndLib::Add(face, b, false);  // from the surface, not the triangulation (which may lie inside it)
   b.Enlarge(tolerance);
-  Box box;
-  if (b.IsVoid()) return box;
-  double x0, y0, z0, x1, y1, z1;
-  b.Get(x0, y0, z0, x1, y1, z1);
-  box.add(Vec3(x0, y0, z0)), box.add(Vec3(x1, y1, z1));
-  return box;
+  return boxOf(b);
 }
 
 std::vector<Box> faceBoxes(const CadSolid& cad, double tolerance) {
@@ -51,10 +48,24 @@ RayCaster::RayCaster(const CadSolid& cad, double tolerance) : boxes_(faceBoxes(c
   for (int f = 1; f <= cad.faces.Extent(); ++f) {
     const TopoDS_Face& face = TopoDS::Face(cad.faces(f));
     faces_.push_back(std::make_unique<IntCurvesFace_Intersector>(face, tolerance));
-    const GeomAbs_SurfaceType type = BRepAdaptor_Surface(face, false).GetType();
+    const BRepAdaptor_Surface surface(face, false);
+    const GeomAbs_SurfaceType type = surface.GetType();
     analytic_.push_back(type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone ||
                         type == GeomAbs_Sphere || type == GeomAbs_Torus);
+    planes_.push_back(type == GeomAbs_Plane ? std::optional<gp_Pln>(surface.Plane()) : std::nullopt);
   }
+}
+
+bool RayCaster::missesPlane(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax) const {
+  if (!planes_[f]) return false;
+  const gp_Ax3& frame = planes_[f]->Position();
+  const Vec3 normal(frame.Direction().X(), frame.Direction().Y(), frame.Direction().Z());
+  const Vec3 origin(frame.Location().X(), frame.Location().Y(), frame.Location().Z());
+  const double across = normal.dot(dir.normalized());  // w as OpenCASCADE measures it: along the unit direction
+  if (std::abs(across) < 1e-6) return false;           // (nearly) parallel: left to the intersector
+  const double w = normal.dot(origin - from) / across;
+  const double margin = 1e-6 * (std::abs(wMin) + std::abs(wMax) + std::abs(w)) + 1e-9;
+  return w < wMin - margin || w > wMax + margin;
 }
 
 std::vector<std::pair<double, int>> RayCaster::candidates(const Vec3& from, const Vec3& dir, double wMin,
@@ -72,6 +83,7 @@ std::vector<std::pair<double, int>> RayCaster::candidates(const Vec3& from, cons
 
 void RayCaster::hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax,
                            std::vector<RayHit>& hits) {
+  if (missesPlane(f, from, dir, wMin, wMax)) return;
   IntCurvesFace_Intersector& on = *faces_[f];
   on.Perform(gp_Lin(gp_Pnt(from.x(), from.y(), from.z()), gp_Dir(dir.x(), dir.y(), dir.z())), wMin, wMax);
   for (int i = 1; on.IsDone() && i <= on.NbPnt(); ++i) {

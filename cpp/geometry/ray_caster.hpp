@@ -4,6 +4,7 @@
 #pragma once
 #include <IntCurveSurface_TransitionOnCurve.hxx>
 #include <IntCurvesFace_Intersector.hxx>
+#include <gp_Pln.hxx>
 
 #include <memory>
 #include <optional>
@@ -57,7 +58,13 @@ class RayCaster {
 
   std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces_;  // per face
   std::vector<Box> boxes_;
-  std::vector<bool> analytic_;  // per face: its surface is a plane, cylinder, cone, sphere or torus
+  // Whether the line cannot meet face f's surface in [wMin, wMax] (a plane met clearly outside it, by a margin far
+  // above the rounding): OpenCASCADE's intersector would find no hit there, after classifying the plane's point
+  // on the face (costly on a face with many edges).
+  bool missesPlane(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax) const;
+
+  std::vector<bool> analytic_;                 // per face: its surface is a plane, cylinder, cone, sphere or torus
+  std::vector<std::optional<gp_Pln>> planes_;  // per face: its plane, if it is one
   BoxTree tree_;
 };
 

@@ -2,10 +2,14 @@
 // (ω_b) or the lateral (ω_l) faces of the CAD solid. Puts the mid-edge nodes of quadratic hexes on
 // the walls and the rim nodes on the lateral faces.
 #pragma once
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <Bnd_Box.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
 
 #include <array>
+#include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -15,13 +19,23 @@
 
 namespace hexlayer {
 
+class BoxTree;
+
+// The queries may run on several OpenMP threads at once: each thread keeps its own OpenCASCADE distance tools
+// (one per face or edge, built at its first query), the answers are the same bits on any thread.
 class WallProjector {
  public:
+  // [in] cad, sides: read at construction; cad's shapes are kept (by handle), not the objects.
   WallProjector(const CadSolid& cad, const WallSides& sides);
+  ~WallProjector();
   // The point nearest to p on the faces of the `side` wall (inside a face, on its edges or
   // vertices: trimmed faces, not their underlying surfaces), with the face it was found on (on a CAD
   // edge: one of the faces there); nullopt for a side without faces.
   std::optional<FacePoint> project(Side side, const Vec3& p) const;
+
+  // False if every face of the `side` wall is farther than `reach` from p by its box (then project(side, p) is
+  // farther too); true if one may be nearer. [in] reach: >= 0.
+  bool mayReach(Side side, const Vec3& p, double reach) const;
 
   // The point nearest to p on the one face `face` (0-based in CadSolid::faces); nullopt if it has no side.
   std::optional<FacePoint> projectOntoFace(int face, const Vec3& p) const;
@@ -46,9 +60,32 @@ class WallProjector {
     int lateral = -1;    // for a rim edge, the lateral face on its other side
     Bnd_Box box;         // contains the shape: its distance to p bounds the shape's from below
   };
-  static std::optional<FacePoint> nearest(const std::vector<Piece>& pieces, const Vec3& p);
-  std::array<std::vector<Piece>, 3> faces_;     // by side: bottom, lateral, top (Side + 1)
-  std::array<std::vector<Piece>, 3> rimEdges_;  // by side (bottom and top): the walls' edges on lateral faces
+  // Pieces looked through together (a side's faces or rim edges), ascending in pieces_, with a box tree over them.
+  struct PieceSet {
+    std::vector<int> pieces;
+    std::unique_ptr<BoxTree> tree;  // over pieces' boxes, in the order of `pieces` (none if a box is void)
+  };
+  // A piece's distance query: BRepExtrema_DistShapeShape with the piece loaded once (its sub-shapes' boxes).
+  using Distance = std::unique_ptr<BRepExtrema_DistShapeShape>;
+  struct Hit {
+    double distance;  // from the query point
+    FacePoint at;     // the nearest point, with the piece's face
+  };
+  // A piece whose distance was already asked, and the answer.
+  using Known = std::optional<std::pair<int, std::optional<Hit>>>;
+
+  static PieceSet pieceSet(const std::vector<Piece>& all, std::vector<int> ids);
+  std::optional<FacePoint> nearest(const PieceSet& set, const Vec3& p) const;
+  std::optional<FacePoint> nearestOf(const std::vector<std::pair<double, int>>& order, const TopoDS_Vertex& vertex,
+                                     const Known& known) const;
+  std::optional<Hit> distance(int piece, const TopoDS_Vertex& vertex) const;
+
+  std::vector<Piece> pieces_;
+  std::array<PieceSet, 3> faces_;                      // by side: bottom, lateral, top (Side + 1)
+  std::array<PieceSet, 3> rimEdges_;                   // by side (bottom and top): the walls' edges on lateral faces
+  std::array<std::map<int, PieceSet>, 3> rimEdgesOf_;  // by side and lateral face: its rim edges
+  std::vector<int> pieceOfFace_;                       // per face: its piece (-1: none)
+  mutable std::vector<std::vector<Distance>> tools_;   // per thread, per piece (built at its first query)
 };
 
 }  // namespace hexlayer

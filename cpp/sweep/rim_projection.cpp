@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -111,14 +112,10 @@ struct CornerEdge {
 
 constexpr int kCornerSamples = 64;
 
-std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides, const WallProjector& walls) {
+// The sharp CAD edges where two lateral faces meet, as CornerEdges (not yet oriented nor checked to join the walls).
+std::vector<CornerEdge> cornerCandidates(const CadSolid& cad, const WallSides& sides) {
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
-  const double tolerance = 1e-6 * cad.diagonal;
-  auto on = [&](Side side, const Vec3& p) {
-    const std::optional<FacePoint> q = walls.project(side, p);
-    return q && (q->point - p).norm() <= tolerance;
-  };
   std::vector<CornerEdge> corners;
   for (int e = 1; e <= edgeFaces.Extent(); ++e) {
     const TopoDS_Edge edge = TopoDS::Edge(edgeFaces.FindKey(e));
@@ -137,11 +134,33 @@ std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides,
       const gp_Pnt p = curve.Value(even.Parameter(k));
       corner.points.emplace_back(p.X(), p.Y(), p.Z());
     }
+    corners.push_back(std::move(corner));
+  }
+  return corners;
+}
+
+// The candidates that run from the bottom wall to the top (their ends within 1e-6 part diagonals of them), bottom
+// end first, in their order. The ends are tested in parallel (a wall's projection is costly on a face with many
+// edges; one whose faces' boxes are all farther than twice the tolerance is not asked).
+std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides, const WallProjector& walls) {
+  std::vector<CornerEdge> candidates = cornerCandidates(cad, sides);
+  const double tolerance = 1e-6 * cad.diagonal;
+  auto on = [&](Side side, const Vec3& p) {
+    if (!walls.mayReach(side, p, 2 * tolerance)) return false;
+    const std::optional<FacePoint> q = walls.project(side, p);
+    return q && (q->point - p).norm() <= tolerance;
+  };
+  std::vector<char> joins(candidates.size(), 0);
+#pragma omp parallel for schedule(dynamic, 8)
+  for (long i = 0; i < static_cast<long>(candidates.size()); ++i) {
+    CornerEdge& corner = candidates[i];
     if (on(Side::Top, corner.points.front()) && on(Side::Bottom, corner.points.back()))
       std::reverse(corner.points.begin(), corner.points.end());
-    if (on(Side::Bottom, corner.points.front()) && on(Side::Top, corner.points.back()))
-      corners.push_back(std::move(corner));
+    joins[i] = on(Side::Bottom, corner.points.front()) && on(Side::Top, corner.points.back());
   }
+  std::vector<CornerEdge> corners;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (joins[i]) corners.push_back(std::move(candidates[i]));
   return corners;
 }
 
@@ -158,14 +177,20 @@ Vec3 alongPolyline(const std::vector<Vec3>& points, double t) {
   return points.back();
 }
 
+// The points of a corner edge at shares k / m of its length, k = 0 .. m: where a column of m layers would be laid.
+std::vector<Vec3> cornerPlaces(const CornerEdge& corner, std::size_t m) {
+  std::vector<Vec3> at;
+  for (std::size_t k = 0; k <= m; ++k) at.push_back(alongPolyline(corner.points, static_cast<double>(k) / m));
+  return at;
+}
+
 // How far a rim column lies from a corner edge: the mean distance of its nodes from the points of the edge at
-// the same shares of its length (the column it would be laid as). Its nodes, not only its ends: where the swept
-// rim lies half on a face cut across it, the ends of two columns can be as near the edge's ends.
-double distanceToCorner(const HexMesh& mesh, const std::vector<int>& column, const CornerEdge& corner) {
+// the same shares of its length (cornerPlaces: the column it would be laid as). Its nodes, not only its ends: where
+// the swept rim lies half on a face cut across it, the ends of two columns can be as near the edge's ends.
+double distanceToCorner(const HexMesh& mesh, const std::vector<int>& column, const std::vector<Vec3>& places) {
   const std::size_t m = column.size() - 1;
   double sum = 0;
-  for (std::size_t k = 0; k <= m; ++k)
-    sum += (mesh.nodes[column[k]] - alongPolyline(corner.points, static_cast<double>(k) / m)).norm();
+  for (std::size_t k = 0; k <= m; ++k) sum += (mesh.nodes[column[k]] - places[k]).norm();
   return sum / (m + 1);
 }
 
@@ -176,15 +201,19 @@ void layCorners(const std::vector<CornerEdge>& corners, const HexMesh& mesh,
                 const std::vector<std::vector<int>>& columns, std::vector<std::vector<std::optional<FacePoint>>>& to,
                 double reach) {
   for (const CornerEdge& corner : corners) {
+    std::map<std::size_t, std::vector<Vec3>> places;  // by the columns' layer count
+    auto placesOf = [&](std::size_t m) -> const std::vector<Vec3>& {
+      auto it = places.find(m);
+      return it != places.end() ? it->second : places.emplace(m, cornerPlaces(corner, m)).first->second;
+    };
     int best = -1;
     double nearest = reach;
     for (std::size_t c = 0; c < columns.size(); ++c)
-      if (const double d = distanceToCorner(mesh, columns[c], corner); d < nearest)
+      if (const double d = distanceToCorner(mesh, columns[c], placesOf(columns[c].size() - 1)); d < nearest)
         nearest = d, best = static_cast<int>(c);
     if (best < 0) continue;
-    const std::size_t m = columns[best].size() - 1;
-    for (std::size_t k = 0; k <= m; ++k)
-      to[best][k] = FacePoint{alongPolyline(corner.points, static_cast<double>(k) / m), corner.face};
+    const std::vector<Vec3>& at = placesOf(columns[best].size() - 1);
+    for (std::size_t k = 0; k < at.size(); ++k) to[best][k] = FacePoint{at[k], corner.face};
   }
 }
 
