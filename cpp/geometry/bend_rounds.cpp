@@ -9,10 +9,17 @@
 namespace hexlayer {
 namespace {
 
+// A face joined to another by a smooth (tangent) or convex edge.
+struct Joined {
+  int face;
+  bool smooth;
+};
+
 // Per face, the faces it shares a smooth or convex edge with.
-std::vector<std::vector<int>> joinedFaces(const WallSides& w) {
-  std::vector<std::vector<int>> joined(w.faces.size());
-  for (const SheetJoin& j : w.sheetJoins) joined[j.a].push_back(j.b), joined[j.b].push_back(j.a);
+std::vector<std::vector<Joined>> joinedFaces(const WallSides& w) {
+  std::vector<std::vector<Joined>> joined(w.faces.size());
+  for (const SheetJoin& j : w.sheetJoins)
+    joined[j.a].push_back({j.b, j.smooth}), joined[j.b].push_back({j.a, j.smooth});
   return joined;
 }
 
@@ -36,26 +43,28 @@ bool facing(const std::vector<std::map<int, double>>& across, int a, int b) {
   return across[a].count(b) > 0 || across[b].count(a) > 0;
 }
 
-// Whether face f joins two walls that are the outsides of one bend, and no wall to the wall facing it (a rim does:
-// a rim face across the wall joins the outsides of two walls at a corner, but their insides too).
-bool joinsBend(const std::vector<int>& joined, const std::vector<bool>& wall,
+// Whether a face joins two walls tangent to it that are the outsides of one bend (a round), and no wall to the wall
+// facing it (a rim does: a rim face across the wall joins the outsides of two walls at a corner, but their insides
+// too). [in] joined: the face's joins.
+bool joinsBend(const std::vector<Joined>& joined, const std::vector<bool>& wall,
                const std::vector<std::map<int, double>>& across, const std::set<std::pair<int, int>>& concave) {
   bool bend = false;
   for (std::size_t i = 0; i < joined.size(); ++i)
     for (std::size_t k = i + 1; k < joined.size(); ++k) {
-      if (!wall[joined[i]] || !wall[joined[k]]) continue;
-      if (facing(across, joined[i], joined[k])) return false;
-      bend = bend || outsidesOfOneBend(across, concave, joined[i], joined[k]);
+      const Joined &a = joined[i], &b = joined[k];
+      if (!wall[a.face] || !wall[b.face]) continue;
+      if (facing(across, a.face, b.face)) return false;
+      bend = bend || (a.smooth && b.smooth && outsidesOfOneBend(across, concave, a.face, b.face));
     }
   return bend;
 }
 
-// Whether face f is joined only to walls and bend rounds, at least two bend rounds among them (a corner's blend).
-bool joinsOnlyBends(const std::vector<int>& joined, const std::vector<bool>& wall, const std::vector<bool>& round) {
+// Whether a face is joined only to walls and bend rounds, tangent to at least two bend rounds (a corner's blend).
+bool joinsOnlyBends(const std::vector<Joined>& joined, const std::vector<bool>& wall, const std::vector<bool>& round) {
   int rounds = 0;
-  for (int g : joined) {
-    if (!wall[g] && !round[g]) return false;
-    rounds += round[g] ? 1 : 0;
+  for (const Joined& j : joined) {
+    if (!wall[j.face] && !round[j.face]) return false;
+    rounds += round[j.face] && j.smooth ? 1 : 0;
   }
   return rounds >= 2;
 }
@@ -67,7 +76,7 @@ std::vector<int> findBendRounds(const CadSolid& cad, const WallSides& w,
   const int n = static_cast<int>(w.faces.size());
   std::vector<bool> wall(n), round(n, false);
   for (int f = 0; f < n; ++f) wall[f] = w.faces[f].side != Side::Lateral;
-  const std::vector<std::vector<int>> joined = joinedFaces(w);
+  const std::vector<std::vector<Joined>> joined = joinedFaces(w);
   std::set<std::pair<int, int>> concave;
   bool candidates = false;
   for (int f = 0; f < n && !candidates; ++f) candidates = narrowRim(w, wall, f) && joined[f].size() >= 2;

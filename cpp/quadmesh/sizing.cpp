@@ -7,9 +7,6 @@
 namespace hexlayer {
 namespace {
 
-// A bend whose chordal surface turns round a radius under this many half walls has a (nearly) sharp inside edge.
-constexpr double kSharpBend = 2;
-
 std::vector<std::pair<int, int>> facetEdges(const ChordalSurface& s) {
   std::vector<std::pair<int, int>> out;
   for (const auto& [edge, uses] : facetEdgeUses(s)) out.push_back(edge);
@@ -35,13 +32,6 @@ void limitGradation(const ChordalSurface& s, const std::vector<std::pair<int, in
   }
 }
 
-// Whether the chordal surface bends round an inside of some radius here: its bend radius (1 / curvature) at least
-// kSharpBend x the radius function (the half wall). A bend sharper than that has (about) a sharp inside edge: quads
-// made smaller to follow it would fan the hexes round that edge, whose inside faces then shrink to nothing.
-bool bendsRoundItsInside(double curvature, double radius) {
-  return curvature > 0 && (radius <= 0 || 1 / curvature >= kSharpBend * radius);
-}
-
 }  // namespace
 
 std::vector<double> chordalCurvature(const ChordalSurface& s) {
@@ -64,9 +54,8 @@ std::vector<double> adaptiveSizes(const ChordalSurface& s, const SizingOptions& 
   const std::vector<double> curvature = chordalCurvature(s);
   std::vector<double> h(s.vertices.size());
   for (size_t i = 0; i < h.size(); ++i) {
-    h[i] = medianRadius > 0 ? o.size * s.radius[i] / medianRadius : o.size;  // §6.1: radius function
-    if (bendsRoundItsInside(curvature[i], s.radius[i]))
-      h[i] = std::min(h[i], o.turnPerQuad / curvature[i]);  // §6.1: curvature
+    h[i] = medianRadius > 0 ? o.size * s.radius[i] / medianRadius : o.size;     // §6.1: radius function
+    if (curvature[i] > 0) h[i] = std::min(h[i], o.turnPerQuad / curvature[i]);  // §6.1: curvature
     h[i] = std::clamp(h[i], lo, hi);
   }
   limitGradation(s, facetEdges(s), o.gradation, h);

@@ -16,10 +16,8 @@ struct SizingOptions {
 };
 
 // Target quad size at every chordal vertex (§6.1): size x r / median r (quads as many wall
-// thicknesses wide everywhere), at most turnPerQuad / curvature where the surface bends round a
-// radius of at least 2 r (a bend with a sharp inside edge is not refined: its hexes would fan round
-// that edge), within [minSize, maxSize], then smoothed so that neighbours differ by at most
-// gradation x their distance.
+// thicknesses wide everywhere), at most turnPerQuad / curvature, within [minSize, maxSize], then
+// smoothed so that neighbours differ by at most gradation x their distance.
 std::vector<double> adaptiveSizes(const ChordalSurface& chordal, const SizingOptions& options);
 
 // Curvature of the chordal surface at every vertex: the mean over its edges of the angle between
