@@ -472,6 +472,81 @@ PARTS = [
 
 
 # ---------------------------------------------------------------------------
+# Bent boxes (written after the junction parts, see main): open boxes whose
+# walls meet the floor and each other in SHARP inside edges, as a sheet-metal
+# or molded box often does, their outside edges sharp or rounded by less than
+# the wall. One sheet bent with a zero inside radius, not walls standing on
+# walls.
+# ---------------------------------------------------------------------------
+
+# Outside 60 x 40 x 20, wall 2, open at z = 20 (a flat rim).
+SHARP_BOX = (60.0, 40.0, 20.0, 2.0)
+
+
+def sharp_inside_box(r, L=SHARP_BOX[0], W=SHARP_BOX[1], H=SHARP_BOX[2], t=SHARP_BOX[3]):
+    """The open box with its 4 vertical and 4 bottom outside edges rounded r
+    (exact quarter cylinders, eighth spheres at the bottom corners; r = 0:
+    sharp) minus the sharp inner box (the hollow, through the top): every
+    inside edge and corner sharp. Returns (volume tag, analytic volume)."""
+    outer = filleted_box(0, 0, 0, L, W, H, r) if r > 0 else occ.addBox(0, 0, 0, L, W, H)
+    inner = occ.addBox(t, t, t, L - 2 * t, W - 2 * t, H)    # top at z = H + t
+    vol = one_volume(occ.cut([(3, outer)], [(3, inner)])[0])
+    outside = filleted_box_volume(L, W, H, r) if r > 0 else L * W * H
+    return vol, outside - (L - 2 * t) * (W - 2 * t) * (H - t)
+
+
+def box_dims(r, extra=""):
+    rounds = f"outside vertical and bottom edges rounded R{r:g}" if r > 0 else "outside edges sharp"
+    return (f"open box, outside {SHARP_BOX[0]:g} × {SHARP_BOX[1]:g} × {SHARP_BOX[2]:g}, inside edges and corners "
+            f"sharp, {rounds}{extra}, top open (a flat rim)")
+
+
+def box_sharp_inside():
+    _, volume = sharp_inside_box(1.0)
+    return volume, dict(dims=box_dims(1.0, " (0.5 × the wall; eighth spheres at the bottom corners)"), wall="2")
+
+
+def box_sharp():
+    _, volume = sharp_inside_box(0.0)
+    return volume, dict(dims=box_dims(0.0), wall="2")
+
+
+def box_sharp_inside_r025():
+    _, volume = sharp_inside_box(0.5)
+    return volume, dict(dims=box_dims(0.5, " (0.25 × the wall)"), wall="2")
+
+
+def box_sharp_inside_metres():
+    vol, volume = sharp_inside_box(1.0)
+    occ.dilate([(3, vol)], 0, 0, 0, 1e-3, 1e-3, 1e-3)   # OpenCASCADE writes the planes as B-splines
+    return volume * 1e-9, dict(dims="box_sharp_inside scaled by 1e-3 (in metres, written as mm: 0.06 × 0.04 "
+                                     "× 0.02; planes as B-spline surfaces)", wall="0.002")
+
+
+def box_sharp_inside_split():
+    """box_sharp_inside cut at x = 24 and fused again without unifying: the
+    floor's faces, the long walls' faces and the bottom rounds along x split
+    in two at the seam."""
+    vol, volume = sharp_inside_box(1.0)
+    left = one_volume(occ.intersect([(3, vol)], [(3, occ.addBox(-1, -1, -1, 25, 42, 22))], removeTool=True)[0])
+    vol2, _ = sharp_inside_box(1.0)
+    right = one_volume(occ.intersect([(3, vol2)], [(3, occ.addBox(24, -1, -1, 40, 42, 22))], removeTool=True)[0])
+    fuse_volumes([left, right], unify=False)
+    return volume, dict(dims=box_dims(1.0, "; fused from its halves x ≤ 24 and x ≥ 24 not unified: the floor's, "
+                                           "the long walls' and the bottom rounds' faces split at x = 24"), wall="2")
+
+
+# Written to OUTPUT_DIR after the rim and junction parts (their STEP files stay byte-identical: OpenCASCADE
+# numbers the PRODUCT name by the count of files written in the session) and listed in its README.
+BENT_BOX_PARTS = [
+    ("box_sharp_inside", box_sharp_inside),
+    ("box_sharp", box_sharp),
+    ("box_sharp_inside_r025", box_sharp_inside_r025),
+    ("box_sharp_inside_metres", box_sharp_inside_metres),
+    ("box_sharp_inside_split", box_sharp_inside_split),
+]
+
+# ---------------------------------------------------------------------------
 # Rim parts (written to the subfolder rims/): thin parts whose rims -- the
 # faces across the wall at its free edges -- are not plain flat faces normal
 # to the wall, or whose faces are split into several faces where one would do.
@@ -1609,7 +1684,8 @@ def write_readme(outdir, rows, head=None, notes=None):
     ]
     for r in rows:
         kind = f" {r['junction']} |" if junction else ""
-        lines.append(f"| `{r['name']}.step` | {r['dims']} | {r['wall']} |{kind} {r['volume']:.3f} |")
+        volume = f"{r['volume']:.3f}" if r['volume'] >= 1 else f"{r['volume']:.6e}"   # a part in metres: 1e-5
+        lines.append(f"| `{r['name']}.step` | {r['dims']} | {r['wall']} |{kind} {volume} |")
     lines.append("")
     lines += notes if notes is not None else [
         "Profiled parts (`lbracket`, `uchannel`, `hat_holes`) are extrusions of a",
@@ -1629,6 +1705,12 @@ def write_readme(outdir, rows, head=None, notes=None):
         "through 9 rotated sections (within 1e-6 mm of the exact twisted surfaces;",
         "volume exact to 2e-8). `wedge_plate` is a four-sided profile extruded along",
         "+Y; its wall thickness varies linearly along X.",
+        "",
+        "Bent boxes (`box_sharp*`): open boxes whose walls meet the floor and each other",
+        "in sharp inside edges and corners (one sheet bent with a zero inside radius),",
+        "their outside edges sharp or rounded by less than the wall (quarter cylinders,",
+        "eighth spheres at the bottom corners); twins in metres (planes as B-splines) and",
+        "with split faces.",
         "",
         "Made by `scripts/make_samples.py` (run it with `/usr/bin/python3`, which",
         "needs the Debian package `python3-gmsh`); licence AGPL-3.0-or-later like the",
@@ -1673,11 +1755,14 @@ def main(argv):
         for name, builder in PARTS:
             print(name)
             rows.append(make_part(name, builder, outdir))
-        write_readme(outdir, rows)
-        print(f"wrote {len(rows)} STEP files and README.md to {outdir}")
-        # The rim parts last (see the note on PARTS), then the junction parts.
+        # The rim parts last (see the note on PARTS), then the junction parts, then the bent boxes (in OUTPUT_DIR).
         make_subfolder(outdir, "rims", RIM_PARTS, RIM_README_HEAD, RIM_README_NOTES)
         make_subfolder(outdir, "junctions", JUNCTION_PARTS, JUNCTION_README_HEAD, JUNCTION_README_NOTES)
+        for name, builder in BENT_BOX_PARTS:
+            print(name)
+            rows.append(make_part(name, builder, outdir))
+        write_readme(outdir, rows)
+        print(f"wrote {len(rows)} STEP files and README.md to {outdir}")
     finally:
         gmsh.finalize()
     return 0

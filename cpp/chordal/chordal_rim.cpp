@@ -122,7 +122,7 @@ std::size_t dropRimSpikes(ChordalSurface& s) {
   for (int round = 0; round < kMaxSliverRounds; ++round) {
     const std::size_t spikes = dropSpikes(s, rimWalk(s));
     if (spikes == 0) break;
-    dropped += spikes + dropPinchedFacets(s);
+    dropped += spikes + dropPinchedFacets(s) + dropIslands(s);
   }
   if (dropped) dropUnusedVertices(s);
   return dropped;
@@ -150,6 +150,7 @@ RimSnapStats snapRimBetweenWallEdges(ChordalSurface& s, const RimMiddle& middle,
                      s.facets.end());
       stats.spikesDropped += before.size() - s.facets.size();
       dropPinchedFacets(s);
+      stats.spikesDropped += dropIslands(s);  // what the spikes held to the rest
       dropUnusedVertices(s);
       continue;
     }

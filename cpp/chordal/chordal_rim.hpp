@@ -23,7 +23,8 @@ using RimMiddle = std::function<std::optional<Vec3>(const Vec3& p)>;
 struct RimSnapStats {
   std::size_t rimVertices = 0;    // vertices on the chordal surface's rim
   std::size_t moved = 0;          // of those, put midway between the walls' rim edges
-  std::size_t spikesDropped = 0;  // facets on the rim that the move would turn over, or ending a narrow spike
+  std::size_t spikesDropped = 0;  // facets on the rim that the move would turn over, ending a narrow spike, or of an
+                                  // island that only they held to the rest (dropIslands)
   double largestMove = 0;         // in the surface's units
 };
 

@@ -1,6 +1,7 @@
 #include "chordal/chordal_surface.hpp"
 
 #include <algorithm>
+#include <map>
 #include <sstream>
 #include <unordered_map>
 
@@ -12,6 +13,16 @@ namespace hexlayer {
 namespace {
 
 constexpr int kMaxCollapseRounds = 10;
+// A part of the chordal surface with less than this share of the largest part's area is an island of a few tets.
+constexpr double kIslandShare = 0.01;
+
+// Area of a facet (a quad as two triangles on its 0-2 diagonal).
+double facetArea(const ChordalSurface& s, const std::array<int, 4>& f) {
+  const auto& v = s.vertices;
+  double a = 0.5 * (v[f[1]] - v[f[0]]).cross(v[f[2]] - v[f[0]]).norm();
+  if (f[3] >= 0) a += 0.5 * (v[f[2]] - v[f[0]]).cross(v[f[3]] - v[f[0]]).norm();
+  return a;
+}
 
 // The chordal vertex of tet edge (top, bottom), created on first use.
 int chordalVertex(ChordalSurface& s, std::unordered_map<std::uint64_t, int>& index, const TetMesh& m, int top,
@@ -200,6 +211,23 @@ std::size_t dropPinchedFacets(ChordalSurface& s) {
   return dropped;
 }
 
+std::size_t dropIslands(ChordalSurface& s) {
+  UnionFind parts(s.vertices.size());
+  for (const auto& f : s.facets)
+    for (int k = 1; k < 4 && f[k] >= 0; ++k) parts.unite(f[0], f[k]);
+  std::map<int, double> area;  // per part (its root), its facets' area
+  for (const auto& f : s.facets) area[parts.find(f[0])] += facetArea(s, f);
+  double largest = 0;
+  for (const auto& [root, a] : area) largest = std::max(largest, a);
+  const std::size_t before = s.facets.size();
+  s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(),
+                                [&](const auto& f) { return area[parts.find(f[0])] < kIslandShare * largest; }),
+                 s.facets.end());
+  const std::size_t dropped = before - s.facets.size();
+  if (dropped) dropUnusedVertices(s);
+  return dropped;
+}
+
 Vec3 facetNormal(const ChordalSurface& s, const std::array<int, 4>& f) {
   const auto& v = s.vertices;
   const bool triangle = f[3] < 0;
@@ -240,6 +268,7 @@ ChordalSurface buildChordalSurface(const TetMesh& m, double unit) {
   collapseDegenerateFacets(s, 1e-9 * boxDiagonal(m.nodes));
   requireManifold(s, unit);
   s.pinchedFacetsDropped = dropPinchedFacets(s);
+  s.islandFacetsDropped = dropIslands(s);
   return s;
 }
 

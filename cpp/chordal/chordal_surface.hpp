@@ -20,6 +20,7 @@ struct ChordalSurface {
   std::vector<double> radius;               // r = n̄ · (v_t - v) per vertex (Eq. 3)
   std::size_t triangles = 0, quads = 0;
   std::size_t pinchedFacetsDropped = 0;  // facets of ears where the rim passed a vertex twice
+  std::size_t islandFacetsDropped = 0;   // facets of islands apart from the surface (dropIslands)
 };
 
 // Cuts every tet that spans top and bottom: a 3-1 or 1-3 tet gives a triangle, a 2-2 tet a quad
@@ -27,7 +28,8 @@ struct ChordalSurface {
 // facets form one connected surface. The side labels of the nodes (from the CAD faces) decide the
 // cut, so every tet is "simple" here: no incremental processing of complex tets (§5.4) is needed.
 // Where the rim passes a vertex twice (an ear of one or two tets touching the rest at the vertex only, beside
-// a concave rim such as a hole's rounded one), the smaller fans of facets there are dropped.
+// a concave rim such as a hole's rounded one), the smaller fans of facets there are dropped, and so are islands of a
+// few facets apart from the rest (dropIslands).
 // Throws geometryError if the surface is non-manifold (an edge in more than two facets), naming where in
 // the input's units: the tets' lengths are `unit` per input length (CadSolid::unit).
 ChordalSurface buildChordalSurface(const TetMesh& tets, double unit = 1);
@@ -53,6 +55,11 @@ Vec3 facetNormal(const ChordalSurface& chordal, const std::array<int, 4>& facet)
 // unused vertices with them, so the mesh ends where the wall is still 2 x minRadius thick.
 // [in,out] chordal: with normals and radius computed. Returns the number of facets dropped.
 std::size_t trimKnifeEdges(ChordalSurface& chordal, double minRadius);
+
+// Drops the parts of the surface (facets joined by their corners) whose area is under 1 % of the largest part's: a
+// few tets spanning the wall apart from the rest, where a rim corner pinches it (a tall rim's corner at a bend).
+// [in,out] chordal. Returns the number of facets dropped.
+std::size_t dropIslands(ChordalSurface& chordal);
 
 // Keeps the vertices the facets use, renumbered in their order (with their normals and radius if computed).
 // [in,out] chordal. Returns the number of facets.

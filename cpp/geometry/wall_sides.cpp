@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "geometry/bend_rounds.hpp"
 #include "geometry/boundary_triangles.hpp"
 #include "geometry/face_sampling.hpp"
 #include "geometry/ray_caster.hpp"
@@ -313,6 +314,8 @@ WallSides classifyWallSides(const CadSolid& cad) {
   requireThin(w, cad, weightedMedian(everywhere));
 
   w.sheetJoins = sheetJoins(cad);
+  w.bendRounds = findBendRounds(cad, w, across);
+  for (int f : w.bendRounds) w.faces[f].side = Side::Top, w.faces[f].thickness = w.thickness;
   std::vector<std::pair<int, int>> rootParity = solveSides(cad, w, across);
   w.obliqueRims = obliqueRimFaces(cad, w);
   if (!w.obliqueRims.empty()) {  // sides again without them

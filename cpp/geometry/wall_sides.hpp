@@ -37,6 +37,7 @@ struct WallSides {
   std::vector<int> ownSideFaces;      // wall faces facing a wall on their own side: the sheet branches there
   std::vector<SheetJoin> knifeEdges;  // convex edges between faces on opposite sides: a tapered end's tip
   std::vector<int> obliqueRims;       // wall-facing faces made rims: a rim cut so obliquely it faces a wall
+  std::vector<int> bendRounds;        // rim-like faces made walls: a bend's outside round at a sharp inside edge
 };
 
 // Measures the wall and sorts the faces into top, bottom and lateral.
@@ -54,6 +55,8 @@ struct WallSides {
 //  - A face on the far side of a knife edge that is at most kMaxObliqueRim walls wide across that edge (its
 //    area over the edge's length) is a rim cut obliquely, not a taper: it is made lateral, so the hexes'
 //    last column lies on it (sheared by the cut's angle) instead of the wall running out to its tip.
+//  - A narrow face whose rays cross no wall but that joins two walls bent round a sharp inside edge (the outside
+//    round of a zero-radius bend, bend_rounds.hpp) is a wall face too, listed in bendRounds.
 //  - Walls whose rays cross to a wall that the relations put on their own side (over 2 % of the wall
 //    area) are where the sheet branches: they are listed in ownSideFaces (see ownSideError).
 // [in] cad: the prepared solid. Throws geometryError when the part is not a thin section or its sides

@@ -16,6 +16,7 @@ ChordalRecord countChordal(const ChordalSurface& cut) {
   ChordalRecord c;
   c.triangles = cut.triangles, c.quads = cut.quads, c.vertices = cut.vertices.size();
   c.pinchedFacetsDropped = cut.pinchedFacetsDropped;
+  c.islandFacetsDropped = cut.islandFacetsDropped;
   return c;
 }
 

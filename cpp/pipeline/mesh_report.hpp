@@ -53,6 +53,7 @@ struct FaceCounts {
 struct ChordalRecord {
   std::size_t triangles = 0, quads = 0, vertices = 0;
   std::size_t pinchedFacetsDropped = 0;  // ChordalSurface::pinchedFacetsDropped
+  std::size_t islandFacetsDropped = 0;   // ChordalSurface::islandFacetsDropped
   RimSnapStats rim;                      // its rim placed between the walls' rim edges
   int fairingIterations = 0;             // QuadStage::fairingIterations
   std::size_t knifeFacetsDropped = 0;    // QuadStage::knifeFacets

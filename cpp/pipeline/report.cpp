@@ -31,6 +31,7 @@ nlohmann::json chordal(const ChordalRecord& c) {
           {"quads", c.quads},
           {"vertices", c.vertices},
           {"pinched_facets_dropped", c.pinchedFacetsDropped},
+          {"island_facets_dropped", c.islandFacetsDropped},
           {"rim", chordalRim(c.rim)},
           {"fairing_iterations", c.fairingIterations},
           {"knife_edge_facets_dropped", c.knifeFacetsDropped}};

@@ -33,6 +33,10 @@ constexpr double kStructuredMean = 0.98;  // mean quad scaled Jacobian of a try 
 // as before.
 constexpr double kSharedWorst = 0.5;
 constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  // of a structured patch
+// A block grid whose quad has its centre farther than this x size from the chordal surface cuts across a crease (a
+// bend with a sharp inside edge, which its grid lines do not follow) and is refused: the hexes would cut the bend's
+// corner off. A bend of the radius of the sizing's curvature term strays a tenth of this.
+constexpr double kChordAcross = 0.25;
 
 // The chordal facets as one discrete Gmsh surface of triangles (each quad split on a diagonal).
 void addChordalTriangles(const ChordalSurface& chordal) {
@@ -445,21 +449,33 @@ struct Ranked {
   }
 };
 
+// The farthest a quad's centre (the mean of its corners) lies from the chordal surface. [in] q, chordal.
+double farthestQuadCentre(const QuadMesh& q, const ChordalLocator& chordal) {
+  double farthest = 0;
+  for (const auto& quad : q.quads) {
+    const Vec3 centre = 0.25 * (q.nodes[quad[0]] + q.nodes[quad[1]] + q.nodes[quad[2]] + q.nodes[quad[3]]);
+    farthest = std::max(farthest, (chordal.locate(centre).point - centre).norm());
+  }
+  return farthest;
+}
+
 // Block grid tries finished side by side (a single try keeps its own parallel loops: an inactive region does not
-// nest them), then ranked in order; one with an inverted quad (its layout does not fit the surface) or another
-// topology is refused, the shared grid also with a quad below kSharedWorst. [in,out] blocks: the tries; [in,out]
-// ranked. Returns whether the holed grid was refused.
+// nest them), then ranked in order; one with an inverted quad (its layout does not fit the surface), another
+// topology or a quad across a crease (kChordAcross) is refused, the shared grid also with a quad below kSharedWorst.
+// [in,out] blocks: the tries; [in,out] ranked. Returns whether the holed grid was refused.
 bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal, const QuadMeshOptions& o,
                     long chordalEuler, Ranked& ranked) {
   std::vector<QuadScore> scores(blocks.size());
+  std::vector<char> across(blocks.size(), 0);  // a quad cuts across a crease
 #pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
   for (long i = 0; i < static_cast<long>(blocks.size()); ++i) {
     blocks[i].nodes = onChordalSurface(blocks[i], chordal).onSurface;
     scores[i] = finishTry(blocks[i], chordal, o, chordalEuler);
+    across[i] = farthestQuadCentre(blocks[i], chordal) > kChordAcross * o.size;
   }
   bool holedRefused = false;
   for (std::size_t i = 0; i < blocks.size(); ++i)
-    if (!scores[i].topologyChanged && scores[i].inverted == 0 &&
+    if (!scores[i].topologyChanged && scores[i].inverted == 0 && !across[i] &&
         (blocks[i].layout != QuadLayout::SharedGrid || scores[i].worst >= kSharedWorst))
       ranked.keep(blocks[i], scores[i]);
     else

@@ -1,15 +1,23 @@
 // Sheets and junctions (geometry/sheet_junctions): a boss or a rib standing on a plate is a sheet of
-// its own, found from the CAD faces; a sharp L bend is not.
+// its own, found from the CAD faces; a sharp L bend is not, nor a bend with a sharp inside edge and a small
+// outside round (bend_rounds.hpp).
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Trsf.hxx>
+
+#include <string>
+#include <utility>
 
 #include "geometry/cad_solid.hpp"
 #include "geometry/sheet_junctions.hpp"
@@ -76,4 +84,85 @@ TEST(SheetJunctions, RibOnAPlateIsASecondSheet) {
   const std::vector<Sheet> sheets = findSheets(cad, classifyWallSides(cad));
   ASSERT_EQ(sheets.size(), 2u);
   EXPECT_NEAR(sheets[1].area, 2 * 40 * 12, 1.0);
+}
+
+namespace {
+
+// The shape with the edges whose bounding box's z range (z0, z1) `which` takes rounded r.
+template <class Which>
+TopoDS_Shape rounded(const TopoDS_Shape& shape, double r, Which which) {
+  BRepFilletAPI_MakeFillet fillet(shape);
+  for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) {
+    Bnd_Box b;
+    BRepBndLib::Add(e.Current(), b);
+    double x0, y0, z0, x1, y1, z1;
+    b.Get(x0, y0, z0, x1, y1, z1);
+    if (which(z0, z1)) fillet.Add(r, TopoDS::Edge(e.Current()));
+  }
+  return fillet.Shape();
+}
+
+// The open box 60 x 40 x 20 (wall 2, open at z = 20) with sharp inside edges and corners, its vertical and bottom
+// outside edges rounded r (0: sharp), scaled by `scale`.
+CadSolid sharpInsideBox(double r, double scale = 1) {
+  TopoDS_Shape outer = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60, 40, 20).Shape();
+  if (r > 0) outer = rounded(outer, r, [](double z0, double z1) { return z1 - z0 > 1 || z1 < 1; });  // vertical, bottom
+  const TopoDS_Shape inner = BRepPrimAPI_MakeBox(gp_Pnt(2, 2, 2), 56, 36, 20).Shape();
+  gp_Trsf scaling;
+  scaling.SetScale(gp_Pnt(0, 0, 0), scale);
+  return solidOf(BRepBuilderAPI_Transform(BRepAlgoAPI_Cut(outer, inner).Shape(), scaling, true).Shape());
+}
+
+int walls(const WallSides& sides) {
+  int n = 0;
+  for (const FaceSide& f : sides.faces) n += f.side != Side::Lateral;
+  return n;
+}
+
+}  // namespace
+
+// Walls meeting the floor and each other in sharp inside edges, their outsides joined by rounds smaller than the
+// wall (R1 and R0.5 on a wall of 2, in mm and in metres): one bent sheet. The rounds' rays run to the inside edges
+// and cross no wall, yet they are walls: 4 vertical and 4 bottom quarter cylinders and the 4 bottom corners'
+// eighth spheres (bend_rounds.hpp); only the flat rim at the top is lateral.
+TEST(SheetJunctions, OpenBoxWithSharpInsideEdgesAndSmallOutsideRoundsIsOneSheet) {
+  for (const auto& [r, scale] : {std::pair{1.0, 1.0}, {0.5, 1.0}, {1.0, 1e-3}}) {
+    SCOPED_TRACE("round " + std::to_string(r) + ", scale " + std::to_string(scale));
+    const CadSolid cad = sharpInsideBox(r, scale);
+    ASSERT_EQ(cad.faces.Extent(), 23);
+    const WallSides sides = classifyWallSides(cad);
+    EXPECT_EQ(sides.bendRounds.size(), 12u);
+    EXPECT_TRUE(sides.ownSideFaces.empty());
+    EXPECT_EQ(walls(sides), 22);
+    const std::vector<Sheet> sheets = findSheets(cad, sides);
+    ASSERT_EQ(sheets.size(), 1u);
+    EXPECT_EQ(sheets[0].faces.size(), 22u);
+  }
+}
+
+// Every edge sharp: the outsides meet in convex edges, one sheet without bend rounds.
+TEST(SheetJunctions, OpenBoxWithSharpEdgesIsOneSheet) {
+  const CadSolid cad = sharpInsideBox(0);
+  const WallSides sides = classifyWallSides(cad);
+  EXPECT_TRUE(sides.bendRounds.empty());
+  EXPECT_EQ(walls(sides), 10);
+  EXPECT_EQ(findSheets(cad, sides).size(), 1u);
+}
+
+// A rim's rounds are no bend: a plate whose top rim edges are rounded R0.5 (each round joins one wall to a rim
+// face), and a strip whose end is rounded across the wall (a half cylinder joining the top to its own bottom).
+TEST(SheetJunctions, RoundedRimsAreNoBends) {
+  const TopoDS_Shape plate = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60, 40, 2).Shape();
+  const CadSolid roundedPlate = solidOf(rounded(plate, 0.5, [](double z0, double) { return z0 > 1; }));  // the top's
+  const WallSides sides = classifyWallSides(roundedPlate);
+  EXPECT_TRUE(sides.bendRounds.empty());
+  EXPECT_EQ(walls(sides), 2);
+  const TopoDS_Shape strip =
+      BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60, 20, 2).Shape(),
+                       BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(60, 0, 1), gp_Dir(0, 1, 0)), 1, 20))
+          .Shape();
+  const CadSolid end = solidOf(strip);
+  const WallSides endSides = classifyWallSides(end);
+  EXPECT_TRUE(endSides.bendRounds.empty());
+  EXPECT_EQ(findSheets(end, endSides).size(), 1u);
 }

@@ -159,6 +159,23 @@ class RealParts(unittest.TestCase):
                 self.assertEqual(r["quad_mesh"]["unpaired_triangles"], 0)
                 self.assertTrue(r["validation"]["passed"], r["validation"])
 
+    def test_power_holder_box_is_one_bent_sheet(self):
+        """The Ender-3 power-holder box (open box 115 x 54 x 70, 2 mm walls meeting the floor and each other in sharp
+        inside edges and 0.5 mm outside rounds: cylinders, tori, spheres at the corners) is one bent sheet (its rounds
+        are bends, bend_rounds.hpp), not four walls standing on each other (it was refused as T-junctions, exit 4).
+        It is not meshed yet: every Gmsh try fails on its chordal surface ("Wrong topology of boundary mesh for
+        parametrization", 36 of 36 tries, about 10 minutes): there its facets fold along the sharp bends and at the
+        2 mm pad round the window on its long wall. So the quad stage gets no time here (--quad-budget 0.001) and
+        what is checked is the refusal's stage: the quad mesh, not the sheets."""
+        part = real_part("ender3_power_holder_box.step")
+        with tempfile.TemporaryDirectory() as tmp:
+            done = subprocess.run([harness.args.hexlayer, "mesh", part, "-o", os.path.join(tmp, "m.inp"), "--quiet",
+                                   "--quad-budget", "0.001"], capture_output=True, text=True, timeout=600)
+        self.assertEqual(done.returncode, 4, done.stderr)
+        self.assertNotIn("T-junction", done.stderr)
+        self.assertNotIn("face a wall on its own side", done.stderr)
+        self.assertIn("could not quad-mesh the chordal surface", done.stderr)
+
     def test_sheet_metal_flanges_with_rounded_corners(self):
         # Measured 2026-11-23 (2 layers): 4768 hexes, 0 inverted, SJ min 0.726 avg 0.930, volume -0.21 %.
         # Before the rim slivers at the rounded corners were dropped (tets/isCoplanarTet): 280 inverted.
