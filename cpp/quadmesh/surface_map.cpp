@@ -20,6 +20,7 @@ namespace hexlayer {
 namespace {
 
 constexpr double kSharpCorner = 50 * M_PI / 180;  // a rim turning more is a corner
+constexpr double kWideCorner = 3;  // where a rim has fewer than four corners, they are looked for over windows this wider
 // An annulus longer than this (2 pi x length / circumference) is left to the other layouts: a tube more
 // than 4 diameters long (its map's rectangle would be very tall, the rows many).
 constexpr double kMaxAnnulusModulus = 8;
@@ -88,10 +89,29 @@ std::vector<double> rimTurning(const std::vector<int>& loop, const std::vector<d
 // The rim's four corners, ascending along it: its four sharpest corners (turning more than
 // kSharpCorner, the most within `window`) if it has four or more (then `sharp`), else the diagonal
 // extremes of its principal axes (a rounded rectangle's arcs, a circle's 45° points).
-std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<int>& loop,
-                              const std::vector<double>& length, double window, bool& sharp) {
-  const std::vector<double> turn = rimTurning(loop, length, chordal.vertices, chordal.normals, window);
-  const int n = static_cast<int>(loop.size());
+// The point of a loop halfway (by arc length) along the longest stretch between consecutive corners (positions in
+// the loop, ascending). [in] corners; [in] length: arcLength of the loop.
+int longestSideMiddle(const std::vector<int>& corners, const std::vector<double>& length) {
+  const int n = static_cast<int>(length.size()) - 1;
+  double longest = -1;
+  int middle = 0;
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const int a = corners[k], b = corners[(k + 1) % corners.size()];
+    const double span = loopSpan(length, a, b > a ? b : b + n);
+    if (span <= longest) continue;
+    longest = span;
+    for (int i = a + 1; i < (b > a ? b : b + n); ++i)  // the first point past half the span
+      if (loopSpan(length, a, i) >= 0.5 * span) {
+        middle = i % n;
+        break;
+      }
+  }
+  return middle;
+}
+
+// The loop's points where it turns more than kSharpCorner, most within `window` either side (ascending).
+std::vector<int> turningPeaks(const std::vector<double>& turn, const std::vector<double>& length, double window) {
+  const int n = static_cast<int>(turn.size());
   std::vector<int> peaks;
   for (int i = 0; i < n; ++i) {
     bool peak = turn[i] > kSharpCorner;
@@ -100,11 +120,37 @@ std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<i
     for (int j = i + 1; peak && j < i + n && loopSpan(length, i, j) < window; ++j) peak = turn[j % n] <= turn[i];
     if (peak) peaks.push_back(i);
   }
+  return peaks;
+}
+
+std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<int>& loop,
+                              const std::vector<double>& length, double window, bool& sharp) {
+  const std::vector<double> turn = rimTurning(loop, length, chordal.vertices, chordal.normals, window);
+  std::vector<int> peaks = turningPeaks(turn, length, window);
   std::array<int, 4> corners{};
   sharp = peaks.size() >= 4;
   if (sharp) {
     std::stable_sort(peaks.begin(), peaks.end(), [&](int a, int b) { return turn[a] > turn[b]; });
     std::copy(peaks.begin(), peaks.begin() + 4, corners.begin());
+    std::sort(corners.begin(), corners.end());
+    return corners;
+  }
+  // Fewer than four: corners rounded wider than the window (a gusset's foot round a bend) turn as much over a
+  // window kWideCorner times as wide.
+  const double wide = kWideCorner * window;
+  const std::vector<double> wideTurn = rimTurning(loop, length, chordal.vertices, chordal.normals, wide);
+  for (int p : turningPeaks(wideTurn, length, wide))
+    if (std::none_of(peaks.begin(), peaks.end(), [&](int q) {
+          return std::min(loopSpan(length, p, q), loopSpan(length, q, p)) < window;
+        }))
+      peaks.push_back(p);
+  std::sort(peaks.begin(), peaks.end());
+  if (peaks.size() >= 4) {
+    std::stable_sort(peaks.begin(), peaks.end(), [&](int a, int b) { return wideTurn[a] > wideTurn[b]; });
+    std::copy(peaks.begin(), peaks.begin() + 4, corners.begin());
+  } else if (peaks.size() == 3) {  // a triangle: its corners, and the middle of its longest side
+    std::copy(peaks.begin(), peaks.end(), corners.begin());
+    corners[3] = longestSideMiddle(peaks, length);
   } else {
     std::vector<Vec3> points;
     for (int p : loop) points.push_back(chordal.vertices[p]);
