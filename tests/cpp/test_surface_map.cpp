@@ -106,3 +106,78 @@ TEST(SurfaceMap, RefusesWhatIsNotASphereWithHoles) {
   }
   EXPECT_TRUE(mapToPlane(two, 1.0, MapBoundary::Square).empty());  // not connected
 }
+
+namespace {
+
+// A strip of quads (split on a diagonal) across a bend: `flat` long on the floor (z = 0), a quarter cylinder of
+// radius r, `flat` up the wall (x = -r), `width` along y; every length times `scale`. Points along the strip's
+// length first, then across.
+struct BentStrip {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+  double length = 0;  // along the unbent strip
+};
+
+BentStrip bentStrip(double flat, double r, double width, double scale) {
+  BentStrip s;
+  const int along = 24, across = 4;
+  s.length = 2 * flat + M_PI / 2 * r;
+  for (int i = 0; i <= along; ++i) {
+    const double t = s.length * i / along;  // arc length from the floor's far end
+    Vec3 p;
+    if (t <= flat)
+      p = Vec3(flat - t, 0, 0);
+    else if (t <= flat + M_PI / 2 * r) {
+      const double a = (t - flat) / r;  // turned about the bend's axis (x = 0, z = r)
+      p = Vec3(-r * std::sin(a), 0, r - r * std::cos(a));
+    } else {
+      p = Vec3(-r, 0, r + t - flat - M_PI / 2 * r);
+    }
+    for (int j = 0; j <= across; ++j) s.points.push_back(scale * (p + Vec3(0, width * j / across, 0)));
+  }
+  for (int i = 0; i < along; ++i)
+    for (int j = 0; j < across; ++j) {
+      const int a = i * (across + 1) + j, b = a + across + 1;
+      // Every other quad's triangles turned the other way: the map orients them alike itself.
+      if ((i + j) % 2) {
+        s.triangles.push_back({a, b, b + 1}), s.triangles.push_back({a, b + 1, a + 1});
+      } else {
+        s.triangles.push_back({a, a + 1, b + 1}), s.triangles.push_back({a, b + 1, b});
+      }
+    }
+  return s;
+}
+
+}  // namespace
+
+// LSCM (unfoldConformally): a strip across a bend is developable, so it unfolds exactly up to its facets: every
+// edge keeps its length (within the chord-to-arc difference of the facets), the strip is as long as unbent and as
+// wide, every triangle counter-clockwise in the plane; on copies scaled by 1e-3 and 1e3. A strip in two pieces is
+// refused (empty map).
+TEST(SurfaceMap, ConformalMapUnfoldsAStripAcrossABend) {
+  for (double scale : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE(scale);
+    const BentStrip strip = bentStrip(10, 4, 3, scale);
+    const SurfaceMap map = unfoldConformally(strip.points, strip.triangles);
+    ASSERT_FALSE(map.empty());
+    double worst = 0;
+    for (const auto& t : map.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const int a = t[k], b = t[(k + 1) % 3];
+        const double in3d = (map.points[a] - map.points[b]).norm(), in2d = (map.uv[a] - map.uv[b]).norm();
+        worst = std::max(worst, std::abs(in2d / in3d - 1));
+      }
+    EXPECT_LT(worst, 1e-2);
+    for (const auto& t : map.triangles) {
+      const Eigen::Vector2d u = map.uv[t[1]] - map.uv[t[0]], v = map.uv[t[2]] - map.uv[t[0]];
+      EXPECT_GT(u.x() * v.y() - u.y() * v.x(), 0);
+    }
+    const int last = static_cast<int>(strip.points.size()) - 5;  // the far end's first point
+    const double chordLength = (map.uv[last] - map.uv[0]).norm();
+    EXPECT_NEAR(chordLength / scale, strip.length, 1e-2 * strip.length);
+    EXPECT_NEAR((map.uv[4] - map.uv[0]).norm() / scale, 3, 1e-2 * 3);
+  }
+  BentStrip two = bentStrip(10, 4, 3, 1);
+  two.triangles.erase(two.triangles.begin() + 40, two.triangles.begin() + 48);  // a row of quads taken out
+  EXPECT_TRUE(unfoldConformally(two.points, two.triangles).empty());
+}
