@@ -20,7 +20,8 @@ namespace hexlayer {
 namespace {
 
 constexpr double kSharpCorner = 50 * M_PI / 180;  // a rim turning more is a corner
-constexpr double kWideCorner = 3;  // where a rim has fewer than four corners, they are looked for over windows this wider
+constexpr double kWideCorner =
+    3;  // where a rim has fewer than four corners, they are looked for over windows this wider
 // An annulus longer than this (2 pi x length / circumference) is left to the other layouts: a tube more
 // than 4 diameters long (its map's rectangle would be very tall, the rows many).
 constexpr double kMaxAnnulusModulus = 8;
@@ -140,9 +141,8 @@ std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<i
   const double wide = kWideCorner * window;
   const std::vector<double> wideTurn = rimTurning(loop, length, chordal.vertices, chordal.normals, wide);
   for (int p : turningPeaks(wideTurn, length, wide))
-    if (std::none_of(peaks.begin(), peaks.end(), [&](int q) {
-          return std::min(loopSpan(length, p, q), loopSpan(length, q, p)) < window;
-        }))
+    if (std::none_of(peaks.begin(), peaks.end(),
+                     [&](int q) { return std::min(loopSpan(length, p, q), loopSpan(length, q, p)) < window; }))
       peaks.push_back(p);
   std::sort(peaks.begin(), peaks.end());
   if (peaks.size() >= 4) {
