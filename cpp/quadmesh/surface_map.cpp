@@ -20,8 +20,8 @@ namespace hexlayer {
 namespace {
 
 constexpr double kSharpCorner = 50 * M_PI / 180;  // a rim turning more is a corner
-constexpr double kWideCorner =
-    3;  // where a rim has fewer than four corners, they are looked for over windows this wider
+// Where a rim has fewer than four corners, they are looked for again over windows this many times wider.
+constexpr double kWideCorner = 3;
 // An annulus longer than this (2 pi x length / circumference) is left to the other layouts: a tube more
 // than 4 diameters long (its map's rectangle would be very tall, the rows many).
 constexpr double kMaxAnnulusModulus = 8;
