@@ -2,7 +2,8 @@
 // feet. Seen from the sheet, a standing wall's foot is a strip of quads (its layers across, its quads along; a ring
 // for a boss) whose nodes are fixed: under them the sheet's hexes must end on the wall's hex nodes. The sheet's
 // quads near a footprint are taken out, and the gap between the quads kept and the footprint is meshed again with
-// quads in the gap's plane (Gmsh, every boundary node fixed: the kept quads', the footprint's, and the sheet's rim,
+// quads in the gap unfolded onto the plane (least-squares conformal map: a gap on a curved sheet or across a bend is
+// meshed as a flat one; Gmsh, every boundary node fixed: the kept quads', the footprint's, and the sheet's rim,
 // divided again where a footprint reaches it). The footprint's quads are then the sheet's, node for node, whatever
 // the sheet's outline, holes or quad layout.
 #pragma once
@@ -40,7 +41,7 @@ struct FootprintInsertion {
 // or four where the quads Gmsh can make in the narrower one are poor: the widest's worst quad best).
 // Returns the quads: the kept ones first (their nodes in their order), then the gap's and the footprint's.
 // Throws geometryError saying why if a footprint does not lie on the sheet, footprints overlap, the gap round one
-// is not flat (a foot across a bend), or Gmsh cannot fill it with quads.
+// does not unfold onto the plane, or Gmsh cannot fill it with quads.
 FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads& footprint,
                                     const ChordalLocator& chordal, double size);
 
