@@ -45,8 +45,9 @@ PARTS = {"plate_rib": ["T"], "plate_rib_thin": ["T"], "plate_rib_thick": ["T"], 
          "plate_rib_inside": ["T"], "plate_boss": ["ring"], "plate_ribs_tee": ["T", "T"],
          # Walls standing on curved walls: a rib along a cylindrical shell, a partition across an open box's floor,
          # its bends and two walls (its foot across two bends). The gusset in an L-bracket's bend meshes (exit 0,
-         # test_junction_samples.py) but is not checked here yet: the middle node of its two 45-degree tips' columns
-         # lies 0.64 mm in from the tip on its foot, grouped with the hypotenuse face (FACE13), off it.
+         # test_junction_samples.py) but is not checked here yet: its hexes stop 0.9 mm short of its two 45-degree
+         # tips (the tip columns lie on its foot, in from the tip), and the nodes there are grouped with the
+         # hypotenuse face (FACE13), 0.64 mm off it.
          "shell_rib": ["T"], "box_partition": ["T"]}
 # Every edge straight, every wall flat.
 STRAIGHT = {part for part, kinds in PARTS.items() if "ring" not in kinds} - {"shell_rib", "box_partition"}
