@@ -188,6 +188,20 @@ class Failures(unittest.TestCase):
         plate_volume = 60 * 40 * 2
         self.assertLess(abs(volumes.sum() - plate_volume) / plate_volume, 0.01, "the plate, filled under the boss")
 
+    def assert_meshed_whole(self, part, what):
+        """The workbench meshes the part by default: valid, hexes only, of positive volume, filling the part within
+        1 %, every CAD face grouped."""
+        mesh = HexLayer.makeMesh(self.doc, part)
+        self.doc.recompute()
+        self.assertTrue(mesh.isValid(), mesh.Status)
+        fem = mesh.FemMesh
+        self.assertEqual(fem.HexaCount, fem.VolumeCount)
+        volumes = t.written_hex_volumes(fem)
+        self.assertGreater(volumes.min(), 0)
+        self.assertLess(abs(volumes.sum() - part.Shape.Volume) / part.Shape.Volume, 0.01, what)
+        faces = sorted(fem.getGroupName(g) for g in fem.Groups if fem.getGroupName(g).startswith("Face"))
+        self.assertEqual(len(faces), len(part.Shape.Faces), "every CAD face grouped")
+
     def test_ribs_and_a_boss_are_meshed_by_default(self):
         """Issue 18: a plate with two ribs (one ending on the other) and a hollow boss, made in FreeCAD, meshes
         all-hex through the workbench without DropJunctions: every CAD face grouped, the hexes fill the part."""
@@ -199,16 +213,19 @@ class Failures(unittest.TestCase):
         shape = plate.fuse([rib, cross, boss]).removeSplitter()
         part = self.doc.addObject("Part::Feature", "RibbedPlate")
         part.Shape = shape.Solids[0]
-        mesh = HexLayer.makeMesh(self.doc, part)
-        self.doc.recompute()
-        self.assertTrue(mesh.isValid(), mesh.Status)
-        fem = mesh.FemMesh
-        self.assertEqual(fem.HexaCount, fem.VolumeCount)
-        volumes = t.written_hex_volumes(fem)
-        self.assertGreater(volumes.min(), 0)
-        self.assertLess(abs(volumes.sum() - part.Shape.Volume) / part.Shape.Volume, 0.01, "the plate, ribs and boss")
-        faces = sorted(fem.getGroupName(g) for g in fem.Groups if fem.getGroupName(g).startswith("Face"))
-        self.assertEqual(len(faces), len(part.Shape.Faces), "every CAD face grouped")
+        self.assert_meshed_whole(part, "the plate, ribs and boss")
+
+    def test_rib_in_a_curved_shell_is_meshed_by_default(self):
+        """Issue 18: a rib standing on a curved wall (an annular rib inside a 120-degree cylindrical shell, made in
+        FreeCAD) meshes all-hex through the workbench: every CAD face grouped, the hexes fill the part."""
+        import Part
+        axis, origin = FreeCAD.Vector(0, 0, 1), FreeCAD.Vector(0, 0, 0)
+        shell = Part.makeCylinder(31, 40, origin, axis, 120).cut(Part.makeCylinder(29, 40, origin, axis, 120))
+        low = FreeCAD.Vector(0, 0, 19)
+        rib = Part.makeCylinder(29.5, 2, low, axis, 120).cut(Part.makeCylinder(19, 2, low, axis, 120))
+        part = self.doc.addObject("Part::Feature", "ShellRib")
+        part.Shape = shell.fuse(rib).removeSplitter().Solids[0]
+        self.assert_meshed_whole(part, "the shell and its rib")
 
     def test_bad_option_values(self):
         plate = t.add_plate(self.doc)
