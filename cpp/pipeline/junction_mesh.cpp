@@ -52,7 +52,7 @@ FootSurface::FootSurface(const TopoDS_Face& foot, double tolerance) : tolerance_
     const gp_XYZ n = plane.Axis().Direction().XYZ(), o = plane.Location().XYZ();
     plane_.emplace(Vec3(n.X(), n.Y(), n.Z()), n.Dot(o));
   } else {
-    surface_ = std::make_shared<ShapeAnalysis_Surface>(BRep_Tool::Surface(foot));
+    surface_ = new ShapeAnalysis_Surface(BRep_Tool::Surface(foot));
   }
 }
 

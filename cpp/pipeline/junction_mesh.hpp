@@ -8,7 +8,6 @@
 #include <Bnd_Box.hxx>
 #include <ShapeAnalysis_Surface.hxx>
 
-#include <memory>
 #include <optional>
 #include <vector>
 
@@ -31,7 +30,7 @@ class FootSurface {
   double tolerance_;
   Bnd_Box box_;
   std::optional<std::pair<Vec3, double>> plane_;  // normal, offset
-  std::shared_ptr<ShapeAnalysis_Surface> surface_;
+  Handle(ShapeAnalysis_Surface) surface_;         // none on a plane
 };
 
 // [in] cut; [in] sheet: a standing sheet's index (its piece's); [in] base: the sheet it stands on; [in] tolerance.

@@ -416,8 +416,8 @@ FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& no
 
 // Meshes piece s with its quads carrying the footprints on it, joins its hexes to t.joined and keeps its own feet
 // (in joined's nodes). [in] o: in the pipeline's units; [in] tolerance: how near a node lies to its foot's plane;
-// [in] layerShare: of a layer, how far a column's end may be from its foot node. [in,out] t.
-void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance, double layerShare) {
+// [in] wallShare: of the wall's thickness, how far a column's end may be from its foot node. [in,out] t.
+void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance, double wallShare) {
   const int pieces = static_cast<int>(t.cut.pieces.size());
   reportProgress(o.progress, progressNote("", "piece " + std::to_string(pieces - s) + " of " + std::to_string(pieces)));
   std::vector<int> footNode;
@@ -435,8 +435,7 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
                            });
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty())
-    shared =
-        footNodesShared(piece.mesh, inserted.node, t.joined, footNode, layerShare * piece.report.thickness / o.layers);
+    shared = footNodesShared(piece.mesh, inserted.node, t.joined, footNode, wallShare * piece.report.thickness);
   const std::vector<int> onFeet = toCutFaces(piece.mesh, t.cut.faceOrigin[s]);
   const std::vector<int> id = joinHexMesh(t.joined, piece.mesh, shared);
   for (int n : onFeet) t.onFeet.push_back(id[n]);
@@ -466,7 +465,7 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   MeshOptions piece = o;
   piece.force = true;
   for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s)
-    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, o.layers / 3.0);
+    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 1.0 / 3);
   return t;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/polygon.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
 namespace hexlayer {
@@ -253,13 +254,6 @@ struct GridHole {
   std::array<int, 2> boxLoAt{-1, -1}, boxHiAt{-1, -1};  // the box's stations (pocket)
   bool rectilinear() const { return !corners.empty(); }
 };
-
-// The area of a polygon (positive counter-clockwise).
-double polygonArea(const std::vector<Eigen::Vector2d>& p) {
-  double twice = 0;
-  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) twice += p[j].x() * p[i].y() - p[i].x() * p[j].y();
-  return 0.5 * twice;
-}
 
 // A loop's sides along the axes: runs of its edges that go more along the same axis (in quads, so that a diagonal
 // is a diagonal), each from its corner (the run's first point) to the next. [in] q: the loop in quads.

@@ -12,6 +12,7 @@
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
+#include "core/polygon.hpp"
 #include "core/triangle_tree.hpp"
 #include "core/union_find.hpp"
 #include "quadmesh/quad_completion.hpp"
@@ -41,17 +42,6 @@ using Loop = std::vector<int>;     // nodes in order, the gap on the left
 // Twice the quad's vector area: along its normal.
 Vec3 areaVector(const std::vector<Vec3>& nodes, const Quad& q) {
   return (nodes[q[2]] - nodes[q[0]]).cross(nodes[q[3]] - nodes[q[1]]);
-}
-
-// Signed area of a polygon in the plane (shoelace): positive counter-clockwise.
-double signedArea(const std::vector<Eigen::Vector2d>& p) {
-  double a = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Eigen::Vector2d& u = p[i];
-    const Eigen::Vector2d& v = p[(i + 1) % p.size()];
-    a += u.x() * v.y() - v.x() * u.y();
-  }
-  return 0.5 * a;
 }
 
 // Even-odd rule: whether q is inside the polygon.
@@ -210,7 +200,7 @@ class GapMap {
 Quad counterClockwise(const Nodes& nodes, const GapMap& map, Quad q) {
   std::vector<Eigen::Vector2d> p;
   for (int n : q) p.push_back(map.at(nodes.at[n]));
-  if (signedArea(p) < 0) std::reverse(q.begin(), q.end());
+  if (polygonArea(p) < 0) std::reverse(q.begin(), q.end());
   return q;
 }
 
@@ -364,7 +354,7 @@ std::vector<Surface> surfacesOf(const Nodes& nodes, const GapMap& map, const std
   std::vector<std::size_t> outer, holes;
   std::vector<double> area(loops.size());
   for (std::size_t k = 0; k < loops.size(); ++k) {
-    area[k] = signedArea(inPlane(nodes, map, loops[k]));
+    area[k] = polygonArea(inPlane(nodes, map, loops[k]));
     (area[k] > 0 ? outer : holes).push_back(k);
   }
   std::vector<Surface> surfaces;

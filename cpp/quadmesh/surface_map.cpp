@@ -448,10 +448,8 @@ std::array<std::complex<double>, 3> conformalWeights(const std::vector<Vec3>& x,
   return w;
 }
 
-double signedArea2(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-  const Eigen::Vector2d u = b - a, v = c - a;
-  return 0.5 * (u.x() * v.y() - u.y() * v.x());
-}
+// The z component of the cross product of two vectors of the plane (twice their triangle's signed area).
+double cross2(const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); }
 
 }  // namespace
 
@@ -621,7 +619,7 @@ SurfaceMap unfoldConformally(std::vector<Vec3> points, std::vector<std::array<in
   double area3 = 0, area2 = 0;
   for (const auto& t : triangles) {
     area3 += 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
-    const double a2 = signedArea2(uv[t[0]], uv[t[1]], uv[t[2]]);
+    const double a2 = 0.5 * cross2(uv[t[1]] - uv[t[0]], uv[t[2]] - uv[t[0]]);
     if (!(a2 > 0)) return map;  // folded
     area2 += a2;
   }
