@@ -333,6 +333,17 @@ bool samePlanes(const std::vector<std::pair<Vec3, double>>& a, const std::vector
   return true;
 }
 
+// Whether two of the sheets `crossers` have their walls on the same planes: the other rib is in segments too, cut by
+// the two sheets' rib (ribs of one height crossing). A lower rib leaves the higher one whole, its walls' faces round
+// its feet: the lower rib's segments then stand on both sides of it, each a T.
+bool crossedInSegments(const std::set<int>& crossers, const std::vector<std::vector<std::pair<Vec3, double>>>& planes,
+                       double tolerance) {
+  for (auto x = crossers.begin(); x != crossers.end(); ++x)
+    for (auto y = std::next(x); y != crossers.end(); ++y)
+      if (samePlanes(planes[*x], planes[*y], tolerance)) return true;
+  return false;
+}
+
 }  // namespace
 
 std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
@@ -356,7 +367,7 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
       Crossing c{a, b, {}, sheets[a].area + sheets[b].area};
       std::set_intersection(meets[a].begin(), meets[a].end(), meets[b].begin(), meets[b].end(),
                             std::inserter(c.crossers, c.crossers.end()));
-      if (!c.crossers.empty()) crossings.push_back(std::move(c));
+      if (crossedInSegments(c.crossers, planes, kJoin * cad.diagonal)) crossings.push_back(std::move(c));
     }
   std::stable_sort(crossings.begin(), crossings.end(),
                    [](const Crossing& x, const Crossing& y) { return x.area > y.area; });

@@ -17,6 +17,8 @@
 namespace hexlayer {
 namespace {
 
+constexpr int kLeanRings = 3;  // rings of quads round the columns of an oblique crossing that lean less and less
+
 // 20-node hexes: the sheet's mid-edge node of every edge whose corners are both walls' nodes is the walls' mid-edge
 // node of that edge. [in] sheet, walls; [in,out] shared: footNodesShared's
 // corners, the mid-edge nodes added.
@@ -127,6 +129,55 @@ std::vector<int> footNodesShared(const HexMesh& sheet, const std::vector<int>& c
   }
   shareMidEdgeNodes(sheet, walls, shared);
   return shared;
+}
+
+void leanCrossedColumns(HexMesh& sheet, const QuadMesh& quads, const std::vector<int>& shared, const HexMesh& walls) {
+  const int m = sheet.layers, stride = m + 1, columns = static_cast<int>(quads.nodes.size());
+  if (columns * stride > static_cast<int>(shared.size())) return;
+  // Per column, its ends' offsets (the low end's, the high end's) and its ring round the crossed columns.
+  std::vector<std::pair<Vec3, Vec3>> offset(columns, {Vec3::Zero(), Vec3::Zero()});
+  std::vector<int> ring(columns, -1), front;
+  for (int c = 0; c < columns; ++c) {
+    const int a = c * stride, b = a + m;
+    if (shared[a] < 0 || shared[b] < 0) continue;
+    offset[c] = {walls.nodes[shared[a]] - sheet.nodes[a], walls.nodes[shared[b]] - sheet.nodes[b]};
+    ring[c] = 0, front.push_back(c);
+  }
+  if (front.empty()) return;
+  const std::vector<std::vector<int>> rim = rimEdgeNeighbours(quads);
+  std::vector<std::set<int>> next(columns);  // quad edges
+  for (const auto& q : quads.quads)
+    for (int k = 0; k < 4; ++k) next[q[k]].insert(q[(k + 1) % 4]), next[q[(k + 1) % 4]].insert(q[k]);
+  std::vector<int> source(columns, -1);  // the crossed column a column's offsets come from
+  for (int c : front) source[c] = c;
+  for (int r = 1; r <= kLeanRings && !front.empty(); ++r) {  // breadth first, in column order: deterministic
+    std::vector<int> grown;
+    for (int c : front)
+      for (int n : next[c]) {
+        const int a = n * stride, b = a + m;
+        if (ring[n] >= 0 || shared[a] >= 0 || shared[b] >= 0) continue;
+        const bool alongRim = !rim[source[c]].empty() && std::count(rim[c].begin(), rim[c].end(), n) > 0;
+        if (!rim[n].empty() && !alongRim) continue;  // a rim column leans only along the rim, as its crossed one
+        ring[n] = r, source[n] = source[c], grown.push_back(n);
+      }
+    std::sort(grown.begin(), grown.end());
+    front = std::move(grown);
+  }
+  std::vector<char> moved(sheet.nodes.size(), 0);
+  for (int c = 0; c < columns; ++c) {
+    if (ring[c] < 0) continue;
+    const double w = 1.0 - static_cast<double>(ring[c]) / (kLeanRings + 1);
+    const int a = c * stride, b = a + m;
+    const Vec3 from = sheet.nodes[a] + w * offset[source[c]].first, to = sheet.nodes[b] + w * offset[source[c]].second;
+    for (int k = 0; k <= m; ++k)
+      sheet.nodes[a + k] = from + (to - from) * (static_cast<double>(k) / m), moved[a + k] = 1;
+  }
+  if (!sheet.quadratic()) return;
+  for (std::size_t h = 0; h < sheet.hexes.size(); ++h)
+    for (std::size_t e = 0; e < kHexEdges.size(); ++e) {
+      const int a = sheet.hexes[h][kHexEdges[e][0]], b = sheet.hexes[h][kHexEdges[e][1]], mid = sheet.midEdges[h][e];
+      if ((moved[a] || moved[b]) && shared[mid] < 0) sheet.nodes[mid] = 0.5 * (sheet.nodes[a] + sheet.nodes[b]);
+    }
 }
 
 JunctionHexes junctionHexes(const HexMesh& mesh, const std::vector<double>& scaledJacobian,

@@ -60,6 +60,17 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSu
 std::vector<int> footNodesShared(const HexMesh& sheet, const std::vector<int>& column, const HexMesh& walls,
                                  const std::vector<int>& wallNode, double tolerance);
 
+// Ribs crossing a sheet (feet on both its walls at one place, footprint_insert.hpp's mergeFeetOnBothSides): the
+// sheet's sweep columns whose two ends are walls' foot nodes run straight between those, their inner nodes evenly on
+// the segment. Where the ribs cross obliquely the two feet are offset along the sheet, so those columns lean; the
+// columns within kLeanRings rings of quads round them lean less and less (each end moved by the nearest crossed
+// column's end offset times 1 - ring / (kLeanRings + 1)), so that no hex between a leaning column and an upright one
+// folds. Columns ending on one wall's foot stay, and rim columns but those next along the rim to a leaning rim
+// column (a crossing at the sheet's rim: its offset lies along the rim). At order 2 every edge at a moved node whose
+// mid-edge node is not a wall's gets it at its middle. [in,out] sheet: its columns as sweep.hpp lays them; [in] quads:
+// it is swept from; [in] shared: footNodesShared's; [in] walls.
+void leanCrossedColumns(HexMesh& sheet, const QuadMesh& quads, const std::vector<int>& shared, const HexMesh& walls);
+
 // The junction hexes: those with a corner among `footNodes`, and their scaled Jacobian's min and mean.
 struct JunctionHexes {
   std::size_t hexes = 0;

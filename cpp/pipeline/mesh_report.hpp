@@ -35,11 +35,12 @@ struct StageTime {
 // A rib, boss or flange standing on the meshed sheet (a T-junction), listed in "junctions": left out
 // (--drop-junctions), or meshed with the sheet (issue 18).
 struct JunctionRecord {
-  Vec3 at = Vec3::Zero();                                // the centre of its faces
-  std::vector<std::string> faces;                        // its input faces (FaceN), a split face's pieces once
-  double area = 0, volume = 0;                           // of its faces; its estimated volume
-  bool meshed = false;                                   // meshed: the fields below are set
-  std::string kind;                                      // "T": a rib standing on a sheet
+  Vec3 at = Vec3::Zero();          // the centre of its faces
+  std::vector<std::string> faces;  // its input faces (FaceN), a split face's pieces once
+  double area = 0, volume = 0;     // of its faces; its estimated volume
+  bool meshed = false;             // meshed: the fields below are set
+  std::string kind;  // "T": a rib standing on a sheet; "X": one other ribs cross (standing on both its sides at one
+                     // place, each a T on it); "ring": a boss (its foot closed on itself)
   std::size_t hexes = 0;                                 // the junction hexes: those with a corner on the rib's foot
   double minScaledJacobian = 0, meanScaledJacobian = 0;  // of the junction hexes
 };

@@ -373,7 +373,8 @@ struct JunctionPieces {
   std::vector<int> onFeet;          // joined's nodes that were on a foot face
   // Per standing sheet, per sheet it stands on, its footprint there, its nodes joined's.
   std::vector<std::map<int, WallFoot>> feet;
-  MeshResult stages;  // the pieces' chordal surfaces and quads, one after the other
+  std::vector<char> crossed;  // per piece, whether walls stand on both its sides at one place (ribs crossing it)
+  MeshResult stages;          // the pieces' chordal surfaces and quads, one after the other
 };
 
 // The seconds and peak memory of a piece's stages, as one stage.
@@ -422,20 +423,29 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
   reportProgress(o.progress, progressNote("", "piece " + std::to_string(pieces - s) + " of " + std::to_string(pieces)));
   std::vector<int> footNode;
   const FootprintQuads footprint = footprintsOn(t, s, footNode);
-  FootprintInsertion inserted;
+  std::vector<int> column;  // per footprint node, the sheet's quad node under it
+  MergedFootprints merged;  // its shift in the part's units
   MeshResult piece = footprint.quads.empty()
                          ? meshSolid(t.cut.pieces[s], o)
                          : meshSolid(t.cut.pieces[s], o, [&](const CadSolid& c, QuadStage& stage) {
                              const ChordalLocator locator(stage.chordal);
                              FootprintQuads onWall = footprint;
                              for (Vec3& p : onWall.nodes) p *= c.unit;
-                             const FootprintQuads onSheet = onChordalSurface(onWall, locator);
-                             inserted = insertFootprints(stage.quads, onSheet, locator, meanEdge(stage.quads));
-                             stage.quads = inserted.quads;
+                             // feet on both sides of the sheet (ribs crossing it) are one
+                             merged = mergeFeetOnBothSides(onChordalSurface(onWall, locator), locator);
+                             merged.shift /= c.unit;
+                             const FootprintInsertion in =
+                                 insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads));
+                             for (int m : merged.node) column.push_back(in.node[m]);
+                             t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
+                             stage.quads = in.quads;
                            });
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
-  if (!footprint.quads.empty())
-    shared = footNodesShared(piece.mesh, inserted.node, t.joined, footNode, wallShare * piece.report.thickness);
+  if (!footprint.quads.empty()) {
+    const double reach = wallShare * piece.report.thickness + merged.shift;
+    shared = footNodesShared(piece.mesh, column, t.joined, footNode, reach);
+    leanCrossedColumns(piece.mesh, piece.quadMesh, shared, t.joined);
+  }
   const std::vector<int> onFeet = toCutFaces(piece.mesh, t.cut.faceOrigin[s]);
   const std::vector<int> id = joinHexMesh(t.joined, piece.mesh, shared);
   for (int n : onFeet) t.onFeet.push_back(id[n]);
@@ -458,7 +468,7 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
                                   const MeshOptions& o, StageClock& clock) {
   JunctionPieces t;
   t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });  // sheets: crossings merged
-  t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size());
+  t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size()), t.crossed.assign(t.cut.pieces.size(), 0);
   // The sheet's node under a foot node is known by its column (the footprint's quad node); it is checked to be the
   // column's end nearer to the foot within a third of the wall's thickness (the sheet's rim and poor hexes are
   // smoothed after the sweep, and in a bend its chordal facets are coarser than the wall), then is the foot's node.
@@ -536,7 +546,7 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
       foot.insert(foot.end(), on.wallNode.begin(), on.wallNode.end()), ring = ring && on.ring;
     const JunctionHexes hexes = junctionHexes(result.mesh, result.scaledJacobian, foot);
     j.at /= cad.unit, j.area /= cad.unit * cad.unit, j.volume /= cad.unit * cad.unit * cad.unit;  // as toInputUnits
-    j.kind = ring ? "ring" : "T", j.meshed = true, j.hexes = hexes.hexes;
+    j.kind = ring ? "ring" : t.crossed[w] ? "X" : "T", j.meshed = true, j.hexes = hexes.hexes;
     j.minScaledJacobian = hexes.minScaledJacobian, j.meanScaledJacobian = hexes.meanScaledJacobian;
     r.junctions.push_back(j);
   }

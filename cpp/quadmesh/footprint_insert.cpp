@@ -12,6 +12,7 @@
 
 #include "core/child_process.hpp"
 #include "core/error.hpp"
+#include "core/point_grid.hpp"
 #include "core/polygon.hpp"
 #include "core/triangle_tree.hpp"
 #include "core/union_find.hpp"
@@ -23,6 +24,7 @@ namespace hexlayer {
 namespace {
 
 constexpr double kBands[] = {2, 3, 4};  // of the quad size: the sheet's quads this near a footprint are meshed again
+constexpr double kMergeOpposite = 0.2;  // of a footprint's shortest edge: feet on both sides this near are one
 constexpr double kOverlap = 1e-3;       // of the quad size: a foot this near another overlaps it
 constexpr double kCoincide = 1e-2;      // of kOnRim: a rim node this near a footprint node is that node
 constexpr double kOnRim = 0.1;          // of the quad size: a footprint node this near the sheet's rim lies on it
@@ -77,34 +79,47 @@ struct Gap {
   std::vector<int> sheetQuads;      // into the sheet's quads
 };
 
+// The footprint's quads joined by nodes into feet. [out] feet: per quad, its foot's root. Returns root -> its quads.
+std::map<int, std::vector<int>> feetOf(const FootprintQuads& footprint, UnionFind& feet) {
+  std::map<int, int> quadOfNode;
+  for (int q = 0; q < static_cast<int>(footprint.quads.size()); ++q)
+    for (int n : footprint.quads[q])
+      if (const auto [it, added] = quadOfNode.emplace(n, q); !added) feet.unite(it->second, q);
+  std::map<int, std::vector<int>> footQuads;
+  for (int q = 0; q < static_cast<int>(footprint.quads.size()); ++q) footQuads[feet.find(q)].push_back(q);
+  return footQuads;
+}
+
+// A foot's quads as triangles, in a tree.
+TriangleTree footTree(const FootprintQuads& footprint, const std::vector<int>& quads) {
+  std::vector<Triangle> t;
+  for (int q : quads)
+    for (const Triangle& tri : triangles(footprint.nodes, footprint.quads[q])) t.push_back(tri);
+  return TriangleTree(std::move(t));
+}
+
 // The footprint quads joined by nodes into feet, and the sheet's quads within the band of each; feet whose bands
 // share a quad are one gap. [in] sheet, footprint, size; [in] band: how near. Returns the gaps; `removed` flags the
 // sheet's quads in one.
 std::vector<Gap> gapsRoundFeet(const QuadMesh& sheet, const FootprintQuads& footprint, double size, double band,
                                std::vector<char>& removed) {
   UnionFind feet(footprint.quads.size());
-  std::map<int, int> quadOfNode;
-  for (int q = 0; q < static_cast<int>(footprint.quads.size()); ++q)
-    for (int n : footprint.quads[q])
-      if (const auto [it, added] = quadOfNode.emplace(n, q); !added) feet.unite(it->second, q);
-  std::map<int, std::vector<int>> footQuads;  // root -> its quads
-  for (int q = 0; q < static_cast<int>(footprint.quads.size()); ++q) footQuads[feet.find(q)].push_back(q);
+  std::map<int, std::vector<int>> footQuads = feetOf(footprint, feet);
   std::vector<int> roots;
   std::vector<TriangleTree> trees;
-  for (const auto& [root, quads] : footQuads) {
-    std::vector<Triangle> t;
-    for (int q : quads)
-      for (const Triangle& tri : triangles(footprint.nodes, footprint.quads[q])) t.push_back(tri);
-    roots.push_back(root), trees.emplace_back(std::move(t));
-  }
+  for (const auto& [root, quads] : footQuads) roots.push_back(root), trees.push_back(footTree(footprint, quads));
   for (std::size_t f = 0; f < trees.size(); ++f)  // feet on both sides of the sheet at one place
     for (int q : footQuads[roots[f]])
       for (int n : footprint.quads[q])
         for (std::size_t g = 0; g < trees.size(); ++g)
-          if (g != f && trees[g].anyWithin(footprint.nodes[n], kOverlap * size))
-            throw geometryError(
-                "junction: walls stand on both sides of a sheet at one place (ribs crossing), which is not meshed "
-                "yet");
+          if (g != f && trees[g].anyWithin(footprint.nodes[n], kOverlap * size)) {
+            const Vec3& p = footprint.nodes[n];
+            std::ostringstream msg;
+            msg << "junction: walls stand on both sides of a sheet near (" << p.x() << ", " << p.y() << ", " << p.z()
+                << ") with feet that are not one another's node for node (ribs crossing obliquely, or meshed "
+                   "unlike), which is not meshed yet";
+            throw geometryError(msg.str());
+          }
   removed.assign(sheet.quads.size(), 0);
   std::vector<int> claimedBy(sheet.quads.size(), -1);
   for (std::size_t q = 0; q < sheet.quads.size(); ++q) {
@@ -577,6 +592,48 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalL
   return best;
 }
 
+// A foot of a footprint: its quads and its nodes (sorted).
+struct FootParts {
+  std::vector<int> quads, nodes;
+};
+
+std::vector<FootParts> feetParts(const FootprintQuads& footprint) {
+  UnionFind feet(footprint.quads.size());
+  std::vector<FootParts> parts;
+  for (auto& [root, quads] : feetOf(footprint, feet)) {
+    std::set<int> n;
+    for (int q : quads) n.insert(footprint.quads[q].begin(), footprint.quads[q].end());
+    parts.push_back({std::move(quads), std::vector<int>(n.begin(), n.end())});
+  }
+  return parts;
+}
+
+// The mean of the points.
+Vec3 centroid(const std::vector<Vec3>& at, const std::vector<int>& nodes) {
+  Vec3 c = Vec3::Zero();
+  for (int n : nodes) c += at[n];
+  return c / static_cast<double>(nodes.size());
+}
+
+// Foot g as foot f moved by the shift between their centroids: per node of f, the node of g within `near` of it so
+// moved. Empty if the feet are not so alike (another node count, a node with none or two).
+std::vector<int> alikeNodes(const std::vector<Vec3>& at, const std::vector<int>& f, const std::vector<int>& g,
+                            double near) {
+  if (f.size() != g.size()) return {};
+  const Vec3 shift = centroid(at, g) - centroid(at, f);
+  PointGrid grid(near);
+  for (int n : g) grid.insert(n, at[n]);
+  std::vector<int> partner;
+  std::set<int> taken;
+  for (int n : f) {
+    int found = -1, count = 0;
+    grid.forEachNear(at[n] + shift, near, [&](int m, const Vec3&) { found = m, ++count; });
+    if (count != 1 || !taken.insert(found).second) return {};
+    partner.push_back(found);
+  }
+  return partner;
+}
+
 }  // namespace
 
 FootprintQuads onChordalSurface(FootprintQuads footprint, const ChordalLocator& chordal) {
@@ -594,6 +651,48 @@ FootprintQuads onChordalSurface(FootprintQuads footprint, const ChordalLocator& 
     footprint.nodes[k] = at;
   }
   return footprint;
+}
+
+MergedFootprints mergeFeetOnBothSides(const FootprintQuads& footprint, const ChordalLocator& chordal) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const Quad& q : footprint.quads)
+    for (int c = 0; c < 4; ++c)
+      shortest = std::min(shortest, (footprint.nodes[q[c]] - footprint.nodes[q[(c + 1) % 4]]).norm());
+  const double near = kMergeOpposite * shortest;
+  const std::vector<FootParts> feet = feetParts(footprint);
+  std::vector<int> partner(footprint.nodes.size(), -1);  // the node on the other side, for the first foot's nodes
+  MergedFootprints out;
+  for (std::size_t f = 0; f < feet.size(); ++f)
+    for (std::size_t g = f + 1; g < feet.size(); ++g) {
+      const std::vector<int>&a = feet[f].nodes, &b = feet[g].nodes;
+      if (partner[a.front()] >= 0 || partner[b.front()] >= 0) continue;
+      const TriangleTree other = footTree(footprint, feet[g].quads);
+      if (std::none_of(a.begin(), a.end(), [&](int n) { return other.anyWithin(footprint.nodes[n], near); }))
+        continue;  // not at one place
+      const std::vector<int> alike = alikeNodes(footprint.nodes, a, b, near);
+      for (std::size_t k = 0; k < alike.size(); ++k) {
+        partner[a[k]] = alike[k], partner[alike[k]] = a[k];
+        out.shift = std::max(out.shift, 0.5 * (footprint.nodes[alike[k]] - footprint.nodes[a[k]]).norm());
+      }
+    }
+  out.node.assign(footprint.nodes.size(), -1);
+  for (std::size_t n = 0; n < footprint.nodes.size(); ++n) {
+    if (out.node[n] >= 0) continue;
+    const int p = partner[n];
+    const Vec3 at = p < 0 ? footprint.nodes[n] : chordal.locate(0.5 * (footprint.nodes[n] + footprint.nodes[p])).point;
+    out.node[n] = static_cast<int>(out.footprint.nodes.size());
+    if (p >= 0) out.node[p] = out.node[n];
+    out.footprint.nodes.push_back(at);
+  }
+  std::set<Quad> seen;  // sorted corners
+  for (const Quad& q : footprint.quads) {
+    Quad m{out.node[q[0]], out.node[q[1]], out.node[q[2]], out.node[q[3]]}, key = m;
+    std::sort(key.begin(), key.end());
+    if (std::adjacent_find(key.begin(), key.end()) != key.end())
+      throw geometryError("junction: a wall's footprint folds onto itself on the sheet it stands on");
+    if (seen.insert(key).second) out.footprint.quads.push_back(m);
+  }
+  return out;
 }
 
 // insertFootprints with the sheet's quads within `band` of a footprint meshed again.

@@ -29,6 +29,19 @@ struct FootprintQuads {
 // [in] footprint: on the sheet's wall; [in] chordal. Returns it on the chordal surface.
 FootprintQuads onChordalSurface(FootprintQuads footprint, const ChordalLocator& chordal);
 
+// Walls standing on both sides of a sheet at one place (ribs crossing: the crossed rib's segments on the two walls of
+// the rib running through) have one footprint on the chordal surface, whose sweep columns end at one wall's foot node
+// and at the other's: two feet that overlap there and are alike (as many nodes, each node of one within a fifth of
+// the footprint's shortest edge of one of the other once moved by the shift between their centroids, which is not
+// zero where the ribs cross obliquely) are merged, each pair of nodes at its middle put back on the surface.
+struct MergedFootprints {
+  FootprintQuads footprint;  // the feet merged
+  std::vector<int> node;     // per footprint node given, its node in `footprint`
+  double shift = 0;          // the largest distance of a node given from its merged node (half a pair's offset)
+};
+// [in] footprint: on the chordal surface (onChordalSurface); [in] chordal.
+MergedFootprints mergeFeetOnBothSides(const FootprintQuads& footprint, const ChordalLocator& chordal);
+
 struct FootprintInsertion {
   QuadMesh quads;                                 // the sheet's quads carrying the footprints
   std::vector<int> node;                          // per footprint node, its node in `quads`

@@ -1,6 +1,7 @@
 // A sheet's quads made to carry the footprints of walls standing on it (quadmesh/footprint_insert.hpp): a strip
-// inside the sheet, one running to its rim, two strips, a ring, and a foot off the sheet (refused); on a 60 x 40 grid
-// of 2 mm quads in the plane z = 1 and on copies scaled by 1e-3 and 1e3.
+// inside the sheet, one running to its rim, two strips, a ring, feet on both sides (ribs crossing: merged), and a
+// foot off the sheet (refused); on a 60 x 40 grid of 2 mm quads in the plane z = 1 and on copies scaled by 1e-3 and
+// 1e3.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -161,5 +162,43 @@ TEST(FootprintInsert, AFootOffTheSheetIsRefused) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
     EXPECT_NE(std::string(e.what()).find("junction"), std::string::npos) << e.what();
+  }
+}
+
+// Ribs crossing the sheet: feet on both its walls at one place, alike (the other's nodes, moved along the sheet by
+// 0.6 mm: an oblique crossing), are one footprint, each node at the middle of its pair; the sheet carries it. Feet
+// that overlap but are not alike (another column count) stay two, and the sheet refuses them, naming the crossing.
+TEST(FootprintInsert, FeetOnBothSidesAreOne) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const Sheet g = gridSheet(s);
+    const ChordalLocator locator(g.chordal);
+    FootprintQuads f;
+    addStrip(f, 10.3, 30.3, 20.5, 2, 2, 10, s);
+    addStrip(f, 10.9, 30.9, 20.5, 2, 2, 10, s);
+    const std::size_t half = f.nodes.size() / 2;
+    const MergedFootprints m = mergeFeetOnBothSides(f, locator);
+    ASSERT_EQ(m.footprint.nodes.size(), half);
+    EXPECT_EQ(m.footprint.quads.size(), f.quads.size() / 2);
+    EXPECT_NEAR(m.shift, 0.3 * s, 1e-9 * s);
+    for (std::size_t n = 0; n < half; ++n) {
+      EXPECT_EQ(m.node[n], m.node[n + half]);
+      EXPECT_NEAR((m.footprint.nodes[m.node[n]] - 0.5 * (f.nodes[n] + f.nodes[n + half])).norm(), 0, 1e-9 * s);
+    }
+    expectCarried(insertFootprints(g.quads, m.footprint, locator, kQuad * s), m.footprint, s, 0.3);
+
+    FootprintQuads unlike;
+    addStrip(unlike, 10.3, 30.3, 20.5, 2, 2, 10, s);
+    addStrip(unlike, 10.9, 30.9, 20.5, 2, 2, 11, s);
+    const MergedFootprints two = mergeFeetOnBothSides(unlike, locator);
+    EXPECT_EQ(two.footprint.nodes.size(), unlike.nodes.size());
+    EXPECT_EQ(two.shift, 0);
+    try {
+      insertFootprints(g.quads, two.footprint, locator, kQuad * s);
+      ADD_FAILURE() << "not refused";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
+      EXPECT_NE(std::string(e.what()).find("both sides"), std::string::npos) << e.what();
+    }
   }
 }

@@ -1,6 +1,7 @@
 // The junctions' steps (pipeline/junction_mesh.hpp): a standing wall's foot from its hexes, the plate's nodes that
 // are the walls' foot nodes, the joined mesh, the junction hexes. Run on a rib across a plate (also at order 2), one
-// inside it at 3 layers, two ribs on an L-shaped plate, on copies scaled by 1e-3 and 1e3; a boss's foot is a ring.
+// inside it at 3 layers, two ribs on an L-shaped plate, on copies scaled by 1e-3 and 1e3; a boss's foot is a ring; the
+// columns of a sheet two ribs cross obliquely lean.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -160,4 +161,68 @@ TEST(JunctionMesh, JunctionHexesHoldAFootNode) {
   EXPECT_EQ(both.hexes, 3u);
   EXPECT_DOUBLE_EQ(both.minScaledJacobian, 0.5);
   EXPECT_DOUBLE_EQ(both.meanScaledJacobian, 0.8);
+}
+
+namespace {
+
+// A flat sheet swept from a 9 x 9 grid of 2 mm quads (z = 0), `layers` layers through z = -1..1, scaled by s, as
+// sweep.hpp lays it out (quad node q's column: hex nodes q (layers + 1) + k).
+struct SweptSheet {
+  QuadMesh quads;
+  HexMesh hexes;
+};
+
+SweptSheet sweptGrid(int layers, double s) {
+  SweptSheet g;
+  constexpr int n = 9;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      g.quads.nodes.push_back(s * Vec3(2 * i, 2 * j, 0));
+      for (int k = 0; k <= layers; ++k) g.hexes.nodes.push_back(s * Vec3(2 * i, 2 * j, -1 + 2.0 * k / layers));
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      const std::array<int, 4> q{a, a + 1, a + n + 2, a + n + 1};
+      g.quads.quads.push_back(q);
+      for (int k = 0; k < layers; ++k) {
+        std::array<int, 8> h;
+        for (int c = 0; c < 4; ++c) h[c] = q[c] * (layers + 1) + k, h[c + 4] = q[c] * (layers + 1) + k + 1;
+        g.hexes.hexes.push_back(h);
+      }
+    }
+  g.hexes.layers = layers;
+  return g;
+}
+
+}  // namespace
+
+// An oblique crossing: the middle column's ends are two walls' foot nodes 1 mm apart along x (0.5 mm off the column
+// each way). That column runs straight between them, its inner nodes evenly; the columns round it lean by 3/4, 2/4,
+// 1/4 of its offsets ring by ring; the fourth ring and the rim stay; no hex folds. On copies scaled by 1e-3 and 1e3.
+TEST(JunctionMesh, AnObliqueCrossingLeansTheColumnsRoundIt) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    constexpr int m = 3, centre = 4 * 10 + 4;  // quad node (4, 4)
+    SweptSheet g = sweptGrid(m, s);
+    const HexMesh before = g.hexes;
+    HexMesh walls;
+    walls.nodes = {s * Vec3(7.5, 8, -1), s * Vec3(8.5, 8, 1)};
+    std::vector<int> shared(g.hexes.nodes.size(), -1);
+    shared[centre * (m + 1)] = 0, shared[centre * (m + 1) + m] = 1;
+    leanCrossedColumns(g.hexes, g.quads, shared, walls);
+    for (int k = 0; k <= m; ++k)
+      EXPECT_NEAR(
+          (g.hexes.nodes[centre * (m + 1) + k] - s * Vec3(7.5 + static_cast<double>(k) / m, 8, -1 + 2.0 * k / m))
+              .norm(),
+          0, 1e-12 * s);
+    for (int i = 0; i <= 9; ++i) {
+      const int q = 4 * 10 + i, ring = std::abs(i - 4);
+      const double lean = ring <= 3 && i > 0 && i < 9 ? 1.0 - ring / 4.0 : 0;
+      const Vec3 low = g.hexes.nodes[q * (m + 1)], high = g.hexes.nodes[q * (m + 1) + m];
+      EXPECT_NEAR((low - before.nodes[q * (m + 1)]).x(), -0.5 * s * lean, 1e-12 * s) << "column " << i;
+      EXPECT_NEAR((high - before.nodes[q * (m + 1) + m]).x(), 0.5 * s * lean, 1e-12 * s) << "column " << i;
+    }
+    for (std::size_t h = 0; h < g.hexes.hexes.size(); ++h) EXPECT_GT(hexScaledJacobian(hexCorners(g.hexes, h)), 0.5);
+  }
 }

@@ -2,9 +2,10 @@
 junction samples plate_rib (a rib rim to rim: a T), plate_rib_thin (the rib half the plate's thickness),
 plate_rib_thick (1.5 x), plate_rib_split (faces the boolean left split), plate_rib_inside (the rib ending inside the
 plate) and plate_boss (a hollow boss: its foot a ring), plate_ribs_tee (a rib standing on the plate and on another
-rib), shell_rib (a rib along a cylindrical shell) and box_partition (a partition across an open box's floor, bends
-and walls), with 2 and 3 layers, and at order 2 (20-node hexes) with 2 layers; twins of the last two in metres and
-turned.
+rib), shell_rib (a rib along a cylindrical shell), box_partition (a partition across an open box's floor, bends
+and walls) and plate_rib_grid (ribs crossing), with 2 and 3 layers, and at order 2 (20-node hexes) with 2 layers;
+twins of shell_rib and box_partition in metres and turned; ribs crossing square and at 60 degrees, of one height or
+not, in metres and turned.
 
 Checked on the written .inp with tools of their own, not the mesher's report:
 - every element an 8-node hex (20-node at order 2) of positive volume;
@@ -19,7 +20,7 @@ Checked on the written .inp with tools of their own, not the mesher's report:
 - every CAD face of the part (the rib's and the plate's) has its FACE<N> node set and element-face surface, every
   boundary quad is in exactly one surface, and every node of FACE<N> lies within 1e-6 x the diagonal of face N
   (Gmsh's closest point);
-and from the report: every junction meshed, of its kind ("T" or "ring"), its hexes' scaled Jacobian mean >= 0.8 (the issue's bar).
+and from the report: every junction meshed, of its kind ("T", "X" or "ring"), its hexes' scaled Jacobian mean >= 0.8 (the issue's bar).
 
 Run by CTest as: /usr/bin/python3 test_junction_meshing.py --hexlayer PATH --source DIR
 """
@@ -48,7 +49,10 @@ PARTS = {"plate_rib": ["T"], "plate_rib_thin": ["T"], "plate_rib_thick": ["T"], 
          # test_junction_samples.py) but is not checked here yet: its hexes stop 0.9 mm short of its two 45-degree
          # tips (the tip columns lie on its foot, in from the tip), and the nodes there are grouped with the
          # hypotenuse face (FACE13), 0.64 mm off it.
-         "shell_rib": ["T"], "box_partition": ["T"]}
+         "shell_rib": ["T"], "box_partition": ["T"],
+         # A grid of ribs of one height: the two along X run through ("X": the others cross them), the two along Y
+         # are in three segments each, a T on the plate and on the ribs they meet.
+         "plate_rib_grid": ["X", "X"] + ["T"] * 6}
 # Every edge straight, every wall flat.
 STRAIGHT = {part for part, kinds in PARTS.items() if "ring" not in kinds} - {"shell_rib", "box_partition"}
 RUNS = ((2, 1), (3, 1), (2, 2))  # (layers, order)
@@ -95,6 +99,26 @@ def write_holed_ribbed_plate(path, scale, turn):
         bore = occ.addCylinder(45, 10, 2, 0, 0, 11, 2)
         boss_ring, _ = occ.cut([(3, boss)], [(3, bore)])
         fused, _ = occ.fuse(body, [(3, oblique), (3, rim_rib)] + boss_ring)
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
+def write_crossing_ribs(path, angle, low, thin, scale, turn):
+    """Writes test_crossing_ribs_twins's part as STEP: a 70 x 50 x 2 plate, a rib 2 thick and 10 high rim to rim
+    along X, and a rib `thin` thick and `low` high crossing it at `angle` degrees round (30, 23), from the rim on one
+    side to inside the plate on the other; scaled and turned (turned_and_scaled). Returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        plate = occ.addBox(0, 0, 0, 70, 50, 2)
+        through = occ.addBox(0, 22, 2, 70, 2, 10)
+        crossing = occ.addBox(-thin / 2, -18, 2, thin, 33, low)
+        occ.rotate([(3, crossing)], 0, 0, 0, 0, 0, 1, (angle - 90) * np.pi / 180)
+        occ.translate([(3, crossing)], 30, 23, 0)
+        occ.fuse([(3, plate)], [(3, through), (3, crossing)])
         return turned_and_scaled(gmsh, path, scale, turn)
     finally:
         gmsh.finalize()
@@ -252,6 +276,22 @@ class JunctionMeshing(unittest.TestCase):
             self.volumes[name] = write_sample_twin(part, step, scale, turn)
             with self.subTest(part=name):
                 self.check_part(name, step, 2, 1, ["T"])
+
+    def test_crossing_ribs_twins(self):
+        """Ribs crossing: square, the crossing rib lower and thinner (1.5 x 6: the rib along X stays whole, the
+        crossing one's two segments stand on both its walls); at 60 degrees (the two feet offset along the rib by
+        1.15 mm: its columns there lean), also of one height and thickness (both ribs cut where they cross, the
+        larger runs through); in metres; turned 30 degrees about a skew axis."""
+        for name, angle, low, thin, scale, turn in (("cross_square", 90, 6.0, 1.5, 1.0, 0.0),
+                                                    ("cross_oblique", 60, 6.0, 1.5, 1.0, 0.0),
+                                                    ("cross_oblique_level", 60, 10.0, 2.0, 1.0, 0.0),
+                                                    ("cross_square_metres", 90, 6.0, 1.5, 1e-3, 0.0),
+                                                    ("cross_oblique_turned", 60, 6.0, 1.5, 1.0, 30.0)):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_crossing_ribs(step, angle, low, thin, scale, turn)
+            for layers, order in ((2, 1), (3, 2)):
+                with self.subTest(part=name, layers=layers, order=order):
+                    self.check_part(name, step, layers, order, ["X", "T", "T"])
 
     def test_ribs_on_plates(self):
         for part in PARTS:
