@@ -40,6 +40,9 @@ void describeSizing(const hexlayer::MeshReport& r, std::ostream& s) {
     s << " " << f.shortEdges << " CAD edges shorter than the quad size and " << f.narrowFaces
       << " faces narrower (the first at (" << f.firstAt.x() << ", " << f.firstAt.y() << ", " << f.firstAt.z()
       << ")): features that small may be smoothed over.";
+  if (!f.footFillets.empty())
+    s << " " << f.footFillets.size() << " fillets at walls' feet (radius up to " << f.footFilletRadius
+      << ") smoothed over: meshed as sharp corners, grouped by nearness.";
 }
 
 std::string summary(const hexlayer::MeshReport& r, const std::string& output) {

@@ -26,6 +26,8 @@
 namespace hexlayer {
 namespace {
 
+constexpr int kMaxSplitRounds = 3;  // rounds of splitting faces that are partly wall, partly rim
+
 constexpr double kWallPiece = 0.7;    // the wall piece: at least this share of its sample area crosses the wall
 constexpr double kRimPiece = 0.5;     // the rim piece: less than this share (a rim face's bound, wall_sides.cpp)
 constexpr double kRimTurn = 45;       // degrees between the two pieces' mean normals
@@ -208,6 +210,20 @@ CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
   } catch (const Standard_Failure&) {
     return {};
   }
+}
+
+std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides) {
+  std::size_t split = 0;
+  for (int round = 0; round < kMaxSplitRounds; ++round) {  // a skin over a wall, its rim and the other wall: twice
+    const std::vector<FaceSplit> splits = findMixedFaces(cad, sides);
+    if (splits.empty()) break;
+    CadSolid pieces = splitFaces(cad, splits);
+    if (pieces.faces.Extent() == 0) break;
+    cad = std::move(pieces);
+    sides = classifyWallSides(cad);
+    split += splits.size();
+  }
+  return split;
 }
 
 }  // namespace hexlayer

@@ -30,4 +30,9 @@ std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& side
 // not split them.
 CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits);
 
+// Faces that are partly wall and partly rim split into pieces that are one or the other (findMixedFaces, splitFaces),
+// the sides measured again, for as many rounds as there are such faces (at most kMaxSplitRounds). [in,out] cad, sides.
+// Returns how many faces were split.
+std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides);
+
 }  // namespace hexlayer

@@ -1,6 +1,7 @@
 // Which faces of a thin solid are its top (ω_t), bottom (ω_b) and lateral (ω_l) surfaces (paper §3),
 // and how thick the wall is. The user gives neither: both are measured here by casting rays.
 #pragma once
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -71,8 +72,10 @@ Error ownSideError(const CadSolid& cad, const WallSides& sides);
 // and bottom walls shorter than `size` (a small hole's rim, a short edge), faces narrower than it
 // (walls) or than half the wall thickness (lateral faces): slivers, small fillets and chamfers.
 struct SmallFeatures {
-  int shortEdges = 0, narrowFaces = 0;  // narrowFaces: wall or lateral
-  Vec3 firstAt = Vec3::Zero();          // the middle of the first such edge, else a point of the first such face
+  int shortEdges = 0, narrowFaces = 0;   // narrowFaces: wall or lateral
+  Vec3 firstAt = Vec3::Zero();           // the middle of the first such edge, else a point of the first such face
+  std::vector<std::string> footFillets;  // fillets at walls' feet smoothed over (foot_fillets.hpp): their faces
+  double footFilletRadius = 0;           // the largest of them
 };
 SmallFeatures findSmallFeatures(const CadSolid& cad, const WallSides& sides, double size);
 

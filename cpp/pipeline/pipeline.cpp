@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "geometry/cad_faces.hpp"
+#include "geometry/foot_fillets.hpp"
 #include "geometry/junction_cut.hpp"
 #include "geometry/mixed_faces.hpp"
 #include "geometry/sheet_junctions.hpp"
@@ -42,7 +43,6 @@ namespace hexlayer {
 namespace {
 
 constexpr int kMaxLayers = 64;
-constexpr int kMaxSplitRounds = 3;  // rounds of splitting faces that are partly wall, partly rim
 constexpr double kDefaultSizeOverThickness = 1.0;
 constexpr double kMaxAutoQuads = 250000;
 // How far a rim node may move onto the rim faces, in walls: half of a rim cut obliquely 3.2 walls wide
@@ -105,22 +105,6 @@ MemoryEstimate requireMemory(const MeshOptions& o, const WallSides& sides, doubl
       << " hexes and " << m.bytes / 1e9 << " GB of memory (estimated), more than this machine's "
       << m.machineBytes / 1e9 << " GB: choose a larger --size (or --aspect) or fewer --layers";
   throw usageError(msg.str());
-}
-
-// Faces that are partly wall and partly rim split into pieces that are one or the other (mixed_faces.hpp), the
-// sides measured again; returns how many were split.
-std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides) {
-  std::size_t split = 0;
-  for (int round = 0; round < kMaxSplitRounds; ++round) {  // a skin over a wall, its rim and the other wall: twice
-    const std::vector<FaceSplit> splits = findMixedFaces(cad, sides);
-    if (splits.empty()) break;
-    CadSolid pieces = splitFaces(cad, splits);
-    if (pieces.faces.Extent() == 0) break;
-    cad = std::move(pieces);
-    sides = classifyWallSides(cad);
-    split += splits.size();
-  }
-  return split;
 }
 
 std::vector<std::string> faceNames(const CadSolid& cad, const Sheet& s) {
@@ -245,6 +229,15 @@ std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
 }
 
 // The groups of the pieces of a split face merged into the input face's, one group per input face in order.
+// The group's nodes sorted, once each; its hex faces sorted by hex, then local face.
+void sortGroup(SurfaceGroup& g) {
+  std::sort(g.nodes.begin(), g.nodes.end());
+  g.nodes.erase(std::unique(g.nodes.begin(), g.nodes.end()), g.nodes.end());
+  std::sort(g.hexFaces.begin(), g.hexFaces.end(), [](const HexFace& a, const HexFace& b) {
+    return std::make_pair(a.hex, a.localFace) < std::make_pair(b.hex, b.localFace);
+  });
+}
+
 std::vector<SurfaceGroup> groupsOfInputFaces(std::vector<SurfaceGroup> pieces, const CadSolid& cad) {
   std::vector<SurfaceGroup> merged(*std::max_element(cad.inputFace.begin(), cad.inputFace.end()) + 1);
   for (std::size_t f = 0; f < merged.size(); ++f) merged[f].name = "Face" + std::to_string(f + 1);
@@ -253,13 +246,7 @@ std::vector<SurfaceGroup> groupsOfInputFaces(std::vector<SurfaceGroup> pieces, c
     to.nodes.insert(to.nodes.end(), pieces[f].nodes.begin(), pieces[f].nodes.end());
     to.hexFaces.insert(to.hexFaces.end(), pieces[f].hexFaces.begin(), pieces[f].hexFaces.end());
   }
-  for (SurfaceGroup& g : merged) {
-    std::sort(g.nodes.begin(), g.nodes.end());
-    g.nodes.erase(std::unique(g.nodes.begin(), g.nodes.end()), g.nodes.end());
-    std::sort(g.hexFaces.begin(), g.hexFaces.end(), [](const HexFace& a, const HexFace& b) {
-      return std::make_pair(a.hex, a.localFace) < std::make_pair(b.hex, b.localFace);
-    });
-  }
+  for (SurfaceGroup& g : merged) sortGroup(g);
   return merged;
 }
 
@@ -558,6 +545,94 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
   return std::move(result);
 }
 
+// The fillet a point grouped with an input face is nearer to than to that face (within twice the largest fillet's
+// radius).
+class NearestFillet {
+ public:
+  // [in] cad: the part, fillets and all (kept by reference); [in] fillets.
+  NearestFillet(const CadSolid& cad, const FootFillets& fillets)
+      : cad_(cad), fillets_(fillets), faces_(cad), probe_(faces_) {}
+  // [in] p: in the part's units; [in] group: the input face it is grouped with. Returns the fillet's input face,
+  // or -1.
+  int operator()(const Vec3& p, int group) {
+    int best = -1;
+    double nearest = 2 * fillets_.largestRadius;
+    for (int f : fillets_.faces)
+      if (const double d = probe_.distance(f, p); d < nearest) nearest = d, best = inputFaceOf(cad_, f);
+    for (int f = 0; best >= 0 && best != group && f < cad_.faces.Extent(); ++f)
+      if (inputFaceOf(cad_, f) == group && probe_.distance(f, p) <= nearest) best = -1;
+    return best == group ? -1 : best;
+  }
+
+ private:
+  const CadSolid& cad_;
+  const FootFillets& fillets_;
+  CadFaces faces_;
+  CadFaceProbe probe_;
+};
+
+// The boundary quads and nodes of the mesh nearer to a removed fillet than to the face they are grouped with (a quad
+// by its centre) move to the fillet's group. [in,out] groups: per input face; [in] mesh: in the input's units; [in]
+// cad: the part, fillets and all; [in] fillets.
+void groupFootFillets(std::vector<SurfaceGroup>& groups, const HexMesh& mesh, const CadSolid& cad,
+                      const FootFillets& fillets) {
+  for (int f = 0; f < cad.faces.Extent(); ++f)
+    if (const int input = inputFaceOf(cad, f); input >= static_cast<int>(groups.size())) groups.resize(input + 1);
+  for (std::size_t g = 0; g < groups.size(); ++g) groups[g].name = "Face" + std::to_string(g + 1);
+  NearestFillet nearest(cad, fillets);
+  auto filletOf = [&](const std::vector<int>& nodes, int group) {  // of their centre
+    Vec3 centre = Vec3::Zero();
+    for (int n : nodes) centre += cad.unit / nodes.size() * mesh.nodes[n];
+    return nearest(centre, group);
+  };
+  std::vector<std::pair<int, HexFace>> quads;  // to the fillet's group
+  std::vector<std::pair<int, int>> nodes;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    std::vector<HexFace> keptQuads;
+    for (const HexFace& q : groups[g].hexFaces) {
+      std::vector<int> corners;
+      for (int c : kHexFaces[q.localFace]) corners.push_back(mesh.hexes[q.hex][c]);
+      if (const int to = filletOf(corners, static_cast<int>(g)); to >= 0)
+        quads.emplace_back(to, q);
+      else
+        keptQuads.push_back(q);
+    }
+    std::vector<int> keptNodes;
+    for (int n : groups[g].nodes)
+      if (const int to = filletOf({n}, static_cast<int>(g)); to >= 0)
+        nodes.emplace_back(to, n);
+      else
+        keptNodes.push_back(n);
+    groups[g].hexFaces = std::move(keptQuads), groups[g].nodes = std::move(keptNodes);
+  }
+  for (const auto& [to, q] : quads) groups[to].hexFaces.push_back(q);
+  for (const auto& [to, n] : nodes) groups[to].nodes.push_back(n);
+  for (int f : fillets.faces) sortGroup(groups[inputFaceOf(cad, f)]);
+}
+
+// Issue 18, fillets at the feet of standing walls (foot_fillets.hpp): the part meshed without them (meshJunctions on
+// the smoothed part), its volume measured against the part's, its fillets grouped by nearness and reported.
+// [in] cad: the part; [in,out] fillets: the smoothed part; [in] o: in the pipeline's units; [in,out] result, clock.
+MeshResult meshWithoutFootFillets(const CadSolid& cad, FootFillets& fillets, const MeshOptions& o, MeshResult& result,
+                                  StageClock& clock) {
+  CadSolid& smooth = fillets.smooth;
+  WallSides sides = classifyWallSides(smooth);
+  result.report.facesSplit += splitMixedFaces(smooth, sides);
+  const std::vector<Sheet> sheets = findSheets(smooth, sides);
+  if (!sides.ownSideFaces.empty() || sheets.size() < 2)
+    throw junctionRefusal(smooth, sheets, "the part without the fillets at its walls' feet is not sheets on sheets");
+  MeshResult out = meshJunctions(smooth, sides, mergeCrossingRibs(smooth, sides, sheets), o, result, clock);
+  MeshReport& r = out.report;
+  const double unit3 = cad.unit * cad.unit * cad.unit;
+  r.mesh.cadVolume = cad.volume / unit3;  // the part's, fillets and all
+  groupFootFillets(out.surfaceGroups, out.mesh, cad, fillets);
+  std::set<int> inputs;  // a fillet split in pieces (mixed_faces.hpp) is one input face
+  for (int f : fillets.faces) inputs.insert(inputFaceOf(cad, f));
+  for (int f : inputs) r.smallFeatures.footFillets.push_back("Face" + std::to_string(f + 1));
+  r.smallFeatures.footFilletRadius = fillets.largestRadius / cad.unit;
+  return out;
+}
+
 }  // namespace
 
 void validateOptions(const MeshOptions& o) {
@@ -591,8 +666,11 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   if (!o.dropJunctions && sides.ownSideFaces.empty())
-    if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1)
+    if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1) {
+      if (std::optional<FootFillets> smooth = removeFootFillets(cad, sides, sheets))
+        return meshWithoutFootFillets(cad, *smooth, o, result, clock);
       return meshJunctions(cad, sides, mergeCrossingRibs(cad, sides, sheets), o, result, clock);
+    }
   const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r.junctions);
   r.thickness = sides.thickness;
   r.faces = countFaces(sides);

@@ -38,7 +38,10 @@ nlohmann::json chordal(const ChordalRecord& c) {
 }
 
 nlohmann::json smallFeatures(const SmallFeatures& s) {
-  return {{"edges_shorter_than_size", s.shortEdges}, {"narrow_faces", s.narrowFaces}, {"first_at", point(s.firstAt)}};
+  return {{"edges_shorter_than_size", s.shortEdges},
+          {"narrow_faces", s.narrowFaces},
+          {"first_at", point(s.firstAt)},
+          {"foot_fillets_smoothed", {{"faces", s.footFillets}, {"largest_radius", s.footFilletRadius}}}};
 }
 
 nlohmann::json quadMesh(const QuadMeshCounts& q) {

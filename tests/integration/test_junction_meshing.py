@@ -3,8 +3,9 @@ junction samples plate_rib (a rib rim to rim: a T), plate_rib_thin (the rib half
 plate_rib_thick (1.5 x), plate_rib_split (faces the boolean left split), plate_rib_inside (the rib ending inside the
 plate) and plate_boss (a hollow boss: its foot a ring), plate_ribs_tee (a rib standing on the plate and on another
 rib), shell_rib (a rib along a cylindrical shell), box_partition (a partition across an open box's floor, bends
-and walls) and plate_rib_grid (ribs crossing), with 2 and 3 layers, and at order 2 (20-node hexes) with 2 layers;
-twins of shell_rib and box_partition in metres and turned; ribs crossing square and at 60 degrees, of one height or
+and walls), plate_rib_grid (ribs crossing), plate_rib_fillet and box_rib_fillet (filleted feet, the fillets
+smoothed over), with 2 and 3 layers, and at order 2 (20-node hexes) with 2 layers;
+twins of shell_rib, box_partition and the filleted feet in metres and turned; ribs crossing square and at 60 degrees, of one height or
 not, in metres and turned.
 
 Checked on the written .inp with tools of their own, not the mesher's report:
@@ -19,7 +20,7 @@ Checked on the written .inp with tools of their own, not the mesher's report:
 - the mesh volume within 2 % of the CAD volume (the samples README's);
 - every CAD face of the part (the rib's and the plate's) has its FACE<N> node set and element-face surface, every
   boundary quad is in exactly one surface, and every node of FACE<N> lies within 1e-6 x the diagonal of face N
-  (Gmsh's closest point);
+  (Gmsh's closest point), within 1.5 x its radius for a fillet smoothed over (the report's small_features);
 and from the report: every junction meshed, of its kind ("T", "X" or "ring"), its hexes' scaled Jacobian mean >= 0.8 (the issue's bar).
 
 Run by CTest as: /usr/bin/python3 test_junction_meshing.py --hexlayer PATH --source DIR
@@ -52,9 +53,15 @@ PARTS = {"plate_rib": ["T"], "plate_rib_thin": ["T"], "plate_rib_thick": ["T"], 
          "shell_rib": ["T"], "box_partition": ["T"],
          # A grid of ribs of one height: the two along X run through ("X": the others cross them), the two along Y
          # are in three segments each, a T on the plate and on the ribs they meet.
-         "plate_rib_grid": ["X", "X"] + ["T"] * 6}
+         "plate_rib_grid": ["X", "X"] + ["T"] * 6,
+         # Filleted feet (r = 1 < the quad size): the fillets smoothed over, the rib meshed on the sharp corner, the
+         # quads nearest to each fillet grouped with it.
+         "plate_rib_fillet": ["T"], "box_rib_fillet": ["T"]}
 # Every edge straight, every wall flat.
-STRAIGHT = {part for part, kinds in PARTS.items() if "ring" not in kinds} - {"shell_rib", "box_partition"}
+STRAIGHT = {part for part, kinds in PARTS.items() if "ring" not in kinds} - {"shell_rib", "box_partition",
+                                                                              "box_rib_fillet"}
+FILLETS = {"plate_rib_fillet": 2, "box_rib_fillet": 4}  # the fillet faces at the rib's foot
+FILLET_REACH = 1.5  # x the largest fillet smoothed over: how far its group's nodes may lie from it
 RUNS = ((2, 1), (3, 1), (2, 2))  # (layers, order)
 MIN_SJ, MEAN_SJ, JUNCTION_MEAN_SJ = 0.2, 0.9, 0.8
 VOLUME_TOL, AREA_TOL = 0.02, 0.01
@@ -211,7 +218,11 @@ class JunctionMeshing(unittest.TestCase):
         self.assertEqual(euler, surface_euler_characteristic(step, diagonal / 20))
         return quads
 
-    def check_groups(self, path, x, index, sets, hexes, quads, step, diagonal):
+    def check_groups(self, path, x, index, sets, hexes, quads, step, diagonal, report=None):
+        """Every CAD face grouped, its nodes on it (a fillet smoothed over: within FILLET_REACH x its radius), every
+        boundary quad in one surface."""
+        smoothed = (report or {}).get("small_features", {}).get("foot_fillets_smoothed", {})
+        reach = {int(name[4:]): FILLET_REACH * smoothed["largest_radius"] for name in smoothed.get("faces", [])}
         surfaces = read_surfaces(path)
         with opened(step) as gmsh:
             cad_faces = [tag for _, tag in gmsh.model.getEntities(2)]
@@ -219,7 +230,8 @@ class JunctionMeshing(unittest.TestCase):
         for face in cad_faces:
             self.assertTrue(sets.get(f"FACE{face}"), f"no nodes grouped on Face{face}")
             self.assertTrue(surfaces.get(f"FACE{face}_S"), f"no element faces grouped on Face{face}")
-            self.assertLessEqual(distances[face], ON_FACE * diagonal, f"a node of FACE{face} is off Face{face}")
+            self.assertLessEqual(distances[face], reach.get(face, ON_FACE * diagonal),
+                                 f"a node of FACE{face} is off Face{face}")
         # Every boundary quad in exactly one surface (element ids are the .inp's, hexes' rows in order).
         grouped = [np.sort(hexes[e - 1][list(HEX_FACES[s - 1])])
                    for name, faces in surfaces.items() if name.startswith("FACE") for e, s in faces]
@@ -240,7 +252,7 @@ class JunctionMeshing(unittest.TestCase):
         return min(report["junctions"], key=lambda j: j["scaled_jacobian"]["avg"])
 
     def check_part(self, part, step, layers, order, kinds):
-        """Meshes the part and checks its mesh and report; returns them for the printout."""
+        """Meshes the part and checks its mesh and report; returns its nodes and report."""
         path, report = self.mesh(part, layers, order, step)
         nodes, elements, sets = read_inp(path)
         x, rows, index = hex_arrays(nodes, elements)
@@ -248,13 +260,13 @@ class JunctionMeshing(unittest.TestCase):
         diagonal = float(np.linalg.norm(x.max(axis=0) - x.min(axis=0)))
         sj, volume = self.check_hexes(x, hexes, elements, part, order)
         quads = self.check_conformal(x, hexes, step, diagonal)
-        self.check_groups(path, x, index, sets, hexes, quads, step, diagonal)
+        self.check_groups(path, x, index, sets, hexes, quads, step, diagonal, report)
         junction = self.check_report(report, kinds)
         print(f"{part} {layers} layers, order {order}: {len(hexes)} hexes, scaled Jacobian min {sj.min():.3f} avg "
               f"{sj.mean():.3f}, volume {100 * (volume / self.volumes[part] - 1):+.2e} %, junctions "
               f"{len(report['junctions'])}, worst min {junction['scaled_jacobian']['min']:.3f} avg "
               f"{junction['scaled_jacobian']['avg']:.3f}")
-        return x, rows, diagonal
+        return x, report
 
     def test_walls_on_a_holed_plate_and_twins(self):
         """A plate of no rectangle (a notch cut off), two round holes, a rib oblique to its sides ending inside it,
@@ -276,6 +288,20 @@ class JunctionMeshing(unittest.TestCase):
             self.volumes[name] = write_sample_twin(part, step, scale, turn)
             with self.subTest(part=name):
                 self.check_part(name, step, 2, 1, ["T"])
+
+    def test_filleted_feet_twins(self):
+        """The filleted feet in metres (x 1e-3: the fillets' cylinders become B-spline surfaces, found by their
+        curvature) and turned 30 degrees about a skew axis. (The box in metres meshes, but some nodes of its B-spline
+        bends are grouped 0.3-0.4 mm off their faces, as box_partition's in metres: not checked here.)"""
+        for part, suffix, scale, turn in (("plate_rib_fillet", "metres", 1e-3, 0.0),
+                                          ("plate_rib_fillet", "turned", 1.0, 30.0),
+                                          ("box_rib_fillet", "turned", 1.0, 30.0)):
+            name = f"{part}_{suffix}"
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_sample_twin(part, step, scale, turn)
+            with self.subTest(part=name):
+                _, report = self.check_part(name, step, 2, 1, ["T"])
+                self.assertEqual(len(report["small_features"]["foot_fillets_smoothed"]["faces"]), FILLETS[part])
 
     def test_crossing_ribs_twins(self):
         """Ribs crossing: square, the crossing rib lower and thinner (1.5 x 6: the rib along X stays whole, the
@@ -307,8 +333,11 @@ class JunctionMeshing(unittest.TestCase):
                     if order == 2 and part in STRAIGHT:
                         self.check_mid_edge_nodes(x, rows, diagonal)
                     quads = self.check_conformal(x, hexes, step, diagonal)
-                    self.check_groups(path, x, index, sets, hexes, quads, step, diagonal)
+                    self.check_groups(path, x, index, sets, hexes, quads, step, diagonal, report)
                     junction = self.check_report(report, PARTS[part])
+                    if part.endswith("_fillet"):
+                        self.assertEqual(len(report["small_features"]["foot_fillets_smoothed"]["faces"]),
+                                         FILLETS[part])
                     print(f"{part} {layers} layers, order {order}: {len(hexes)} hexes, scaled Jacobian min {sj.min():.3f} avg "
                           f"{sj.mean():.3f}, volume {100 * (volume / self.volumes[part] - 1):+.2e} %, junction "
                           f"{junction['hexes']} hexes min {junction['scaled_jacobian']['min']:.3f} avg "

@@ -1,0 +1,162 @@
+#include "geometry/foot_fillets.hpp"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Defeaturing.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepLProp_SLProps.hxx>
+#include <BRepTools.hxx>
+#include <Precision.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <set>
+
+#include "geometry/sheet_edges.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr double kSameCurvature = 0.02;  // relative: a fillet's curvature across it varies less
+
+// The radius of a concave fillet face: its larger principal curvature (BRepLProp_SLProps) the same at a 3 x 3 grid
+// of points over its parameter box (a cylinder, a sphere, a torus's tube, also written as a B-spline), its centre of
+// curvature outside the material (the outward normal points at it); none for any other face.
+std::optional<double> filletRadius(const TopoDS_Shape& face) {
+  const BRepAdaptor_Surface s(TopoDS::Face(face));
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(TopoDS::Face(face), u0, u1, v0, v1);
+  std::vector<double> curvature;
+  bool concave = true;
+  for (int i = 1; i <= 3; ++i)
+    for (int k = 1; k <= 3; ++k) {
+      const double u = u0 + 0.25 * i * (u1 - u0), v = v0 + 0.25 * k * (v1 - v0);
+      BRepLProp_SLProps props(s, u, v, 2, Precision::Confusion());
+      if (!props.IsCurvatureDefined()) return std::nullopt;
+      const double kMax = props.MaxCurvature(), kMin = props.MinCurvature();
+      const double kappa = std::abs(kMax) >= std::abs(kMin) ? kMax : kMin;  // signed along props.Normal()
+      if (!(std::abs(kappa) > 0)) return std::nullopt;
+      const gp_Dir n = props.Normal();
+      const Vec3 towardsCentre = Vec3(n.X(), n.Y(), n.Z()) * (1 / kappa);  // the centre of curvature from the point
+      concave = concave && outwardNormal(face, u, v).dot(towardsCentre) > 0;
+      curvature.push_back(std::abs(kappa));
+    }
+  const auto [least, most] = std::minmax_element(curvature.begin(), curvature.end());
+  if (!concave || *most - *least > kSameCurvature * *most) return std::nullopt;
+  return 1 / *most;
+}
+
+// Per face (0-based), the faces it shares an edge with.
+std::vector<std::set<int>> faceNeighbours(const CadSolid& cad) {
+  std::vector<std::set<int>> next(cad.faces.Extent());
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  for (int e = 1; e <= edgeFaces.Extent(); ++e)
+    for (const TopoDS_Shape& a : edgeFaces(e))
+      for (const TopoDS_Shape& b : edgeFaces(e))
+        if (const int i = cad.faces.FindIndex(a) - 1, j = cad.faces.FindIndex(b) - 1; i != j) next[i].insert(j);
+  return next;
+}
+
+// Whether sheet s meets a wall of an earlier sheet in a concave edge (the edge of a foot). [in] sheetOf: per face,
+// its sheet or -1.
+bool standsOnEdges(const std::vector<ConcaveEdge>& concave, const std::vector<int>& sheetOf, int s) {
+  return std::any_of(concave.begin(), concave.end(), [&](const ConcaveEdge& c) {
+    const int a = sheetOf[c.a], b = sheetOf[c.b];
+    return (a == s && b >= 0 && b < s) || (b == s && a >= 0 && a < s);
+  });
+}
+
+// What the fillets are looked for in.
+struct FilletSearch {
+  const CadSolid& cad;
+  std::vector<int> sheetOf;                   // per face, its sheet or -1
+  std::vector<std::set<int>> next;            // faceNeighbours
+  std::vector<std::optional<double>> radius;  // filletRadius per face
+  double largest;                             // a fillet's radius is below it
+};
+
+// The fillets at sheet s's foot: concave fillet faces below the largest radius next to its faces, and next to
+// those (a fillet split in pieces, the fillets round its ends mitred to those along its sides); none unless one of
+// them belongs to or is next to a face of an earlier sheet. [in] f; [in] s. Returns them, 0-based.
+std::set<int> filletsAtFoot(const FilletSearch& f, int s) {
+  auto isFillet = [&](int g) { return f.sheetOf[g] != s && f.radius[g] && *f.radius[g] < f.largest; };
+  std::set<int> found;
+  std::vector<int> front;
+  for (int w = 0; w < static_cast<int>(f.sheetOf.size()); ++w)
+    if (f.sheetOf[w] == s)
+      for (int g : f.next[w])
+        if (isFillet(g) && found.insert(g).second) front.push_back(g);
+  while (!front.empty()) {
+    const int g = front.back();
+    front.pop_back();
+    for (int h : f.next[g])
+      if (isFillet(h) && found.insert(h).second) front.push_back(h);
+  }
+  const bool onEarlier = std::any_of(found.begin(), found.end(), [&](int g) {
+    auto earlier = [&](int h) { return f.sheetOf[h] >= 0 && f.sheetOf[h] < s; };
+    return earlier(g) || std::any_of(f.next[g].begin(), f.next[g].end(), earlier);
+  });
+  return onEarlier ? found : std::set<int>{};
+}
+
+// The part's faces removed by defeaturing, smooth's inputFace set through its history; false if a face of smooth
+// comes from none of the part's.
+bool traceFaces(const CadSolid& cad, BRepAlgoAPI_Defeaturing& defeat, CadSolid& smooth) {
+  smooth.inputFace.assign(smooth.faces.Extent(), -1);
+  for (int f = 1; f <= cad.faces.Extent(); ++f) {
+    const TopoDS_Shape& face = cad.faces(f);
+    if (defeat.IsDeleted(face)) continue;
+    const TopTools_ListOfShape& modified = defeat.Modified(face);
+    std::vector<TopoDS_Shape> images(modified.cbegin(), modified.cend());
+    if (images.empty()) images.push_back(face);
+    for (const TopoDS_Shape& image : images)
+      if (const int i = smooth.faces.FindIndex(image); i > 0) smooth.inputFace[i - 1] = inputFaceOf(cad, f - 1);
+  }
+  return std::find(smooth.inputFace.begin(), smooth.inputFace.end(), -1) == smooth.inputFace.end();
+}
+
+// The part without `faces` (defeatured), or none if OpenCASCADE cannot remove them.
+std::optional<CadSolid> withoutFaces(const CadSolid& cad, const std::set<int>& faces) {
+  try {
+    BRepAlgoAPI_Defeaturing defeat;
+    defeat.SetShape(cad.solid);
+    for (int f : faces) defeat.AddFaceToRemove(cad.faces(f + 1));
+    defeat.SetRunParallel(false);
+    defeat.Build();
+    if (!defeat.IsDone()) return std::nullopt;
+    TopExp_Explorer solid(defeat.Shape(), TopAbs_SOLID);
+    if (!solid.More() || !BRepCheck_Analyzer(solid.Current()).IsValid()) return std::nullopt;
+    CadSolid smooth = prepareSolid(TopoDS::Solid(solid.Current()));
+    smooth.unit = cad.unit;
+    if (!traceFaces(cad, defeat, smooth)) return std::nullopt;
+    return smooth;
+  } catch (const Standard_Failure&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::optional<FootFillets> removeFootFillets(const CadSolid& cad, const WallSides& sides,
+                                             const std::vector<Sheet>& sheets) {
+  FilletSearch search{cad, std::vector<int>(cad.faces.Extent(), -1), faceNeighbours(cad), {}, sides.thickness};
+  for (std::size_t s = 0; s < sheets.size(); ++s)
+    for (int f : sheets[s].faces) search.sheetOf[f] = static_cast<int>(s);
+  for (int f = 1; f <= cad.faces.Extent(); ++f) search.radius.push_back(filletRadius(cad.faces(f)));
+  const std::vector<ConcaveEdge> concave = concaveEdges(cad);
+  std::set<int> fillets;
+  for (int s = 1; s < static_cast<int>(sheets.size()); ++s)
+    if (!standsOnEdges(concave, search.sheetOf, s)) fillets.merge(filletsAtFoot(search, s));
+  if (fillets.empty()) return std::nullopt;
+  std::optional<CadSolid> smooth = withoutFaces(cad, fillets);
+  if (!smooth) return std::nullopt;
+  FootFillets out{std::move(*smooth), std::vector<int>(fillets.begin(), fillets.end()), 0};
+  for (int f : fillets) out.largestRadius = std::max(out.largestRadius, *search.radius[f]);
+  return out;
+}
+
+}  // namespace hexlayer

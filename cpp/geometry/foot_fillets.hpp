@@ -1,0 +1,33 @@
+// Fillets at the feet of walls standing on a sheet (issue 18: "fillets at a rib's foot may be smoothed over when
+// smaller than the quad size; report them, as small_features does"). A sheet that stands on another through fillets
+// meets it in no concave edge, so the cut finds no foot. Its fillets are the curved faces (cylinders, tori, spheres)
+// of radius below the wall thickness joining its faces, across fillet faces, to faces of the sheets before it. They
+// are removed with OpenCASCADE's defeaturing (BRepAlgoAPI_Defeaturing: the faces beside them extended to meet in the
+// sharp edge the fillet rounded), and the part so smoothed is cut and meshed; the pipeline groups the fillets' nodes
+// and element faces by nearness and reports them.
+#pragma once
+#include <TopoDS_Solid.hxx>
+
+#include <optional>
+#include <vector>
+
+#include "geometry/cad_solid.hpp"
+#include "geometry/sheet_junctions.hpp"
+#include "geometry/wall_sides.hpp"
+
+namespace hexlayer {
+
+struct FootFillets {
+  CadSolid smooth;           // the part without them (its inputFace: the input's face each face is, a piece of)
+  std::vector<int> faces;    // the part's faces removed, 0-based
+  double largestRadius = 0;  // of those faces
+};
+
+// [in] cad: the part (pipeline units); [in] sides: its faces' sides; [in] sheets: findSheets's, the first the base.
+// Returns the part without the fillets at the feet of the standing sheets that meet the sheets before them in no
+// concave edge; none if there are no such sheets or fillets, or the defeaturing fails (the cut then refuses the
+// sheet, naming it).
+std::optional<FootFillets> removeFootFillets(const CadSolid& cad, const WallSides& sides,
+                                             const std::vector<Sheet>& sheets);
+
+}  // namespace hexlayer
