@@ -52,15 +52,6 @@ Bnd_Box extremaBox(const TopoDS_Shape& shape) {
   return box;
 }
 
-// The face's boundary in its parameter plane; a foot point within max(1e-5 x the part's diagonal,
-// 1000 x its tolerances) of it, in 3D or in (u, v), is classified exactly.
-std::unique_ptr<UvBoundary> uvBoundary(const TopoDS_Face& face, double diagonal) {
-  const double tolerance = largestTolerance(face), margin = std::max(1e-5 * diagonal, 1e3 * tolerance);
-  const BRepAdaptor_Surface surface(face, false);
-  return std::make_unique<UvBoundary>(face, std::max(surface.UResolution(margin), 1e3 * tolerance),
-                                      std::max(surface.VResolution(margin), 1e3 * tolerance));
-}
-
 // Distance from p to the trimmed face as BRepExtrema_DistShapeShape gives it, built for this query.
 double exactDistance(const TopoDS_Face& face, const gp_Pnt& p) {
   BRepExtrema_DistShapeShape nearest(BRepBuilderAPI_MakeVertex(p).Vertex(), face);
@@ -84,7 +75,7 @@ CadFaces::Face CadFaces::makeFace(const CadSolid& cad, int index) {
   for (int v = 1; v <= vertices.Extent(); ++v) f.vertices.push_back(BRep_Tool::Pnt(TopoDS::Vertex(vertices(v))));
   for (int e = 1; e <= edges.Extent(); ++e) f.edges.push_back(cad.edges.FindIndex(edges(e)) - 1);
   BRepTools::UVBounds(f.face, f.uvBounds[0], f.uvBounds[1], f.uvBounds[2], f.uvBounds[3]);
-  f.boundary = uvBoundary(f.face, cad.diagonal);
+  f.boundary = faceUvBoundary(f.face, cad.diagonal);  // a foot point near the boundary is classified exactly
   return f;
 }
 

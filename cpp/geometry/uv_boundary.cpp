@@ -1,5 +1,6 @@
 #include "geometry/uv_boundary.hpp"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
 #include <Geom2d_Curve.hxx>
@@ -9,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+
+#include "geometry/cad_solid.hpp"
 
 namespace hexlayer {
 namespace {
@@ -130,6 +133,13 @@ UvBoundary::Side UvBoundary::side(double u, double v) const {
   }
   if ((right + left) % 2 != 0) return Side::Undecided;  // the polylines do not close: a gap in a wire
   return right % 2 ? Side::Inside : Side::Outside;
+}
+
+std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal) {
+  const double tolerance = largestTolerance(face), margin = std::max(1e-5 * diagonal, 1e3 * tolerance);
+  const BRepAdaptor_Surface surface(face, false);
+  return std::make_unique<UvBoundary>(face, std::max(surface.UResolution(margin), 1e3 * tolerance),
+                                      std::max(surface.VResolution(margin), 1e3 * tolerance));
 }
 
 }  // namespace hexlayer
