@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace hexlayer {
@@ -22,6 +23,9 @@ class UvBoundary {
   UvBoundary(const TopoDS_Face& face, double marginU, double marginV);
   // Inside or outside the face's wires; Undecided near a pcurve, or if the boundary could not be sampled.
   Side side(double u, double v) const;
+  // A lower bound on the distance from (u, v) to the face's pcurves, in margins (times margin(): in (u, v)); 0 if the
+  // boundary could not be sampled.
+  double clearance(double u, double v) const;
   // The smaller of the two margins (u, v) given at construction.
   double margin() const { return std::min(1 / scaleU_, 1 / scaleV_); }
 
@@ -32,6 +36,8 @@ class UvBoundary {
     double xMin, xMax, yMin, yMax;
   };
   void addPolyline(const std::vector<Sample>& line);
+  // How far (x, y) (scaled) lies from the chunk's box along x and along y (0 within its range).
+  static std::pair<double, double> gaps(const Chunk& c, double x, double y);
 
   double scaleU_, scaleV_;
   bool sampled_ = true;  // false if a pcurve is missing or would need too many segments
