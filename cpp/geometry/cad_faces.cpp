@@ -26,6 +26,14 @@ const double kEps = Precision::Confusion();  // BRepExtrema_DistShapeShape's def
 
 gp_Pnt point(const Vec3& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
 
+// The box BRepBndLib gives a vertex made at p (its tolerance Precision::Confusion()).
+Bnd_Box vertexBox(const gp_Pnt& p) {
+  Bnd_Box box;
+  box.Add(p);
+  box.Enlarge(Precision::Confusion());
+  return box;
+}
+
 // For every face, the faces that share a vertex with it (itself excluded), ascending.
 std::vector<std::vector<int>> vertexNeighbours(const CadSolid& cad) {
   TopTools_IndexedDataMapOfShapeListOfShape facesOfVertex;
@@ -52,15 +60,6 @@ Bnd_Box extremaBox(const TopoDS_Shape& shape) {
   return box;
 }
 
-// The face's boundary in its parameter plane; a foot point within max(1e-5 x the part's diagonal,
-// 1000 x its tolerances) of it, in 3D or in (u, v), is classified exactly.
-std::unique_ptr<UvBoundary> uvBoundary(const TopoDS_Face& face, double diagonal) {
-  const double tolerance = largestTolerance(face), margin = std::max(1e-5 * diagonal, 1e3 * tolerance);
-  const BRepAdaptor_Surface surface(face, false);
-  return std::make_unique<UvBoundary>(face, std::max(surface.UResolution(margin), 1e3 * tolerance),
-                                      std::max(surface.VResolution(margin), 1e3 * tolerance));
-}
-
 // Distance from p to the trimmed face as BRepExtrema_DistShapeShape gives it, built for this query.
 double exactDistance(const TopoDS_Face& face, const gp_Pnt& p) {
   BRepExtrema_DistShapeShape nearest(BRepBuilderAPI_MakeVertex(p).Vertex(), face);
@@ -84,7 +83,7 @@ CadFaces::Face CadFaces::makeFace(const CadSolid& cad, int index) {
   for (int v = 1; v <= vertices.Extent(); ++v) f.vertices.push_back(BRep_Tool::Pnt(TopoDS::Vertex(vertices(v))));
   for (int e = 1; e <= edges.Extent(); ++e) f.edges.push_back(cad.edges.FindIndex(edges(e)) - 1);
   BRepTools::UVBounds(f.face, f.uvBounds[0], f.uvBounds[1], f.uvBounds[2], f.uvBounds[3]);
-  f.boundary = uvBoundary(f.face, cad.diagonal);
+  f.boundary = faceUvBoundary(f.face, cad.diagonal);  // a foot point near the boundary is classified exactly
   return f;
 }
 
@@ -228,9 +227,7 @@ std::optional<double> CadFaceProbe::edgesDistance(const CadFaces::Face& f, const
 double CadFaceProbe::distance(int face, const Vec3& at) {
   const CadFaces::Face& f = faces_.face(face);
   const gp_Pnt p = point(at);
-  Bnd_Box pointBox;  // as BRepBndLib boxes a vertex made at p
-  pointBox.Add(p);
-  pointBox.Enlarge(Precision::Confusion());
+  const Bnd_Box pointBox = vertexBox(p);
   std::optional<double> nearest;
   if (!f.vertices.empty()) nearest = vertexDistance(f, p);
   // BRepExtrema tries the face only if its box is near enough: the same answer if the box holds the foot point.
@@ -239,6 +236,26 @@ double CadFaceProbe::distance(int face, const Vec3& at) {
     nearest = std::min(nearest.value_or(*inside), *inside);
   }
   return edgesDistance(f, p, pointBox, nearest).value_or(std::numeric_limits<double>::infinity());
+}
+
+// BRepExtrema_DistanceSS's vertex-face solution (the extremum of Extrema_ExtPS, set up as BRepExtrema_ExtPF does, and
+// its point) where BRepExtrema_DistShapeShape keeps it alone: the face is tried (its box is within the distance, plus
+// the precision, of p) and every vertex and edge solution is farther by more than the precision. On a plane (u, v)
+// are lengths: every boundary point is at least hypot(distance, the foot point's clearance) from p.
+std::optional<std::pair<double, gp_Pnt>> CadFaceProbe::planeFoot(int face, const gp_Pnt& p) {
+  const CadFaces::Face& f = faces_.face(face);
+  Surface& s = surface(face);
+  if (s.adaptor.GetType() != GeomAbs_Plane || f.extremaBox.IsVoid()) return std::nullopt;
+  s.extrema.Perform(p);
+  if (!s.extrema.IsDone() || s.extrema.NbExt() != 1) return std::nullopt;
+  double u = 0, v = 0;
+  s.extrema.Point(1).Parameter(u, v);
+  if (f.boundary->side(u, v) != UvBoundary::Side::Inside) return std::nullopt;
+  const double distance = std::sqrt(s.extrema.SquareDistance(1));
+  const double apart = f.boundary->clearance(u, v) * f.boundary->margin();
+  if (std::hypot(distance, apart) - distance <= 10 * kEps) return std::nullopt;
+  if (vertexBox(p).Distance(f.extremaBox) > distance + kEps) return std::nullopt;
+  return std::make_pair(distance, s.extrema.Point(1).Value());
 }
 
 // True if p is in the face's box and nearer to the face than its tolerance.

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
@@ -84,6 +85,12 @@ class CadFaceProbe {
   // True if p is closer to `face` than the face's tolerance (BRep_Tool::Tolerance, ~1e-7), FreeCAD's test.
   bool lies(int face, const Vec3& p);
   FacesAtPoint facesAt(int face, const Vec3& p);
+  // The point of the planar face `face` nearest to p, and its distance, as BRepExtrema_DistShapeShape from a vertex at
+  // p gives them (its one solution, to the last bit) where that is p's foot point on the plane, well inside the face
+  // by the face's UvBoundary, with every edge and vertex of the face farther from p by more than 10 x BRepExtrema's
+  // precision; nullopt elsewhere (or for a face that is not a plane): BRepExtrema is to answer.
+  // [in] face: 0-based; [in] p: the point.
+  std::optional<std::pair<double, gp_Pnt>> planeFoot(int face, const gp_Pnt& p);
 
  private:
   struct Surface {

@@ -1,11 +1,14 @@
 #include "geometry/ray_caster.hpp"
 
-#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
+#include <ElCLib.hxx>
+#include <ElSLib.hxx>
+#include <IntAna_IntConicQuad.hxx>
 #include <TopoDS.hxx>
 #include <gp_Lin.hxx>
 
 #include <algorithm>
+#include <cmath>
 
 #include "geometry/bnd_box.hpp"
 
@@ -42,23 +45,85 @@ std::optional<int> cleanCrossings(const std::vector<RayHit>& hits, double tolera
 
 bool before(const RayHit& a, const RayHit& b) { return a.w < b.w || (a.w == b.w && a.face < b.face); }
 
+// IntCurveSurface_Inter's tolerances (its TOLERANCE_ANGULAIRE and TOLTANGENCY).
+constexpr double kAngular = 1e-8;
+constexpr double kTangency = 1e-8;
+
+// IntCurveSurface_Inter::AppendPoint's test of a hit's parameters: within the surface's bounds (the face's, the
+// intersector's surface being restricted to them), up to kTangency.
+bool inBounds(const BRepAdaptor_Surface& s, double u, double v) {
+  return s.FirstUParameter() - u < kTangency && u - s.LastUParameter() < kTangency &&
+         s.FirstVParameter() - v < kTangency && v - s.LastVParameter() < kTangency;
+}
+
+// IntCurveSurface_ComputeTransitions: In or Out by the sign of the cosine between the line and the surface's normal
+// D1U x D1V at (u, v) (Tangent within kAngular), turned as IntCurvesFace_Intersector::InternalCall turns it on a
+// reversed face.
+IntCurveSurface_TransitionOnCurve transition(const BRepAdaptor_Surface& s, const gp_Lin& line, double u, double v) {
+  gp_Pnt at;
+  gp_Vec du, dv;
+  s.D1(u, v, at, du, dv);
+  const gp_Vec normal = du.Crossed(dv);
+  const double norm = normal.Magnitude();
+  if (norm <= kAngular) return IntCurveSurface_Tangent;
+  gp_Vec tangent(line.Direction());
+  tangent.Normalize();
+  const double cosine = normal.Dot(tangent) / norm;
+  if (std::abs(cosine) <= kAngular) return IntCurveSurface_Tangent;
+  const bool in = (cosine < 0) != (s.Face().Orientation() == TopAbs_REVERSED);
+  return in ? IntCurveSurface_In : IntCurveSurface_Out;
+}
+
 }  // namespace
 
-RayCaster::RayCaster(const CadSolid& cad, double tolerance) : boxes_(faceBoxes(cad, tolerance)), tree_(boxes_) {
+RayCaster::RayCaster(const CadSolid& cad, double tolerance)
+    : boxes_(faceBoxes(cad, tolerance)), tolerance_(tolerance), diagonal_(cad.diagonal), tree_(boxes_) {
   for (int f = 1; f <= cad.faces.Extent(); ++f) {
     const TopoDS_Face& face = TopoDS::Face(cad.faces(f));
     faces_.push_back(std::make_unique<IntCurvesFace_Intersector>(face, tolerance));
-    const BRepAdaptor_Surface surface(face, false);
-    const GeomAbs_SurfaceType type = surface.GetType();
+    auto plane = std::make_unique<PlaneFace>();
+    plane->surface.Initialize(face, true);  // as the intersector's: within the face's parameter bounds
+    const GeomAbs_SurfaceType type = plane->surface.GetType();
     analytic_.push_back(type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone ||
                         type == GeomAbs_Sphere || type == GeomAbs_Torus);
-    planes_.push_back(type == GeomAbs_Plane ? std::optional<gp_Pln>(surface.Plane()) : std::nullopt);
+    if (type == GeomAbs_Plane) plane->plane = plane->surface.Plane();
+    planes_.push_back(type == GeomAbs_Plane ? std::move(plane) : nullptr);
   }
+}
+
+const UvBoundary* RayCaster::boundary(PlaneFace& face) const {
+  if (!face.boundary) face.boundary = faceUvBoundary(face.surface.Face(), diagonal_);
+  // The intersector classifies with max(tolerance, the edges' tolerances): the band left undecided must hold it (the
+  // margin is at least 1e-5 x the diagonal, the tolerance 1e-7 x the diagonal as WallRays, the tet filter and the
+  // side classification cast: a factor 100).
+  return face.boundary->margin() >= 10 * tolerance_ ? face.boundary.get() : nullptr;
+}
+
+// IntCurvesFace_Intersector::Perform on a plane, as OpenCASCADE 7.6 computes it: IntAna_IntConicQuad's line-plane
+// point and parameter (IntCurveSurface_Inter::PerformConicSurf, AppendIntAna), ElSLib's (u, v) of it, the bounds and
+// the transition of AppendPoint, the point on the line at w; the classification of (u, v) on the face by its
+// UvBoundary where that decides (IntCurvesFace_Intersector::InternalCall's keeps IN and ON).
+RayCaster::PlaneHit RayCaster::planeHit(int f, const gp_Lin& line, double wMin, double wMax,
+                                        std::vector<RayHit>& hits) {
+  PlaneFace& face = *planes_[f];
+  const IntAna_IntConicQuad meet(line, face.plane, kAngular);
+  if (!meet.IsDone() || meet.IsParallel() || meet.IsInQuadric() || meet.NbPoints() != 1) return PlaneHit::kNone;
+  const double w = meet.ParamOnConic(1);
+  double u = 0, v = 0;
+  ElSLib::Parameters(face.plane, meet.Point(1), u, v);
+  if (!inBounds(face.surface, u, v) || w < wMin || w > wMax) return PlaneHit::kNone;
+  const UvBoundary* quick = boundary(face);
+  const UvBoundary::Side side = quick ? quick->side(u, v) : UvBoundary::Side::Undecided;
+  if (side == UvBoundary::Side::Outside) return PlaneHit::kNone;
+  if (side == UvBoundary::Side::Undecided) return PlaneHit::kUndecided;
+  const gp_Pnt p = ElCLib::Value(w, line);
+  hits.push_back({w, f, Vec3(p.X(), p.Y(), p.Z()), u, v, transition(face.surface, line, u, v)});
+  return PlaneHit::kHit;
 }
 
 bool RayCaster::missesPlane(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax) const {
   if (!planes_[f]) return false;
-  const gp_Ax3& frame = planes_[f]->Position();
+  const gp_Ax3& frame = planes_[f]->plane.Position();
   const Vec3 normal(frame.Direction().X(), frame.Direction().Y(), frame.Direction().Z());
   const Vec3 origin(frame.Location().X(), frame.Location().Y(), frame.Location().Z());
   const double across = normal.dot(dir.normalized());  // w as OpenCASCADE measures it: along the unit direction
@@ -84,8 +149,13 @@ std::vector<std::pair<double, int>> RayCaster::candidates(const Vec3& from, cons
 void RayCaster::hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax,
                            std::vector<RayHit>& hits) {
   if (missesPlane(f, from, dir, wMin, wMax)) return;
+  const gp_Lin line(gp_Pnt(from.x(), from.y(), from.z()), gp_Dir(dir.x(), dir.y(), dir.z()));
+  if (planes_[f] && planeHit(f, line, wMin, wMax, hits) != PlaneHit::kUndecided) {
+    ++closedForm_;
+    return;
+  }
   IntCurvesFace_Intersector& on = *faces_[f];
-  on.Perform(gp_Lin(gp_Pnt(from.x(), from.y(), from.z()), gp_Dir(dir.x(), dir.y(), dir.z())), wMin, wMax);
+  on.Perform(line, wMin, wMax);
   for (int i = 1; on.IsDone() && i <= on.NbPnt(); ++i) {
     const gp_Pnt& p = on.Pnt(i);
     hits.push_back(

@@ -1,7 +1,10 @@
 // Where a line meets the faces of a CAD solid, with only the faces whose boxes the line passes looked at (a
 // box tree built once), where OpenCASCADE's IntCurvesFace_ShapeIntersector tries every face for every ray: the
-// side classification and the sweep cast a few rays per sample or node, so that was rays x faces.
+// side classification and the sweep cast a few rays per sample or node, so that was rays x faces. On a planar face
+// the hit is computed in closed form and classified with the face's UvBoundary, the intersector asked only near the
+// face's boundary: its own classification walks every edge of the face at every hit.
 #pragma once
+#include <BRepAdaptor_Surface.hxx>
 #include <IntCurveSurface_TransitionOnCurve.hxx>
 #include <IntCurvesFace_Intersector.hxx>
 #include <gp_Pln.hxx>
@@ -13,6 +16,7 @@
 #include "core/box_tree.hpp"
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
+#include "geometry/uv_boundary.hpp"
 
 namespace hexlayer {
 
@@ -27,8 +31,8 @@ struct RayHit {
 
 class RayCaster {
  public:
-  // [in] cad: its faces, kept by reference; [in] tolerance: the intersectors' (a point within it of a face's
-  // boundary is on the face).
+  // [in] cad: its faces, kept by reference, and its diagonal; [in] tolerance: the intersectors' (a point within it of
+  // a face's boundary is on the face).
   RayCaster(const CadSolid& cad, double tolerance);
 
   // [in] from, dir: the line from + w dir (dir unit); [in] wMin, wMax: the range of w looked at.
@@ -47,6 +51,9 @@ class RayCaster {
 
   const TopoDS_Face& face(int f) const { return faces_[f]->Face(); }
 
+  // How many face queries a planar face answered in closed form (not asking its intersector) so far.
+  long closedFormAnswers() const { return closedForm_; }
+
  private:
   // The faces whose boxes the line meets in the range, by where it enters them, with that w.
   std::vector<std::pair<double, int>> candidates(const Vec3& from, const Vec3& dir, double wMin, double wMax) const;
@@ -63,8 +70,23 @@ class RayCaster {
   // on the face (costly on a face with many edges).
   bool missesPlane(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax) const;
 
-  std::vector<bool> analytic_;                 // per face: its surface is a plane, cylinder, cone, sphere or torus
-  std::vector<std::optional<gp_Pln>> planes_;  // per face: its plane, if it is one
+  // A planar face as IntCurvesFace_Intersector sees it, and its boundary for the quick classification.
+  struct PlaneFace {
+    BRepAdaptor_Surface surface;           // restricted to the face's parameter bounds, as the intersector's
+    gp_Pln plane;                          // the surface's
+    std::unique_ptr<UvBoundary> boundary;  // built at the face's first hit in range
+  };
+  enum class PlaneHit { kNone, kHit, kUndecided };
+  // The hit of the line on planar face f in [wMin, wMax] computed as the intersector does (kHit: appended to hits),
+  // or kNone; kUndecided where the hit lies near the face's boundary (the intersector is to decide).
+  PlaneHit planeHit(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits);
+  // The face's UvBoundary if its margin is far above the intersectors' tolerance, else null (no quick test).
+  const UvBoundary* boundary(PlaneFace& face) const;
+
+  std::vector<bool> analytic_;                      // per face: its surface is a plane, cylinder, cone, sphere or torus
+  std::vector<std::unique_ptr<PlaneFace>> planes_;  // per face: null if it is not a plane
+  double tolerance_, diagonal_;
+  long closedForm_ = 0;
   BoxTree tree_;
 };
 

@@ -1,5 +1,6 @@
 #include "geometry/uv_boundary.hpp"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
 #include <Geom2d_Curve.hxx>
@@ -9,6 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "geometry/cad_solid.hpp"
 
 namespace hexlayer {
 namespace {
@@ -113,12 +117,31 @@ void UvBoundary::addPolyline(const std::vector<Sample>& line) {
   }
 }
 
+std::pair<double, double> UvBoundary::gaps(const Chunk& c, double x, double y) {
+  return {std::max({c.xMin - x, 0.0, x - c.xMax}), std::max({c.yMin - y, 0.0, y - c.yMax})};
+}
+
+// The distance to the nearest polyline segment (chunks whose box is farther than the nearest so far skipped), less
+// the polylines' largest distance from their pcurves (kSag).
+double UvBoundary::clearance(double u, double v) const {
+  if (!sampled_) return 0;
+  const double x = u * scaleU_, y = v * scaleV_;
+  double nearest = std::numeric_limits<double>::infinity();  // squared
+  for (const Chunk& c : chunks_) {
+    const auto [dx, dy] = gaps(c, x, y);
+    if (dx * dx + dy * dy >= nearest) continue;
+    for (std::size_t i = 0; i + 1 < c.points.size(); ++i)
+      nearest = std::min(nearest, squaredDistance(x, y, c.points[i], c.points[i + 1]));
+  }
+  return std::max(0.0, std::sqrt(nearest) - kSag);
+}
+
 UvBoundary::Side UvBoundary::side(double u, double v) const {
   if (!sampled_) return Side::Undecided;
   const double x = u * scaleU_, y = v * scaleV_;
   int right = 0, left = 0;  // crossings of the line through the point parallel to u, on either side
   for (const Chunk& c : chunks_) {
-    const double dx = std::max({c.xMin - x, 0.0, x - c.xMax}), dy = std::max({c.yMin - y, 0.0, y - c.yMax});
+    const auto [dx, dy] = gaps(c, x, y);
     const bool near = dx * dx + dy * dy < 1;
     if (!near && dy > 0) continue;
     for (std::size_t i = 0; i + 1 < c.points.size(); ++i) {
@@ -130,6 +153,13 @@ UvBoundary::Side UvBoundary::side(double u, double v) const {
   }
   if ((right + left) % 2 != 0) return Side::Undecided;  // the polylines do not close: a gap in a wire
   return right % 2 ? Side::Inside : Side::Outside;
+}
+
+std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal) {
+  const double tolerance = largestTolerance(face), margin = std::max(1e-5 * diagonal, 1e3 * tolerance);
+  const BRepAdaptor_Surface surface(face, false);
+  return std::make_unique<UvBoundary>(face, std::max(surface.UResolution(margin), 1e3 * tolerance),
+                                      std::max(surface.VResolution(margin), 1e3 * tolerance));
 }
 
 }  // namespace hexlayer

@@ -4,6 +4,9 @@
 #pragma once
 #include <TopoDS_Face.hxx>
 
+#include <algorithm>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace hexlayer {
@@ -20,6 +23,11 @@ class UvBoundary {
   UvBoundary(const TopoDS_Face& face, double marginU, double marginV);
   // Inside or outside the face's wires; Undecided near a pcurve, or if the boundary could not be sampled.
   Side side(double u, double v) const;
+  // A lower bound on the distance from (u, v) to the face's pcurves, in margins (times margin(): in (u, v)); 0 if the
+  // boundary could not be sampled.
+  double clearance(double u, double v) const;
+  // The smaller of the two margins (u, v) given at construction.
+  double margin() const { return std::min(1 / scaleU_, 1 / scaleV_); }
 
  private:
   // A run of at most 16 segments of one pcurve's polyline, with its bounding box.
@@ -28,10 +36,17 @@ class UvBoundary {
     double xMin, xMax, yMin, yMax;
   };
   void addPolyline(const std::vector<Sample>& line);
+  // How far (x, y) (scaled) lies from the chunk's box along x and along y (0 within its range).
+  static std::pair<double, double> gaps(const Chunk& c, double x, double y);
 
   double scaleU_, scaleV_;
   bool sampled_ = true;  // false if a pcurve is missing or would need too many segments
   std::vector<Chunk> chunks_;
 };
+
+// A face's UvBoundary with the margins the exact classifiers' callers use: max(1e-5 x the part's diagonal, 1000 x the
+// face's largest tolerance) in 3D, turned into (u, v) by the surface's resolution (at least 1000 x that tolerance).
+// [in] face: the face; [in] diagonal: the part's bounding-box diagonal. Returns the boundary (built here).
+std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal);
 
 }  // namespace hexlayer

@@ -2,6 +2,7 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRep_Tool.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
@@ -13,6 +14,7 @@
 #include "core/box_tree.hpp"
 #include "core/threads.hpp"
 #include "geometry/bnd_box.hpp"
+#include "geometry/cad_faces.hpp"
 
 namespace hexlayer {
 
@@ -29,7 +31,10 @@ bool mayBeWithin(const Vec3& p, const Box& box, double limit) {
 }  // namespace
 
 WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides)
-    : pieceOfFace_(cad.faces.Extent(), -1), tools_(threadCount()) {
+    : pieceOfFace_(cad.faces.Extent(), -1),
+      tools_(threadCount()),
+      cadFaces_(std::make_unique<CadFaces>(cad)),
+      probes_(threadCount()) {
   auto piece = [](const TopoDS_Shape& shape, int face, int lateral = -1) {
     Piece w{shape, face, lateral, {}};
     BRepBndLib::AddOptimal(shape, w.box, false, false);  // exact geometry, not the triangulation
@@ -177,6 +182,7 @@ std::optional<FacePoint> WallProjector::nearestOf(const std::vector<std::pair<do
 // one built for the query: Perform recomputes all but the piece's sub-shapes and their boxes).
 std::optional<WallProjector::Hit> WallProjector::distance(int piece, const TopoDS_Vertex& vertex) const {
   const std::size_t thread = static_cast<std::size_t>(threadIndex());
+  if (const std::optional<Hit> foot = planeFoot(piece, vertex, thread)) return foot;
   Distance own;
   Distance& tool = thread < tools_.size() ? tools_[thread][piece] : own;
   if (!tool) {
@@ -188,6 +194,20 @@ std::optional<WallProjector::Hit> WallProjector::distance(int piece, const TopoD
   if (!tool->IsDone() || tool->NbSolution() == 0) return std::nullopt;
   const gp_Pnt q = tool->PointOnShape2(1);
   return Hit{tool->Value(), FacePoint{Vec3(q.X(), q.Y(), q.Z()), pieces_[piece].face}};
+}
+
+// The same answer on a planar face where it is p's foot point on the plane well inside the face
+// (CadFaceProbe::planeFoot), without BRepExtrema; nullopt elsewhere, for an edge, or off the threads' probes.
+std::optional<WallProjector::Hit> WallProjector::planeFoot(int piece, const TopoDS_Vertex& vertex,
+                                                           std::size_t thread) const {
+  const Piece& w = pieces_[piece];
+  if (w.shape.ShapeType() != TopAbs_FACE || thread >= probes_.size()) return std::nullopt;
+  std::unique_ptr<CadFaceProbe>& probe = probes_[thread];
+  if (!probe) probe = std::make_unique<CadFaceProbe>(*cadFaces_);
+  const std::optional<std::pair<double, gp_Pnt>> foot = probe->planeFoot(w.face, BRep_Tool::Pnt(vertex));
+  if (!foot) return std::nullopt;
+  const gp_Pnt& q = foot->second;
+  return Hit{foot->first, FacePoint{Vec3(q.X(), q.Y(), q.Z()), w.face}};
 }
 
 }  // namespace hexlayer

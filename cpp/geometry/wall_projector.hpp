@@ -20,6 +20,8 @@
 namespace hexlayer {
 
 class BoxTree;
+class CadFaces;
+class CadFaceProbe;
 
 // The queries may run on several OpenMP threads at once: each thread keeps its own OpenCASCADE distance tools
 // (one per face or edge, built at its first query), the answers are the same bits on any thread.
@@ -79,6 +81,8 @@ class WallProjector {
   std::optional<FacePoint> nearestOf(const std::vector<std::pair<double, int>>& order, const TopoDS_Vertex& vertex,
                                      const Known& known) const;
   std::optional<Hit> distance(int piece, const TopoDS_Vertex& vertex) const;
+  // distance()'s answer in closed form on a planar face where that is certain, else nullopt. [in] thread: the caller's.
+  std::optional<Hit> planeFoot(int piece, const TopoDS_Vertex& vertex, std::size_t thread) const;
 
   std::vector<Piece> pieces_;
   std::array<PieceSet, 3> faces_;                      // by side: bottom, lateral, top (Side + 1)
@@ -86,6 +90,10 @@ class WallProjector {
   std::array<std::map<int, PieceSet>, 3> rimEdgesOf_;  // by side and lateral face: its rim edges
   std::vector<int> pieceOfFace_;                       // per face: its piece (-1: none)
   mutable std::vector<std::vector<Distance>> tools_;   // per thread, per piece (built at its first query)
+  // The faces for the closed form on planes (CadFaceProbe::planeFoot), and a probe per thread (built at its first
+  // query): on a face with many edges BRepExtrema walks them all for every point.
+  std::unique_ptr<CadFaces> cadFaces_;
+  mutable std::vector<std::unique_ptr<CadFaceProbe>> probes_;
 };
 
 }  // namespace hexlayer

@@ -1,8 +1,19 @@
 // Parts built in code for the unit tests (header-only, no test of its own): CAD solids that several test files
 // mesh or classify, so that each is written once.
 #pragma once
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Ax2.hxx>
 
+#include <cmath>
+#include <vector>
+
+#include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
 
 namespace hexlayer::test_parts {
@@ -10,6 +21,40 @@ namespace hexlayer::test_parts {
 // [in] dx, dy, dz. The box [0, dx] x [0, dy] x [0, dz], prepared as the pipeline prepares a solid (unit 1).
 inline CadSolid box(double dx, double dy, double dz) {
   return prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), dx, dy, dz).Solid());
+}
+
+// [in] s: the scale. A 60 x 40 x 2 plate with an 11 x 7 grid of Ø2 through holes at 5 pitch (77 holes: its top and
+// bottom faces have 78 wires), all lengths times s, prepared as the pipeline prepares a solid.
+inline CadSolid plateWithManyHoles(double s) {
+  TopoDS_Compound holes;
+  BRep_Builder builder;
+  builder.MakeCompound(holes);
+  for (int i = 1; i <= 11; ++i)
+    for (int j = 1; j <= 7; ++j)
+      builder.Add(
+          holes, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(5 * i * s, 5 * j * s, -s), gp_Dir(0, 0, 1)), s, 4 * s).Shape());
+  const TopoDS_Shape plate =
+      BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60 * s, 40 * s, 2 * s).Shape(), holes);
+  TopExp_Explorer solid(plate, TopAbs_SOLID);
+  return prepareSolid(TopoDS::Solid(solid.Current()));
+}
+
+// [in] s: the scale. Points of plateWithManyHoles(s) on and near its edges and vertices: on the holes' rims, the
+// plate's edges and a corner, and 1e-12 .. 0.3 (times s) off them in and out.
+inline std::vector<Vec3> pointsNearEdges(double s) {
+  std::vector<Vec3> points;
+  for (double off : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-7, -1e-7, 1e-5, -1e-5, 1e-3, -1e-3, 0.3, -0.3}) {
+    for (int k = 0; k < 8; ++k) {  // round the rim of the hole at (25, 15), and at (5, 5) by the plate's corner
+      const double a = 0.61 + k * M_PI / 4;
+      points.push_back(Vec3(25 + (1 + off) * std::cos(a), 15 + (1 + off) * std::sin(a), 2) * s);
+      points.push_back(Vec3(5 + (1 + off) * std::cos(a), 5 + (1 + off) * std::sin(a), 0) * s);
+    }
+    points.push_back(Vec3(off, off, 2) * s);          // the corner
+    points.push_back(Vec3(60 - off, 17.3, 0) * s);    // an edge
+    points.push_back(Vec3(31.7, 40 + off, 2) * s);    // an edge
+    points.push_back(Vec3(25 + 1 + off, 15, 2) * s);  // a circle's seam
+  }
+  return points;
 }
 
 }  // namespace hexlayer::test_parts

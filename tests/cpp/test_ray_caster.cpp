@@ -1,7 +1,8 @@
 // RayCaster (geometry/ray_caster.hpp): the hits of a line on a solid's faces, the nearest one, and inside or
 // outside by the parity of a ray's crossings, against OpenCASCADE's intersector and classifier that try every face,
 // on a plate with a grid of holes (many faces), its faces planes and B-splines (where the inside test leaves every
-// point to OpenCASCADE's classifier), scaled by 1, 1e-3 and 1e3.
+// point to OpenCASCADE's classifier), scaled by 1, 1e-3 and 1e3; its closed-form hits on planar faces against each
+// face's own intersector on a plate with 77 holes, near its edges and vertices too.
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
@@ -14,9 +15,14 @@
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 
+#include <algorithm>
+#include <cmath>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "geometry/ray_caster.hpp"
+#include "test_parts.hpp"
 
 using namespace hexlayer;
 
@@ -105,4 +111,66 @@ TEST(RayCaster, InsideAsOpenCascadesClassifier) {
       EXPECT_GT(outside, 150);
       EXPECT_LT(unsure, 10);
     }
+}
+
+namespace {
+
+// Every hit of the line on every face by its own IntCurvesFace_Intersector, as RayCaster::all orders them.
+std::vector<RayHit> everyFacesHits(std::vector<std::unique_ptr<IntCurvesFace_Intersector>>& faces, const gp_Lin& line,
+                                   double wMin, double wMax) {
+  std::vector<RayHit> hits;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    IntCurvesFace_Intersector& on = *faces[f];
+    on.Perform(line, wMin, wMax);
+    for (int i = 1; on.IsDone() && i <= on.NbPnt(); ++i) {
+      const gp_Pnt& p = on.Pnt(i);
+      hits.push_back({on.WParameter(i), static_cast<int>(f), Vec3(p.X(), p.Y(), p.Z()), on.UParameter(i),
+                      on.VParameter(i), on.Transition(i)});
+    }
+  }
+  std::sort(hits.begin(), hits.end(),
+            [](const RayHit& a, const RayHit& b) { return a.w < b.w || (a.w == b.w && a.face < b.face); });
+  return hits;
+}
+
+}  // namespace
+
+// The closed-form hits on planar faces against each face's own OpenCASCADE intersector (what RayCaster asked before):
+// the same hits, faces, parameters, points and transitions, to the last bit, for lines through the plate at many
+// angles and through points on and near its edges and vertices (those near the boundary left to the intersector).
+TEST(RayCaster, ClosedFormPlaneHitsAsTheIntersectorsOnAPlateWithManyHoles) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const CadSolid cad = test_parts::plateWithManyHoles(s);
+    ASSERT_EQ(cad.faces.Extent(), 6 + 77);
+    const double tolerance = 1e-7 * cad.diagonal;
+    RayCaster rays(cad, tolerance);
+    std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces;
+    for (int f = 1; f <= cad.faces.Extent(); ++f)
+      faces.push_back(std::make_unique<IntCurvesFace_Intersector>(TopoDS::Face(cad.faces(f)), tolerance));
+    std::vector<std::pair<Vec3, Vec3>> lines;  // point, direction
+    for (int k = 0; k < 60; ++k)               // through the plate at many angles, some through holes
+      lines.emplace_back(Vec3(3 + 0.97 * k, 2 + 0.61 * k, 1) * s,
+                         Vec3(std::cos(0.7 * k), std::sin(0.7 * k), 0.2 + std::sin(1.3 * k)).normalized());
+    for (const Vec3& p : test_parts::pointsNearEdges(s))  // near the edges: across the plate, oblique and along it
+      for (const Vec3& d : {Vec3(0, 0, 1), Vec3(0.3, -0.2, 1).normalized(), Vec3(1, 0.4, 1e-3).normalized()})
+        lines.emplace_back(p, d);
+    std::size_t hitCount = 0;
+    for (const auto& [p, d] : lines) {
+      const std::vector<RayHit> hits = rays.all(p, d, -100 * s, 100 * s);
+      const std::vector<RayHit> expected = everyFacesHits(faces, lineOf(p, d), -100 * s, 100 * s);
+      ASSERT_EQ(hits.size(), expected.size()) << p.transpose() / s << " along " << d.transpose();
+      for (std::size_t i = 0; i < hits.size(); ++i) {
+        EXPECT_EQ(hits[i].face, expected[i].face);
+        EXPECT_EQ(hits[i].w, expected[i].w);
+        EXPECT_EQ(hits[i].u, expected[i].u);
+        EXPECT_EQ(hits[i].v, expected[i].v);
+        EXPECT_EQ(hits[i].point, expected[i].point);
+        EXPECT_EQ(hits[i].transition, expected[i].transition);
+      }
+      hitCount += hits.size();
+    }
+    EXPECT_GT(hitCount, 500u);
+    EXPECT_GT(rays.closedFormAnswers(), 300);  // the closed form was used (most rays are far from the edges)
+  }
 }

@@ -1,5 +1,5 @@
 // Inside / outside of a trimmed face in its parameter plane (geometry/uv_boundary.hpp): the top of a plate with
-// a hole, decided away from the face's edges, undecided next to them.
+// a hole, decided away from the face's edges, undecided next to them; the clearance from its edges.
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Surface.hxx>
@@ -12,6 +12,7 @@
 #include <gp_Ax2.hxx>
 
 #include <cmath>
+#include <tuple>
 
 #include "geometry/uv_boundary.hpp"
 
@@ -39,6 +40,19 @@ TEST(UvBoundary, PlateWithAHoleDecidesAwayFromItsEdges) {
     EXPECT_EQ(side(25 + 2e-4, 15), UvBoundary::Side::Undecided) << "by the hole's edge";
     EXPECT_EQ(side(5, 1e-4), UvBoundary::Side::Undecided) << "by the rim";
     EXPECT_EQ(side(25.01, 15), UvBoundary::Side::Inside);
+    // The clearance (in margins of 1e-3) is a lower bound on the distance to the nearest edge, short of it by at
+    // most the polylines' sag (a quarter margin): 3 to the rim at y = 0, 1 to the hole, 0 on an edge.
+    auto clearance = [&](double x, double y) {
+      double u = 0, v = 0;
+      ElSLib::Parameters(plane, gp_Pnt(x, y, 2), u, v);
+      return boundary.clearance(u, v);
+    };
+    for (const auto& [x, y, d] :
+         {std::tuple{6.0, 3e-3, 3.0}, {25.001, 15.0, 1.0}, {5.0, 0.0, 0.0}, {12.0, 15.0, 3e3}}) {
+      EXPECT_LE(clearance(x, y), d) << x << " " << y;
+      EXPECT_GE(clearance(x, y), d - 0.25) << x << " " << y;
+    }
+    EXPECT_EQ(boundary.margin(), 1e-3);
     return;
   }
   FAIL() << "no top face";

@@ -1,17 +1,24 @@
 // WallProjector (π_t, π_b for points, §3): nearest point of the top or the bottom CAD wall, on the
-// trimmed faces (their edges when the point lies beyond them), exact on curved walls.
+// trimmed faces (their edges when the point lies beyond them), exact on curved walls; on planar faces its closed form
+// as BRepExtrema's to the last bit.
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
+#include "geometry/cad_faces.hpp"
 #include "geometry/wall_projector.hpp"
+#include "test_parts.hpp"
 
 using namespace hexlayer;
 
@@ -76,4 +83,41 @@ TEST(WallProjector, RimMiddleIsHalfWayBetweenTheWallsRimEdges) {
   EXPECT_NEAR(m.x(), 25 + 6.98, 1e-6);
   EXPECT_NEAR(m.y(), 15, 1e-6);
   EXPECT_NEAR(m.z(), 1, 1e-6);
+}
+
+// The closed form on planar faces (CadFaceProbe::planeFoot) against BRepExtrema_DistShapeShape built for the query
+// (what WallProjector asked before): the same distance and point, to the last bit, for points above, below and in
+// the plate with 77 holes, on and near its edges and vertices and at heights from 0 to 30 x the wall.
+TEST(WallProjector, PlaneFeetAreBRepExtremasOnAPlateWithManyHoles) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const CadSolid cad = test_parts::plateWithManyHoles(s);
+    const WallProjector walls(cad, classifyWallSides(cad));
+    std::vector<Vec3> points;
+    for (int k = 0; k < 80; ++k) points.push_back(Vec3(0.77 * k - 1, 0.53 * k - 1, 0.9 + 0.4 * std::sin(k)) * s);
+    for (const Vec3& p : test_parts::pointsNearEdges(s))
+      for (double z : {0.0, 1e-9, 0.5, 1.3, 60.0}) points.push_back(p + Vec3(0, 0, z * s));
+    CadFaces cadFaces(cad);
+    CadFaceProbe probe(cadFaces);
+    int faces = 0, closedForm = 0;
+    for (const Vec3& p : points)
+      for (int f : {0, 1, 2, 3, 4, 5, 40}) {  // the box's faces and a hole's
+        const TopoDS_Vertex v = BRepBuilderAPI_MakeVertex(gp_Pnt(p.x(), p.y(), p.z())).Vertex();
+        BRepExtrema_DistShapeShape exact(v, cad.faces(f + 1));
+        ASSERT_TRUE(exact.IsDone() && exact.NbSolution() > 0);
+        const std::optional<FacePoint> on = walls.projectOntoFace(f, p);
+        ASSERT_TRUE(on);
+        const gp_Pnt q = exact.PointOnShape2(1);
+        EXPECT_EQ(on->point, Vec3(q.X(), q.Y(), q.Z())) << p.transpose() / s << " on face " << f;
+        EXPECT_EQ(on->face, f);
+        ++faces;
+        if (const auto foot = probe.planeFoot(f, gp_Pnt(p.x(), p.y(), p.z()))) {
+          EXPECT_EQ(foot->first, exact.Value());
+          EXPECT_TRUE(foot->second.IsEqual(q, 0));
+          ++closedForm;
+        }
+      }
+    EXPECT_GT(faces, 1000);
+    EXPECT_GT(closedForm, 300);  // the closed form was used (not near an edge, not beside a face)
+  }
 }
