@@ -150,9 +150,11 @@ def cases(suite, parts):
             "all": target + samples + scaling + many + junctions}[suite]
 
 
-# The junction samples meshed all-hex (issue 18: walls standing on flat and curved walls).
+# The junction samples meshed all-hex (issue 18: walls standing on flat and curved walls, ribs crossing, filleted
+# feet).
 JUNCTIONS = ("plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside", "plate_boss",
-             "plate_ribs_tee", "shell_rib", "box_partition", "lbracket_gusset")
+             "plate_ribs_tee", "shell_rib", "box_partition", "lbracket_gusset", "plate_rib_grid", "plate_rib_fillet",
+             "box_rib_fillet")
 # Parts with many features (scripts/make_samples.py --only many) and the real parts.
 MANY = ("keyboard_plate", "plate_200_holes")
 REAL = os.path.join(os.path.dirname(ROOT), "shared", "parts", "real")

@@ -36,6 +36,9 @@ constexpr double kGapSpacing[] = {1, 0.7, 0.5};  // of the boundary's edge lengt
 constexpr double kGoodGap = 0.3;                 // scaled Jacobian of the gap's worst quad that needs no finer try
 constexpr int kAlongNormal = 4;                  // steps of a footprint node onto the chordal surface along a normal
 constexpr int kSmoothing = 10;                   // iterations of the gap's quads (as the quad stage's)
+constexpr double kAcute = 70 * M_PI / 180;       // a boundary corner of the gap below this gets a quad of its own
+constexpr int kWedgeSteps = 12;                  // the wedge quad's fourth corner: tried at kWedgeSteps^2 places
+constexpr double kFlat = 0.05;  // scaled Jacobian of a Gmsh quad of the gap taken out with a neighbour and split anew
 
 using Quad = std::array<int, 4>;
 using Edge = std::pair<int, int>;  // directed, the gap on its left
@@ -559,8 +562,189 @@ double smoothGap(const std::vector<Vec3>& at, const GapMap& map, const ChordalLo
   return worst;
 }
 
-// The gap's quads on the sheet: of Gmsh's algorithms (kGapAlgorithms) the one whose worst quad, smoothed, is best;
-// finer (kGapSpacing) while none of them gives quads only, all at least kGoodGap.
+// The angle from u counter-clockwise to v, in [0, 2 pi).
+double ccwAngle(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
+  const double a = std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
+  return a < 0 ? a + 2 * M_PI : a;
+}
+
+// Whether the segments pq and rs cross (touching at an end is not crossing).
+bool segmentsCross(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r,
+                   const Eigen::Vector2d& s) {
+  auto side = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+    const Eigen::Vector2d u = b - a, v = c - a;
+    return u.x() * v.y() - u.y() * v.x();
+  };
+  return side(p, q, r) * side(p, q, s) < 0 && side(r, s, p) * side(r, s, q) < 0;
+}
+
+// The gap with a quad cut off each acute corner of its boundary: Gmsh's triangles there span the wedge from side to
+// side (its first edges are shorter than the mesh size), and the triangle at the tip, one edge inside, pairs with the
+// next one along a side into a quad with three boundary nodes in a line (a 180-degree corner: folded, every try).
+struct WedgeCut {
+  std::vector<Eigen::Vector2d> at;  // the points given, then the new corners
+  std::vector<double> spacing;      // per new corner, the mean length of its two edges
+  std::vector<Surface> surfaces;    // each acute corner replaced in its loop by its quad's new corner
+  std::vector<Quad> quads;          // the quads cut off, counter-clockwise
+};
+
+// How good the quad (prev, c, next, p) cut off the corner c is and what it leaves: the least sine of its corners at
+// prev, next and p and of the gap's corners left at prev and next (a reflex one counts as good), at most the ratio of
+// its new edges' lengths to h (or of h to them). [in] before, prev, c, next, after: the loop's points round c;
+// [in] p, h. Returns it, <= 0 if the quad folds.
+double wedgeQuality(const std::array<Eigen::Vector2d, 5>& round, const Eigen::Vector2d& p, double h) {
+  const auto& [before, prev, c, next, after] = round;
+  const double inQuad[] = {ccwAngle(c - prev, p - prev), ccwAngle(p - next, c - next), ccwAngle(prev - p, next - p)};
+  double q = 1;
+  for (double a : inQuad) q = a < M_PI ? std::min(q, std::sin(a)) : -1;
+  for (double a : {ccwAngle(p - prev, before - prev), ccwAngle(after - next, p - next)})
+    q = std::min(q, a < M_PI ? std::sin(a) : 1.0);
+  for (double l : {(p - prev).norm(), (p - next).norm()}) q = std::min(q, std::min(l / h, h / l));
+  return q;
+}
+
+// The best fourth corner of the quad cut off the acute corner at loop[k] (wedgeQuality, over directions inside the
+// corner and distances up to twice its edges' mean length h). [in] at, loop, k; [out] h. Returns it and its quality.
+std::pair<Eigen::Vector2d, double> wedgeCorner(const std::vector<Eigen::Vector2d>& at, const Loop& loop, std::size_t k,
+                                               double& h) {
+  const std::size_t m = loop.size();
+  std::array<Eigen::Vector2d, 5> round;
+  for (std::size_t i = 0; i < 5; ++i) round[i] = at[loop[(k + m + i - 2) % m]];
+  const Eigen::Vector2d &prev = round[1], &c = round[2], &next = round[3];
+  h = 0.5 * ((prev - c).norm() + (next - c).norm());
+  const double opening = ccwAngle(next - c, prev - c), from = std::atan2((next - c).y(), (next - c).x());
+  std::pair<Eigen::Vector2d, double> best{c, -1};
+  for (int i = 1; i < kWedgeSteps; ++i)
+    for (int j = 1; j <= kWedgeSteps; ++j) {
+      const double a = from + opening * i / kWedgeSteps, r = 2 * h * j / kWedgeSteps;
+      const Eigen::Vector2d p = c + r * Eigen::Vector2d(std::cos(a), std::sin(a));
+      if (const double q = wedgeQuality(round, p, h); q > best.second) best = {p, q};
+    }
+  return best;
+}
+
+// Whether the new edges prev-p and p-next cross none of the surface's boundary edges.
+bool clearOfBoundary(const std::vector<Eigen::Vector2d>& at, const Surface& s, int prev, int next,
+                     const Eigen::Vector2d& p) {
+  for (const Loop& loop : s)
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Eigen::Vector2d &u = at[loop[k]], &v = at[loop[(k + 1) % loop.size()]];
+      if (segmentsCross(at[prev], p, u, v) || segmentsCross(p, at[next], u, v)) return false;
+    }
+  return true;
+}
+
+// The gap's acute boundary corners (below kAcute) cut off, each by the best quad (wedgeCorner) that folds nothing;
+// a corner next to one cut stays. [in] at: the loops' points in the map; [in] surfaces.
+WedgeCut cutAcuteCorners(const std::vector<Eigen::Vector2d>& at, const std::vector<Surface>& surfaces) {
+  WedgeCut cut{at, {}, surfaces, {}};
+  for (Surface& s : cut.surfaces)
+    for (Loop& loop : s) {
+      std::set<int> touched;
+      for (std::size_t k = 0; loop.size() >= 4 && k < loop.size(); ++k) {
+        const int prev = loop[(k + loop.size() - 1) % loop.size()], c = loop[k], next = loop[(k + 1) % loop.size()];
+        if (touched.count(prev) || touched.count(c) ||
+            ccwAngle(cut.at[next] - cut.at[c], cut.at[prev] - cut.at[c]) >= kAcute)
+          continue;
+        double h = 0;
+        const auto [p, quality] = wedgeCorner(cut.at, loop, k, h);
+        if (quality <= 0 || !clearOfBoundary(cut.at, s, prev, next, p)) continue;
+        const int added = static_cast<int>(cut.at.size());
+        cut.at.push_back(p), cut.spacing.push_back(h), cut.quads.push_back({prev, c, next, added});
+        loop[k] = added, touched.insert({prev, next});
+      }
+    }
+  return cut;
+}
+
+// The worst scaled Jacobian of the quads in the plane z = 0, negative for a clockwise one (turned over).
+double worstInPlane(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads) {
+  double worst = 1;
+  for (const Quad& q : quads) {
+    const std::array<Vec3, 4> c{nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]};
+    const double sj = quadScaledJacobian(c);
+    worst = std::min(worst, (c[2] - c[0]).cross(c[3] - c[1]).z() < 0 ? -sj : sj);
+  }
+  return worst;
+}
+
+// The ways of splitting a hexagon (corners h, counter-clockwise) into quads: along each of its three long diagonals
+// into two, and round the node `centre` into three, from an even or from an odd corner.
+std::vector<std::vector<Quad>> hexagonSplits(const std::array<int, 6>& h, int centre) {
+  std::vector<std::vector<Quad>> ways;
+  for (int k = 0; k < 3; ++k)
+    ways.push_back({{h[k], h[k + 1], h[k + 2], h[k + 3]}, {h[k + 3], h[(k + 4) % 6], h[(k + 5) % 6], h[k]}});
+  for (int k = 0; k < 2; ++k)
+    ways.push_back({{h[k], h[k + 1], h[k + 2], centre},
+                    {h[k + 2], h[k + 3], h[(k + 4) % 6], centre},
+                    {h[(k + 4) % 6], h[(k + 5) % 6], h[k], centre}});
+  return ways;
+}
+
+// The hexagon of the quads a and b sharing the edge from a's corner k to the next (counter-clockwise, b with it the
+// other way round).
+std::array<int, 6> hexagonOf(const Quad& a, int k, const Quad& b) {
+  const int at = static_cast<int>(std::find(b.begin(), b.end(), a[k]) - b.begin());
+  return {a[(k + 1) % 4], a[(k + 2) % 4], a[(k + 3) % 4], a[k], b[(at + 1) % 4], b[(at + 2) % 4]};
+}
+
+// Quads a (poor) and b (its neighbour) split anew the best way (hexagonSplits), if that is better than both: a node
+// at the hexagon's centroid added to q's if used. [in,out] q; [in] a, b: indices of its quads; [in] k: their edge, from
+// a's corner k. Returns whether they were.
+bool splitPairAnew(QuadMesh& q, int a, int b, int k) {
+  const std::array<int, 6> h = hexagonOf(q.quads[a], k, q.quads[b]);
+  Vec3 centroid = Vec3::Zero();
+  for (int n : h) centroid += q.nodes[n] / 6;
+  q.nodes.push_back(centroid);
+  const int centre = static_cast<int>(q.nodes.size()) - 1;
+  std::vector<Quad> best;
+  double bestWorst = worstInPlane(q.nodes, {q.quads[a], q.quads[b]});
+  for (const std::vector<Quad>& way : hexagonSplits(h, centre))
+    if (const double w = worstInPlane(q.nodes, way); w > bestWorst) best = way, bestWorst = w;
+  if (best.size() < 3) q.nodes.pop_back();
+  if (best.empty()) return false;
+  q.quads[a] = best[0], q.quads[b] = best[1];
+  if (best.size() == 3) q.quads.push_back(best[2]);
+  return true;
+}
+
+// Gmsh's quads of the gap, in the plane, with a poor one (below kFlat: where Blossom left two triangles in an acute
+// corner, paired by quad_completion, three boundary nodes in a line) split anew with a neighbour (splitPairAnew)
+// while that makes them better. [in,out] q.
+void repairPoorQuads(QuadMesh& q) {
+  for (std::size_t tries = 0; tries <= q.quads.size(); ++tries) {
+    std::map<std::pair<int, int>, std::vector<int>> quadsOf;
+    for (int i = 0; i < static_cast<int>(q.quads.size()); ++i)
+      for (int c = 0; c < 4; ++c) quadsOf[std::minmax(q.quads[i][c], q.quads[i][(c + 1) % 4])].push_back(i);
+    bool split = false;
+    for (int i = 0; !split && i < static_cast<int>(q.quads.size()); ++i) {
+      if (worstInPlane(q.nodes, {q.quads[i]}) >= kFlat) continue;
+      for (int c = 0; !split && c < 4; ++c)
+        for (int j : quadsOf[std::minmax(q.quads[i][c], q.quads[i][(c + 1) % 4])])
+          if (j != i && !split) split = splitPairAnew(q, i, j, c);
+    }
+    if (!split) return;
+  }
+}
+
+// One try at the gap: Gmsh's quads of the surfaces (the wedge quads added), checked to fill the gap, smoothed on the
+// sheet. [in] at: every node so far; [in] map, chordal; [in] surfaces: the gap's; [in] cut: what Gmsh meshes;
+// [in] spacing: the mesh size at each of cut.at; [in] algorithm. Returns the quads; [out] worst: the worst's scaled
+// Jacobian (smoothGap). Throws geometryError if Gmsh fails or its quads do not fill the gap.
+QuadMesh gapTry(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
+                const std::vector<Surface>& surfaces, const WedgeCut& cut, const std::vector<double>& spacing,
+                int algorithm, double& worst) {
+  QuadMesh q = gmshGapQuads(cut.at, spacing, cut.surfaces, algorithm);
+  q.quads.insert(q.quads.end(), cut.quads.begin(), cut.quads.end());
+  repairPoorQuads(q);
+  checkGapQuads(q, surfaces);
+  worst = smoothGap(at, map, chordal, q);
+  return q;
+}
+
+// The gap's quads on the sheet: of Gmsh's algorithms (kGapAlgorithms), on the gap as it is and with its acute
+// corners cut off (cutAcuteCorners), the one whose worst quad, smoothed, is best; finer (kGapSpacing) while none of
+// them gives quads only, all at least kGoodGap.
 // [in] at: every node so far; [in] map, chordal, surfaces; [out] worst: its worst quad's scaled Jacobian. Throws
 // geometryError if none gives unfolded quads.
 QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
@@ -569,20 +753,24 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalL
   for (const Surface& s : surfaces)
     for (const Loop& loop : s)
       for (int n : loop) flat[n] = map.at(at[n]);
+  std::vector<WedgeCut> ways{{flat, {}, surfaces, {}}};
+  if (WedgeCut cut = cutAcuteCorners(flat, surfaces); !cut.quads.empty()) ways.push_back(std::move(cut));
   QuadMesh best;
   double bestWorst = 0;
   std::string failure = "its quads are folded";
   for (double finer : kGapSpacing) {
-    std::vector<double> spacing = loopSpacing(at, surfaces);
-    for (double& h : spacing) h *= finer;
-    for (int algorithm : kGapAlgorithms) {
-      try {
-        QuadMesh q = gmshGapQuads(flat, spacing, surfaces, algorithm);
-        checkGapQuads(q, surfaces);
-        if (const double worst = smoothGap(at, map, chordal, q); worst > bestWorst)
-          best = std::move(q), bestWorst = worst;
-      } catch (const Error& e) {
-        failure = e.what();
+    for (const WedgeCut& way : ways) {
+      std::vector<double> spacing = loopSpacing(at, surfaces);
+      spacing.insert(spacing.end(), way.spacing.begin(), way.spacing.end());
+      for (double& h : spacing) h *= finer;
+      for (int algorithm : kGapAlgorithms) {
+        try {
+          double tried = 0;
+          QuadMesh q = gapTry(at, map, chordal, surfaces, way, spacing, algorithm, tried);
+          if (tried > bestWorst) best = std::move(q), bestWorst = tried;
+        } catch (const Error& e) {
+          failure = e.what();
+        }
       }
     }
     if (bestWorst >= kGoodGap) break;

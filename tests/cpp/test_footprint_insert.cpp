@@ -57,6 +57,20 @@ void addStrip(FootprintQuads& f, double x0, double x1, double y, double w, int r
     }
 }
 
+// A strip standing on the far side of the strip addStrip put first in f (sideRows x sideColumns quads): its end the
+// side's nodes from .. from + rows, `columns` quads of length l along the direction at `angle` degrees to the side
+// (parallelograms), scaled by s.
+void addObliqueStrip(FootprintQuads& f, int sideColumns, int sideRows, int from, int rows, int columns, double l,
+                     double angle, double s) {
+  const int first = static_cast<int>(f.nodes.size()), side = sideRows * (sideColumns + 1) + from;
+  const Vec3 along = s * l * Vec3(std::cos(angle * M_PI / 180), std::sin(angle * M_PI / 180), 0);
+  for (int j = 1; j <= columns; ++j)
+    for (int i = 0; i <= rows; ++i) f.nodes.push_back(f.nodes[side + i] + j * along);
+  auto node = [&](int i, int j) { return j == 0 ? side + i : first + (j - 1) * (rows + 1) + i; };
+  for (int j = 0; j < columns; ++j)
+    for (int i = 0; i < rows; ++i) f.quads.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)});
+}
+
 // A ring round (cx, cy): radii r0..r1 in `rows` quads, `around` quads round it.
 void addRing(FootprintQuads& f, double cx, double cy, double r0, double r1, int rows, int around, double s) {
   const int first = static_cast<int>(f.nodes.size());
@@ -148,6 +162,21 @@ TEST(FootprintInsert, TwoStripsShareAGap) {
 // A boss's foot: a ring of 2 rows, 24 quads round; the sheet's quads inside it are meshed again too.
 TEST(FootprintInsert, ARing) {
   expectInserted([](FootprintQuads& f, double s) { addRing(f, 30, 20, 4, 6, 2, 24, s); }, 0.3);
+}
+
+// Ribs crossing at 45 degrees: a strip standing on another's side at 45 degrees, its end three of that side's nodes
+// (2 mm across, 2.83 mm along the side), its quads 2.33 mm long. In the 45-degree wedge between the two, Blossom left
+// two triangles (the wedge's tip and the next one along the side) that were paired into a quad with three boundary
+// nodes in a line (folded, every try): the wedge gets a quad of its own, and a poor quad is split anew with a
+// neighbour.
+TEST(FootprintInsert, AStripAt45DegreesOnAnother) {
+  constexpr double kAlong = M_SQRT2;  // the first strip's quads' length: the second's end is two of them
+  expectInserted(
+      [](FootprintQuads& f, double s) {
+        addStrip(f, 10.3, 10.3 + 30 * kAlong, 20.5, 2, 2, 30, s);
+        addObliqueStrip(f, 30, 2, 7, 2, 6, 2.33, 45, s);
+      },
+      0.3);
 }
 
 // A foot that runs off the sheet is refused.

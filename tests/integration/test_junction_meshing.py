@@ -307,10 +307,12 @@ class JunctionMeshing(unittest.TestCase):
         """Ribs crossing: square, the crossing rib lower and thinner (1.5 x 6: the rib along X stays whole, the
         crossing one's two segments stand on both its walls); at 60 degrees (the two feet offset along the rib by
         1.15 mm: its columns there lean), also of one height and thickness (both ribs cut where they cross, the
-        larger runs through); in metres; turned 30 degrees about a skew axis."""
+        larger runs through), at 60 and at 45 degrees (the plate's gap has 45-degree wedges); in metres; turned 30
+        degrees about a skew axis."""
         for name, angle, low, thin, scale, turn in (("cross_square", 90, 6.0, 1.5, 1.0, 0.0),
                                                     ("cross_oblique", 60, 6.0, 1.5, 1.0, 0.0),
                                                     ("cross_oblique_level", 60, 10.0, 2.0, 1.0, 0.0),
+                                                    ("cross_acute_level", 45, 10.0, 2.0, 1.0, 0.0),
                                                     ("cross_square_metres", 90, 6.0, 1.5, 1e-3, 0.0),
                                                     ("cross_oblique_turned", 60, 6.0, 1.5, 1.0, 30.0)):
             step = os.path.join(self.tmp.name, name + ".step")
