@@ -667,7 +667,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   if (!o.dropJunctions && sides.ownSideFaces.empty())
     if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1) {
-      if (std::optional<FootFillets> smooth = removeFootFillets(cad, sides, sheets))
+      if (std::optional<FootFillets> smooth =
+              clock.run("foot_fillets", [&] { return removeFootFillets(cad, sides, sheets); }))
         return meshWithoutFootFillets(cad, *smooth, o, result, clock);
       return meshJunctions(cad, sides, mergeCrossingRibs(cad, sides, sheets), o, result, clock);
     }
