@@ -265,6 +265,16 @@ std::optional<TopoDS_Face> faceOn(const SurfaceEdges& on, const TopoDS_Wire& wir
   return std::nullopt;
 }
 
+// Whether sheet s meets rim (lateral) faces in concave edges (a post standing on the edge of a wall) but no wall.
+bool standsOnRimFace(const Junctions& j, int s) {
+  return std::any_of(j.concave.begin(), j.concave.end(), [&](const ConcaveEdge& c) {
+    const bool aIn = std::count(j.sheets[s].faces.begin(), j.sheets[s].faces.end(), c.a) > 0;
+    const bool bIn = std::count(j.sheets[s].faces.begin(), j.sheets[s].faces.end(), c.b) > 0;
+    const int other = aIn ? c.b : c.a;
+    return aIn != bIn && j.sides.faces[other].side == Side::Lateral;
+  });
+}
+
 // The feet of standing sheet s: faces on the surfaces of the base's walls under it, bounded by its foot edges.
 std::vector<Foot> footFaces(const Junctions& j, int s) {
   std::vector<Foot> feet;
@@ -273,6 +283,9 @@ std::vector<Foot> footFaces(const Junctions& j, int s) {
     for (const TopoDS_Wire& wire : closedWires(on.edges, on.surface, tolerance))
       if (const std::optional<TopoDS_Face> face = faceOn(on, wire, tolerance))
         feet.push_back({s, on.base, on.face, *face, areaOf(*face)});
+  if (feet.empty() && standsOnRimFace(j, s))
+    throw geometryError("T-junction: the sheet at " + sheetPlace(j.cad, j.sheets[s]) +
+                        " stands on the edge (a rim face) of another sheet, not on its wall, which is not meshed yet");
   if (feet.empty())
     throw geometryError("T-junction: no foot found for the sheet at " + sheetPlace(j.cad, j.sheets[s]) +
                         " on the sheet it stands on");

@@ -1,7 +1,7 @@
 // Junction cut (geometry/junction_cut.hpp): a part with sheets standing on a base sheet cut into one piece per
 // sheet, each a one-sheet part (no junction left), along feet that both pieces share and that lie on the base's
 // wall. Run on a plate with a rib inside it, a rib running across it (a foot open at the plate's rims, closed
-// along them), two ribs, and on copies scaled by 1e-3 and 1e3.
+// along them), two ribs, and on copies scaled by 1e-3 and 1e3; a tab on a plate's rim face is refused, saying so.
 #include <gtest/gtest.h>
 #include <BRepAdaptor_Surface.hxx>
 
@@ -217,6 +217,27 @@ TEST(JunctionCut, WallsStandingOnWalls) {
       }
       EXPECT_EQ(standingOnWalls.size(), onWalls);
       expectPiecesAddUp(c);
+    }
+  }
+}
+
+// A tab 1 thick sticking out of the 2 mm plate's side face (mid-thickness): it stands on the plate's rim face, not on
+// its wall; refused, saying so (a post on a wall's edge, as on the Framework cover).
+TEST(JunctionCut, ASheetOnARimFaceIsRefusedSayingSo) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const TopoDS_Solid solid = boxes({{0, 0, 0, 60, 40, 2}, {60, 15, 0.5, 12, 10, 1}}, s);
+    const CadSolid cad = prepareSolid(solid, normalizingUnit(solid));
+    const WallSides sides = classifyWallSides(cad);
+    const std::vector<Sheet> sheets = findSheets(cad, sides);
+    ASSERT_EQ(sheets.size(), 2u);
+    try {
+      cutAtJunctions(cad, sides, sheets);
+      ADD_FAILURE() << "not refused";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
+      EXPECT_NE(std::string(e.what()).find("stands on the edge (a rim face) of another sheet"), std::string::npos)
+          << e.what();
     }
   }
 }
