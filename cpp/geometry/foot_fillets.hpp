@@ -1,7 +1,8 @@
 // Fillets at the feet of walls standing on a sheet (issue 18: "fillets at a rib's foot may be smoothed over when
 // smaller than the quad size; report them, as small_features does"). A sheet that stands on another through fillets
-// meets it in no concave edge, so the cut finds no foot. Its fillets are the curved faces (cylinders, tori, spheres)
-// of radius below the wall thickness joining its faces, across fillet faces, to faces of the sheets before it. They
+// meets it in no concave edge, so the cut finds no foot. Its fillets are the concave faces of one radius below the
+// wall thickness (their larger principal curvature the same across them: cylinders, spheres, tori's tubes, also
+// written as B-splines) joining its faces, across such faces, to faces of the sheets before it. They
 // are removed with OpenCASCADE's defeaturing (BRepAlgoAPI_Defeaturing: the faces beside them extended to meet in the
 // sharp edge the fillet rounded), and the part so smoothed is cut and meshed; the pipeline groups the fillets' nodes
 // and element faces by nearness and reports them.
