@@ -228,7 +228,6 @@ std::vector<NodeSet> surfaceNodeSets(const HexMesh& mesh) {
   return sets;
 }
 
-// The groups of the pieces of a split face merged into the input face's, one group per input face in order.
 // The group's nodes sorted, once each; its hex faces sorted by hex, then local face.
 void sortGroup(SurfaceGroup& g) {
   std::sort(g.nodes.begin(), g.nodes.end());
@@ -238,6 +237,7 @@ void sortGroup(SurfaceGroup& g) {
   });
 }
 
+// The groups of the pieces of a split face merged into the input face's, one group per input face in order.
 std::vector<SurfaceGroup> groupsOfInputFaces(std::vector<SurfaceGroup> pieces, const CadSolid& cad) {
   std::vector<SurfaceGroup> merged(*std::max_element(cad.inputFace.begin(), cad.inputFace.end()) + 1);
   for (std::size_t f = 0; f < merged.size(); ++f) merged[f].name = "Face" + std::to_string(f + 1);

@@ -849,13 +849,14 @@ MergedFootprints mergeFeetOnBothSides(const FootprintQuads& footprint, const Cho
   const double near = kMergeOpposite * shortest;
   const std::vector<FootParts> feet = feetParts(footprint);
   std::vector<int> partner(footprint.nodes.size(), -1);  // the node on the other side, for the first foot's nodes
+  std::vector<TriangleTree> trees;                       // per foot, built once
+  for (const FootParts& foot : feet) trees.push_back(footTree(footprint, foot.quads));
   MergedFootprints out;
   for (std::size_t f = 0; f < feet.size(); ++f)
     for (std::size_t g = f + 1; g < feet.size(); ++g) {
       const std::vector<int>&a = feet[f].nodes, &b = feet[g].nodes;
       if (partner[a.front()] >= 0 || partner[b.front()] >= 0) continue;
-      const TriangleTree other = footTree(footprint, feet[g].quads);
-      if (std::none_of(a.begin(), a.end(), [&](int n) { return other.anyWithin(footprint.nodes[n], near); }))
+      if (std::none_of(a.begin(), a.end(), [&](int n) { return trees[g].anyWithin(footprint.nodes[n], near); }))
         continue;  // not at one place
       const std::vector<int> alike = alikeNodes(footprint.nodes, a, b, near);
       for (std::size_t k = 0; k < alike.size(); ++k) {
