@@ -15,6 +15,7 @@
 #include <Bnd_Box.hxx>
 #include <GCE2d_MakeSegment.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <GeomLib.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
@@ -50,7 +51,8 @@ namespace hexlayer {
 namespace {
 
 constexpr double kRunsOn = 0.999;  // cosine: a closing segment this near an open foot chain's direction continues it
-constexpr double kJoin = 1e-7;     // times the part's diagonal: ends of foot edges this close are one point
+constexpr double kOppositeWalls = 0.9;  // cosine: a sheet's two walls at its foot face opposite ways
+constexpr double kJoin = 1e-7;          // times the part's diagonal: ends of foot edges this close are one point
 
 double areaOf(const TopoDS_Shape& face) {
   GProp_GProps props;
@@ -357,6 +359,55 @@ bool crossedInSegments(const std::set<int>& crossers, const std::vector<std::vec
   return false;
 }
 
+// The outward normal of `face` at the middle of its edge `edge`. [in] face, edge.
+Vec3 normalAtEdge(const TopoDS_Face& face, const TopoDS_Edge& edge) {
+  double first = 0, last = 0;
+  const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+  if (pcurve.IsNull()) return Vec3::Zero();
+  const gp_Pnt2d uv = pcurve->Value(0.5 * (first + last));
+  return outwardNormal(face, uv.X(), uv.Y());
+}
+
+// Whether sheet s meets sheet b's walls in concave edges with both of its own walls (two of its faces there face
+// opposite ways): s's thickness ends on b's wall, so s stands on b (a rib's end on another rib's side), whichever
+// is larger. [in] j; [in] s, b: sheets.
+bool bothWallsOn(const Junctions& j, int s, int b) {
+  std::vector<Vec3> normals;
+  for (const ConcaveEdge& c : j.concave)
+    for (const auto& [own, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
+      if (j.sheetOf[own] == s && j.sheetOf[other] == b && j.sides.faces[own].side != Side::Lateral &&
+          j.sides.faces[other].side != Side::Lateral)
+        normals.push_back(normalAtEdge(TopoDS::Face(j.cad.faces(own + 1)), TopoDS::Edge(j.cad.edges(c.edge + 1))));
+  for (std::size_t x = 0; x < normals.size(); ++x)
+    for (std::size_t y = x + 1; y < normals.size(); ++y)
+      if (normals[x].dot(normals[y]) < -kOppositeWalls) return true;
+  return false;
+}
+
+// The sheets reordered so that each standing sheet comes after the standing sheets it stands on (bothWallsOn one
+// way only), else in the order given: the first sheet stays first. [in] cad, sides; [in] sheets: by decreasing area.
+std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, std::vector<Sheet> sheets) {
+  const Junctions j{cad, sides, sheets, sheetOfFaces(cad, sides, sheets), concaveEdges(cad)};
+  const int n = static_cast<int>(sheets.size());
+  std::vector<std::set<int>> under(n);  // the standing sheets each stands on
+  for (int s = 1; s < n; ++s)
+    for (int b = 1; b < n; ++b)
+      if (b != s && bothWallsOn(j, s, b) && !bothWallsOn(j, b, s)) under[s].insert(b);
+  std::vector<int> order;
+  std::vector<char> placed(n, 0);
+  while (static_cast<int>(order.size()) < n) {  // the first sheet whose bases are all placed, again and again
+    int next = -1;
+    for (int s = 0; s < n && next < 0; ++s)
+      if (!placed[s] && std::all_of(under[s].begin(), under[s].end(), [&](int b) { return placed[b] != 0; })) next = s;
+    for (int s = 0; s < n && next < 0; ++s)  // sheets standing on each other in a ring: the rest as given
+      if (!placed[s]) next = s;
+    placed[next] = 1, order.push_back(next);
+  }
+  std::vector<Sheet> ordered;
+  for (int s : order) ordered.push_back(std::move(sheets[s]));
+  return ordered;
+}
+
 }  // namespace
 
 std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
@@ -403,7 +454,7 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
     merged.push_back(sheetOf(cad, sides, f));
   }
   std::stable_sort(merged.begin(), merged.end(), [](const Sheet& x, const Sheet& y) { return x.area > y.area; });
-  return merged;
+  return standingOrder(cad, sides, std::move(merged));
 }
 
 JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {

@@ -36,7 +36,8 @@ struct JunctionCut {
 // through: its segments on each side of a crossing (their walls on the same planes, both meeting the other rib's
 // segments there) become one sheet, and the other rib's segments stand on it. Crossings are taken largest first;
 // a rib whose segments cross one already run through stays in segments there. [in] cad, sides; [in] sheets:
-// findSheets's. Returns the sheets, merged, the largest first.
+// findSheets's. Returns the sheets, merged, the largest first, then each standing sheet after the standing sheets it
+// stands on (both its walls meet theirs: a rib ending on another rib's side, whichever is larger).
 std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets);
 
 // [in] cad: the solid; [in] sides: its faces' sides (classifyWallSides); [in] sheets: findSheets's, the first

@@ -131,6 +131,26 @@ def write_crossing_ribs(path, angle, low, thin, scale, turn):
         gmsh.finalize()
 
 
+def write_rib_network(path, cross_height, cross_end, scale, turn):
+    """Writes test_ribs_ending_on_ribs_twins's part as STEP: a 70 x 50 x 2 plate, two ribs 2 thick and 8 high along
+    Y (x = 10..12 and 56..58, y = 5..45), and a rib 2 thick and `cross_height` high along X at y = 24..26 from the
+    first's side (x = 12) to x = `cross_end` (56: the second's side, an H; less: it ends inside the plate). The rib
+    along X is the larger one when it reaches 56 or beyond 52: a rib larger than the one it ends on. Scaled and
+    turned (turned_and_scaled); returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        plate = occ.addBox(0, 0, 0, 70, 50, 2)
+        ribs = [occ.addBox(x, 5, 2, 2, 40, 8) for x in ((10, 56) if cross_end >= 56 else (10,))]
+        cross = occ.addBox(12, 24, 2, cross_end - 12, 2, cross_height)
+        occ.fuse([(3, plate)], [(3, r) for r in ribs + [cross]])
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
 def turned_and_scaled(gmsh, path, scale, turn):
     """Turns the model's volumes by `turn` degrees about the axis (1, 2, 3), scales them by `scale` and writes them
     as STEP; returns their volume (Gmsh's)."""
@@ -320,6 +340,24 @@ class JunctionMeshing(unittest.TestCase):
             for layers, order in ((2, 1), (3, 2)):
                 with self.subTest(part=name, layers=layers, order=order):
                     self.check_part(name, step, layers, order, ["X", "T", "T"])
+
+    def test_ribs_ending_on_ribs_twins(self):
+        """Ribs ending on ribs' sides: an H (a rib along X between two along Y) of one height (their tops one face),
+        with the rib between taller and lower; a rib ending on another at one end and inside the plate at the other,
+        larger than the one it ends on (it stands on the smaller: the order of the pieces follows who stands on whom,
+        not their size); in metres; turned 30 degrees about a skew axis."""
+        for name, height, end, scale, turn in (("ribs_h", 8.0, 56.0, 1.0, 0.0),
+                                               ("ribs_h_taller", 10.0, 56.0, 1.0, 0.0),
+                                               ("ribs_h_lower", 6.0, 56.0, 1.0, 0.0),
+                                               ("ribs_end_on_smaller", 8.0, 54.0, 1.0, 0.0),
+                                               ("ribs_h_metres", 8.0, 56.0, 1e-3, 0.0),
+                                               ("ribs_end_on_smaller_turned", 8.0, 54.0, 1.0, 30.0)):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_rib_network(step, height, end, scale, turn)
+            kinds = ["T"] * (3 if end >= 56 else 2)
+            for layers, order in ((2, 1), (3, 2)):
+                with self.subTest(part=name, layers=layers, order=order):
+                    self.check_part(name, step, layers, order, kinds)
 
     def test_ribs_on_plates(self):
         for part in PARTS:
