@@ -21,6 +21,7 @@
 #include <GeomLib_IsPlanarSurface.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierSurface.hxx>
+#include <Geom_ElementarySurface.hxx>
 #include <Geom_Plane.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <ShapeAnalysis_Surface.hxx>
@@ -52,6 +53,8 @@ namespace {
 
 constexpr double kRunsOn = 0.999;  // cosine: a closing segment this near an open foot chain's direction continues it
 constexpr double kOppositeWalls = 0.9;  // cosine: a sheet's two walls at its foot face opposite ways
+constexpr int kSeamSamples = 4;         // points per foot edge, less one, that the seam of its surface keeps away from
+constexpr double kOnBoth = 100;         // x kJoin: a gap's closing edge along a curved wall also lies on the base's
 constexpr double kJoin = 1e-7;          // times the part's diagonal: ends of foot edges this close are one point
 
 double areaOf(const TopoDS_Shape& face) {
@@ -137,18 +140,45 @@ gp_Vec outward(const TopoDS_Wire& wire, const gp_Pnt& at, double tolerance) {
 TopoDS_Edge edgeOnSurface(const Handle(Geom_Surface) & surface, const gp_Pnt& a, const gp_Pnt& b, double tolerance) {
   if (GeomAdaptor_Surface(surface).GetType() == GeomAbs_Plane) return BRepBuilderAPI_MakeEdge(a, b).Edge();
   ShapeAnalysis_Surface uv(surface);
-  const gp_Pnt2d ua = uv.ValueOfUV(a, tolerance), ub = uv.ValueOfUV(b, tolerance);
+  const gp_Pnt2d ua = uv.ValueOfUV(a, tolerance);
+  gp_Pnt2d ub = uv.ValueOfUV(b, tolerance);
+  // on a periodic surface (a boss's cylinder), the short way round: b's (u, v) within half a period of a's
+  if (surface->IsUPeriodic()) ub.SetX(ub.X() + surface->UPeriod() * std::round((ua.X() - ub.X()) / surface->UPeriod()));
+  if (surface->IsVPeriodic()) ub.SetY(ub.Y() + surface->VPeriod() * std::round((ua.Y() - ub.Y()) / surface->VPeriod()));
   if (ua.Distance(ub) <= gp::Resolution()) return BRepBuilderAPI_MakeEdge(a, b).Edge();
   TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(GCE2d_MakeSegment(ua, ub).Value(), surface).Edge();
   BRepLib::BuildCurves3d(edge);
   return edge;
 }
 
+// Whether p lies on the surface within `tolerance`. [in] surface, p, tolerance.
+bool liesOn(const Handle(Geom_Surface) & surface, const gp_Pnt& p, double tolerance) {
+  ShapeAnalysis_Surface on(surface);
+  on.ValueOfUV(p, tolerance);
+  return on.Gap() <= tolerance;
+}
+
+// The edge closing a foot chain's gap from a to b on the base wall's surface: where a and b both lie on a curved
+// surface of `along` (the standing sheet's own wall, or another wall it stands on) and the edge along that surface
+// lies on the base's too, that edge (a rib's foot on a plate ends on a boss's foot circle, not on its chord: the two
+// feet meet on one curve); else edgeOnSurface on the base's. [in] surface: the base's; [in] along; [in] a, b.
+TopoDS_Edge closingEdge(const Handle(Geom_Surface) & surface, const std::vector<Handle(Geom_Surface)>& along,
+                        const gp_Pnt& a, const gp_Pnt& b, double tolerance) {
+  for (const Handle(Geom_Surface) & other : along) {
+    if (!liesOn(other, a, tolerance) || !liesOn(other, b, tolerance)) continue;
+    const TopoDS_Edge edge = edgeOnSurface(other, a, b, tolerance);
+    const BRepAdaptor_Curve curve(edge);
+    if (liesOn(surface, curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter())), kOnBoth * tolerance))
+      return edge;
+  }
+  return edgeOnSurface(surface, a, b, tolerance);
+}
+
 // The foot edges joined into closed wires. Open chains are closed by segments on the base wall's surface between
 // their free ends: first an end and the end it runs on to (a rib's foot continued under a rib crossing it), then
 // the nearest free ends (a foot running to the wall's edge, a partition's two edges between walls).
 std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, const Handle(Geom_Surface) & surface,
-                                     double tolerance) {
+                                     const std::vector<Handle(Geom_Surface)>& along, double tolerance) {
   Handle(TopTools_HSequenceOfShape) in = new TopTools_HSequenceOfShape, wires;
   for (const TopoDS_Edge& e : edges) in->Append(e);
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, wires);
@@ -175,7 +205,7 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, cons
             best = ends[i].Distance(ends[j]), bi = i, bj = j;
       if (!std::isfinite(best)) break;
       used[bi] = used[bj] = 1;
-      in->Append(edgeOnSurface(surface, ends[bi], ends[bj], tolerance));
+      in->Append(closingEdge(surface, along, ends[bi], ends[bj], tolerance));
     }
   Handle(TopTools_HSequenceOfShape) closed;
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, closed);
@@ -222,6 +252,31 @@ Handle(Geom_Surface) extendedSurface(const Handle(Geom_Surface) & surface, doubl
   return extended;
 }
 
+// A periodic elementary surface (a boss's cylinder or cone) turned about its axis so that its seam lies in the middle
+// of the widest gap between the edges' points: a foot face across the seam would not cut the solid. Any other
+// surface as it is. [in] surface; [in] edges: the foot edges on it.
+Handle(Geom_Surface)
+    seamAwayFrom(const Handle(Geom_Surface) & surface, const std::vector<TopoDS_Edge>& edges, double tolerance) {
+  const Handle(Geom_ElementarySurface) elementary = Handle(Geom_ElementarySurface)::DownCast(surface);
+  if (elementary.IsNull() || !surface->IsUPeriodic()) return surface;
+  const double period = surface->UPeriod();
+  ShapeAnalysis_Surface uv(surface);
+  std::vector<double> u;
+  for (const TopoDS_Edge& e : edges) {
+    const BRepAdaptor_Curve curve(e);
+    for (int k = 0; k <= kSeamSamples; ++k) {
+      const double t = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * k / kSeamSamples;
+      u.push_back(std::fmod(std::fmod(uv.ValueOfUV(curve.Value(t), tolerance).X(), period) + period, period));
+    }
+  }
+  if (u.empty()) return surface;
+  std::sort(u.begin(), u.end());
+  double gap = u.front() + period - u.back(), middle = u.back() + 0.5 * gap;  // the gap across u = 0 first
+  for (std::size_t i = 0; i + 1 < u.size(); ++i)
+    if (u[i + 1] - u[i] > gap) gap = u[i + 1] - u[i], middle = u[i] + 0.5 * gap;
+  return Handle(Geom_Surface)::DownCast(surface->Rotated(elementary->Position().Axis(), middle));
+}
+
 std::vector<SurfaceEdges> footEdgesBySurface(const Junctions& j, int s) {
   const double tolerance = kJoin * j.cad.diagonal;
   std::vector<SurfaceEdges> surfaces;
@@ -245,6 +300,8 @@ std::vector<SurfaceEdges> footEdgesBySurface(const Junctions& j, int s) {
     if (at == surfaces.end()) at = surfaces.insert(surfaces.end(), SurfaceEdges{surface, plane, base, sheet, {}});
     at->edges.insert(at->edges.end(), edges.begin(), edges.end());
   }
+  for (SurfaceEdges& on : surfaces)
+    if (!on.plane) on.surface = seamAwayFrom(on.surface, on.edges, tolerance);
   return surfaces;
 }
 
@@ -281,8 +338,14 @@ bool standsOnRimFace(const Junctions& j, int s) {
 std::vector<Foot> footFaces(const Junctions& j, int s) {
   std::vector<Foot> feet;
   const double tolerance = kJoin * j.cad.diagonal;
-  for (const SurfaceEdges& on : footEdgesBySurface(j, s))
-    for (const TopoDS_Wire& wire : closedWires(on.edges, on.surface, tolerance))
+  const std::vector<SurfaceEdges> surfaces = footEdgesBySurface(j, s);
+  std::vector<Handle(Geom_Surface)> along;  // the curved walls of the sheet and of those it stands on
+  for (int f : j.sheets[s].faces)
+    if (!planeOf(j.cad.faces(f + 1), tolerance)) along.push_back(BRep_Tool::Surface(TopoDS::Face(j.cad.faces(f + 1))));
+  for (const SurfaceEdges& on : surfaces)
+    if (!on.plane) along.push_back(on.surface);
+  for (const SurfaceEdges& on : surfaces)
+    for (const TopoDS_Wire& wire : closedWires(on.edges, on.surface, along, tolerance))
       if (const std::optional<TopoDS_Face> face = faceOn(on, wire, tolerance))
         feet.push_back({s, on.base, on.face, *face, areaOf(*face)});
   if (feet.empty() && standsOnRimFace(j, s))

@@ -5,15 +5,21 @@
 #include <gtest/gtest.h>
 #include <BRepAdaptor_Surface.hxx>
 
-#include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <GProp_GProps.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <gp_Ax2.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 #include <tuple>
@@ -239,5 +245,45 @@ TEST(JunctionCut, ASheetOnARimFaceIsRefusedSayingSo) {
       EXPECT_NE(std::string(e.what()).find("stands on the edge (a rim face) of another sheet"), std::string::npos)
           << e.what();
     }
+  }
+}
+
+// Two gussets 1.5 thick, 8 long and 6 high ending on a hollow boss (outside R4, bore R2 from the plate's top, 10
+// high) on a 60 x 40 x 2 plate, one on each side: the one along +x ends across the cylinder's seam. Each gusset
+// stands on the plate and on the boss: four pieces of one sheet each, the volumes adding up, a foot of each gusset
+// on the boss's cylinder, and the feet on the plate meeting on the boss's foot circle (their areas add up to the
+// boss's ring and the gussets' feet outside its circle, not cut at their chords), on copies scaled by 1e-3 and 1e3.
+TEST(JunctionCut, GussetsEndingOnABossAcrossItsSeam) {
+  const double r = 4, bore = 2, a = 0.75, x = 30, y = 20, t = 2, in = 3, length = 8;
+  TopoDS_Shape part = test_boxes::boxes({{0, 0, 0, 60, 40, t}}, 1);
+  part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, 1), gp::DZ()), r, 11).Shape()).Shape();
+  for (const double side : {1.0, -1.0}) {
+    const double x0 = side > 0 ? x + in : x - in - length;
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(x0, y - a, 1), length, 2 * a, 7).Shape()).Shape();
+  }
+  part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, t), gp::DZ()), bore, 11).Shape()).Shape();
+  ShapeUpgrade_UnifySameDomain unify(part);
+  unify.Build();
+  // a gusset's foot on the plate: its 2a x (in + length) footprint less the part of the disc in it
+  const double inDisc = a * std::sqrt(r * r - a * a) + r * r * std::asin(a / r) - 2 * a * in;
+  const double plateFeet = M_PI * (r * r - bore * bore) + 2 * (2 * a * length - inDisc);  // the boss's a ring
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const TopoDS_Solid solid = test_boxes::scaled(unify.Shape(), s);
+    const CadSolid cad = prepareSolid(solid, normalizingUnit(solid));
+    const WallSides sides = classifyWallSides(cad);
+    const std::vector<Sheet> sheets = mergeCrossingRibs(cad, sides, findSheets(cad, sides));
+    ASSERT_EQ(sheets.size(), 4u);
+    const JunctionCut cut = cutAtJunctions(cad, sides, sheets);
+    ASSERT_EQ(cut.pieces.size(), 4u);
+    expectPiecesAddUp({cad, sheets, cut});
+    double onPlate = 0;
+    std::set<int> onBoss;
+    for (const Foot& f : cut.feet) {
+      if (f.base == 0) onPlate += f.area;
+      if (f.base > 0 && BRepAdaptor_Surface(f.face).GetType() == GeomAbs_Cylinder) onBoss.insert(f.sheet);
+    }
+    EXPECT_EQ(onBoss.size(), 2u) << "each gusset has a foot on the boss";
+    EXPECT_NEAR(onPlate / (cad.unit * cad.unit) / (s * s) / plateFeet, 1, 1e-6);
   }
 }
