@@ -247,34 +247,45 @@ Handle(Geom_Surface) extendedSurface(const Handle(Geom_Surface) & surface, doubl
       surface->DynamicType() != STANDARD_TYPE(Geom_BezierSurface))
     return surface;
   Handle(Geom_BoundedSurface) extended = Handle(Geom_BoundedSurface)::DownCast(surface->Copy());
-  for (const bool inU : {true, false})
-    for (const bool after : {true, false}) GeomLib::ExtendSurfByLength(extended, length, 1, inU, after);
+  for (const bool inU : {true, false})  // not round a periodic direction (a boss's cylinder in metres): it has no end
+    if (!(inU ? surface->IsUPeriodic() : surface->IsVPeriodic()))
+      for (const bool after : {true, false}) GeomLib::ExtendSurfByLength(extended, length, 1, inU, after);
   return extended;
 }
 
-// A periodic elementary surface (a boss's cylinder or cone) turned about its axis so that its seam lies in the middle
-// of the widest gap between the edges' points: a foot face across the seam would not cut the solid. Any other
-// surface as it is. [in] surface; [in] edges: the foot edges on it.
+// A periodic surface with its seam moved into the middle of the widest gap between the edges' points, where a foot
+// face across the seam would not cut the solid: an elementary one (a boss's cylinder or cone) turned about its axis,
+// a periodic B-spline (the same in metres) with its u origin at the knot nearest to there. Any other surface as it
+// is. [in] surface; [in] edges: the foot edges on it.
 Handle(Geom_Surface)
     seamAwayFrom(const Handle(Geom_Surface) & surface, const std::vector<TopoDS_Edge>& edges, double tolerance) {
   const Handle(Geom_ElementarySurface) elementary = Handle(Geom_ElementarySurface)::DownCast(surface);
-  if (elementary.IsNull() || !surface->IsUPeriodic()) return surface;
-  const double period = surface->UPeriod();
+  const Handle(Geom_BSplineSurface) spline = Handle(Geom_BSplineSurface)::DownCast(surface);
+  if ((elementary.IsNull() && spline.IsNull()) || !surface->IsUPeriodic()) return surface;
+  const double period = surface->UPeriod(), first = spline.IsNull() ? 0 : spline->UKnot(1);
+  auto wrapped = [&](double u) { return first + std::fmod(std::fmod(u - first, period) + period, period); };
   ShapeAnalysis_Surface uv(surface);
   std::vector<double> u;
   for (const TopoDS_Edge& e : edges) {
     const BRepAdaptor_Curve curve(e);
     for (int k = 0; k <= kSeamSamples; ++k) {
       const double t = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * k / kSeamSamples;
-      u.push_back(std::fmod(std::fmod(uv.ValueOfUV(curve.Value(t), tolerance).X(), period) + period, period));
+      u.push_back(wrapped(uv.ValueOfUV(curve.Value(t), tolerance).X()));
     }
   }
   if (u.empty()) return surface;
   std::sort(u.begin(), u.end());
-  double gap = u.front() + period - u.back(), middle = u.back() + 0.5 * gap;  // the gap across u = 0 first
+  double gap = u.front() + period - u.back(), middle = wrapped(u.back() + 0.5 * gap);  // the gap across the seam first
   for (std::size_t i = 0; i + 1 < u.size(); ++i)
     if (u[i + 1] - u[i] > gap) gap = u[i + 1] - u[i], middle = u[i] + 0.5 * gap;
-  return Handle(Geom_Surface)::DownCast(surface->Rotated(elementary->Position().Axis(), middle));
+  if (!elementary.IsNull())
+    return Handle(Geom_Surface)::DownCast(surface->Rotated(elementary->Position().Axis(), middle - first));
+  Handle(Geom_BSplineSurface) moved = Handle(Geom_BSplineSurface)::DownCast(spline->Copy());
+  int nearest = 1;
+  for (int k = 1; k <= moved->NbUKnots(); ++k)
+    if (std::abs(moved->UKnot(k) - middle) < std::abs(moved->UKnot(nearest) - middle)) nearest = k;
+  moved->SetUOrigin(nearest);
+  return moved;
 }
 
 std::vector<SurfaceEdges> footEdgesBySurface(const Junctions& j, int s) {

@@ -29,6 +29,7 @@
 #include "pipeline/surface_groups.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_stage.hpp"
+#include "quadmesh/quad_strips.hpp"
 #include "quality/quality.hpp"
 #include "quality/validation.hpp"
 #include "sweep/quadratic.hpp"
@@ -410,23 +411,39 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
   reportProgress(o.progress, progressNote("", "piece " + std::to_string(pieces - s) + " of " + std::to_string(pieces)));
   std::vector<int> footNode;
   const FootprintQuads footprint = footprintsOn(t, s, footNode);
-  std::vector<int> column;  // per footprint node, the sheet's quad node under it
-  MergedFootprints merged;  // its shift in the part's units
-  MeshResult piece = footprint.quads.empty()
-                         ? meshSolid(t.cut.pieces[s], o)
-                         : meshSolid(t.cut.pieces[s], o, [&](const CadSolid& c, QuadStage& stage) {
-                             const ChordalLocator locator(stage.chordal);
-                             FootprintQuads onWall = footprint;
-                             for (Vec3& p : onWall.nodes) p *= c.unit;
-                             // feet on both sides of the sheet (ribs crossing it) are one
-                             merged = mergeFeetOnBothSides(onChordalSurface(onWall, locator), locator);
-                             merged.shift /= c.unit;
-                             const FootprintInsertion in =
-                                 insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads));
-                             for (int m : merged.node) column.push_back(in.node[m]);
-                             t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
-                             stage.quads = in.quads;
-                           });
+  std::vector<int> column;           // per footprint node, the sheet's quad node under it
+  MergedFootprints merged;           // its shift in the part's units
+  std::vector<FootSurface> ownFeet;  // the piece's feet on the sheets it stands on
+  for (const Foot& f : t.cut.feet)
+    if (f.sheet == s) ownFeet.emplace_back(f.face, tolerance);
+  MeshResult piece = meshSolid(t.cut.pieces[s], o, [&](const CadSolid& c, QuadStage& stage) {
+    std::vector<char> blocked;  // the footprints' quads
+    if (!footprint.quads.empty()) {
+      const ChordalLocator locator(stage.chordal);
+      FootprintQuads onWall = footprint;
+      for (Vec3& p : onWall.nodes) p *= c.unit;
+      // feet on both sides of the sheet (ribs crossing it) are one
+      merged = mergeFeetOnBothSides(onChordalSurface(onWall, locator), locator);
+      merged.shift /= c.unit;
+      const FootprintInsertion in = insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads));
+      for (int m : merged.node) column.push_back(in.node[m]);
+      t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
+      stage.quads = in.quads;
+      std::vector<char> onFootprint(stage.quads.nodes.size(), 0);
+      for (int n : in.node) onFootprint[n] = 1;
+      blocked.resize(stage.quads.quads.size(), 0);
+      for (std::size_t q = 0; q < stage.quads.quads.size(); ++q)
+        blocked[q] = std::all_of(stage.quads.quads[q].begin(), stage.quads.quads[q].end(),
+                                 [&](int n) { return onFootprint[n] != 0; });
+    }
+    // a rim loop all on a foot (a boss's) becomes a closed loop of fixed nodes in the sheet it stands on: even
+    evenRimLoops(
+        stage.quads,
+        [&](const Vec3& p) {
+          return std::any_of(ownFeet.begin(), ownFeet.end(), [&](FootSurface& f) { return f.holds(p / c.unit); });
+        },
+        blocked);
+  });
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty()) {
     const double reach = wallShare * piece.report.thickness + merged.shift;

@@ -18,6 +18,7 @@
 #include "core/union_find.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
+#include "quadmesh/quad_strips.hpp"
 #include "quadmesh/surface_map.hpp"
 
 namespace hexlayer {
@@ -389,9 +390,17 @@ std::vector<Surface> surfacesOf(const Nodes& nodes, const GapMap& map, const std
   return surfaces;
 }
 
+// The sheet's quads, the ones taken out into gaps flagged; a strip of kept quads halved (quad_strips) adds quads.
+struct KeptQuads {
+  std::vector<Quad> quads;
+  std::vector<char> removed;
+};
+
 // All quads need an even number of boundary edges: where a surface has an odd one, its longest free rim edge is
-// halved (a node appended to `nodes`). Throws if it has none.
-void evenBoundaries(Nodes& nodes, const std::set<Edge>& free, std::vector<Surface>& surfaces) {
+// halved (a node appended to `nodes`); with none (a gap inside the sheet round feet whose nodes another wall's mesh
+// fixed), a fixed edge of the kept quads is, and the strip of kept quads from it to the sheet's rim with it (the
+// shortest such strip). Throws if there is neither. [in,out] nodes; [in] free; [in,out] surfaces, kept.
+void evenBoundaries(Nodes& nodes, const std::set<Edge>& free, std::vector<Surface>& surfaces, KeptQuads& kept) {
   for (Surface& s : surfaces) {
     std::size_t edges = 0;
     for (const Loop& loop : s) edges += loop.size();
@@ -405,11 +414,23 @@ void evenBoundaries(Nodes& nodes, const std::set<Edge>& free, std::vector<Surfac
         if (const double l = (nodes.at[a] - nodes.at[b]).norm(); free.count({a, b}) && l > longest)
           longest = l, in = &loop, at = k;
       }
+    QuadStrip strip;
+    if (!in)
+      for (Loop& loop : s)
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+          const int a = loop[k], b = loop[(k + 1) % loop.size()];
+          if (nodes.footprint(a) || nodes.footprint(b)) continue;
+          QuadStrip found = stripToRim(kept.quads, kept.removed, a, b);
+          if (!found.empty() && (strip.empty() || found.size() < strip.size()))
+            strip = std::move(found), in = &loop, at = k;
+        }
     if (!in)
       throw geometryError("junction: the gap round a wall's foot has an odd number of fixed edges (no quad mesh)");
     const int a = (*in)[at], b = (*in)[(at + 1) % in->size()];
     nodes.at.push_back(0.5 * (nodes.at[a] + nodes.at[b]));
-    in->insert(in->begin() + static_cast<long>(at) + 1, static_cast<int>(nodes.at.size()) - 1);
+    const int middle = static_cast<int>(nodes.at.size()) - 1;
+    in->insert(in->begin() + static_cast<long>(at) + 1, middle);
+    if (!strip.empty()) halveStrip(kept.quads, nodes.at, strip, middle), kept.removed.resize(kept.quads.size(), 0);
   }
 }
 
@@ -891,8 +912,8 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
   nodes.at = sheet.nodes;
   nodes.sheetNodes = static_cast<int>(sheet.nodes.size());
   nodes.at.insert(nodes.at.end(), footprint.nodes.begin(), footprint.nodes.end());
-  std::vector<char> removed;
-  const std::vector<Gap> gaps = gapsRoundFeet(sheet, footprint, size, band, removed);
+  KeptQuads kept{sheet.quads, {}};
+  const std::vector<Gap> gaps = gapsRoundFeet(sheet, footprint, size, band, kept.removed);
   std::vector<Quad> added;  // in the numbering of `nodes`
   FootprintInsertion out;
   const EdgeUses quadsOfEdge = edgeUses(sheet);
@@ -902,7 +923,7 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
     std::vector<Loop> loops = chainLoops(edges.edges);
     dropTinyRimEdges(nodes, edges.free, size, loops);
     std::vector<Surface> surfaces = surfacesOf(nodes, map, loops);
-    evenBoundaries(nodes, edges.free, surfaces);
+    evenBoundaries(nodes, edges.free, surfaces, kept);
     double worst = 0;
     const QuadMesh q = gapQuads(nodes.at, map, chordal, surfaces, worst);  // its first nodes are nodes.at
     out.worstQuad = std::min(out.worstQuad, worst);
@@ -921,17 +942,18 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
     if (id[n] < 0) id[n] = static_cast<int>(out.quads.nodes.size()), out.quads.nodes.push_back(nodes.at[n]);
     return id[n];
   };
-  for (std::size_t q = 0; q < sheet.quads.size(); ++q)
-    if (!removed[q]) out.quads.quads.push_back({0, 0, 0, 0});
+  for (std::size_t q = 0; q < kept.quads.size(); ++q)
+    if (!kept.removed[q]) out.quads.quads.push_back({0, 0, 0, 0});
   std::vector<int> keptNodes;
-  for (std::size_t q = 0; q < sheet.quads.size(); ++q)
-    if (!removed[q]) keptNodes.insert(keptNodes.end(), sheet.quads[q].begin(), sheet.quads[q].end());
+  for (std::size_t q = 0; q < kept.quads.size(); ++q)
+    if (!kept.removed[q]) keptNodes.insert(keptNodes.end(), kept.quads[q].begin(), kept.quads[q].end());
   std::sort(keptNodes.begin(), keptNodes.end());
+  keptNodes.erase(std::unique(keptNodes.begin(), keptNodes.end()), keptNodes.end());
   for (int n : keptNodes) use(n);
   std::size_t k = 0;
-  for (std::size_t q = 0; q < sheet.quads.size(); ++q)
-    if (!removed[q]) {
-      for (int c = 0; c < 4; ++c) out.quads.quads[k][c] = id[sheet.quads[q][c]];
+  for (std::size_t q = 0; q < kept.quads.size(); ++q)
+    if (!kept.removed[q]) {
+      for (int c = 0; c < 4; ++c) out.quads.quads[k][c] = id[kept.quads[q][c]];
       ++k;
     }
   for (const Quad& quad : added) out.quads.quads.push_back({use(quad[0]), use(quad[1]), use(quad[2]), use(quad[3])});

@@ -1,0 +1,115 @@
+#include "quadmesh/quad_strips.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace hexlayer {
+namespace {
+
+using Key = std::pair<int, int>;  // an undirected edge, lower node first
+
+Key keyOf(int a, int b) { return a < b ? Key{a, b} : Key{b, a}; }
+
+std::map<Key, std::vector<int>> quadsOfEdges(const std::vector<std::array<int, 4>>& quads) {
+  std::map<Key, std::vector<int>> on;
+  for (int q = 0; q < static_cast<int>(quads.size()); ++q)
+    for (int k = 0; k < 4; ++k) on[keyOf(quads[q][k], quads[q][(k + 1) % 4])].push_back(q);
+  return on;
+}
+
+// The rim loops: each a list of nodes, its edges between consecutive ones (the last to the first).
+std::vector<std::vector<int>> rimLoops(const QuadMesh& q) {
+  const std::vector<std::vector<int>> around = rimEdgeNeighbours(q);
+  std::vector<char> seen(around.size(), 0);
+  std::vector<std::vector<int>> loops;
+  for (int start = 0; start < static_cast<int>(around.size()); ++start) {
+    if (seen[start] || around[start].size() != 2) continue;
+    std::vector<int> loop{start};
+    seen[start] = 1;
+    for (int prev = start, at = around[start][0]; at != start;) {
+      if (seen[at] || around[at].size() != 2) {  // a rim pinched at a node: not a simple loop
+        loop.clear();
+        break;
+      }
+      seen[at] = 1, loop.push_back(at);
+      const int next = around[at][0] == prev ? around[at][1] : around[at][0];
+      prev = at, at = next;
+    }
+    if (!loop.empty()) loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace
+
+QuadStrip stripToRim(const std::vector<std::array<int, 4>>& quads, const std::vector<char>& blocked, int a, int b) {
+  const std::map<Key, std::vector<int>> on = quadsOfEdges(quads);
+  auto isBlocked = [&](int q) { return !blocked.empty() && blocked[q]; };
+  QuadStrip strip;
+  std::set<int> seen;
+  Key edge = keyOf(a, b);
+  int from = -1;  // the quad the strip comes from
+  for (;;) {
+    int next = -1;  // the quad across the edge: at the start, the one not blocked
+    for (int q : on.at(edge))
+      if (q != from && (from >= 0 || !isBlocked(q))) next = q;
+    if (next < 0) return strip;  // the last quad's far edge is on the rim
+    if (isBlocked(next) || !seen.insert(next).second) return {};
+    if (from >= 0 && on.at(edge).size() != 2) return {};  // a non-manifold edge
+    const std::array<int, 4>& c = quads[next];
+    int k = 0;
+    while (keyOf(c[k], c[(k + 1) % 4]) != edge) ++k;
+    strip.emplace_back(next, k);
+    from = next, edge = keyOf(c[(k + 2) % 4], c[(k + 3) % 4]);
+  }
+}
+
+void halveStrip(std::vector<std::array<int, 4>>& quads, std::vector<Vec3>& nodes, const QuadStrip& strip, int first) {
+  int in = first;
+  for (const auto& [q, k] : strip) {
+    const std::array<int, 4> c{quads[q][k], quads[q][(k + 1) % 4], quads[q][(k + 2) % 4], quads[q][(k + 3) % 4]};
+    const int out = static_cast<int>(nodes.size());
+    nodes.push_back(0.5 * (nodes[c[2]] + nodes[c[3]]));
+    quads[q] = {c[0], in, out, c[3]};
+    quads.push_back({in, c[1], c[2], out});
+    in = out;
+  }
+}
+
+std::size_t evenRimLoops(QuadMesh& q, const std::function<bool(const Vec3&)>& mustBeEven, std::vector<char> blocked) {
+  blocked.resize(q.quads.size(), 0);
+  for (;;) {
+    const std::vector<std::vector<int>> loops = rimLoops(q);
+    std::vector<int> loopOf(q.nodes.size(), -1);  // the loop that must be even a node is on
+    std::size_t odd = 0;
+    for (std::size_t l = 0; l < loops.size(); ++l)
+      if (std::all_of(loops[l].begin(), loops[l].end(), [&](int n) { return mustBeEven(q.nodes[n]); })) {
+        for (int n : loops[l]) loopOf[n] = static_cast<int>(l);
+        odd += loops[l].size() % 2;
+      }
+    if (odd == 0) return 0;
+    // the shortest strip from an odd loop that must be even to a loop that need not be, or to another odd one
+    QuadStrip best;
+    int from = -1, to = -1;
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      const std::vector<int>& loop = loops[l];
+      if (loop.size() % 2 == 0 || loopOf[loop.front()] != static_cast<int>(l)) continue;
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const int a = loop[k], b = loop[(k + 1) % loop.size()];
+        QuadStrip s = stripToRim(q.quads, blocked, a, b);
+        if (s.empty() || (!best.empty() && s.size() >= best.size())) continue;
+        const auto& [last, corner] = s.back();
+        const int end = loopOf[q.quads[last][(corner + 2) % 4]];
+        if (end >= 0 && (end == static_cast<int>(l) || loops[end].size() % 2 == 0)) continue;
+        best = std::move(s), from = a, to = b;
+      }
+    }
+    if (best.empty()) return odd;
+    q.nodes.push_back(0.5 * (q.nodes[from] + q.nodes[to]));
+    halveStrip(q.quads, q.nodes, best, static_cast<int>(q.nodes.size()) - 1);
+    blocked.resize(q.quads.size(), 0);
+  }
+}
+
+}  // namespace hexlayer

@@ -1,0 +1,37 @@
+// Strips of quads halved lengthwise, rim to rim: the one way to change the parity of a quad mesh's boundary loops
+// while it stays all quads and conformal (every quad's boundary has an even number of edges, so a region's boundary
+// loops have an even number in all). Used where a loop must be even because another mesh fixes its nodes: the gap
+// round a foot inside a sheet (footprint_insert), the rim on which a standing wall's foot lies (junction_mesh).
+#pragma once
+#include <array>
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "core/types.hpp"
+#include "quadmesh/quad_mesh.hpp"
+
+namespace hexlayer {
+
+// A strip of quads: each quad with the corner k where its edge on the strip's way in starts (the edge from corner k
+// to k + 1, crossed to the edge from k + 2 to k + 3).
+using QuadStrip = std::vector<std::pair<int, int>>;
+
+// The strip from the edge (a, b) across the quads to the rim (an edge of one quad only): into the one quad on (a, b)
+// not `blocked` (at the rim, the one quad there). Empty if the strip meets a blocked quad or runs round in a ring.
+// [in] quads; [in] blocked: per quad (empty: none); [in] a, b: an edge.
+QuadStrip stripToRim(const std::vector<std::array<int, 4>>& quads, const std::vector<char>& blocked, int a, int b);
+
+// Halves the strip's quads lengthwise, each into two, from `first` (the node in the middle of its edge in): the
+// midpoints of the edges it crosses appended to `nodes`, the second halves to `quads`. [in,out] quads, nodes;
+// [in] strip; [in] first.
+void halveStrip(std::vector<std::array<int, 4>>& quads, std::vector<Vec3>& nodes, const QuadStrip& strip, int first);
+
+// Every rim loop of the quads whose nodes all satisfy `mustBeEven` and that has an odd number of edges made even: the
+// shortest strip from one of its edges to a rim edge of another loop, one that need not be even (it becomes odd) or
+// another odd one (both become even), halved; no strip runs through a `blocked` quad (another wall's footprint).
+// [in,out] q; [in] mustBeEven; [in] blocked: per quad (may be shorter: the rest not). Returns the loops that stay odd
+// (no such strip).
+std::size_t evenRimLoops(QuadMesh& q, const std::function<bool(const Vec3&)>& mustBeEven, std::vector<char> blocked);
+
+}  // namespace hexlayer
