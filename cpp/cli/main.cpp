@@ -41,8 +41,8 @@ void describeSizing(const hexlayer::MeshReport& r, std::ostream& s) {
       << " faces narrower (the first at (" << f.firstAt.x() << ", " << f.firstAt.y() << ", " << f.firstAt.z()
       << ")): features that small may be smoothed over.";
   if (!f.footFillets.empty())
-    s << " " << f.footFillets.size() << " fillets at walls' feet (radius up to " << f.footFilletRadius
-      << ") smoothed over: meshed as sharp corners, grouped by nearness.";
+    s << " " << f.footFillets.size() << " fillets or chamfers at walls' feet (radius or width up to "
+      << f.footFilletRadius << ") smoothed over: meshed as sharp corners, grouped by nearness.";
 }
 
 std::string summary(const hexlayer::MeshReport& r, const std::string& output) {

@@ -5,6 +5,8 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepLProp_SLProps.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
@@ -21,6 +23,7 @@ namespace hexlayer {
 namespace {
 
 constexpr double kSameCurvature = 0.02;  // relative: a fillet's curvature across it varies less
+constexpr double kPlanar = 1e-7;         // x the part's diagonal: a B-spline face this near a plane is one (a chamfer)
 
 // The radius of a concave fillet face: its larger principal curvature (BRepLProp_SLProps) the same at a 3 x 3 grid
 // of points over its parameter box (a cylinder, a sphere, a torus's tube, also written as a B-spline), its centre of
@@ -47,6 +50,29 @@ std::optional<double> filletRadius(const TopoDS_Shape& face) {
   const auto [least, most] = std::minmax_element(curvature.begin(), curvature.end());
   if (!concave || *most - *least > kSameCurvature * *most) return std::nullopt;
   return 1 / *most;
+}
+
+// The width of a chamfer face at a foot: a plane (also written as a B-spline) of the rim (no wall), whose edges
+// with walls are all concave (a chamfer between a rib and the plate meets both in 135-degree concave edges; a rim
+// face, or a chamfer on a rim's outside, meets its walls in convex edges); none for any other face.
+// [in] cad, sides; [in] concavePairs: the faces (0-based, lower first) that meet in a concave edge; [in] f; [in] next:
+// the faces next to f.
+std::optional<double> chamferWidth(const CadSolid& cad, const WallSides& sides,
+                                   const std::set<std::pair<int, int>>& concavePairs, int f,
+                                   const std::set<int>& next) {
+  if (sides.faces[f].side != Side::Lateral) return std::nullopt;
+  const TopoDS_Face& face = TopoDS::Face(cad.faces(f + 1));
+  if (BRepAdaptor_Surface(face).GetType() != GeomAbs_Plane &&
+      !GeomLib_IsPlanarSurface(BRep_Tool::Surface(face), kPlanar * cad.diagonal).IsPlanar())
+    return std::nullopt;
+  bool walls = false;
+  for (int g : next)
+    if (sides.faces[g].side != Side::Lateral) {
+      if (!concavePairs.count(std::minmax(f, g))) return std::nullopt;
+      walls = true;
+    }
+  if (!walls) return std::nullopt;
+  return sides.faces[f].width;
 }
 
 // Per face (0-based), the faces it shares an edge with.
@@ -146,8 +172,14 @@ std::optional<FootFillets> removeFootFillets(const CadSolid& cad, const WallSide
   FilletSearch search{cad, std::vector<int>(cad.faces.Extent(), -1), faceNeighbours(cad), {}, sides.thickness};
   for (std::size_t s = 0; s < sheets.size(); ++s)
     for (int f : sheets[s].faces) search.sheetOf[f] = static_cast<int>(s);
-  for (int f = 1; f <= cad.faces.Extent(); ++f) search.radius.push_back(filletRadius(cad.faces(f)));
   const std::vector<ConcaveEdge> concave = concaveEdges(cad);
+  std::set<std::pair<int, int>> concavePairs;
+  for (const ConcaveEdge& c : concave) concavePairs.insert(std::minmax(c.a, c.b));
+  for (int f = 1; f <= cad.faces.Extent(); ++f) {  // a fillet's radius, or a chamfer's width
+    std::optional<double> size = filletRadius(cad.faces(f));
+    if (!size) size = chamferWidth(cad, sides, concavePairs, f - 1, search.next[f - 1]);
+    search.radius.push_back(size);
+  }
   std::set<int> fillets;
   for (int s = 1; s < static_cast<int>(sheets.size()); ++s)
     if (!standsOnEdges(concave, search.sheetOf, s)) fillets.merge(filletsAtFoot(search, s));

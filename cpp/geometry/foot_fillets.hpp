@@ -2,7 +2,8 @@
 // smaller than the quad size; report them, as small_features does"). A sheet that stands on another through fillets
 // meets it in no concave edge, so the cut finds no foot. Its fillets are the concave faces of one radius below the
 // wall thickness (their larger principal curvature the same across them: cylinders, spheres, tori's tubes, also
-// written as B-splines) joining its faces, across such faces, to faces of the sheets before it. They
+// written as B-splines) joining its faces, across such faces, to faces of the sheets before it, and chamfers: plane
+// rim faces narrower than the wall whose edges with walls are all concave (a 45-degree chamfer at a rib's root). They
 // are removed with OpenCASCADE's defeaturing (BRepAlgoAPI_Defeaturing: the faces beside them extended to meet in the
 // sharp edge the fillet rounded), and the part so smoothed is cut and meshed; the pipeline groups the fillets' nodes
 // and element faces by nearness and reports them.
@@ -21,7 +22,7 @@ namespace hexlayer {
 struct FootFillets {
   CadSolid smooth;           // the part without them (its inputFace: the input's face each face is, a piece of)
   std::vector<int> faces;    // the part's faces removed, 0-based
-  double largestRadius = 0;  // of those faces
+  double largestRadius = 0;  // of those faces (a chamfer's: its width)
 };
 
 // [in] cad: the part (pipeline units); [in] sides: its faces' sides; [in] sheets: findSheets's, the first the base.

@@ -172,6 +172,32 @@ def write_gusseted_boss(path, height, length, scale, turn):
         gmsh.finalize()
 
 
+def write_chamfered_rib(path, chamfer, scale, turn):
+    """Writes test_chamfered_feet_twins's part as STEP: a 60 x 40 x 2 plate and a rib 2 thick, 50 long and 10 high
+    standing inside it, its four foot edges chamfered `chamfer` x `chamfer` (45 degrees, mitred at its corners).
+    Scaled and turned (turned_and_scaled); returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        body, _ = occ.fuse([(3, occ.addBox(0, 0, 0, 60, 40, 2))], [(3, occ.addBox(5, 19, 1, 50, 2, 11))])
+        occ.synchronize()
+        vol = body[0][1]
+        feet = []  # the foot edges: in the plate's top, round the rib's footprint
+        for _, c in gmsh.model.getEntities(1):
+            x0, y0, z0, x1, y1, z1 = gmsh.model.getBoundingBox(1, c)
+            if abs(z0 - 2) < 1e-6 and abs(z1 - 2) < 1e-6 and x0 > 5 - 1e-6 and x1 < 55 + 1e-6 and y0 > 19 - 1e-6 \
+                    and y1 < 21 + 1e-6:
+                feet.append(c)
+        faces = [next(f for f in gmsh.model.getAdjacencies(1, c)[0] if abs(gmsh.model.getBoundingBox(2, f)[2] - 2)
+                      < 1e-6 and abs(gmsh.model.getBoundingBox(2, f)[5] - 2) < 1e-6) for c in feet]
+        occ.chamfer([vol], feet, faces, [chamfer] * len(feet))
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
 def turned_and_scaled(gmsh, path, scale, turn):
     """Turns the model's volumes by `turn` degrees about the axis (1, 2, 3), scales them by `scale` and writes them
     as STEP; returns their volume (Gmsh's)."""
@@ -397,6 +423,19 @@ class JunctionMeshing(unittest.TestCase):
             for layers, order in runs:
                 with self.subTest(part=name, layers=layers, order=order):
                     self.check_part(name, step, layers, order, ["ring", "T", "T"])
+
+    def test_chamfered_feet_twins(self):
+        """A rib whose four foot edges are chamfered 0.8 (45 degrees): the chamfers (plane rim faces narrower than the
+        wall, meeting the rib and the plate in concave edges) are smoothed over as fillets are, and grouped by
+        nearness; in metres (its planes B-splines); turned 30 degrees about a skew axis."""
+        for name, scale, turn in (("chamfered_rib", 1.0, 0.0), ("chamfered_rib_metres", 1e-3, 0.0),
+                                  ("chamfered_rib_turned", 1.0, 30.0)):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_chamfered_rib(step, 0.8, scale, turn)
+            for layers, order in ((2, 1), (3, 2)):
+                with self.subTest(part=name, layers=layers, order=order):
+                    _, report = self.check_part(name, step, layers, order, ["T"])
+                    self.assertEqual(len(report["small_features"]["foot_fillets_smoothed"]["faces"]), 4)
 
     def test_ribs_on_plates(self):
         for part in PARTS:
