@@ -191,4 +191,30 @@ std::optional<FootFillets> removeFootFillets(const CadSolid& cad, const WallSide
   return out;
 }
 
+std::optional<FootFillets> removeRootFillets(const CadSolid& cad, const WallSides& sides) {
+  std::vector<std::optional<double>> radius;
+  for (int f = 1; f <= cad.faces.Extent(); ++f) {
+    radius.push_back(filletRadius(cad.faces(f)));
+    if (radius.back() && !(*radius.back() < sides.thickness)) radius.back().reset();
+  }
+  std::vector<std::set<int>> smoothly(radius.size());  // the faces each meets in a tangent edge
+  for (const SheetJoin& j : sides.sheetJoins)
+    if (j.smooth) smoothly[j.a].insert(j.b), smoothly[j.b].insert(j.a);
+  std::vector<char> concave(radius.size(), 0);  // meets a face in a concave sharp edge (a bore at a plate's top)
+  for (const ConcaveEdge& c : concaveEdges(cad)) concave[c.a] = concave[c.b] = 1;
+  std::set<int> fillets;  // rounding a corner between two faces it meets tangentially, no sharp concave edge
+  double largest = 0;
+  for (std::size_t f = 0; f < radius.size(); ++f) {
+    if (!radius[f] || concave[f]) continue;
+    const auto others = std::count_if(smoothly[f].begin(), smoothly[f].end(), [&](int g) { return !radius[g]; });
+    if (others >= 2) fillets.insert(static_cast<int>(f)), largest = std::max(largest, *radius[f]);
+  }
+  if (fillets.empty()) return std::nullopt;
+  std::optional<CadSolid> smooth = withoutFaces(cad, fillets);
+  if (!smooth) return std::nullopt;
+  const WallSides smoothSides = classifyWallSides(*smooth);
+  if (!smoothSides.ownSideFaces.empty() || findSheets(*smooth, smoothSides).size() < 2) return std::nullopt;
+  return FootFillets{std::move(*smooth), std::vector<int>(fillets.begin(), fillets.end()), largest};
+}
+
 }  // namespace hexlayer

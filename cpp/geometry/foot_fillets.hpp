@@ -32,4 +32,11 @@ struct FootFillets {
 std::optional<FootFillets> removeFootFillets(const CadSolid& cad, const WallSides& sides,
                                              const std::vector<Sheet>& sheets);
 
+// A part that is one sheet only through fillets at its walls' feet (a boss whose root fillet joins its wall to the
+// plate's smoothly: findSheets sees one sheet): the part without every concave fillet below the wall thickness that
+// meets two other faces tangentially and none in a concave sharp edge (not a bore), if it then is sheets standing on
+// sheets; none otherwise (a bent sheet's inside rounds removed leave one sheet: it is
+// meshed as it is). [in] cad: the part (pipeline units); [in] sides: its faces' sides.
+std::optional<FootFillets> removeRootFillets(const CadSolid& cad, const WallSides& sides);
+
 }  // namespace hexlayer

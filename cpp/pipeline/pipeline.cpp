@@ -682,13 +682,16 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   const MeshOptions o = inPipelineUnits(given, cad.unit);
   WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
-  if (!o.dropJunctions && sides.ownSideFaces.empty())
+  if (!o.dropJunctions && sides.ownSideFaces.empty()) {
     if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1) {
       if (std::optional<FootFillets> smooth =
               clock.run("foot_fillets", [&] { return removeFootFillets(cad, sides, sheets); }))
         return meshWithoutFootFillets(cad, *smooth, o, result, clock);
       return meshJunctions(cad, sides, mergeCrossingRibs(cad, sides, sheets), o, result, clock);
     }
+    if (std::optional<FootFillets> smooth = clock.run("foot_fillets", [&] { return removeRootFillets(cad, sides); }))
+      return meshWithoutFootFillets(cad, *smooth, o, result, clock);
+  }
   const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r.junctions);
   r.thickness = sides.thickness;
   r.faces = countFaces(sides);

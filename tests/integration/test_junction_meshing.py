@@ -198,6 +198,26 @@ def write_chamfered_rib(path, chamfer, scale, turn):
         gmsh.finalize()
 
 
+def write_filleted_boss(path, radius, scale, turn):
+    """Writes test_filleted_boss_twins's part as STEP: a 60 x 40 x 2 plate and a hollow boss at (30, 20) (outside R4,
+    bore R2 from the plate's top, 9 high above it) whose root is filleted `radius` (a torus joining its wall to the
+    plate's top smoothly: one sheet to the sheet finder). Scaled and turned (turned_and_scaled); returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        body, _ = occ.fuse([(3, occ.addBox(0, 0, 0, 60, 40, 2))], [(3, occ.addCylinder(30, 20, 1, 0, 0, 10, 4))])
+        occ.synchronize()
+        root = [c for _, c in gmsh.model.getEntities(1) if abs(gmsh.model.getBoundingBox(1, c)[2] - 2) < 1e-6
+                and abs(gmsh.model.getBoundingBox(1, c)[5] - 2) < 1e-6 and gmsh.model.getBoundingBox(1, c)[0] > 25]
+        filleted = occ.fillet([body[0][1]], root, [radius])
+        occ.cut(filleted, [(3, occ.addCylinder(30, 20, 2, 0, 0, 12, 2))])
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
 def turned_and_scaled(gmsh, path, scale, turn):
     """Turns the model's volumes by `turn` degrees about the axis (1, 2, 3), scales them by `scale` and writes them
     as STEP; returns their volume (Gmsh's)."""
@@ -436,6 +456,20 @@ class JunctionMeshing(unittest.TestCase):
                 with self.subTest(part=name, layers=layers, order=order):
                     _, report = self.check_part(name, step, layers, order, ["T"])
                     self.assertEqual(len(report["small_features"]["foot_fillets_smoothed"]["faces"]), 4)
+
+    def test_filleted_boss_twins(self):
+        """A hollow boss whose root is filleted R0.8 (the fillet joins its wall to the plate smoothly, so the part is one
+        sheet until the fillet is removed; then a boss on a plate, its fillet smoothed over and grouped by nearness);
+        in metres (the torus a B-spline); turned 30 degrees about a skew axis. (An R0.5 fillet meshes too, but with 2
+        layers no boundary quad is nearer to it than to the faces beside it: its group is empty, not checked here.)"""
+        for name, radius, scale, turn in (("filleted_boss", 0.8, 1.0, 0.0), ("filleted_boss_metres", 0.8, 1e-3, 0.0),
+                                          ("filleted_boss_turned", 0.8, 1.0, 30.0)):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_filleted_boss(step, radius, scale, turn)
+            for layers, order in ((2, 1), (3, 2)):
+                with self.subTest(part=name, layers=layers, order=order):
+                    _, report = self.check_part(name, step, layers, order, ["ring"])
+                    self.assertEqual(len(report["small_features"]["foot_fillets_smoothed"]["faces"]), 1)
 
     def test_ribs_on_plates(self):
         for part in PARTS:
