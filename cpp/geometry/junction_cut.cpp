@@ -444,29 +444,34 @@ Vec3 normalAtEdge(const TopoDS_Face& face, const TopoDS_Edge& edge) {
 
 // Whether sheet s meets sheet b's walls in concave edges with both of its own walls (two of its faces there face
 // opposite ways): s's thickness ends on b's wall, so s stands on b (a rib's end on another rib's side), whichever
-// is larger. [in] j; [in] s, b: sheets.
-bool bothWallsOn(const Junctions& j, int s, int b) {
-  std::vector<Vec3> normals;
-  for (const ConcaveEdge& c : j.concave)
-    for (const auto& [own, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
-      if (j.sheetOf[own] == s && j.sheetOf[other] == b && j.sides.faces[own].side != Side::Lateral &&
-          j.sides.faces[other].side != Side::Lateral)
-        normals.push_back(normalAtEdge(TopoDS::Face(j.cad.faces(own + 1)), TopoDS::Edge(j.cad.edges(c.edge + 1))));
-  for (std::size_t x = 0; x < normals.size(); ++x)
-    for (std::size_t y = x + 1; y < normals.size(); ++y)
-      if (normals[x].dot(normals[y]) < -kOppositeWalls) return true;
+// is larger. [in] normals: per (s, b), the outward normals of s's wall faces at its concave edges with b's walls.
+bool bothWallsOn(const std::map<std::pair<int, int>, std::vector<Vec3>>& normals, int s, int b) {
+  const auto at = normals.find({s, b});
+  if (at == normals.end()) return false;
+  const std::vector<Vec3>& n = at->second;
+  for (std::size_t x = 0; x < n.size(); ++x)
+    for (std::size_t y = x + 1; y < n.size(); ++y)
+      if (n[x].dot(n[y]) < -kOppositeWalls) return true;
   return false;
 }
 
 // The sheets reordered so that each standing sheet comes after the standing sheets it stands on (bothWallsOn one
-// way only), else in the order given: the first sheet stays first. [in] cad, sides; [in] sheets: by decreasing area.
-std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, std::vector<Sheet> sheets) {
-  const Junctions j{cad, sides, sheets, sheetOfFaces(cad, sides, sheets), concaveEdges(cad)};
+// way only), else in the order given: the first sheet stays first. [in] cad, sides; [in] concave: concaveEdges(cad);
+// [in] sheets: by decreasing area.
+std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, const std::vector<ConcaveEdge>& concave,
+                                 std::vector<Sheet> sheets) {
+  const std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets);
+  std::map<std::pair<int, int>, std::vector<Vec3>> normals;  // (own sheet, other sheet) -> own walls' normals there
+  for (const ConcaveEdge& c : concave)
+    for (const auto& [own, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
+      if (sheetOf[own] > 0 && sheetOf[other] > 0 && sheetOf[own] != sheetOf[other] &&
+          sides.faces[own].side != Side::Lateral && sides.faces[other].side != Side::Lateral)
+        normals[{sheetOf[own], sheetOf[other]}].push_back(
+            normalAtEdge(TopoDS::Face(cad.faces(own + 1)), TopoDS::Edge(cad.edges(c.edge + 1))));
   const int n = static_cast<int>(sheets.size());
   std::vector<std::set<int>> under(n);  // the standing sheets each stands on
-  for (int s = 1; s < n; ++s)
-    for (int b = 1; b < n; ++b)
-      if (b != s && bothWallsOn(j, s, b) && !bothWallsOn(j, b, s)) under[s].insert(b);
+  for (const auto& [pair, unused] : normals)
+    if (const auto [s, b] = pair; bothWallsOn(normals, s, b) && !bothWallsOn(normals, b, s)) under[s].insert(b);
   std::vector<int> order;
   std::vector<char> placed(n, 0);
   while (static_cast<int>(order.size()) < n) {  // the first sheet whose bases are all placed, again and again
@@ -488,7 +493,8 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
   const int n = static_cast<int>(sheets.size());
   const std::vector<int> faceSheet = sheetOfFaces(cad, sides, sheets);
   std::vector<std::set<int>> meets(n);  // the standing sheets each meets in a concave edge
-  for (const ConcaveEdge& c : concaveEdges(cad))
+  const std::vector<ConcaveEdge> concave = concaveEdges(cad);
+  for (const ConcaveEdge& c : concave)
     if (const int a = faceSheet[c.a], b = faceSheet[c.b]; a > 0 && b > 0 && a != b)
       meets[a].insert(b), meets[b].insert(a);
   std::vector<std::vector<std::pair<Vec3, double>>> planes(n);
@@ -528,7 +534,7 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
     merged.push_back(sheetOf(cad, sides, f));
   }
   std::stable_sort(merged.begin(), merged.end(), [](const Sheet& x, const Sheet& y) { return x.area > y.area; });
-  return standingOrder(cad, sides, std::move(merged));
+  return standingOrder(cad, sides, concave, std::move(merged));
 }
 
 JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {

@@ -415,12 +415,13 @@ void evenBoundaries(Nodes& nodes, const std::set<Edge>& free, std::vector<Surfac
           longest = l, in = &loop, at = k;
       }
     QuadStrip strip;
+    const QuadsOfEdges on = in ? QuadsOfEdges{} : quadsOfEdges(kept.quads);
     if (!in)
       for (Loop& loop : s)
         for (std::size_t k = 0; k < loop.size(); ++k) {
           const int a = loop[k], b = loop[(k + 1) % loop.size()];
           if (nodes.footprint(a) || nodes.footprint(b)) continue;
-          QuadStrip found = stripToRim(kept.quads, kept.removed, a, b);
+          QuadStrip found = stripToRim(kept.quads, on, kept.removed, a, b);
           if (!found.empty() && (strip.empty() || found.size() < strip.size()))
             strip = std::move(found), in = &loop, at = k;
         }

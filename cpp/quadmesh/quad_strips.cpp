@@ -11,13 +11,6 @@ using Key = std::pair<int, int>;  // an undirected edge, lower node first
 
 Key keyOf(int a, int b) { return a < b ? Key{a, b} : Key{b, a}; }
 
-std::map<Key, std::vector<int>> quadsOfEdges(const std::vector<std::array<int, 4>>& quads) {
-  std::map<Key, std::vector<int>> on;
-  for (int q = 0; q < static_cast<int>(quads.size()); ++q)
-    for (int k = 0; k < 4; ++k) on[keyOf(quads[q][k], quads[q][(k + 1) % 4])].push_back(q);
-  return on;
-}
-
 // The rim loops: each a list of nodes, its edges between consecutive ones (the last to the first).
 std::vector<std::vector<int>> rimLoops(const QuadMesh& q) {
   const std::vector<std::vector<int>> around = rimEdgeNeighbours(q);
@@ -43,8 +36,15 @@ std::vector<std::vector<int>> rimLoops(const QuadMesh& q) {
 
 }  // namespace
 
-QuadStrip stripToRim(const std::vector<std::array<int, 4>>& quads, const std::vector<char>& blocked, int a, int b) {
-  const std::map<Key, std::vector<int>> on = quadsOfEdges(quads);
+QuadsOfEdges quadsOfEdges(const std::vector<std::array<int, 4>>& quads) {
+  QuadsOfEdges on;
+  for (int q = 0; q < static_cast<int>(quads.size()); ++q)
+    for (int k = 0; k < 4; ++k) on[keyOf(quads[q][k], quads[q][(k + 1) % 4])].push_back(q);
+  return on;
+}
+
+QuadStrip stripToRim(const std::vector<std::array<int, 4>>& quads, const QuadsOfEdges& on,
+                     const std::vector<char>& blocked, int a, int b) {
   auto isBlocked = [&](int q) { return !blocked.empty() && blocked[q]; };
   QuadStrip strip;
   std::set<int> seen;
@@ -92,12 +92,13 @@ std::size_t evenRimLoops(QuadMesh& q, const std::function<bool(const Vec3&)>& mu
     // the shortest strip from an odd loop that must be even to a loop that need not be, or to another odd one
     QuadStrip best;
     int from = -1, to = -1;
+    const QuadsOfEdges on = quadsOfEdges(q.quads);
     for (std::size_t l = 0; l < loops.size(); ++l) {
       const std::vector<int>& loop = loops[l];
       if (loop.size() % 2 == 0 || loopOf[loop.front()] != static_cast<int>(l)) continue;
       for (std::size_t k = 0; k < loop.size(); ++k) {
         const int a = loop[k], b = loop[(k + 1) % loop.size()];
-        QuadStrip s = stripToRim(q.quads, blocked, a, b);
+        QuadStrip s = stripToRim(q.quads, on, blocked, a, b);
         if (s.empty() || (!best.empty() && s.size() >= best.size())) continue;
         const auto& [last, corner] = s.back();
         const int end = loopOf[q.quads[last][(corner + 2) % 4]];

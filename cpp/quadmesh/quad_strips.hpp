@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <functional>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -17,10 +18,16 @@ namespace hexlayer {
 // to k + 1, crossed to the edge from k + 2 to k + 3).
 using QuadStrip = std::vector<std::pair<int, int>>;
 
+// Per undirected edge (lower node first), the quads that have it.
+using QuadsOfEdges = std::map<std::pair<int, int>, std::vector<int>>;
+// [in] quads. Returns their edges' quads, built once for every strip looked for in them.
+QuadsOfEdges quadsOfEdges(const std::vector<std::array<int, 4>>& quads);
+
 // The strip from the edge (a, b) across the quads to the rim (an edge of one quad only): into the one quad on (a, b)
 // not `blocked` (at the rim, the one quad there). Empty if the strip meets a blocked quad or runs round in a ring.
-// [in] quads; [in] blocked: per quad (empty: none); [in] a, b: an edge.
-QuadStrip stripToRim(const std::vector<std::array<int, 4>>& quads, const std::vector<char>& blocked, int a, int b);
+// [in] quads; [in] on: quadsOfEdges(quads); [in] blocked: per quad (empty: none); [in] a, b: an edge.
+QuadStrip stripToRim(const std::vector<std::array<int, 4>>& quads, const QuadsOfEdges& on,
+                     const std::vector<char>& blocked, int a, int b);
 
 // Halves the strip's quads lengthwise, each into two, from `first` (the node in the middle of its edge in): the
 // midpoints of the edges it crosses appended to `nodes`, the second halves to `quads`. [in,out] quads, nodes;

@@ -61,13 +61,14 @@ TEST(QuadStrips, AStripCrossesAGridToTheRimAndHalvedKeepsItConformal) {
   for (double s : {1.0, 1e-3, 1e3}) {
     SCOPED_TRACE("x " + std::to_string(s));
     QuadMesh q = grid(3, 3, s);
-    const QuadStrip strip = stripToRim(q.quads, {}, 1, 2);  // the bottom rim's middle edge, up to the top rim
+    const QuadStrip strip =
+        stripToRim(q.quads, quadsOfEdges(q.quads), {}, 1, 2);  // the bottom rim's middle edge, up to the top rim
     ASSERT_EQ(strip.size(), 3u);
     EXPECT_EQ(strip[0].first, 1);
     EXPECT_EQ(strip[2].first, 7);
     std::vector<char> blocked(q.quads.size(), 0);
     blocked[4] = 1;  // the middle quad
-    EXPECT_TRUE(stripToRim(q.quads, blocked, 1, 2).empty());
+    EXPECT_TRUE(stripToRim(q.quads, quadsOfEdges(q.quads), blocked, 1, 2).empty());
     q.nodes.push_back(0.5 * (q.nodes[1] + q.nodes[2]));
     halveStrip(q.quads, q.nodes, strip, static_cast<int>(q.nodes.size()) - 1);
     EXPECT_EQ(q.quads.size(), 12u);
