@@ -57,7 +57,8 @@ nlohmann::json quadMesh(const QuadMeshCounts& q) {
            {{"run", q.tries.run},
             {"failed", q.tries.failed},
             {"timed_out", q.tries.timedOut},
-            {"not_started", q.tries.skipped}}},
+            {"not_started", q.tries.skipped},
+            {"same_patches_not_run", q.tries.samePatches}}},
           {"time_budget_s", q.budgetSeconds}};
 }
 

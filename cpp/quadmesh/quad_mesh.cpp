@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -260,6 +261,23 @@ double tryBudget(const ChordalSurface& chordal, const QuadMeshOptions& o, bool n
   return needed && o.timeoutSeconds <= 0 ? left : std::min(own, left);
 }
 
+// How a failure in making the patches begins (the tries with the same angles would fail the same way).
+const std::string kPatchesFailed = "failed to make the patches: ";
+
+// Gmsh's patches of the chordal surface, reparametrized (classify, createGeometry): what depends on the split's
+// angles only. Throws geometryError starting with kPatchesFailed if Gmsh fails there. [in] split.
+void makePatches(const PatchSplit& split) {
+  const double toRadians = M_PI / 180.0;
+  try {
+    gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
+    gmsh::model::mesh::createGeometry();
+  } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
+    std::string last;
+    gmsh::logger::getLastError(last);
+    throw geometryError(kPatchesFailed + (last.empty() ? "unknown Gmsh error" : last));
+  }
+}
+
 // One Gmsh run: split the chordal surface into patches, reparametrize, mesh.
 // Gmsh runs in a child process: its crashes and hangs (both seen on real parts with Gmsh 4.8) end
 // that try only.
@@ -271,9 +289,7 @@ GmshTry gmshQuads(const ChordalLocator& locator, const QuadMeshOptions& o, const
         return inGmshSession([&] {
           gmsh::model::add("chordal_surface");
           addChordalTriangles(chordal);
-          const double toRadians = M_PI / 180.0;
-          gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
-          gmsh::model::mesh::createGeometry();
+          makePatches(split);
           // Gmsh 4.8 caps every mesh size by the model's size, which is only computed on a synchronize:
           // without it, the discrete model's default of 1 caps the adaptive sizes (§6.1).
           gmsh::model::geo::synchronize();
@@ -532,13 +548,22 @@ std::string noQuadsReason(const Ranked& ranked, const QuadTries& tries) {
 QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler, Ranked& ranked) {
   QuadTries tries;
   const std::size_t splits = o.patchSplits.size();
+  std::set<std::pair<double, double>> failedPatches;  // angles whose patches Gmsh could not make
   for (std::size_t i = 0; i < splits && !(ranked.score.good() && ranked.score.mean >= kStructuredMean); ++i) {
+    const PatchSplit& split = o.patchSplits[i];
+    if (failedPatches.count({split.featureAngle, split.curveAngle})) {  // the same patches: the same failure
+      ++tries.samePatches;
+      if (o.tried) o.tried(2 + i, 1 + splits);
+      continue;
+    }
     const double budget = tryBudget(chordal.surface(), o, ranked.best.quads.empty());
     if (budget <= 0) {  // the stage's budget is spent: the rest are skipped
       tries.skipped = splits - i;
       break;
     }
-    GmshTry t = gmshQuads(chordal, o, o.patchSplits[i], budget);
+    GmshTry t = gmshQuads(chordal, o, split, budget);
+    if (t.failure.find(kPatchesFailed) != std::string::npos)
+      failedPatches.insert({split.featureAngle, split.curveAngle});
     const bool meshed = rankGmshTry(t, chordal, o, chordalEuler, ranked);
     ++tries.run, tries.timedOut += t.timedOut, tries.failed += !meshed;
     if (o.tried) o.tried(2 + i, 1 + splits);
@@ -563,7 +588,7 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
 }
 
 QuadTries& QuadTries::operator+=(const QuadTries& o) {
-  run += o.run, failed += o.failed, timedOut += o.timedOut, skipped += o.skipped;
+  run += o.run, failed += o.failed, timedOut += o.timedOut, skipped += o.skipped, samePatches += o.samePatches;
   return *this;
 }
 

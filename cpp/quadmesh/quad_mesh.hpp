@@ -15,9 +15,10 @@
 namespace hexlayer {
 
 // The Gmsh tries of a quad mesh: run, failed (Gmsh's error, a crash, a time-out or no quads), of those the ones
-// that ran out of their time budget, and the ones not started because the quad stage's budget was spent.
+// that ran out of their time budget, the ones not started because the quad stage's budget was spent, and those not
+// run because a try with the same patch angles had failed to make its patches (they would fail the same way).
 struct QuadTries {
-  std::size_t run = 0, failed = 0, timedOut = 0, skipped = 0;
+  std::size_t run = 0, failed = 0, timedOut = 0, skipped = 0, samePatches = 0;
   QuadTries& operator+=(const QuadTries& o);
 };
 

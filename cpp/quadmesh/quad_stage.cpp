@@ -63,6 +63,7 @@ std::string triesSummary(const QuadStage& stage) {
   const QuadTries& t = stage.tries;
   std::ostringstream s;
   s << " (" << t.run << " Gmsh tries, " << t.failed << " failed, " << t.timedOut << " out of their time budget";
+  if (t.samePatches > 0) s << ", " << t.samePatches << " not run: their patches had failed in an earlier try";
   if (t.skipped > 0)
     s << ", " << t.skipped << " not started: the stage's budget of " << std::setprecision(3) << stage.budgetSeconds
       << " s was spent";

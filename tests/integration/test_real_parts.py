@@ -134,11 +134,13 @@ class RealParts(unittest.TestCase):
         # The U-channel's quads are the best of all 36 Gmsh tries (the two faired levels fail on every split:
         # "wrong topology of boundary mesh"): 170 s on a busy 2-core machine (2026-12-02), beyond the quad stage's
         # default budget as first set (10 s + 1 s per 1000 quads; refused in 18 s with it; now 300 s + 1 s per 100
-        # quads), so it is given 600 s here.
-        # (name, thickness, tunnels the mesh closes, extra options, SJ min and avg floors)
-        cases = (("ender3_lcd_support_Lbracket.step", 2.0, 0, ("--drop-junctions",), 0.5, 0.95),
-                 ("ender3_support_frame_Uchannel.step", 1.5, 2, ("--quad-budget", "600"), 0.13, 0.86))
-        for name, thickness, tunnels_closed, extra, worst, mean in cases:
+        # quads), so it is given 600 s here. Since 2026-12-03 a try whose patches failed (Gmsh's classification and
+        # reparametrization at its angles) is not run again with only the recombination changed: on each faired level
+        # 6 of the 12 tries are not run (same_patches_not_run, 15 in all), the same quads in 38 s instead of 55 s.
+        # (name, thickness, tunnels the mesh closes, extra options, SJ min and avg floors, tries not run at least)
+        cases = (("ender3_lcd_support_Lbracket.step", 2.0, 0, ("--drop-junctions",), 0.5, 0.95, 0),
+                 ("ender3_support_frame_Uchannel.step", 1.5, 2, ("--quad-budget", "600"), 0.13, 0.86, 12))
+        for name, thickness, tunnels_closed, extra, worst, mean, not_run in cases:
             with self.subTest(part=name):
                 r, (sj, volume, euler) = self.mesh(name, 2, *extra)
                 self.assertAlmostEqual(r["volume"]["junctions_left_out"], sum(j["volume"] for j in r["junctions"]))
@@ -157,6 +159,7 @@ class RealParts(unittest.TestCase):
                 self.assertEqual(euler, cad_euler + 2 * tunnels_closed)
                 self.assertEqual(r["boundary"]["euler_characteristic"], euler, "the report agrees")
                 self.assertEqual(r["quad_mesh"]["unpaired_triangles"], 0)
+                self.assertGreaterEqual(r["quad_mesh"]["gmsh_tries"]["same_patches_not_run"], not_run)
                 self.assertTrue(r["validation"]["passed"], r["validation"])
 
     def test_power_holder_box_is_one_bent_sheet(self):
@@ -164,7 +167,8 @@ class RealParts(unittest.TestCase):
         inside edges and 0.5 mm outside rounds: cylinders, tori, spheres at the corners) is one bent sheet (its rounds
         are bends, bend_rounds.hpp), not four walls standing on each other (it was refused as T-junctions, exit 4).
         It is not meshed yet: every Gmsh try fails on its chordal surface ("Wrong topology of boundary mesh for
-        parametrization", 36 of 36 tries, about 10 minutes): there its facets fold along the sharp bends and at the
+        parametrization", 36 of 36 tries, about 10 minutes on a busy machine; since 2026-12-03 18 are run and 18 not,
+        having the angles of a try whose patches failed: refused in 36 s): there its facets fold along the sharp bends and at the
         2 mm pad round the window on its long wall. So the quad stage gets no time here (--quad-budget 0.001) and
         what is checked is the refusal's stage: the quad mesh, not the sheets."""
         part = real_part("ender3_power_holder_box.step")
