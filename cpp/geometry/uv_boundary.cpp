@@ -17,6 +17,10 @@
 namespace hexlayer {
 namespace {
 
+// The margin per tolerance of the face, its edges and vertices (was 1000: on a STEP written with 4e-3 mm tolerances,
+// the margin then covered most of the face and the exact classifier was asked nearly everywhere).
+constexpr double kToleranceMargin = 3;
+
 using Sample = UvBoundary::Sample;
 
 constexpr std::size_t kChunk = 16;  // segments per chunk
@@ -156,10 +160,10 @@ UvBoundary::Side UvBoundary::side(double u, double v) const {
 }
 
 std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal) {
-  const double tolerance = largestTolerance(face), margin = std::max(1e-5 * diagonal, 1e3 * tolerance);
+  const double tolerance = largestTolerance(face), margin = std::max(1e-5 * diagonal, kToleranceMargin * tolerance);
   const BRepAdaptor_Surface surface(face, false);
-  return std::make_unique<UvBoundary>(face, std::max(surface.UResolution(margin), 1e3 * tolerance),
-                                      std::max(surface.VResolution(margin), 1e3 * tolerance));
+  return std::make_unique<UvBoundary>(face, std::max(surface.UResolution(margin), kToleranceMargin * tolerance),
+                                      std::max(surface.VResolution(margin), kToleranceMargin * tolerance));
 }
 
 }  // namespace hexlayer
