@@ -186,8 +186,9 @@ std::optional<FootFillets> removeFootFillets(const CadSolid& cad, const WallSide
   if (fillets.empty()) return std::nullopt;
   std::optional<CadSolid> smooth = withoutFaces(cad, fillets);
   if (!smooth) return std::nullopt;
-  FootFillets out{std::move(*smooth), std::vector<int>(fillets.begin(), fillets.end()), 0};
+  FootFillets out{std::move(*smooth), std::vector<int>(fillets.begin(), fillets.end()), 0, {}};
   for (int f : fillets) out.largestRadius = std::max(out.largestRadius, *search.radius[f]);
+  out.sides = classifyWallSides(out.smooth);
   return out;
 }
 
@@ -212,9 +213,10 @@ std::optional<FootFillets> removeRootFillets(const CadSolid& cad, const WallSide
   if (fillets.empty()) return std::nullopt;
   std::optional<CadSolid> smooth = withoutFaces(cad, fillets);
   if (!smooth) return std::nullopt;
-  const WallSides smoothSides = classifyWallSides(*smooth);
+  WallSides smoothSides = classifyWallSides(*smooth);
   if (!smoothSides.ownSideFaces.empty() || findSheets(*smooth, smoothSides).size() < 2) return std::nullopt;
-  return FootFillets{std::move(*smooth), std::vector<int>(fillets.begin(), fillets.end()), largest};
+  return FootFillets{std::move(*smooth), std::vector<int>(fillets.begin(), fillets.end()), largest,
+                     std::move(smoothSides)};
 }
 
 }  // namespace hexlayer

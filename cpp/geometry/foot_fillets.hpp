@@ -23,6 +23,7 @@ struct FootFillets {
   CadSolid smooth;           // the part without them (its inputFace: the input's face each face is, a piece of)
   std::vector<int> faces;    // the part's faces removed, 0-based
   double largestRadius = 0;  // of those faces (a chamfer's: its width)
+  WallSides sides;           // smooth's faces' sides (classifyWallSides), no mixed face split yet
 };
 
 // [in] cad: the part (pipeline units); [in] sides: its faces' sides; [in] sheets: findSheets's, the first the base.

@@ -629,11 +629,12 @@ void groupFootFillets(std::vector<SurfaceGroup>& groups, const HexMesh& mesh, co
 
 // Issue 18, fillets at the feet of standing walls (foot_fillets.hpp): the part meshed without them (meshJunctions on
 // the smoothed part), its volume measured against the part's, its fillets grouped by nearness and reported.
-// [in] cad: the part; [in,out] fillets: the smoothed part; [in] o: in the pipeline's units; [in,out] result, clock.
+// [in] cad: the part; [in,out] fillets: the smoothed part and its sides (its mixed faces split here); [in] o: in the
+// pipeline's units; [in,out] result, clock.
 MeshResult meshWithoutFootFillets(const CadSolid& cad, FootFillets& fillets, const MeshOptions& o, MeshResult& result,
                                   StageClock& clock) {
   CadSolid& smooth = fillets.smooth;
-  WallSides sides = classifyWallSides(smooth);
+  WallSides& sides = fillets.sides;
   result.report.facesSplit += splitMixedFaces(smooth, sides);
   const std::vector<Sheet> sheets = findSheets(smooth, sides);
   if (!sides.ownSideFaces.empty() || sheets.size() < 2)

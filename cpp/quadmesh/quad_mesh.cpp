@@ -264,6 +264,13 @@ double tryBudget(const ChordalSurface& chordal, const QuadMeshOptions& o, bool n
 // How a failure in making the patches begins (the tries with the same angles would fail the same way).
 const std::string kPatchesFailed = "failed to make the patches: ";
 
+// The message of the Gmsh error just thrown: Gmsh 4.8 throws its error code, the message is in its logger.
+std::string lastGmshError() {
+  std::string last;
+  gmsh::logger::getLastError(last);
+  return last.empty() ? "unknown Gmsh error" : last;
+}
+
 // Gmsh's patches of the chordal surface, reparametrized (classify, createGeometry): what depends on the split's
 // angles only. Throws geometryError starting with kPatchesFailed if Gmsh fails there. [in] split.
 void makePatches(const PatchSplit& split) {
@@ -271,10 +278,8 @@ void makePatches(const PatchSplit& split) {
   try {
     gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
     gmsh::model::mesh::createGeometry();
-  } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
-    std::string last;
-    gmsh::logger::getLastError(last);
-    throw geometryError(kPatchesFailed + (last.empty() ? "unknown Gmsh error" : last));
+  } catch (...) {
+    throw geometryError(kPatchesFailed + lastGmshError());
   }
 }
 
@@ -658,10 +663,8 @@ std::string inGmshSession(const std::function<std::string()>& work) {
     return work();
   } catch (const std::exception&) {
     throw;
-  } catch (...) {  // Gmsh 4.8 throws its error code; the message is in its logger
-    std::string last;
-    gmsh::logger::getLastError(last);
-    throw geometryError(last.empty() ? "unknown Gmsh error" : last);
+  } catch (...) {  // Gmsh's error code (lastGmshError)
+    throw geometryError(lastGmshError());
   }
 }
 
