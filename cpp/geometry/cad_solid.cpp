@@ -10,6 +10,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <BinTools.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom_Plane.hxx>
 #include <Geom_Surface.hxx>
@@ -100,17 +101,36 @@ TopoDS_Shape readShapeInProcess(const std::string& path) {
 
 namespace {
 
+// The shape in OpenCASCADE's binary format (BinTools), and back: its reals as stored, but the axes of a circle or a
+// cylinder are made orthonormal again on reading (gp_Ax2), a change in the last bit on some parts (two of 66 meshed
+// differently, by as little), the same on every run.
+std::string binaryShape(const TopoDS_Shape& shape) {
+  std::ostringstream out(std::ios::binary);
+  BinTools::Write(shape, out);
+  return out.str();
+}
+
+TopoDS_Shape shapeOfBinary(const std::string& bytes) {
+  std::istringstream in(bytes, std::ios::binary);
+  TopoDS_Shape shape;
+  try {
+    BinTools::Read(shape, in);
+  } catch (const Standard_Failure& e) {
+    throw internalError(std::string("the shape read in the child process could not be read back: ") +
+                        e.GetMessageString());
+  }
+  return shape;
+}
+
 // OpenCASCADE's readers can loop forever (BRepTools::Read on a truncated .brep) or crash on a damaged
-// file, so the file is first read in a child process; only if that ends well is it read here (the
-// readers are deterministic, and a shape handed back as BREP text would not be bit-identical: its
-// reals are written with 15 digits).
+// file, so the file is read in a child process, which hands the shape back in the binary format (reading a
+// STEP file again here took a second on a part of 850 faces; BREP text would round every real to 15 digits).
 TopoDS_Shape readShape(const std::string& path) {
   const Format format = formatOf(path);
   std::error_code ec;
   const double seconds = kReadSeconds + kReadSecondsPerMB * std::filesystem::file_size(path, ec) / 1e6;
-  const ChildResult child =
-      runInChildProcess([&] { return readShapeInProcess(path).IsNull() ? "null" : "shape"; }, seconds);
-  if (child.ok) return readShapeInProcess(path);
+  const ChildResult child = runInChildProcess([&] { return binaryShape(readShapeInProcess(path)); }, seconds);
+  if (child.ok) return shapeOfBinary(child.output);
   if (child.threw) throw inputError("cannot read '" + path + "': " + child.failure);
   throw inputError("cannot read '" + path + "': the " + formatName(format) + " reader " + child.failure +
                    " (a truncated or damaged file?)");
@@ -198,7 +218,7 @@ CadSolid prepareSolid(const TopoDS_Solid& input, double unit) {
     if (scaled.ShapeType() != TopAbs_SOLID) throw inputError("the solid could not be scaled to the pipeline's size");
     cad.solid = TopoDS::Solid(scaled);
   }
-  BRepCheck_Analyzer check(cad.solid);
+  BRepCheck_Analyzer check(cad.solid, true, true);  // its sub-shapes checked in parallel: the same verdict
   if (!check.IsValid()) {
     ShapeFix_Solid fix(cad.solid);  // heal small tolerance defects before giving up
     fix.Perform();
@@ -218,8 +238,9 @@ CadSolid prepareSolid(const TopoDS_Solid& input, double unit) {
   Bnd_Box box;
   BRepBndLib::Add(cad.solid, box);
   cad.diagonal = std::sqrt(box.SquareExtent());
-  // Triangulation used for sampling the faces (thickness rays, bubble candidates).
-  BRepMesh_IncrementalMesh(cad.solid, 0.002 * cad.diagonal, false, 0.3, false);
+  // Triangulation used for sampling the faces (thickness rays, bubble candidates); the faces in parallel, each from
+  // its edges' polygons, made first: the same triangles on any number of threads.
+  BRepMesh_IncrementalMesh(cad.solid, 0.002 * cad.diagonal, false, 0.3, true);
   return cad;
 }
 

@@ -2,6 +2,7 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
+#include <ElCLib.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
 #include <Geom2d_Curve.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -73,6 +74,20 @@ std::vector<Sample> polyline(const Handle(Geom2d_Curve) & pcurve, double first, 
   return line;
 }
 
+// The pcurve on [first, last] in closed form if it is a line or a circle (Kind::Other otherwise).
+UvBoundary::ExactPcurve exactPcurve(const Handle(Geom2d_Curve) & pcurve, double first, double last) {
+  UvBoundary::ExactPcurve exact;
+  if (pcurve.IsNull()) return exact;
+  const Geom2dAdaptor_Curve curve(pcurve, first, last);
+  if (curve.GetType() != GeomAbs_Line && curve.GetType() != GeomAbs_Circle) return exact;
+  exact.kind =
+      curve.GetType() == GeomAbs_Line ? UvBoundary::ExactPcurve::Kind::Line : UvBoundary::ExactPcurve::Kind::Circle;
+  exact.a = curve.Value(first), exact.b = curve.Value(last);
+  if (exact.kind == UvBoundary::ExactPcurve::Kind::Circle) exact.circle = curve.Circle();
+  exact.first = first, exact.last = last;
+  return exact;
+}
+
 // Two pcurves meet at a vertex, but each end is evaluated on its own curve, a few ulps from the
 // other's: where the line through a point runs exactly through such a joint (a circle's seam on the
 // line through its centre), crossings would be counted on neither side of it or on both. Ends closer
@@ -102,16 +117,17 @@ UvBoundary::UvBoundary(const TopoDS_Face& face, double marginU, double marginV)
     double first = 0, last = 0;
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face, first, last);
     lines.push_back(pcurve.IsNull() ? std::vector<Sample>{} : polyline(pcurve, first, last, scaleU_, scaleV_));
+    pcurves_.push_back(exactPcurve(pcurve, first, last));
     sampled_ = !lines.back().empty();
   }
   if (!sampled_) return;
   joinEnds(lines);
-  for (const auto& line : lines) addPolyline(line);
+  for (std::size_t i = 0; i < lines.size(); ++i) addPolyline(lines[i], static_cast<int>(i));
 }
 
-void UvBoundary::addPolyline(const std::vector<Sample>& line) {
+void UvBoundary::addPolyline(const std::vector<Sample>& line, int pcurve) {
   for (std::size_t start = 0; start + 1 < line.size(); start += kChunk) {
-    Chunk c{{}, line[start].x, line[start].x, line[start].y, line[start].y};
+    Chunk c{{}, line[start].x, line[start].x, line[start].y, line[start].y, pcurve};
     for (std::size_t i = start; i < std::min(line.size(), start + kChunk + 1); ++i) {
       c.points.push_back(line[i]);
       c.xMin = std::min(c.xMin, line[i].x), c.xMax = std::max(c.xMax, line[i].x);
@@ -157,6 +173,34 @@ UvBoundary::Side UvBoundary::side(double u, double v) const {
   }
   if ((right + left) % 2 != 0) return Side::Undecided;  // the polylines do not close: a gap in a wire
   return right % 2 ? Side::Inside : Side::Outside;
+}
+
+// The distance from p to the segment a-b, or to the arc: to the circle where p's angle is within [first, last] (taken
+// modulo the period from first), else to the nearer end.
+double UvBoundary::ExactPcurve::distance(const gp_Pnt2d& p) const {
+  if (kind == Kind::Line) {
+    const Sample pa{0, a.X(), a.Y()}, pb{1, b.X(), b.Y()};
+    return std::sqrt(squaredDistance(p.X(), p.Y(), pa, pb));
+  }
+  const double period = 2 * M_PI;
+  double along = std::fmod(ElCLib::Parameter(circle, p) - first, period);  // from first, in [0, period)
+  if (along < 0) along += period;
+  if (first + along <= last) return std::abs(p.Distance(circle.Location()) - circle.Radius());
+  return std::min(p.Distance(a), p.Distance(b));
+}
+
+bool UvBoundary::onLineOrCircle(double u, double v, double tolerance) const {
+  if (!sampled_) return false;
+  const double x = u * scaleU_, y = v * scaleV_;
+  const double reachX = kSag + tolerance * scaleU_,
+               reachY = kSag + tolerance * scaleV_;  // the pcurve's box, in margins
+  for (const Chunk& c : chunks_) {
+    const ExactPcurve& pcurve = pcurves_[c.pcurve];
+    if (pcurve.kind == ExactPcurve::Kind::Other) continue;
+    const auto [dx, dy] = gaps(c, x, y);
+    if (dx <= reachX && dy <= reachY && pcurve.distance(gp_Pnt2d(u, v)) <= tolerance) return true;
+  }
+  return false;
 }
 
 std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal) {

@@ -3,6 +3,8 @@
 // than the margin is left undecided (an exact classifier, BRepClass_FaceClassifier, decides it).
 #pragma once
 #include <TopoDS_Face.hxx>
+#include <gp_Circ2d.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include <algorithm>
 #include <memory>
@@ -18,6 +20,14 @@ class UvBoundary {
   struct Sample {
     double t, x, y;
   };
+  // A pcurve in closed form, if it is a line segment a-b or an arc of `circle` on [first, last].
+  struct ExactPcurve {
+    enum class Kind { Other, Line, Circle } kind = Kind::Other;
+    gp_Pnt2d a, b;  // its ends
+    gp_Circ2d circle;
+    double first = 0, last = 0;
+    double distance(const gp_Pnt2d& p) const;
+  };
 
   // `marginU`, `marginV`: how far (in u and v) a point must be from every pcurve to be decided.
   UvBoundary(const TopoDS_Face& face, double marginU, double marginV);
@@ -26,22 +36,29 @@ class UvBoundary {
   // A lower bound on the distance from (u, v) to the face's pcurves, in margins (times margin(): in (u, v)); 0 if the
   // boundary could not be sampled.
   double clearance(double u, double v) const;
+  // True if (u, v) lies within `tolerance` (in u, v) of a pcurve that is a line segment or a circular arc, the distance
+  // computed in closed form: BRepClass_FaceClassifier calls a point ON an edge whose pcurve is within its tolerance of
+  // it (CheckOn). False elsewhere, and on the face's other pcurves: undecided by this test.
+  // [in] u, v: the point; [in] tolerance: in (u, v).
+  bool onLineOrCircle(double u, double v, double tolerance) const;
   // The smaller of the two margins (u, v) given at construction.
   double margin() const { return std::min(1 / scaleU_, 1 / scaleV_); }
 
  private:
-  // A run of at most 16 segments of one pcurve's polyline, with its bounding box.
+  // A run of at most 16 segments of one pcurve's polyline, with its bounding box and its pcurve (into pcurves_).
   struct Chunk {
     std::vector<Sample> points;
     double xMin, xMax, yMin, yMax;
+    int pcurve;
   };
-  void addPolyline(const std::vector<Sample>& line);
+  void addPolyline(const std::vector<Sample>& line, int pcurve);
   // How far (x, y) (scaled) lies from the chunk's box along x and along y (0 within its range).
   static std::pair<double, double> gaps(const Chunk& c, double x, double y);
 
   double scaleU_, scaleV_;
   bool sampled_ = true;  // false if a pcurve is missing or would need too many segments
   std::vector<Chunk> chunks_;
+  std::vector<ExactPcurve> pcurves_;  // in the face's edge order
 };
 
 // A face's UvBoundary with the margins the exact classifiers' callers use: max(1e-5 x the part's diagonal,

@@ -87,12 +87,18 @@ std::optional<FacePoint> WallProjector::project(Side side, const Vec3& p) const 
   return nearest(faces_[sideIndex(side)], p);
 }
 
-bool WallProjector::mayReach(Side side, const Vec3& p, double reach) const {
+bool WallProjector::reaches(Side side, const Vec3& p, double reach) const {
   const PieceSet& set = faces_[sideIndex(side)];
-  if (!set.tree) return !set.pieces.empty();
+  CadFaceProbe* own = probe();
+  std::unique_ptr<CadFaceProbe> local;  // off the counted threads: one for this query
+  if (!own) local = std::make_unique<CadFaceProbe>(*cadFaces_), own = local.get();
+  auto near = [&](int i) {
+    return mayBeWithin(p, boxOf(pieces_[i].box), reach) && own->distance(pieces_[i].face, p) <= reach;
+  };
+  if (!set.tree) return std::any_of(set.pieces.begin(), set.pieces.end(), near);
   bool found = false;
   set.tree->traverse([&](const Box& b) { return mayBeWithin(p, b, reach); },
-                     [&](int k) { return found = mayBeWithin(p, boxOf(pieces_[set.pieces[k]].box), reach); });
+                     [&](int k) { return found = near(set.pieces[k]); });
   return found;
 }
 
@@ -201,13 +207,19 @@ std::optional<WallProjector::Hit> WallProjector::distance(int piece, const TopoD
 std::optional<WallProjector::Hit> WallProjector::planeFoot(int piece, const TopoDS_Vertex& vertex,
                                                            std::size_t thread) const {
   const Piece& w = pieces_[piece];
-  if (w.shape.ShapeType() != TopAbs_FACE || thread >= probes_.size()) return std::nullopt;
-  std::unique_ptr<CadFaceProbe>& probe = probes_[thread];
-  if (!probe) probe = std::make_unique<CadFaceProbe>(*cadFaces_);
-  const std::optional<std::pair<double, gp_Pnt>> foot = probe->planeFoot(w.face, BRep_Tool::Pnt(vertex));
+  CadFaceProbe* own = w.shape.ShapeType() == TopAbs_FACE && thread < probes_.size() ? probe() : nullptr;
+  if (!own) return std::nullopt;
+  const std::optional<std::pair<double, gp_Pnt>> foot = own->planeFoot(w.face, BRep_Tool::Pnt(vertex));
   if (!foot) return std::nullopt;
   const gp_Pnt& q = foot->second;
   return Hit{foot->first, FacePoint{Vec3(q.X(), q.Y(), q.Z()), w.face}};
+}
+
+CadFaceProbe* WallProjector::probe() const {
+  const std::size_t thread = static_cast<std::size_t>(threadIndex());
+  if (thread >= probes_.size()) return nullptr;
+  if (!probes_[thread]) probes_[thread] = std::make_unique<CadFaceProbe>(*cadFaces_);
+  return probes_[thread].get();
 }
 
 }  // namespace hexlayer

@@ -35,9 +35,10 @@ class WallProjector {
   // edge: one of the faces there); nullopt for a side without faces.
   std::optional<FacePoint> project(Side side, const Vec3& p) const;
 
-  // False if every face of the `side` wall is farther than `reach` from p by its box (then project(side, p) is
-  // farther too); true if one may be nearer. [in] reach: >= 0.
-  bool mayReach(Side side, const Vec3& p, double reach) const;
+  // True if a face of the `side` wall is within `reach` of p: the distance of project(side, p), as
+  // BRepExtrema_DistShapeShape measures it (CadFaceProbe::distance, the same bits), without its nearest point.
+  // [in] reach: >= 0.
+  bool reaches(Side side, const Vec3& p, double reach) const;
 
   // The point nearest to p on the one face `face` (0-based in CadSolid::faces); nullopt if it has no side.
   std::optional<FacePoint> projectOntoFace(int face, const Vec3& p) const;
@@ -83,6 +84,8 @@ class WallProjector {
   std::optional<Hit> distance(int piece, const TopoDS_Vertex& vertex) const;
   // distance()'s answer in closed form on a planar face where that is certain, else nullopt. [in] thread: the caller's.
   std::optional<Hit> planeFoot(int piece, const TopoDS_Vertex& vertex, std::size_t thread) const;
+  // The calling thread's probe (built at its first query); null off the threads counted at construction.
+  CadFaceProbe* probe() const;
 
   std::vector<Piece> pieces_;
   std::array<PieceSet, 3> faces_;                      // by side: bottom, lateral, top (Side + 1)

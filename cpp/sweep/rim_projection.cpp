@@ -140,16 +140,12 @@ std::vector<CornerEdge> cornerCandidates(const CadSolid& cad, const WallSides& s
 }
 
 // The candidates that run from the bottom wall to the top (their ends within 1e-6 part diagonals of them), bottom
-// end first, in their order. The ends are tested in parallel (a wall's projection is costly on a face with many
-// edges; one whose faces' boxes are all farther than twice the tolerance is not asked).
+// end first, in their order. The ends are tested in parallel (a wall's faces whose boxes are farther than the
+// tolerance are not asked).
 std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides, const WallProjector& walls) {
   std::vector<CornerEdge> candidates = cornerCandidates(cad, sides);
   const double tolerance = 1e-6 * cad.diagonal;
-  auto on = [&](Side side, const Vec3& p) {
-    if (!walls.mayReach(side, p, 2 * tolerance)) return false;
-    const std::optional<FacePoint> q = walls.project(side, p);
-    return q && (q->point - p).norm() <= tolerance;
-  };
+  auto on = [&](Side side, const Vec3& p) { return walls.reaches(side, p, tolerance); };
   std::vector<char> joins(candidates.size(), 0);
 #pragma omp parallel for schedule(dynamic, 8)
   for (long i = 0; i < static_cast<long>(candidates.size()); ++i) {
