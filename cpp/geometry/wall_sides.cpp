@@ -278,12 +278,13 @@ std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, WallSides& w,
 
 Error ownSideError(const CadSolid& cad, const WallSides& w) { return junctionError(cad, w, w.ownSideFaces); }
 
-WallSides classifyWallSides(const CadSolid& cad) {
+WallSides classifyWallSides(const CadSolid& cad) { return classifyWallSides(cad, BoundaryTriangles(cad)); }
+
+WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& boundary) {
   const int n = cad.faces.Extent();
   WallSides w;
   w.faces.resize(n);
   RayCaster rays(cad, 1e-7 * cad.diagonal);
-  const BoundaryTriangles boundary(cad);
   std::vector<Vec3> meanNormal(n);
   std::vector<std::map<int, double>> across(n);  // per face: ray area crossing the wall to each face
   double totalArea = 0;

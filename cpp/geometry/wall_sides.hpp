@@ -12,6 +12,8 @@
 
 namespace hexlayer {
 
+class BoundaryTriangles;
+
 // One sample of a face with its inward ray: where it is on the face, its share of the face's area, its
 // outward normal, and whether the ray crosses the wall (classifyWallSides).
 struct RayMark {
@@ -60,9 +62,10 @@ struct WallSides {
 //    round of a zero-radius bend, bend_rounds.hpp) is a wall face too, listed in bendRounds.
 //  - Walls whose rays cross to a wall that the relations put on their own side (over 2 % of the wall
 //    area) are where the sheet branches: they are listed in ownSideFaces (see ownSideError).
-// [in] cad: the prepared solid. Throws geometryError when the part is not a thin section or its sides
-// cannot be told apart.
+// [in] cad: the prepared solid; [in] boundary: its triangles (built here if not given). Throws geometryError when the
+// part is not a thin section or its sides cannot be told apart.
 WallSides classifyWallSides(const CadSolid& cad);
+WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& boundary);
 
 // The error for a sheet that branches (WallSides::ownSideFaces not empty): the faces and where they
 // meet the other walls.

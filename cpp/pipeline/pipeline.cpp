@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -16,6 +17,7 @@
 #include "core/append.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "geometry/boundary_triangles.hpp"
 #include "geometry/cad_faces.hpp"
 #include "geometry/foot_fillets.hpp"
 #include "geometry/junction_cut.hpp"
@@ -681,7 +683,10 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   // Every stage up to the surface groups works on the part scaled to one size (normalizingUnit).
   CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid, normalizingUnit(solid)); });
   const MeshOptions o = inPipelineUnits(given, cad.unit);
-  WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad); });
+  // The boundary's triangles (a finer BRepMesh on freeform faces: seconds on a B-spline shell), made once for the wall
+  // sides and the tet filter, again only if faces were split in between.
+  std::optional<BoundaryTriangles> boundary;
+  WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad, boundary.emplace(cad)); });
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   if (!o.dropJunctions && sides.ownSideFaces.empty()) {
     if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1) {
@@ -700,7 +705,9 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   const auto nodes = clock.run("bubbles", [&] { return packBubbles(cad, sides, BubbleOptions{}); });
   r.bubbles = nodes.size();
   TetMesh tets = clock.run("tets", [&] { return delaunayTets(nodes); });
-  r.tetsDropped = clock.run("tet_filter", [&] { return keepSpanningTetsInside(tets, cad); });
+  r.tetsDropped = clock.run("tet_filter", [&] {
+    return keepSpanningTetsInside(tets, cad, r.facesSplit ? boundary.emplace(cad) : *boundary);
+  });
   r.tetsKept = tets.tets.size();
   ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets, cad.unit); });
   r.tetClasses = classifyTets(tets);

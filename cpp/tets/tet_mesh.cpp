@@ -144,8 +144,11 @@ TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes) {
 }
 
 TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
+  return keepSpanningTetsInside(mesh, cad, BoundaryTriangles(cad));
+}
+
+TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad, const BoundaryTriangles& triangles) {
   std::vector<char> verdict(mesh.tets.size());
-  const BoundaryTriangles triangles(cad);
 #pragma omp parallel
   {
     std::optional<RayCaster> rays;

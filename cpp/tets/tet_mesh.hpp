@@ -10,6 +10,8 @@
 
 namespace hexlayer {
 
+class BoundaryTriangles;
+
 struct TetMesh {
   std::vector<Vec3> nodes;
   std::vector<Side> side;  // Top or Bottom per node
@@ -37,7 +39,9 @@ bool isCoplanarTet(const std::array<Vec3, 4>& corners);
 TetMesh delaunayTets(const std::vector<SurfaceNode>& nodes);
 
 // Keeps the tets inside the solid that span top and bottom (also those of zero volume); returns
-// what was dropped. [in,out] mesh: its tets filtered; [in] cad.
+// what was dropped. [in,out] mesh: its tets filtered; [in] cad; [in] triangles: its boundary's (built here if not
+// given).
 TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad);
+TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad, const BoundaryTriangles& triangles);
 
 }  // namespace hexlayer
