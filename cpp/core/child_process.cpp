@@ -61,20 +61,25 @@ bool readAll(int fd, std::string& bytes, std::chrono::steady_clock::time_point d
   }
 }
 
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 }  // namespace
 
-ChildResult runInChildProcess(const std::function<std::string()>& work, double timeoutSeconds) {
-  ChildResult result;
+StartedChild startChildProcess(const std::function<std::string()>& work, double timeoutSeconds) {
+  StartedChild child;
+  child.timeoutSeconds = timeoutSeconds;
   int fds[2];
   if (pipe(fds) != 0) {
-    result.failure = std::string("cannot create a pipe: ") + std::strerror(errno);
-    return result;
+    child.failure = std::string("cannot create a pipe: ") + std::strerror(errno);
+    return child;
   }
   const pid_t pid = fork();
   if (pid < 0) {
     close(fds[0]), close(fds[1]);
-    result.failure = std::string("cannot fork: ") + std::strerror(errno);
-    return result;
+    child.failure = std::string("cannot fork: ") + std::strerror(errno);
+    return child;
   }
   if (pid == 0) {
     prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed parent (Ctrl-C, a test's time-out) takes its Gmsh child along
@@ -82,14 +87,34 @@ ChildResult runInChildProcess(const std::function<std::string()>& work, double t
     childMain(fds[1], work);
   }
   close(fds[1]);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds);
+  child.pid = pid, child.fd = fds[0], child.deadline = steadySeconds() + timeoutSeconds;
+  return child;
+}
+
+void stopChild(StartedChild& child) {
+  if (child.pid < 0) return;
+  close(child.fd);
+  kill(child.pid, SIGKILL);
+  waitpid(child.pid, nullptr, 0);
+  child.pid = -1, child.fd = -1;
+}
+
+ChildResult waitForChild(StartedChild& child) {
+  ChildResult result;
+  if (child.pid < 0) {
+    result.failure = child.failure;
+    return result;
+  }
+  const auto deadline = std::chrono::steady_clock::time_point(
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(child.deadline)));
   std::string bytes;
-  const bool finished =
-      readAll(fds[0], bytes, std::chrono::time_point_cast<std::chrono::steady_clock::duration>(deadline));
-  close(fds[0]);
-  if (!finished) kill(pid, SIGKILL);
+  const bool finished = readAll(child.fd, bytes, deadline);
+  close(child.fd);
+  if (!finished) kill(child.pid, SIGKILL);
   int status = 0;
-  waitpid(pid, &status, 0);
+  waitpid(child.pid, &status, 0);
+  child.pid = -1, child.fd = -1;
+  const double timeoutSeconds = child.timeoutSeconds;
   if (!finished) {
     std::ostringstream after;  // whole seconds, or a test's budget below one
     if (timeoutSeconds >= 1)
@@ -110,6 +135,11 @@ ChildResult runInChildProcess(const std::function<std::string()>& work, double t
     result.threw = true;
   }
   return result;
+}
+
+ChildResult runInChildProcess(const std::function<std::string()>& work, double timeoutSeconds) {
+  StartedChild child = startChildProcess(work, timeoutSeconds);
+  return waitForChild(child);
 }
 
 }  // namespace hexlayer

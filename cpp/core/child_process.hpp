@@ -19,4 +19,20 @@ struct ChildResult {
 // [in] work: runs in the child; [in] timeoutSeconds: its time budget (> 0). Returns the result or why not.
 ChildResult runInChildProcess(const std::function<std::string()>& work, double timeoutSeconds);
 
+// runInChildProcess in two steps, so that two children can run side by side: the child started, then its result
+// waited for (or the child killed, if its result is no longer wanted). A started child must be waited for or stopped.
+struct StartedChild {
+  int pid = -1;  // -1: none (fork or pipe failed: `failure` says why)
+  int fd = -1;   // the pipe its result comes through
+  double timeoutSeconds = 0;
+  double deadline = 0;  // steady-clock seconds
+  std::string failure;
+};
+// [in] work, timeoutSeconds: as runInChildProcess. Returns the running child.
+StartedChild startChildProcess(const std::function<std::string()>& work, double timeoutSeconds);
+// [in,out] child: waited for and closed. Returns its result, as runInChildProcess.
+ChildResult waitForChild(StartedChild& child);
+// [in,out] child: killed and closed.
+void stopChild(StartedChild& child);
+
 }  // namespace hexlayer

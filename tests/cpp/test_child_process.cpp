@@ -1,5 +1,6 @@
 // core/child_process.hpp: work in a forked child; its bytes, its exception, its crash or its hang as a failure.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <chrono>
 #include <csignal>
@@ -41,4 +42,31 @@ TEST(ChildProcess, BytesExceptionCrashAndHang) {
       0.5);
   EXPECT_FALSE(hung.ok);
   EXPECT_FALSE(hung.failure.empty());
+}
+
+// Two children side by side (the Gmsh tries run so): each result comes back whole through its own pipe, a large one
+// too (the second child waits on its full pipe until it is read), and a child no longer wanted is stopped.
+TEST(ChildProcess, StartedChildrenSideBySide) {
+  const std::string big(1 << 20, 'q');  // far beyond a pipe's buffer
+  StartedChild first = startChildProcess([] { return std::string("first"); }, 10);
+  StartedChild second = startChildProcess([&] { return big; }, 10);
+  StartedChild unwanted = startChildProcess(
+      []() -> std::string {
+        std::this_thread::sleep_for(std::chrono::seconds(30));
+        return "late";
+      },
+      60);
+  ASSERT_GT(first.pid, 0);
+  ASSERT_GT(second.pid, 0);
+  ASSERT_GT(unwanted.pid, 0);
+  const ChildResult a = waitForChild(first);
+  const ChildResult b = waitForChild(second);
+  EXPECT_TRUE(a.ok);
+  EXPECT_EQ(a.output, "first");
+  EXPECT_TRUE(b.ok);
+  EXPECT_EQ(b.output, big);
+  EXPECT_EQ(first.pid, -1);
+  stopChild(unwanted);
+  EXPECT_EQ(unwanted.pid, -1);
+  EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1) << "no child left";
 }
