@@ -123,6 +123,26 @@ UvBoundary::UvBoundary(const TopoDS_Face& face, double marginU, double marginV)
   if (!sampled_) return;
   joinEnds(lines);
   for (std::size_t i = 0; i < lines.size(); ++i) addPolyline(lines[i], static_cast<int>(i));
+  binChunks();
+}
+
+void UvBoundary::binChunks() {
+  if (chunks_.empty()) return;
+  double low = chunks_[0].yMin, high = chunks_[0].yMax;
+  for (const Chunk& c : chunks_) low = std::min(low, c.yMin), high = std::max(high, c.yMax);
+  binLow_ = low - 1;
+  const std::size_t count = std::clamp<std::size_t>(chunks_.size(), 1, 1024);
+  binWidth_ = std::max((high + 1 - binLow_) / count, 1e-300);
+  bins_.assign(count, {});
+  for (std::size_t i = 0; i < chunks_.size(); ++i)
+    for (std::size_t b = bin(chunks_[i].yMin - 1); b <= bin(chunks_[i].yMax + 1); ++b)
+      bins_[b].push_back(static_cast<int>(i));
+}
+
+// The band of y, the first or the last beyond them (its chunks are a superset of those that count there).
+std::size_t UvBoundary::bin(double y) const {
+  const double at = (y - binLow_) / binWidth_;
+  return at > 0 ? static_cast<std::size_t>(std::min(at, static_cast<double>(bins_.size() - 1))) : 0;
 }
 
 void UvBoundary::addPolyline(const std::vector<Sample>& line, int pcurve) {
@@ -159,8 +179,10 @@ double UvBoundary::clearance(double u, double v) const {
 UvBoundary::Side UvBoundary::side(double u, double v) const {
   if (!sampled_) return Side::Undecided;
   const double x = u * scaleU_, y = v * scaleV_;
-  int right = 0, left = 0;  // crossings of the line through the point parallel to u, on either side
-  for (const Chunk& c : chunks_) {
+  int right = 0, left = 0;                  // crossings of the line through the point parallel to u, on either side
+  if (bins_.empty()) return Side::Outside;  // no pcurve: nothing is crossed
+  for (const int i : bins_[bin(y)]) {
+    const Chunk& c = chunks_[i];
     const auto [dx, dy] = gaps(c, x, y);
     const bool near = dx * dx + dy * dy < 1;
     if (!near && dy > 0) continue;

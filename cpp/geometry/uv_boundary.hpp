@@ -52,6 +52,10 @@ class UvBoundary {
     int pcurve;
   };
   void addPolyline(const std::vector<Sample>& line, int pcurve);
+  // The chunks by bands of y: each in every band its y-range, widened by 1 (the undecided band), overlaps. Only those
+  // can cross the line through a point parallel to u or lie within a margin of it.
+  void binChunks();
+  std::size_t bin(double y) const;
   // How far (x, y) (scaled) lies from the chunk's box along x and along y (0 within its range).
   static std::pair<double, double> gaps(const Chunk& c, double x, double y);
 
@@ -59,6 +63,8 @@ class UvBoundary {
   bool sampled_ = true;  // false if a pcurve is missing or would need too many segments
   std::vector<Chunk> chunks_;
   std::vector<ExactPcurve> pcurves_;  // in the face's edge order
+  double binLow_ = 0, binWidth_ = 1;  // band b covers y in [binLow_ + b binWidth_, binLow_ + (b + 1) binWidth_)
+  std::vector<std::vector<int>> bins_;
 };
 
 // A face's UvBoundary with the margins the exact classifiers' callers use: max(1e-5 x the part's diagonal,
