@@ -23,6 +23,7 @@
 #include "core/point_grid.hpp"
 #include "core/threads.hpp"
 #include "geometry/face_sampling.hpp"
+#include "geometry/uv_boundary.hpp"
 
 namespace hexlayer {
 
@@ -172,11 +173,19 @@ std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, doub
 }
 
 // One thread's OpenCASCADE tools on a face (neither is safe to share between threads: a B-spline
-// surface's adaptor caches its last span).
+// surface's adaptor caches its last span), and the face's quick test, shared.
 struct FaceTools {
-  explicit FaceTools(const TopoDS_Face& face) : surface(face), inside(face, 1e-9) {}
+  FaceTools(const TopoDS_Face& face, const UvBoundary* quick) : surface(face), inside(face, 1e-9), quick(quick) {}
   BRepAdaptor_Surface surface;
   BRepTopAdaptor_FClass2d inside;
+  const UvBoundary* quick;  // on a plane (its parameters are not periodic, as FClass2d's may be), else null
+  // Strictly inside the face: the quick test where it decides (beyond a margin of the edges, where FClass2d's answer,
+  // exact outside its polygons' sag, is the same), else FClass2d.
+  bool within(double u, double v) {
+    const UvBoundary::Side side = quick ? quick->side(u, v) : UvBoundary::Side::Undecided;
+    if (side != UvBoundary::Side::Undecided) return side == UvBoundary::Side::Inside;
+    return inside.Perform(gp_Pnt2d(u, v)) == TopAbs_IN;
+  }
 };
 
 // Bubble i after one relaxation step: moved along the net bubble force of the others where they
@@ -206,7 +215,7 @@ std::optional<FaceBubble> relaxedBubble(std::size_t i, double d, const Packing& 
   J << du.X(), dv.X(), du.Y(), dv.Y(), du.Z(), dv.Z();
   const Eigen::Vector2d duv = (J.transpose() * J).ldlt().solve(J.transpose() * step);
   FaceBubble b{bubbles[i].u + duv.x(), bubbles[i].v + duv.y(), Vec3::Zero()};
-  if (!duv.allFinite() || tools.inside.Perform(gp_Pnt2d(b.u, b.v)) != TopAbs_IN) return std::nullopt;
+  if (!duv.allFinite() || !tools.within(b.u, b.v)) return std::nullopt;
   b.point = toVec(tools.surface.Value(b.u, b.v));
   return b;
 }
@@ -244,8 +253,10 @@ void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<do
     const double d = faceDiameter[f];
     const std::vector<FaceSample> candidates = sampleFace(face, 0.2 * d);
     std::vector<FaceBubble> bubbles = seedFace(candidates, d, side, pack);
+    const std::unique_ptr<UvBoundary> quick =
+        BRepAdaptor_Surface(face).GetType() == GeomAbs_Plane ? faceUvBoundary(face, cad.diagonal) : nullptr;
     std::vector<std::unique_ptr<FaceTools>> tools;
-    for (int t = 0; t < threadCount(); ++t) tools.push_back(std::make_unique<FaceTools>(face));
+    for (int t = 0; t < threadCount(); ++t) tools.push_back(std::make_unique<FaceTools>(face, quick.get()));
     for (int step = 0; step < o.relaxationSteps; ++step) relaxFace(d, pack, bubbles, tools);
     // Population control: a bubble that ended too close to another is removed ...
     PointGrid own(d);
