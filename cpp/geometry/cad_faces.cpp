@@ -19,6 +19,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/bnd_box.hpp"
+
 namespace hexlayer {
 namespace {
 
@@ -97,8 +99,14 @@ CadFaces::CadFaces(const CadSolid& cad) : keepsFirstVertex_(OSD_ThreadPool::Defa
     faces_.push_back(makeFace(cad, i));
     faces_.back().neighbours = std::move(neighbours[i]);
     faces_.back().name = inputFaceName(cad, i);
+    std::vector<Box> boxes;
+    for (int e : faces_.back().edges)
+      if (!edges_[e].box.IsVoid()) boxes.push_back(boxOf(edges_[e].box));
+    if (boxes.size() == faces_.back().edges.size()) faces_.back().edgeTree = std::make_unique<BoxTree>(boxes);
   }
 }
+
+CadFaces::~CadFaces() = default;
 
 CadFaceProbe::CadFaceProbe(const CadFaces& faces)
     : faces_(faces), surfaces_(faces.count()), curves_(faces.edgeCount()), explorers_(faces.count()) {}
@@ -217,12 +225,23 @@ double CadFaceProbe::vertexDistance(const CadFaces::Face& f, const gp_Pnt& p) co
 std::optional<double> CadFaceProbe::edgesDistance(const CadFaces::Face& f, const gp_Pnt& p, const Bnd_Box& pointBox,
                                                   std::optional<double> nearest) {
   TopoDS_Vertex vertex;
-  for (int e : f.edges) {
+  auto visit = [&](int e) {
     const Bnd_Box& box = faces_.edge(e).box;
-    if (box.IsVoid() || (nearest && pointBox.Distance(box) > *nearest + kEps)) continue;
+    if (box.IsVoid() || (nearest && pointBox.Distance(box) > *nearest + kEps)) return false;
     if (vertex.IsNull()) vertex = BRepBuilderAPI_MakeVertex(p).Vertex();
     if (const std::optional<double> d = edgeDistance(e, vertex)) nearest = std::min(nearest.value_or(*d), *d);
+    return false;
+  };
+  if (!f.edgeTree || !nearest) {
+    for (int e : f.edges) visit(e);
+    return nearest;
   }
+  // The least of the edges' distances is the same whichever edges farther than it are asked: only those whose boxes
+  // may be within the distance so far (plus the point box's gap, 1e-7) are.
+  const double reach = *nearest + kEps + 2 * Precision::Confusion();
+  const Vec3 at(p.X(), p.Y(), p.Z());
+  f.edgeTree->traverse([&](const Box& b) { return mayBeWithin(at, b, reach); },
+                       [&](int k) { return visit(f.edges[k]); });
   return nearest;
 }
 

@@ -24,6 +24,8 @@
 
 namespace hexlayer {
 
+class BoxTree;
+
 // A point's faces: the face it was put on (first, whatever its distance) and every face sharing a
 // vertex with that one that the point lies on within the face's tolerance (a CAD edge or vertex).
 struct FacesAtPoint {
@@ -46,6 +48,7 @@ class CadFaces {
     std::vector<int> neighbours;        // faces sharing a vertex, ascending
     double uvBounds[4] = {0, 0, 0, 0};  // BRepTools::UVBounds: u1, u2, v1, v2
     std::unique_ptr<UvBoundary> boundary;
+    std::unique_ptr<BoxTree> edgeTree;  // over the boxes of `edges`, in their order (none if one is void)
   };
   // An edge and the box BRepExtrema gives it.
   struct Edge {
@@ -55,6 +58,7 @@ class CadFaces {
   };
 
   explicit CadFaces(const CadSolid& cad);
+  ~CadFaces();  // where BoxTree is complete
   int count() const { return static_cast<int>(faces_.size()); }
   double tolerance(int face) const { return faces_[face].tolerance; }
   const Face& face(int face) const { return faces_[face]; }

@@ -22,12 +22,6 @@ namespace {
 
 int sideIndex(Side side) { return static_cast<int>(side) + 1; }
 
-// Whether a tree node's box may hold a piece whose box is within `limit` of p: a margin far above the rounding
-// of the two ways of measuring (the pieces' own Bnd_Box::Distance decides).
-bool mayBeWithin(const Vec3& p, const Box& box, double limit) {
-  return std::sqrt(squaredDistanceToBox(p, box)) <= limit * (1 + 1e-9) + 1e-12;
-}
-
 }  // namespace
 
 WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides)
