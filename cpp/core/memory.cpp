@@ -21,8 +21,12 @@ double machineBytes() {
 }
 
 MemoryEstimate estimateMemory(double wallArea, double size, int layers, int order, double machine) {
+  return estimateMemoryOfQuads(wallArea / (size * size), layers, order, machine);
+}
+
+MemoryEstimate estimateMemoryOfQuads(double quads, int layers, int order, double machine) {
   MemoryEstimate e;
-  e.quads = wallArea / (size * size);
+  e.quads = quads;
   e.hexes = e.quads * layers;
   e.bytes = e.hexes * kBytesPerHex * (order == 2 ? 2 : 1);
   e.machineBytes = machine;

@@ -22,4 +22,8 @@ struct MemoryEstimate {
 // twice that for 20-node hexes.
 MemoryEstimate estimateMemory(double wallArea, double size, int layers, int order, double machine);
 
+// The same from the number of quads made (adaptive sizes run down to --min-size: the wall's area over the size
+// squared under-counts them). [in] quads: of the chordal surface; [in] layers, order, machine: as estimateMemory.
+MemoryEstimate estimateMemoryOfQuads(double quads, int layers, int order, double machine);
+
 }  // namespace hexlayer

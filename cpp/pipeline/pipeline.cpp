@@ -110,6 +110,18 @@ MemoryEstimate requireMemory(const MeshOptions& o, const WallSides& sides, doubl
   throw usageError(msg.str());
 }
 
+// The guard again once the quads are made, with adaptive sizing (its sizes run down to --min-size, where the planned
+// size under-counts them), before the sweep makes the hexes; returns the estimate.
+MemoryEstimate requireMemoryOfQuads(const MeshOptions& o, std::size_t quads) {
+  const MemoryEstimate m = estimateMemoryOfQuads(static_cast<double>(quads), o.layers, o.order, machineBytes());
+  if (m.fits()) return m;
+  std::ostringstream msg;
+  msg << std::setprecision(3) << "adaptive sizing made " << m.quads << " quads: " << m.hexes
+      << " hexes would need about " << m.bytes / 1e9 << " GB of memory (estimated), more than this machine's "
+      << m.machineBytes / 1e9 << " GB: choose a larger --min-size or --size, or fewer --layers";
+  throw usageError(msg.str());
+}
+
 std::vector<std::string> faceNames(const CadSolid& cad, const Sheet& s) {
   std::vector<std::string> names;  // a split face's pieces once
   for (int f : s.faces)
@@ -727,6 +739,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
   if (edit) edit(cad, stage);
   const QuadMesh& quads = stage.quads;
+  if (qo.adaptive) r.memory = requireMemoryOfQuads(o, quads.quads.size());
   r.chordal.fairingIterations = stage.fairingIterations;
   r.chordal.knifeFacetsDropped = stage.knifeFacets;
   r.quadMesh = countQuadMesh(quads);

@@ -18,6 +18,14 @@ TEST(Memory, EstimateFromTheWallAreaSizeLayersAndOrder) {
   EXPECT_FALSE(estimateMemory(100 * 50, 0.5, 3, 2, 2e8).fits()) << "2.4e8 bytes on a machine of 2e8";
 }
 
+// From the quads made (adaptive sizing): 20 000 quads, 3 layers, the same as from the area they cover at 0.5.
+TEST(Memory, EstimateFromTheQuadsMade) {
+  const MemoryEstimate made = estimateMemoryOfQuads(20000, 3, 1, 1e9);
+  EXPECT_DOUBLE_EQ(made.hexes, 60000);
+  EXPECT_DOUBLE_EQ(made.bytes, estimateMemory(100 * 50, 0.5, 3, 1, 1e9).bytes);
+  EXPECT_FALSE(estimateMemoryOfQuads(20000, 3, 2, 2e8).fits());
+}
+
 // The process has used some memory, and the machine has more than that.
 TEST(Memory, PeakAndMachineAreMeasured) {
   const double peak = peakMemoryMiB();
