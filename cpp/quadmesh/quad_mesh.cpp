@@ -597,6 +597,7 @@ QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, lon
     }
     StartedChild child =
         ahead && ahead->first == i ? std::move(ahead->second) : startGmshQuads(chordal, o, split, budget);
+    if (ahead && ahead->first != i) stopChild(ahead->second);  // not met: a try started ahead is always the next run
     ahead.reset();
     startAhead(i);
     GmshTry t = finishGmshQuads(child);
