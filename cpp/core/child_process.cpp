@@ -61,10 +61,6 @@ bool readAll(int fd, std::string& bytes, std::chrono::steady_clock::time_point d
   }
 }
 
-double steadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 }  // namespace
 
 StartedChild startChildProcess(const std::function<std::string()>& work, double timeoutSeconds) {
@@ -87,7 +83,9 @@ StartedChild startChildProcess(const std::function<std::string()>& work, double 
     childMain(fds[1], work);
   }
   close(fds[1]);
-  child.pid = pid, child.fd = fds[0], child.deadline = steadySeconds() + timeoutSeconds;
+  child.pid = pid, child.fd = fds[0];
+  child.deadline = std::chrono::time_point_cast<std::chrono::steady_clock::duration>(
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds));
   return child;
 }
 
@@ -105,10 +103,8 @@ ChildResult waitForChild(StartedChild& child) {
     result.failure = child.failure;
     return result;
   }
-  const auto deadline = std::chrono::steady_clock::time_point(
-      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(child.deadline)));
   std::string bytes;
-  const bool finished = readAll(child.fd, bytes, deadline);
+  const bool finished = readAll(child.fd, bytes, child.deadline);
   close(child.fd);
   if (!finished) kill(child.pid, SIGKILL);
   int status = 0;

@@ -1,6 +1,7 @@
 // Runs a piece of work in a forked child process, so that a crash or a hang of a third-party
 // library (Gmsh's reparametrization can do both) becomes an error the caller can handle.
 #pragma once
+#include <chrono>
 #include <functional>
 #include <string>
 
@@ -25,7 +26,7 @@ struct StartedChild {
   int pid = -1;  // -1: none (fork or pipe failed: `failure` says why)
   int fd = -1;   // the pipe its result comes through
   double timeoutSeconds = 0;
-  double deadline = 0;  // steady-clock seconds
+  std::chrono::steady_clock::time_point deadline;
   std::string failure;
 };
 // [in] work, timeoutSeconds: as runInChildProcess. Returns the running child.

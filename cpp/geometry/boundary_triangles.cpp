@@ -131,8 +131,8 @@ bool hasFreeformFace(const CadSolid& cad) {
 TopTools_IndexedMapOfShape triangulatedFaces(const CadSolid& cad) {
   if (!hasFreeformFace(cad)) return cad.faces;
   const TopoDS_Shape copy = BRepBuilderAPI_Copy(cad.solid, false).Shape();  // without the solid's triangulation
-  BRepMesh_IncrementalMesh(copy, kFineDeflection * cad.diagonal, false, 0.3,
-                           true);  // faces in parallel, as prepareSolid
+  // faces in parallel, as prepareSolid
+  BRepMesh_IncrementalMesh(copy, kFineDeflection * cad.diagonal, false, 0.3, true);
   TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(copy, TopAbs_FACE, faces);
   return faces;

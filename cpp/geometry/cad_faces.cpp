@@ -150,9 +150,8 @@ TopAbs_State CadFaceProbe::classify(int face, double u, double v) {
     default:
       break;
   }
-  // ON within the tolerance of an edge (CheckOn; on a cylinder the tolerance is refined, never below Confusion): the
-  // classifier's answer without its walk over every edge of the face.
-  if (f.boundary->onLineOrCircle(u, v, 0.5 * std::min(f.tolerance, Precision::Confusion()))) return TopAbs_ON;
+  // ON within the tolerance of an edge (CheckOn): the classifier's answer without its walk over every edge of the face.
+  if (f.boundary->onLineOrCircle(u, v, onEdgeBand(f.tolerance))) return TopAbs_ON;
   std::unique_ptr<BRepClass_FaceExplorer>& explorer = explorers_[face];
   if (!explorer) {
     explorer = std::make_unique<BRepClass_FaceExplorer>(f.face);

@@ -4,7 +4,6 @@
 #include <ElCLib.hxx>
 #include <ElSLib.hxx>
 #include <IntAna_IntConicQuad.hxx>
-#include <Precision.hxx>
 #include <TopoDS.hxx>
 #include <gp_Lin.hxx>
 
@@ -116,9 +115,8 @@ RayCaster::PlaneHit RayCaster::planeHit(int f, const gp_Lin& line, double wMin, 
   const UvBoundary* quick = boundary(face);
   const UvBoundary::Side side = quick ? quick->side(u, v) : UvBoundary::Side::Undecided;
   if (side == UvBoundary::Side::Outside) return PlaneHit::kNone;
-  // ON an edge (kept) if within the classifier's tolerance of it, far below the tolerances it is given
-  if (side == UvBoundary::Side::Undecided &&
-      !(quick && quick->onLineOrCircle(u, v, 0.5 * std::min(tolerance_, Precision::Confusion()))))
+  // ON an edge (kept) if within the classifier's tolerance of it
+  if (side == UvBoundary::Side::Undecided && !(quick && quick->onLineOrCircle(u, v, onEdgeBand(tolerance_))))
     return PlaneHit::kUndecided;
   const gp_Pnt p = ElCLib::Value(w, line);
   hits.push_back({w, f, Vec3(p.X(), p.Y(), p.Z()), u, v, transition(face.surface, line, u, v)});

@@ -5,6 +5,7 @@
 #include <ElCLib.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
 #include <Geom2d_Curve.hxx>
+#include <Precision.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -216,14 +217,19 @@ bool UvBoundary::onLineOrCircle(double u, double v, double tolerance) const {
   const double x = u * scaleU_, y = v * scaleV_;
   const double reachX = kSag + tolerance * scaleU_,
                reachY = kSag + tolerance * scaleV_;  // the pcurve's box, in margins
-  for (const Chunk& c : chunks_) {
+  auto near = [&](const Chunk& c) {
     const ExactPcurve& pcurve = pcurves_[c.pcurve];
-    if (pcurve.kind == ExactPcurve::Kind::Other) continue;
+    if (pcurve.kind == ExactPcurve::Kind::Other) return false;
     const auto [dx, dy] = gaps(c, x, y);
-    if (dx <= reachX && dy <= reachY && pcurve.distance(gp_Pnt2d(u, v)) <= tolerance) return true;
-  }
-  return false;
+    return dx <= reachX && dy <= reachY && pcurve.distance(gp_Pnt2d(u, v)) <= tolerance;
+  };
+  if (bins_.empty()) return false;
+  if (const std::vector<int>& band = bins_[bin(y)]; reachY <= 1)  // within the width the bins widen each chunk by
+    return std::any_of(band.begin(), band.end(), [&](int i) { return near(chunks_[i]); });
+  return std::any_of(chunks_.begin(), chunks_.end(), near);
 }
+
+double onEdgeBand(double tolerance) { return 0.5 * std::min(tolerance, Precision::Confusion()); }
 
 std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal) {
   const double tolerance = largestTolerance(face), margin = std::max(1e-5 * diagonal, kToleranceMargin * tolerance);

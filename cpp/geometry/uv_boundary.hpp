@@ -67,6 +67,11 @@ class UvBoundary {
   std::vector<std::vector<int>> bins_;
 };
 
+// The distance from an edge within which UvBoundary::onLineOrCircle's ON is the exact classifiers' for a classifier
+// given `tolerance`: half the smaller of it and Precision::Confusion() (BRepClass refines the tolerance on a cylinder,
+// never below Confusion; IntCurvesFace_Intersector classifies with at least its own).
+double onEdgeBand(double tolerance);
+
 // A face's UvBoundary with the margins the exact classifiers' callers use: max(1e-5 x the part's diagonal,
 // 3 x the face's largest tolerance) in 3D, turned into (u, v) by the surface's resolution (at least 3 x that
 // tolerance): beyond the band in which BRepClass_FaceClassifier calls a point ON an edge.

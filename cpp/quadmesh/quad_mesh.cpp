@@ -575,7 +575,8 @@ QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, lon
   };
   std::optional<std::pair<std::size_t, StartedChild>> ahead;  // the next try, started beside the current one
   auto startAhead = [&](std::size_t i) {
-    for (std::size_t k = i + 1; k < splits && threadCount() > 1; ++k) {
+    if (threadCount() < 2) return;
+    for (std::size_t k = i + 1; k < splits; ++k) {
       if (failedPatches.count(angles(k))) continue;  // skipped whatever try i gives
       if (angles(k) == angles(i)) return;            // to be skipped if try i's patches fail
       if (const double budget = tryBudget(chordal.surface(), o, ranked.best.quads.empty()); budget > 0)
