@@ -329,13 +329,19 @@ void computeNormalsAndRadius(ChordalSurface& s, const TetMesh& m) {
   }
 }
 
+std::vector<std::array<int, 3>> chordalTriangles(const ChordalSurface& chordal) {
+  std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(chordal.facets.size() * 2);
+  for (const auto& f : chordal.facets) {
+    triangles.push_back({f[0], f[1], f[2]});
+    if (f[3] >= 0) triangles.push_back({f[0], f[2], f[3]});
+  }
+  return triangles;
+}
+
 double chordalArea(const ChordalSurface& c) {
   double a = 0;
-  for (const auto& f : c.facets) {
-    const auto& v = c.vertices;
-    a += 0.5 * (v[f[1]] - v[f[0]]).cross(v[f[2]] - v[f[0]]).norm();
-    if (f[3] >= 0) a += 0.5 * (v[f[2]] - v[f[0]]).cross(v[f[3]] - v[f[0]]).norm();
-  }
+  for (const auto& f : c.facets) a += facetArea(c, f);
   return a;
 }
 

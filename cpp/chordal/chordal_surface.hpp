@@ -70,6 +70,9 @@ std::size_t dropUnusedVertices(ChordalSurface& chordal);
 // [in,out] chordal. Returns the number of facets dropped.
 std::size_t dropPinchedFacets(ChordalSurface& chordal);
 
+// The facets as triangles, each quad split on its diagonal from corner 0 (two triangles, in facet order).
+std::vector<std::array<int, 3>> chordalTriangles(const ChordalSurface& chordal);
+
 // Area of the chordal surface (a quad facet as the two triangles (0,1,2) and (0,2,3)).
 double chordalArea(const ChordalSurface& chordal);
 

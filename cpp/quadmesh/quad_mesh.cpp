@@ -19,6 +19,7 @@
 #include "core/threads.hpp"
 #include "core/union_find.hpp"
 #include "quadmesh/block_grids.hpp"
+#include "quadmesh/chordal_patches.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
@@ -45,9 +46,15 @@ constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  /
 // corner off. A bend of the radius of the sizing's curvature term strays a tenth of this.
 constexpr double kChordAcross = 0.25;
 
-// The chordal facets as one discrete Gmsh surface of triangles (each quad split on a diagonal).
-void addChordalTriangles(const ChordalSurface& chordal) {
-  const int surface = gmsh::model::addDiscreteEntity(2);
+// The chordal facets as discrete Gmsh surfaces of triangles (each quad split on a diagonal): one, or with
+// ownPatches one per patch of chordalPatches (their nodes all on the first). [in] chordal; [in] split.
+void addChordalTriangles(const ChordalSurface& chordal, const PatchSplit& split) {
+  const std::vector<std::array<int, 3>> triangles = chordalTriangles(chordal);
+  const std::vector<int> patch = split.ownPatches ? chordalPatches(chordal.vertices, triangles, split.featureAngle)
+                                                  : std::vector<int>(triangles.size(), 0);
+  const int patches = triangles.empty() ? 0 : 1 + *std::max_element(patch.begin(), patch.end());
+  std::vector<int> surface(patches);
+  for (int& s : surface) s = gmsh::model::addDiscreteEntity(2);
   std::vector<std::size_t> tags(chordal.vertices.size());
   std::vector<double> coords;
   coords.reserve(3 * chordal.vertices.size());
@@ -55,16 +62,12 @@ void addChordalTriangles(const ChordalSurface& chordal) {
     tags[i] = i + 1;
     coords.insert(coords.end(), chordal.vertices[i].data(), chordal.vertices[i].data() + 3);
   }
-  gmsh::model::mesh::addNodes(2, surface, tags, coords);
-  std::vector<std::size_t> triangles;
-  auto add = [&](int a, int b, int c) {
-    triangles.insert(triangles.end(), {std::size_t(a) + 1, std::size_t(b) + 1, std::size_t(c) + 1});
-  };
-  for (const auto& f : chordal.facets) {
-    add(f[0], f[1], f[2]);
-    if (f[3] >= 0) add(f[0], f[2], f[3]);
-  }
-  gmsh::model::mesh::addElementsByType(surface, 2, {}, triangles);
+  if (patches == 0) return;
+  gmsh::model::mesh::addNodes(2, surface[0], tags, coords);
+  std::vector<std::vector<std::size_t>> nodes(patches);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int v : triangles[t]) nodes[patch[t]].push_back(std::size_t(v) + 1);
+  for (int p = 0; p < patches; ++p) gmsh::model::mesh::addElementsByType(surface[p], 2, {}, nodes[p]);
 }
 
 double smallestSize(const QuadMeshOptions& o) {
@@ -222,12 +225,16 @@ std::vector<std::array<std::size_t, N>> elementsOfType(int type) {
 QuadMesh collectQuads() {
   const auto quadTags = elementsOfType<4>(3);
   const auto triangleTags = elementsOfType<3>(2);
-  std::vector<std::size_t> nodeTags;
-  std::vector<double> coord, param;
-  gmsh::model::mesh::getNodes(nodeTags, coord, param, -1, -1, true, false);
+  // The elements' own nodes (after createTopology, Gmsh 4.8 can leave a node of a patch's mesh out of its
+  // entities, so getNodes misses it, while the elements still hold it).
   std::map<std::size_t, Vec3> position;
-  for (size_t i = 0; i < nodeTags.size(); ++i)
-    position[nodeTags[i]] = Vec3(coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]);
+  for (const int type : {3, 2}) {
+    std::vector<std::size_t> nodeTags;
+    std::vector<double> coord, param;
+    gmsh::model::mesh::getNodesByElementType(type, nodeTags, coord, param, -1, false);
+    for (size_t i = 0; i < nodeTags.size(); ++i)
+      position.emplace(nodeTags[i], Vec3(coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]));
+  }
   QuadMesh q;
   std::map<std::size_t, int> index;  // Gmsh node tag -> our node id, in order of first use
   auto node = [&](std::size_t tag) {
@@ -282,7 +289,10 @@ std::string lastGmshError() {
 void makePatches(const PatchSplit& split) {
   const double toRadians = M_PI / 180.0;
   try {
-    gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
+    if (split.ownPatches)
+      gmsh::model::mesh::createTopology();
+    else
+      gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
     gmsh::model::mesh::createGeometry();
   } catch (...) {
     throw geometryError(kPatchesFailed + lastGmshError());
@@ -301,7 +311,7 @@ StartedChild startGmshQuads(const ChordalLocator& locator, const QuadMeshOptions
       [&] {
         return inGmshSession([&] {
           gmsh::model::add("chordal_surface");
-          addChordalTriangles(chordal);
+          addChordalTriangles(chordal, split);
           makePatches(split);
           // Gmsh 4.8 caps every mesh size by the model's size, which is only computed on a synchronize:
           // without it, the discrete model's default of 1 caps the adaptive sizes (§6.1).
@@ -569,16 +579,18 @@ std::string noQuadsReason(const Ranked& ranked, const QuadTries& tries) {
 QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler, Ranked& ranked) {
   QuadTries tries;
   const std::size_t splits = o.patchSplits.size();
-  std::set<std::pair<double, double>> failedPatches;  // angles whose patches Gmsh could not make
+  std::set<std::tuple<double, double, bool>> failedPatches;  // angles (and whose patches) Gmsh could not make
   auto angles = [&](std::size_t i) {
-    return std::make_pair(o.patchSplits[i].featureAngle, o.patchSplits[i].curveAngle);
+    const PatchSplit& split = o.patchSplits[i];
+    return std::make_tuple(split.featureAngle, split.curveAngle, split.ownPatches);
   };
   std::optional<std::pair<std::size_t, StartedChild>> ahead;  // the next try, started beside the current one
   auto startAhead = [&](std::size_t i) {
     if (threadCount() < 2) return;
     for (std::size_t k = i + 1; k < splits; ++k) {
-      if (failedPatches.count(angles(k))) continue;  // skipped whatever try i gives
-      if (angles(k) == angles(i)) return;            // to be skipped if try i's patches fail
+      if (failedPatches.count(angles(k))) continue;                           // skipped whatever try i gives
+      if (o.patchSplits[k].ownPatches && !ranked.best.quads.empty()) return;  // skipped: there are quads
+      if (angles(k) == angles(i)) return;                                     // to be skipped if try i's patches fail
       if (const double budget = tryBudget(chordal.surface(), o, ranked.best.quads.empty()); budget > 0)
         ahead.emplace(k, startGmshQuads(chordal, o, o.patchSplits[k], budget));
       return;
@@ -591,6 +603,10 @@ QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, lon
       if (o.tried) o.tried(2 + i, 1 + splits);
       continue;
     }
+    if (split.ownPatches && !ranked.best.quads.empty()) {  // a fallback: only where Gmsh's own patches gave none
+      if (o.tried) o.tried(2 + i, 1 + splits);
+      continue;
+    }
     const double budget = tryBudget(chordal.surface(), o, ranked.best.quads.empty());
     if (budget <= 0) {  // the stage's budget is spent: the rest are skipped
       tries.skipped = splits - i;
@@ -598,7 +614,7 @@ QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, lon
     }
     StartedChild child =
         ahead && ahead->first == i ? std::move(ahead->second) : startGmshQuads(chordal, o, split, budget);
-    if (ahead && ahead->first != i) stopChild(ahead->second);  // not met: a try started ahead is always the next run
+    if (ahead && ahead->first != i) stopChild(ahead->second);  // an own-patch try started ahead, skipped
     ahead.reset();
     startAhead(i);
     GmshTry t = finishGmshQuads(child);

@@ -47,10 +47,13 @@ struct QuadMesh {
 // `structured`: the patches bounded by four curves get a structured grid (structurePatches).
 // `recombination`: Gmsh's full-quad recombination, 3 Blossom (fewer irregular nodes) or 2 simple
 // (more robust on badly parametrized patches).
+// `ownPatches`: the patches are chordalPatches' (chordal_patches.hpp), cut at featureAngle, instead of Gmsh's
+// classification (which pinches patches on sharply bent sheets); curveAngle is not used then.
 struct PatchSplit {
   double featureAngle, curveAngle;
   bool structured = false;
   int recombination = 3;
+  bool ownPatches = false;
 };
 
 struct QuadMeshOptions {
@@ -62,13 +65,23 @@ struct QuadMeshOptions {
   // topology (close a hole) or some are inverted or below acceptableQuad once smoothed. Of the
   // tries, the one that keeps the topology, then with the fewest holes, then the fewest inverted
   // (or folded), then the fewest below acceptableQuad, then the best mean quad, then the best
-  // worst is kept.
-  std::vector<PatchSplit> patchSplits{{60, 60, true},     {60, 180},
-                                      {40, 40},           {40, 180},
-                                      {80, 80},           {25, 25},
-                                      {60, 60, true, 2},  {60, 180, false, 2},
-                                      {40, 40, false, 2}, {40, 180, false, 2},
-                                      {80, 80, false, 2}, {25, 25, false, 2}};
+  // worst is kept. The last two splits cut HexLayer's own patches (PatchSplit::ownPatches): they run only
+  // while no try has given quads (a fallback where Gmsh's classification pinches every patch), and the quad
+  // stage gives them to the unfaired chordal surface only, whose sharp bends they follow.
+  std::vector<PatchSplit> patchSplits{{60, 60, true},
+                                      {60, 180},
+                                      {40, 40},
+                                      {40, 180},
+                                      {80, 80},
+                                      {25, 25},
+                                      {60, 60, true, 2},
+                                      {60, 180, false, 2},
+                                      {40, 40, false, 2},
+                                      {40, 180, false, 2},
+                                      {80, 80, false, 2},
+                                      {25, 25, false, 2},
+                                      {60, 60, false, 3, true},
+                                      {40, 40, false, 3, true}};
   double acceptableQuad = 0.1;   // quad scaled Jacobian, smoothed
   int smoothingIterations = 10;  // of every try (quad_smoothing)
   // Time budget of one Gmsh try (killed when it runs out: a failed try); 0: gmshTryBudget of the chordal

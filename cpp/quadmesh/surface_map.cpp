@@ -479,10 +479,7 @@ std::array<int, 4> diagonalExtremes(const std::vector<Vec3>& loop, const Vec3& c
 SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary boundary) {
   SurfaceMap map;
   map.points = chordal.vertices;
-  for (const auto& f : chordal.facets) {
-    map.triangles.push_back({f[0], f[1], f[2]});
-    if (f[3] >= 0) map.triangles.push_back({f[0], f[2], f[3]});
-  }
+  map.triangles = chordalTriangles(chordal);
   std::vector<std::vector<int>> loops = rimLoops(map.triangles, map.points.size());
   if (loops.empty()) return {};
   auto lengthOf = [&](const std::vector<int>& loop) { return arcLength(loop, map.points).back(); };

@@ -1,0 +1,205 @@
+#include "quadmesh/chordal_patches.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <unordered_map>
+
+#include "core/union_find.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr int kSmallPatch = 12;  // triangles: a patch with fewer joins a neighbour (Gmsh would mesh it with slivers)
+constexpr int kCleaningRounds = 20;
+
+// Triangle adjacency: across side j (corners j, j+1) the other triangle, or -1 on the rim.
+using Neighbours = std::vector<std::array<int, 3>>;
+
+Neighbours triangleNeighbours(const std::vector<std::array<int, 3>>& triangles) {
+  Neighbours across(triangles.size(), {-1, -1, -1});
+  std::unordered_map<std::uint64_t, std::pair<int, int>> first;  // edge -> (triangle, side)
+  first.reserve(triangles.size() * 2);
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+    for (int j = 0; j < 3; ++j) {
+      const auto [it, added] = first.emplace(edgeKey(triangles[t][j], triangles[t][(j + 1) % 3]), std::pair{t, j});
+      if (added) continue;
+      across[t][j] = it->second.first;
+      across[it->second.first][it->second.second] = t;
+    }
+  return across;
+}
+
+// Each vertex's triangles (compressed rows). [in] triangles; [in] vertices: their count.
+struct VertexTriangles {
+  std::vector<int> start, triangle;
+};
+
+VertexTriangles vertexTriangles(const std::vector<std::array<int, 3>>& triangles, std::size_t vertices) {
+  VertexTriangles vt;
+  vt.start.assign(vertices + 1, 0);
+  for (const auto& t : triangles)
+    for (int v : t) ++vt.start[v + 1];
+  for (std::size_t v = 0; v < vertices; ++v) vt.start[v + 1] += vt.start[v];
+  vt.triangle.resize(vt.start.back());
+  std::vector<int> next(vt.start.begin(), vt.start.end() - 1);
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+    for (int v : triangles[t]) vt.triangle[next[v]++] = t;
+  return vt;
+}
+
+// Whether side j of triangle t has vertex v.
+bool sideHas(const std::array<int, 3>& t, int j, int v) { return t[j] == v || t[(j + 1) % 3] == v; }
+
+// Connected pieces of each patch, numbered in order of their first triangle. [in] across; [in,out] patch.
+// Returns the number of pieces.
+int splitIntoPieces(const Neighbours& across, std::vector<int>& patch) {
+  UnionFind pieces(patch.size());
+  for (int t = 0; t < static_cast<int>(patch.size()); ++t)
+    for (int u : across[t])
+      if (u >= 0 && patch[u] == patch[t]) pieces.unite(t, u);
+  std::vector<int> number(patch.size(), -1);
+  int count = 0;
+  for (int t = 0; t < static_cast<int>(patch.size()); ++t) {
+    int& n = number[pieces.find(t)];
+    if (n < 0) n = count++;
+    patch[t] = n;
+  }
+  return count;
+}
+
+// The patch most of a triangle's neighbours (or a group's) are in, other than `own`; -1 if none.
+// [in] counts: patch -> edges shared.
+int mostShared(const std::map<int, int>& counts) {
+  int best = -1, most = 0;
+  for (const auto& [p, n] : counts)
+    if (n > most) best = p, most = n;  // ties: the lowest patch (map order)
+  return best;
+}
+
+// Patches of fewer than kSmallPatch triangles join the neighbour they share most edges with.
+// [in] across; [in,out] patch; [in] count: patches. Returns the triangles moved.
+std::size_t joinSmallPatches(const Neighbours& across, std::vector<int>& patch, int count) {
+  std::vector<int> size(count, 0);
+  for (int p : patch) ++size[p];
+  std::vector<std::map<int, int>> shared(count);
+  for (int t = 0; t < static_cast<int>(patch.size()); ++t)
+    if (size[patch[t]] < kSmallPatch)
+      for (int u : across[t])
+        if (u >= 0 && patch[u] != patch[t]) ++shared[patch[t]][patch[u]];
+  std::vector<int> into(count);
+  for (int p = 0; p < count; ++p) into[p] = size[p] < kSmallPatch ? mostShared(shared[p]) : -1;
+  std::size_t moved = 0;
+  for (int& p : patch)
+    if (into[p] >= 0) p = into[p], ++moved;
+  return moved;
+}
+
+// Where a patch meets itself at a vertex (two or more fans of its triangles round it, apart), the fans but the
+// largest go to the patches their triangles' neighbours are in (if `move`). [in] triangles, across, vt;
+// [in,out] patch; [in] move. Returns the triangles moved; [out] pinched: the (vertex, patch) pairs found.
+std::size_t unpinch(const std::vector<std::array<int, 3>>& triangles, const Neighbours& across,
+                    const VertexTriangles& vt, std::vector<int>& patch, bool move, std::size_t& pinched) {
+  std::size_t moved = 0;
+  pinched = 0;
+  std::vector<int> fan(triangles.size(), -1);
+  for (std::size_t v = 0; v + 1 < vt.start.size(); ++v) {
+    const int vertex = static_cast<int>(v);
+    std::vector<int> round(vt.triangle.begin() + vt.start[v], vt.triangle.begin() + vt.start[v + 1]);
+    std::vector<std::vector<int>> fans;  // fans of one patch each
+    for (int seed : round) {
+      if (fan[seed] >= 0) continue;
+      fan[seed] = static_cast<int>(fans.size());
+      fans.push_back({seed});
+      for (std::size_t k = 0; k < fans.back().size(); ++k) {
+        const int t = fans.back()[k];
+        for (int j = 0; j < 3; ++j)
+          if (const int u = across[t][j];
+              u >= 0 && fan[u] < 0 && patch[u] == patch[seed] && sideHas(triangles[t], j, vertex))
+            fan[u] = fan[seed], fans.back().push_back(u);
+      }
+    }
+    for (int t : round) fan[t] = -1;
+    std::map<int, std::vector<int>> byPatch;  // patch -> its fans here
+    for (int f = 0; f < static_cast<int>(fans.size()); ++f) byPatch[patch[fans[f][0]]].push_back(f);
+    for (auto& [p, list] : byPatch) {
+      if (list.size() < 2) continue;
+      ++pinched;
+      if (!move) continue;
+      const int keep =
+          *std::max_element(list.begin(), list.end(), [&](int a, int b) { return fans[a].size() < fans[b].size(); });
+      for (int f : list) {
+        if (f == keep) continue;
+        std::map<int, int> around;
+        for (int t : fans[f])
+          for (int u : across[t])
+            if (u >= 0 && patch[u] != p) ++around[patch[u]];
+        if (const int to = mostShared(around); to >= 0)
+          for (int t : fans[f]) patch[t] = to, ++moved;
+      }
+    }
+  }
+  return moved;
+}
+
+// Patches grown across edges turning less than the feature angle, normals within it of the patch's first.
+std::vector<int> grownPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                              const Neighbours& across, double featureAngle) {
+  std::vector<Vec3> normal(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const auto& c = triangles[t];
+    const Vec3 n = (points[c[1]] - points[c[0]]).cross(points[c[2]] - points[c[0]]);
+    normal[t] = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
+  }
+  const double within = std::cos(featureAngle * M_PI / 180);
+  auto near = [&](int a, int b) {
+    return normal[a].isZero() || normal[b].isZero() || normal[a].dot(normal[b]) >= within;
+  };
+  std::vector<int> patch(triangles.size(), -1);
+  int count = 0;
+  for (int seed = 0; seed < static_cast<int>(triangles.size()); ++seed) {
+    if (patch[seed] >= 0) continue;
+    std::deque<int> front{seed};
+    patch[seed] = count;
+    while (!front.empty()) {
+      const int t = front.front();
+      front.pop_front();
+      for (int u : across[t])
+        if (u >= 0 && patch[u] < 0 && near(t, u) && near(seed, u)) patch[u] = count, front.push_back(u);
+    }
+    ++count;
+  }
+  return patch;
+}
+
+}  // namespace
+
+std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                                double featureAngle) {
+  const Neighbours across = triangleNeighbours(triangles);
+  const VertexTriangles vt = vertexTriangles(triangles, points.size());
+  std::vector<int> patch = grownPatches(points, triangles, across, featureAngle);
+  int count = splitIntoPieces(across, patch);
+  for (int round = 0; round < kCleaningRounds; ++round) {
+    std::size_t moved = joinSmallPatches(across, patch, count);
+    count = splitIntoPieces(across, patch);
+    std::size_t pinched = 0;
+    moved += unpinch(triangles, across, vt, patch, true, pinched);
+    count = splitIntoPieces(across, patch);
+    if (moved == 0) break;
+  }
+  return patch;
+}
+
+std::size_t pinchedPatchVertices(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& patch) {
+  std::size_t vertices = 0;
+  for (const auto& t : triangles) vertices = std::max<std::size_t>(vertices, 1 + *std::max_element(t.begin(), t.end()));
+  std::vector<int> copy = patch;
+  std::size_t pinched = 0;
+  unpinch(triangles, triangleNeighbours(triangles), vertexTriangles(triangles, vertices), copy, false, pinched);
+  return pinched;
+}
+
+}  // namespace hexlayer

@@ -1,0 +1,29 @@
+// Patches of the chordal surface cut by HexLayer for Gmsh (§6), where Gmsh's own classification fails: on a
+// sheet bent sharply (a box, a U-channel without bend rounds) the chordal surface turns in a few facets at each
+// bend, Gmsh's patches between its feature edges touch themselves at a vertex ("pinched"), and its
+// reparametrization refuses them ("Wrong topology of boundary mesh for parametrization": a patch's rim must be
+// simple loops). These patches are made so that each one's rim is: no patch meets itself at a vertex only.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace hexlayer {
+
+// The triangles grouped into patches: grown from the first triangle not yet in a patch across edges where the
+// surface turns less than featureAngle, taking triangles whose normal is within featureAngle of the first one's
+// (so that each patch is nearly flat and maps onto the plane in one piece); then, until nothing changes, a patch
+// of fewer than a few triangles joins the neighbour it shares most edges with, a patch meeting itself at a vertex
+// keeps its largest fan of triangles there and gives the others to their neighbours' patches, and a patch in
+// pieces becomes one patch per piece.
+// [in] points; [in] triangles: a manifold surface (an edge in one or two triangles);
+// [in] featureAngle: degrees. Returns each triangle's patch, numbered 0.. in order of their first triangle.
+std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                                double featureAngle);
+
+// The patches that meet themselves at a vertex only (0 for chordalPatches' own), as a check.
+// [in] triangles; [in] patch: per triangle. Returns the number of (vertex, patch) pairs with more than one fan.
+std::size_t pinchedPatchVertices(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& patch);
+
+}  // namespace hexlayer

@@ -1,0 +1,125 @@
+#include "quadmesh/chordal_patches.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <set>
+
+#include "core/union_find.hpp"
+
+namespace hexlayer {
+namespace {
+
+struct Triangles {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+// An nx x ny grid of unit cells, each split into two triangles, its node (i, j) placed at at(i, j), times scale.
+Triangles grid(int nx, int ny, const std::function<Vec3(double, double)>& at, double scale = 1) {
+  Triangles t;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) t.points.push_back(scale * at(i, j));
+  auto id = [&](int i, int j) { return j * (nx + 1) + i; };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      t.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      t.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return t;
+}
+
+// A U-channel of three flat sheets 10 wide with sharp 90-degree bends, 8 long.
+Vec3 channel(double x, double y) {
+  if (x <= 10) return {0, y, 10 - x};
+  if (x <= 20) return {x - 10, y, 0};
+  return {10, y, x - 20};
+}
+
+// Whether every patch is one piece (triangles joined across edges).
+bool patchesConnected(const Triangles& t, const std::vector<int>& patch) {
+  UnionFind pieces(t.triangles.size());
+  std::map<std::pair<int, int>, int> first;
+  for (int k = 0; k < static_cast<int>(t.triangles.size()); ++k)
+    for (int j = 0; j < 3; ++j) {
+      const int a = t.triangles[k][j], b = t.triangles[k][(j + 1) % 3];
+      const auto [it, added] = first.emplace(std::minmax(a, b), k);
+      if (!added && patch[it->second] == patch[k]) pieces.unite(it->second, k);
+    }
+  std::map<int, int> root;  // patch -> the root of its pieces
+  for (int k = 0; k < static_cast<int>(t.triangles.size()); ++k)
+    if (const auto [it, added] = root.emplace(patch[k], pieces.find(k)); !added && it->second != pieces.find(k))
+      return false;
+  return true;
+}
+
+TEST(ChordalPatches, AChannelsSheetsBetweenItsSharpBends) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    const Triangles t = grid(30, 8, channel, scale);
+    const std::vector<int> patch = chordalPatches(t.points, t.triangles, 60);
+    ASSERT_EQ(patch.size(), t.triangles.size());
+    EXPECT_EQ(std::set<int>(patch.begin(), patch.end()).size(), 3u) << "scale " << scale;
+    for (std::size_t k = 0; k < t.triangles.size(); ++k) {  // each cell's triangles in its own sheet's patch
+      const int cell = static_cast<int>(k / 2) % 30;
+      EXPECT_EQ(patch[k], cell / 10) << "triangle " << k << ", scale " << scale;
+    }
+    EXPECT_EQ(pinchedPatchVertices(t.triangles, patch), 0u);
+  }
+}
+
+TEST(ChordalPatches, ARoundBendCutWithinTheFeatureAngle) {
+  // A half cylinder of radius 10, 24 cells round (7.5 degrees each): no edge turns 60 degrees, but no patch may
+  // span more than 60 degrees of normals.
+  const auto half = [](double x, double y) {
+    const double a = M_PI * x / 24;
+    return Vec3(10 * std::cos(a), y, 10 * std::sin(a));
+  };
+  const Triangles t = grid(24, 6, half);
+  const std::vector<int> patch = chordalPatches(t.points, t.triangles, 60);
+  const int patches = static_cast<int>(std::set<int>(patch.begin(), patch.end()).size());
+  EXPECT_GE(patches, 3);
+  EXPECT_LE(patches, 5);
+  std::map<int, std::pair<double, double>> span;  // patch -> angles of its cells, first and last
+  for (std::size_t k = 0; k < t.triangles.size(); ++k) {
+    const double angle = 7.5 * ((k / 2) % 24);
+    auto [it, added] = span.emplace(patch[k], std::pair{angle, angle});
+    it->second.first = std::min(it->second.first, angle), it->second.second = std::max(it->second.second, angle);
+  }
+  for (const auto& [p, s] : span) EXPECT_LE(s.second - s.first, 60.0) << "patch " << p;
+  EXPECT_TRUE(patchesConnected(t, patch));
+  EXPECT_EQ(pinchedPatchVertices(t.triangles, patch), 0u);
+}
+
+TEST(ChordalPatches, NoPatchMeetsItselfAtAVertexOnANoisySheet) {
+  // A bumpy sheet with noise, cut at 15 degrees: many small patches grown along jagged lines, which left as grown
+  // touch themselves at vertices; none does once cleaned, every patch is one piece, at any scale the same.
+  std::mt19937 random(7);
+  std::vector<double> noise(41 * 41);
+  for (double& n : noise) n = std::uniform_real_distribution<double>(-0.08, 0.08)(random);
+  const auto bumpy = [&](double x, double y) {
+    return Vec3(x, y, std::sin(0.5 * x) * std::cos(0.4 * y) + noise[static_cast<int>(y) * 41 + static_cast<int>(x)]);
+  };
+  std::vector<int> first;
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    const Triangles t = grid(40, 40, bumpy, scale);
+    const std::vector<int> patch = chordalPatches(t.points, t.triangles, 15);
+    EXPECT_GT(std::set<int>(patch.begin(), patch.end()).size(), 10u);
+    EXPECT_EQ(pinchedPatchVertices(t.triangles, patch), 0u) << "scale " << scale;
+    EXPECT_TRUE(patchesConnected(t, patch));
+    if (first.empty()) first = patch;
+    EXPECT_EQ(patch, first) << "scale " << scale;
+  }
+}
+
+TEST(ChordalPatches, PinchedVerticesOfAChequerboard) {
+  // Four squares round a vertex, the diagonal ones in one patch: each patch meets itself at the centre.
+  const Triangles t = grid(2, 2, [](double x, double y) { return Vec3(x, y, 0); });
+  const std::vector<int> patch = {0, 0, 1, 1, 1, 1, 0, 0};
+  EXPECT_EQ(pinchedPatchVertices(t.triangles, patch), 2u);
+  EXPECT_EQ(pinchedPatchVertices(t.triangles, std::vector<int>(8, 0)), 0u);
+}
+
+}  // namespace
+}  // namespace hexlayer
