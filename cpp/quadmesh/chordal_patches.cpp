@@ -193,6 +193,56 @@ std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vect
   return patch;
 }
 
+PatchTopology patchTopology(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& patch) {
+  struct Edge {
+    int a, b;
+    std::array<int, 2> patches;
+  };
+  const Neighbours across = triangleNeighbours(triangles);
+  std::vector<Edge> edges;  // the patches' rim edges, once each
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+    for (int j = 0; j < 3; ++j) {
+      const int u = across[t][j], a = triangles[t][j], b = triangles[t][(j + 1) % 3];
+      if (u < 0)
+        edges.push_back({a, b, {-1, patch[t]}});
+      else if (patch[u] != patch[t] && t < u)
+        edges.push_back({a, b, {std::min(patch[t], patch[u]), std::max(patch[t], patch[u])}});
+    }
+  std::map<int, std::vector<int>> at;  // vertex -> its rim edges
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e) at[edges[e].a].push_back(e), at[edges[e].b].push_back(e);
+  PatchTopology topology;
+  std::map<int, bool> corner;
+  for (const auto& [v, list] : at) corner[v] = list.size() != 2 || edges[list[0]].patches != edges[list[1]].patches;
+  std::vector<char> used(edges.size(), 0);
+  // The curve from corner `from` along edge e, to the next corner. [in] from, e.
+  auto trace = [&](int from, int e) {
+    PatchCurve curve{{from}, edges[e].patches};
+    for (int v = from;;) {
+      used[e] = 1;
+      v = edges[e].a == v ? edges[e].b : edges[e].a;
+      curve.vertices.push_back(v);
+      if (corner[v]) break;
+      const auto& list = at[v];
+      e = list[0] == e ? list[1] : list[0];
+    }
+    topology.curves.push_back(std::move(curve));
+  };
+  for (const auto& [v, list] : at)
+    if (corner[v])
+      for (int e : list)
+        if (!used[e]) trace(v, e);
+  for (const auto& [v, list] : at)  // loops without a corner: from their lowest vertex
+    if (!used[list[0]]) corner[v] = true, trace(v, list[0]);
+  for (const auto& [v, isCorner] : corner)
+    if (isCorner) topology.corners.push_back(v);
+  const int patches = patch.empty() ? 0 : 1 + *std::max_element(patch.begin(), patch.end());
+  topology.bounding.resize(patches);
+  for (int c = 0; c < static_cast<int>(topology.curves.size()); ++c)
+    for (int p : topology.curves[c].patches)
+      if (p >= 0) topology.bounding[p].push_back(c);
+  return topology;
+}
+
 std::size_t pinchedPatchVertices(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& patch) {
   std::size_t vertices = 0;
   for (const auto& t : triangles) vertices = std::max<std::size_t>(vertices, 1 + *std::max_element(t.begin(), t.end()));

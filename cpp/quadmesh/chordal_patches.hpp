@@ -22,6 +22,22 @@ namespace hexlayer {
 std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
                                 double featureAngle);
 
+// The curves between the patches and along the rim, for Gmsh's discrete model (made here, not by Gmsh's
+// createTopology, whose order depends on where its objects lie in memory: its meshes changed from run to run).
+struct PatchCurve {
+  std::vector<int> vertices;   // a chain from one corner to another (the same corner if the curve is a loop)
+  std::array<int, 2> patches;  // the patches on either side, the lower first; -1: the rim
+};
+struct PatchTopology {
+  std::vector<int> corners;                // vertices where curves end: where three or more patches (or the
+                                           // rim) meet, and the lowest vertex of a loop without such a vertex
+  std::vector<PatchCurve> curves;          // in order of their first corner, then of their first edge
+  std::vector<std::vector<int>> bounding;  // per patch, the curves on its rim
+};
+
+// [in] triangles; [in] patch: per triangle (chordalPatches). Returns the curves and their corners.
+PatchTopology patchTopology(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& patch);
+
 // The patches that meet themselves at a vertex only (0 for chordalPatches' own), as a check.
 // [in] triangles; [in] patch: per triangle. Returns the number of (vertex, patch) pairs with more than one fan.
 std::size_t pinchedPatchVertices(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& patch);

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -46,28 +47,77 @@ constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  /
 // corner off. A bend of the radius of the sizing's curvature term strays a tenth of this.
 constexpr double kChordAcross = 0.25;
 
-// The chordal facets as discrete Gmsh surfaces of triangles (each quad split on a diagonal): one, or with
-// ownPatches one per patch of chordalPatches (their nodes all on the first). [in] chordal; [in] split.
+// Nodes of a discrete Gmsh entity: the given vertices (ids + 1 as tags). [in] dim, tag, ids, points.
+void addEntityNodes(int dim, int tag, const std::vector<int>& ids, const std::vector<Vec3>& points) {
+  if (ids.empty()) return;
+  std::vector<std::size_t> tags;
+  std::vector<double> coords;
+  for (int v : ids) {
+    tags.push_back(std::size_t(v) + 1);
+    coords.insert(coords.end(), points[v].data(), points[v].data() + 3);
+  }
+  gmsh::model::mesh::addNodes(dim, tag, tags, coords);
+}
+
+// The chordal triangles as Gmsh's discrete model of HexLayer's own patches (chordal_patches.hpp): a point per
+// corner, a curve per chain between them, a surface per patch bounded by its curves, each with its own nodes
+// and elements, as Gmsh's classification would leave them. [in] points, triangles; [in] patch: per triangle.
+void addOwnPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                   const std::vector<int>& patch) {
+  const PatchTopology topology = patchTopology(triangles, patch);
+  std::vector<char> placed(points.size(), 0);  // the vertex is a node of an entity already
+  std::map<int, int> pointTag;
+  for (int v : topology.corners) {
+    const int tag = gmsh::model::addDiscreteEntity(0);
+    pointTag[v] = tag, placed[v] = 1;
+    addEntityNodes(0, tag, {v}, points);
+    gmsh::model::mesh::addElementsByType(tag, 15, {}, {std::size_t(v) + 1});
+  }
+  std::vector<int> curveTag;
+  for (const PatchCurve& c : topology.curves) {
+    const int tag = gmsh::model::addDiscreteEntity(1, -1, {pointTag[c.vertices.front()], pointTag[c.vertices.back()]});
+    curveTag.push_back(tag);
+    const std::vector<int> inside(c.vertices.begin() + 1, c.vertices.end() - 1);
+    for (int v : inside) placed[v] = 1;
+    addEntityNodes(1, tag, inside, points);
+    std::vector<std::size_t> lines;
+    for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
+      lines.insert(lines.end(), {std::size_t(c.vertices[k]) + 1, std::size_t(c.vertices[k + 1]) + 1});
+    gmsh::model::mesh::addElementsByType(tag, 1, {}, lines);
+  }
+  for (std::size_t p = 0; p < topology.bounding.size(); ++p) {
+    std::vector<int> bounding;
+    for (int c : topology.bounding[p]) bounding.push_back(curveTag[c]);
+    const int tag = gmsh::model::addDiscreteEntity(2, -1, bounding);
+    std::vector<int> inside;
+    std::vector<std::size_t> nodes;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+      if (patch[t] == static_cast<int>(p))
+        for (int v : triangles[t]) {
+          nodes.push_back(std::size_t(v) + 1);
+          if (!placed[v]) placed[v] = 1, inside.push_back(v);
+        }
+    addEntityNodes(2, tag, inside, points);
+    gmsh::model::mesh::addElementsByType(tag, 2, {}, nodes);
+  }
+}
+
+// The chordal facets as discrete Gmsh triangles (each quad split on a diagonal): one surface for Gmsh's
+// classification, or with ownPatches HexLayer's patches (addOwnPatches). [in] chordal; [in] split.
 void addChordalTriangles(const ChordalSurface& chordal, const PatchSplit& split) {
   const std::vector<std::array<int, 3>> triangles = chordalTriangles(chordal);
-  const std::vector<int> patch = split.ownPatches ? chordalPatches(chordal.vertices, triangles, split.featureAngle)
-                                                  : std::vector<int>(triangles.size(), 0);
-  const int patches = triangles.empty() ? 0 : 1 + *std::max_element(patch.begin(), patch.end());
-  std::vector<int> surface(patches);
-  for (int& s : surface) s = gmsh::model::addDiscreteEntity(2);
-  std::vector<std::size_t> tags(chordal.vertices.size());
-  std::vector<double> coords;
-  coords.reserve(3 * chordal.vertices.size());
-  for (size_t i = 0; i < chordal.vertices.size(); ++i) {
-    tags[i] = i + 1;
-    coords.insert(coords.end(), chordal.vertices[i].data(), chordal.vertices[i].data() + 3);
+  if (split.ownPatches) {
+    addOwnPatches(chordal.vertices, triangles, chordalPatches(chordal.vertices, triangles, split.featureAngle));
+    return;
   }
-  if (patches == 0) return;
-  gmsh::model::mesh::addNodes(2, surface[0], tags, coords);
-  std::vector<std::vector<std::size_t>> nodes(patches);
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-    for (int v : triangles[t]) nodes[patch[t]].push_back(std::size_t(v) + 1);
-  for (int p = 0; p < patches; ++p) gmsh::model::mesh::addElementsByType(surface[p], 2, {}, nodes[p]);
+  const int surface = gmsh::model::addDiscreteEntity(2);
+  std::vector<int> all(chordal.vertices.size());
+  std::iota(all.begin(), all.end(), 0);
+  addEntityNodes(2, surface, all, chordal.vertices);
+  std::vector<std::size_t> nodes;
+  for (const auto& t : triangles)
+    for (int v : t) nodes.push_back(std::size_t(v) + 1);
+  gmsh::model::mesh::addElementsByType(surface, 2, {}, nodes);
 }
 
 double smallestSize(const QuadMeshOptions& o) {
@@ -289,9 +339,7 @@ std::string lastGmshError() {
 void makePatches(const PatchSplit& split) {
   const double toRadians = M_PI / 180.0;
   try {
-    if (split.ownPatches)
-      gmsh::model::mesh::createTopology();
-    else
+    if (!split.ownPatches)  // HexLayer's own patches come with their curves and points (addOwnPatches)
       gmsh::model::mesh::classifySurfaces(split.featureAngle * toRadians, true, true, split.curveAngle * toRadians);
     gmsh::model::mesh::createGeometry();
   } catch (...) {
@@ -657,6 +705,13 @@ QuadMesh tryQuadMeshes(const ChordalLocator& chordal, const QuadMeshOptions& o) 
   if (o.tried) o.tried(1, 1 + o.patchSplits.size());
   ranked.best.tries = gmshTries(chordal, o, chordalEuler, ranked);
   return std::move(ranked.best);
+}
+
+QuadMesh gmshQuads(const ChordalLocator& chordal, const QuadMeshOptions& o, const PatchSplit& split) {
+  StartedChild child = startGmshQuads(chordal, o, split, tryBudget(chordal.surface(), o, true));
+  GmshTry done = finishGmshQuads(child);
+  done.quads.failure = done.failure;
+  return done.quads;
 }
 
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& o) {

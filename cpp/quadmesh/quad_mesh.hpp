@@ -123,6 +123,10 @@ std::string inGmshSession(const std::function<std::string()>& work);
 std::string toBytes(const QuadMesh& q);
 QuadMesh fromBytes(const std::string& bytes);
 
+// One Gmsh try of `split` (in a child process, within the try's budget): its quads as Gmsh made them, triangles
+// paired or split, not smoothed or ranked; none, with `failure` set, if it failed. [in] chordal, options, split.
+QuadMesh gmshQuads(const ChordalLocator& chordal, const QuadMeshOptions& options, const PatchSplit& split);
+
 // tryQuadMeshes, but throws geometryError (with the failure) if no try gave quads.
 QuadMesh meshChordalSurface(const ChordalLocator& chordal, const QuadMeshOptions& options);
 

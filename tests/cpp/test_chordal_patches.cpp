@@ -113,6 +113,39 @@ TEST(ChordalPatches, NoPatchMeetsItselfAtAVertexOnANoisySheet) {
   }
 }
 
+TEST(ChordalPatches, TopologyOfAChannel) {
+  // Four corners where the bends meet the rim; six curves: the two bends, the rim of each side sheet in one piece
+  // and of the middle sheet in two; each curve a chain of its vertices from corner to corner.
+  const Triangles t = grid(30, 8, channel);
+  const std::vector<int> patch = chordalPatches(t.points, t.triangles, 60);
+  const PatchTopology topology = patchTopology(t.triangles, patch);
+  auto id = [](int i, int j) { return j * 31 + i; };
+  EXPECT_EQ(topology.corners, (std::vector<int>{id(10, 0), id(20, 0), id(10, 8), id(20, 8)}));
+  ASSERT_EQ(topology.curves.size(), 6u);
+  std::map<std::array<int, 2>, std::size_t> edges;  // patches either side -> edges of their curves
+  for (const PatchCurve& c : topology.curves) {
+    EXPECT_TRUE(std::count(topology.corners.begin(), topology.corners.end(), c.vertices.front()));
+    EXPECT_TRUE(std::count(topology.corners.begin(), topology.corners.end(), c.vertices.back()));
+    edges[c.patches] += c.vertices.size() - 1;
+  }
+  const std::map<std::array<int, 2>, std::size_t> expected{
+      {{-1, 0}, 8 + 10 + 10}, {{-1, 1}, 10 + 10}, {{-1, 2}, 8 + 10 + 10}, {{0, 1}, 8}, {{1, 2}, 8}};
+  EXPECT_EQ(edges, expected);
+  ASSERT_EQ(topology.bounding.size(), 3u);
+  EXPECT_EQ(topology.bounding[0].size(), 2u);
+  EXPECT_EQ(topology.bounding[1].size(), 4u);
+  EXPECT_EQ(topology.bounding[2].size(), 2u);
+}
+
+TEST(ChordalPatches, TopologyOfAFlatSheetIsOneLoop) {
+  const Triangles t = grid(5, 3, [](double x, double y) { return Vec3(x, y, 0); });
+  const PatchTopology topology = patchTopology(t.triangles, std::vector<int>(t.triangles.size(), 0));
+  EXPECT_EQ(topology.corners, std::vector<int>{0}) << "a loop without corners starts at its lowest vertex";
+  ASSERT_EQ(topology.curves.size(), 1u);
+  EXPECT_EQ(topology.curves[0].vertices.size(), 2u * (5 + 3) + 1);
+  EXPECT_EQ(topology.curves[0].vertices.front(), topology.curves[0].vertices.back());
+}
+
 TEST(ChordalPatches, PinchedVerticesOfAChequerboard) {
   // Four squares round a vertex, the diagonal ones in one patch: each patch meets itself at the centre.
   const Triangles t = grid(2, 2, [](double x, double y) { return Vec3(x, y, 0); });

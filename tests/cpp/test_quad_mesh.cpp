@@ -134,3 +134,54 @@ TEST(QuadMesh, TryBudgetGrowsWithTheQuads) {
   EXPECT_DOUBLE_EQ(gmshTryBudget(0), 60);
   EXPECT_DOUBLE_EQ(gmshTryBudget(20000), 160);
 }
+
+namespace {
+
+// The 24 x 12 rectangle folded up by 90 degrees along the oblique line x = 8 + y / 2 (a sharp bend crossing the
+// facets, as a sheet's chordal surface has), then scaled.
+ChordalSurface foldedRectangle(double scale) {
+  ChordalSurface s = rectangle(24, 12);
+  const Vec3 origin(8, 0, 0), along = Vec3(0.5, 1, 0).normalized();
+  const Eigen::AngleAxisd fold(M_PI / 2, along);
+  for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+    if (s.vertices[v].x() > 8 + 0.5 * s.vertices[v].y())
+      s.vertices[v] = origin + fold * (s.vertices[v] - origin), s.normals[v] = fold * s.normals[v];
+    s.vertices[v] *= scale;
+  }
+  return s;
+}
+
+}  // namespace
+
+// A Gmsh try of HexLayer's own patches (chordal_patches.hpp) on a sheet folded sharply along a line across its
+// facets: quads on the surface, none inverted, their area the surface's, the same quads on every run (Gmsh is
+// given the patches' curves and points, not its createTopology, whose order changed from run to run).
+TEST(QuadMesh, OwnPatchesOfASharplyFoldedSheet) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    const ChordalSurface surface = foldedRectangle(scale);
+    const ChordalLocator chordal(surface);
+    QuadMeshOptions o;
+    o.size = scale;
+    const PatchSplit own{60, 60, false, 3, true};
+    QuadMesh first;
+    for (int run = 0; run < 2; ++run) {
+      const QuadMesh q = gmshQuads(chordal, o, own);
+      ASSERT_FALSE(q.quads.empty()) << q.failure;
+      EXPECT_EQ(q.holes, 0u);
+      double area = 0, worst = 1;
+      for (const auto& quad : q.quads) {
+        area += quadArea(q, quad);
+        worst = std::min(worst,
+                         quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]}));
+      }
+      EXPECT_NEAR(area, 24 * 12 * scale * scale, 0.03 * 24 * 12 * scale * scale) << "scale " << scale;
+      EXPECT_GT(worst, 0.2) << "scale " << scale;
+      // Gmsh smooths its nodes in 3D: they stray a little off the fold (the stage then puts them on the surface).
+      for (const Vec3& x : q.nodes) EXPECT_LT((chordal.locate(x).point - x).norm(), 0.25 * scale);
+      if (run == 0)
+        first = q;
+      else
+        EXPECT_EQ(q.nodes, first.nodes) << "scale " << scale;
+    }
+  }
+}
