@@ -364,8 +364,10 @@ StartedChild startGmshQuads(const ChordalLocator& locator, const QuadMeshOptions
           // Gmsh 4.8 caps every mesh size by the model's size, which is only computed on a synchronize:
           // without it, the discrete model's default of 1 caps the adaptive sizes (§6.1).
           gmsh::model::geo::synchronize();
-          setQuadOptions(o, split, locator);
-          const std::size_t structured = split.structured ? structurePatches(o, locator) : 0;
+          QuadMeshOptions sized = o;
+          if (split.ownPatches && !o.ownPatchSize.empty()) sized.vertexSize = o.ownPatchSize;
+          setQuadOptions(sized, split, locator);
+          const std::size_t structured = split.structured ? structurePatches(sized, locator) : 0;
           gmsh::model::mesh::generate(2);
           QuadMesh q = collectQuads();
           q.structuredPatches = structured;

@@ -59,6 +59,10 @@ struct PatchSplit {
 struct QuadMeshOptions {
   double size = 0;                 // target edge length (uniform sizing)
   std::vector<double> vertexSize;  // adaptive sizing: target edge length per chordal vertex (sizing.hpp)
+  // Adaptive sizing of the own-patch tries (PatchSplit::ownPatches), if not empty: without the curvature term,
+  // since the sharp creases they are for are their patches' curves (refining a crease does not make the surface
+  // turn less across a quad there).
+  std::vector<double> ownPatchSize;
   // The structured block grids are tried first (block_grids.hpp); Gmsh, one split after the other,
   // unless one of them is good with a mean quad of at least 0.98. Gmsh's reparametrization of a
   // patch can fail: the next split is tried then, or when the quads change the chordal surface's

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iomanip>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -53,6 +54,11 @@ QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const Q
                                         [](const PatchSplit& split) { return split.ownPatches; }),
                          qo.patchSplits.end());
   if (o.adaptive) qo.vertexSize = adaptiveSizes(stage.chordal, o.sizing);
+  if (o.adaptive && fairing == 0) {  // §6.1's radius term only: the own patches' creases are their curves
+    SizingOptions withoutCurvature = o.sizing;
+    withoutCurvature.turnPerQuad = std::numeric_limits<double>::infinity();
+    qo.ownPatchSize = adaptiveSizes(stage.chordal, withoutCurvature);
+  }
   const double levels = static_cast<double>(std::size(kFairingIterations));
   if (o.progress)
     qo.tried = [&](std::size_t done, std::size_t total) {

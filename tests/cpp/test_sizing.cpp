@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "quadmesh/sizing.hpp"
 
@@ -66,4 +67,24 @@ TEST(Sizing, CurvatureRefines) {
   }
   const std::vector<double> h = adaptiveSizes(s, {10.0, 0.1, 100, 10, 0.5});
   for (size_t i = 0; i < h.size(); ++i) EXPECT_NEAR(h[i], 0.5 / k[i], 1e-9) << "turn of 0.5 rad per quad";
+}
+
+TEST(Sizing, WithoutTheCurvatureTermASharpFoldKeepsTheRadiusSize) {
+  // The strip folded by 90 degrees at x = 10 (the own-patch tries' sizes, quad_stage.hpp: the fold is a patch
+  // curve there): with the curvature term the fold's vertices get the smallest size, without it the radius's.
+  ChordalSurface s = strip(20, wedge);
+  for (size_t i = 0; i < s.vertices.size(); ++i) {
+    const double x = s.vertices[i].x();
+    if (x > 10) s.vertices[i] = Vec3(10, s.vertices[i].y(), x - 10), s.normals[i] = -Vec3::UnitX();
+    if (x == 10) s.normals[i] = Vec3(-1, 0, 1).normalized();
+  }
+  SizingOptions o{2.0, 0.1, 100, 10, 0.5};
+  const std::vector<double> refined = adaptiveSizes(s, o);
+  o.turnPerQuad = std::numeric_limits<double>::infinity();
+  const std::vector<double> h = adaptiveSizes(s, o);
+  const double medianRadius = wedge(10);
+  for (size_t i = 0; i < h.size(); ++i) {
+    EXPECT_NEAR(h[i], 2.0 * s.radius[i] / medianRadius, 1e-12) << i;
+    if (s.vertices[i].x() == 10 && s.vertices[i].z() == 0) EXPECT_LT(refined[i], 0.5 * h[i]) << i;
+  }
 }
