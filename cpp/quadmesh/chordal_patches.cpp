@@ -70,8 +70,8 @@ int splitIntoPieces(const Neighbours& across, std::vector<int>& patch) {
   return count;
 }
 
-// The patch most of a triangle's neighbours (or a group's) are in, other than `own`; -1 if none.
-// [in] counts: patch -> edges shared.
+// The patch sharing the most edges with a group of triangles; -1 if none. [in] counts: patch -> edges shared
+// (the group's own patch left out by the caller).
 int mostShared(const std::map<int, int>& counts) {
   int best = -1, most = 0;
   for (const auto& [p, n] : counts)

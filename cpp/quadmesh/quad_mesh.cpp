@@ -275,8 +275,8 @@ std::vector<std::array<std::size_t, N>> elementsOfType(int type) {
 QuadMesh collectQuads() {
   const auto quadTags = elementsOfType<4>(3);
   const auto triangleTags = elementsOfType<3>(2);
-  // The elements' own nodes (after createTopology, Gmsh 4.8 can leave a node of a patch's mesh out of its
-  // entities, so getNodes misses it, while the elements still hold it).
+  // The elements' own nodes: every node a quad or triangle uses, whichever entity holds it (with Gmsh's
+  // createTopology, tried for the own patches, getNodes missed one that the elements held).
   std::map<std::size_t, Vec3> position;
   for (const int type : {3, 2}) {
     std::vector<std::size_t> nodeTags;
@@ -634,13 +634,15 @@ QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, lon
     const PatchSplit& split = o.patchSplits[i];
     return std::make_tuple(split.featureAngle, split.curveAngle, split.ownPatches);
   };
+  // The own patches are a fallback: not tried once a try has given quads.
+  auto fallbackNotNeeded = [&](std::size_t i) { return o.patchSplits[i].ownPatches && !ranked.best.quads.empty(); };
   std::optional<std::pair<std::size_t, StartedChild>> ahead;  // the next try, started beside the current one
   auto startAhead = [&](std::size_t i) {
     if (threadCount() < 2) return;
     for (std::size_t k = i + 1; k < splits; ++k) {
-      if (failedPatches.count(angles(k))) continue;                           // skipped whatever try i gives
-      if (o.patchSplits[k].ownPatches && !ranked.best.quads.empty()) return;  // skipped: there are quads
-      if (angles(k) == angles(i)) return;                                     // to be skipped if try i's patches fail
+      if (failedPatches.count(angles(k))) continue;  // skipped whatever try i gives
+      if (fallbackNotNeeded(k)) return;
+      if (angles(k) == angles(i)) return;  // to be skipped if try i's patches fail
       if (const double budget = tryBudget(chordal.surface(), o, ranked.best.quads.empty()); budget > 0)
         ahead.emplace(k, startGmshQuads(chordal, o, o.patchSplits[k], budget));
       return;
@@ -648,12 +650,9 @@ QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, lon
   };
   for (std::size_t i = 0; i < splits && !(ranked.score.good() && ranked.score.mean >= kStructuredMean); ++i) {
     const PatchSplit& split = o.patchSplits[i];
-    if (failedPatches.count(angles(i))) {  // the same patches: the same failure
-      ++tries.samePatches;
-      if (o.tried) o.tried(2 + i, 1 + splits);
-      continue;
-    }
-    if (split.ownPatches && !ranked.best.quads.empty()) {  // a fallback: only where Gmsh's own patches gave none
+    const bool samePatches = failedPatches.count(angles(i)) > 0;  // the same patches: the same failure
+    if (samePatches || fallbackNotNeeded(i)) {
+      tries.samePatches += samePatches;
       if (o.tried) o.tried(2 + i, 1 + splits);
       continue;
     }
