@@ -1,11 +1,21 @@
 #include "geometry/mixed_faces.hpp"
 
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepFeat_SplitShape.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <ElCLib.hxx>
+#include <Geom2dAPI_InterCurveCurve.hxx>
 #include <Geom2d_Line.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
@@ -16,12 +26,18 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <set>
 #include <tuple>
+
+#include "core/triangle_tree.hpp"
+#include "geometry/face_sampling.hpp"
 
 namespace hexlayer {
 namespace {
@@ -36,6 +52,8 @@ constexpr double kOneWay = 0.5;       // a piece's mean normal at least this lon
 constexpr std::size_t kMinMarks = 8;  // samples a face needs to be split
 constexpr int kLines = 64;            // parameter lines tried per direction, besides the surface's knots
 constexpr double kKnotSlack = 0.05;   // a knot is taken if it misplaces at most this share more of the area
+constexpr double kFlushFar = 1.5;     // a flush rim's sample: farther than this many walls from every face across
+constexpr double kFlushShare = 0.5;   // a flush rim piece: at least this share of its area so far
 
 // The knots of the face's surface along u (alongV lines sit on them) or v: where a B-spline skin joins a flat
 // to a round, its curvature jumps at a knot.
@@ -83,16 +101,24 @@ double angleDegrees(const Vec3& a, const Vec3& b) {
 // them may be empty) as wall pieces, if they part the samples so. The rim must turn away from each wall next to
 // it: a wall's normal is taken over a band beside the line as wide (in the parameter) as the rim piece, so a
 // curved wall's band along a flat rim is not taken for a rim.
+// The pieces of a face's samples below the band, in it (the rim) and above it. [in] marks, band.
+std::array<Piece, 3> bandPieces(const std::vector<RayMark>& marks, const Band& band) {
+  std::array<Piece, 3> p;  // below, rim, above
+  for (const RayMark& m : marks) {
+    Piece& in = p[band.holds(m) ? 1 : band.coord(m) < band.from ? 0 : 2];
+    in.area += m.area, in.crossing += m.crossing ? m.area : 0, in.normal += m.area * m.normal;
+  }
+  return p;
+}
+
 std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV, double from, double to,
                                  double thickness, int face) {
   const Band band{alongV, from, to};
-  Piece below, above, rim, besideBelow, besideAbove;
+  const auto [below, rim, above] = bandPieces(marks, band);
+  Piece besideBelow, besideAbove;
   double first = to, last = from;  // the rim samples' extent in the parameter
-  for (const RayMark& m : marks) {
-    Piece& p = band.holds(m) ? rim : band.coord(m) < from ? below : above;
-    p.area += m.area, p.crossing += m.crossing ? m.area : 0, p.normal += m.area * m.normal;
+  for (const RayMark& m : marks)
     if (band.holds(m)) first = std::min(first, band.coord(m)), last = std::max(last, band.coord(m));
-  }
   const double width = std::max(last - first, 0.0);
   for (const RayMark& m : marks) {
     if (band.coord(m) < from && band.coord(m) >= from - width)
@@ -164,6 +190,182 @@ std::optional<std::vector<FaceSplit>> bestSplit(const CadSolid& cad, const FaceS
   return best->splits;
 }
 
+Vec3 toVec(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+
+// The faces across a wall face's wall (those its crossing rays hit) as triangles (face_sampling.hpp).
+TriangleTree facesAcross(const CadSolid& cad, const FaceSide& fs) {
+  std::set<int> across;
+  for (const RayMark& m : fs.marks)
+    if (m.crossing) across.insert(m.hitFace);
+  std::vector<Triangle> triangles;
+  for (int g : across)
+    for (const Triangle2d& t : faceTriangles(TopoDS::Face(cad.faces(g + 1))))
+      triangles.push_back({toVec(t.xyz[0].XYZ()), toVec(t.xyz[1].XYZ()), toVec(t.xyz[2].XYZ())});
+  return TriangleTree(std::move(triangles));
+}
+
+// A flat wall face's samples that lie on the end of another wall flush with it (a box's lower end wall, whose
+// outer face runs on up the ends of the higher side walls): their rays run along that other wall and cross none,
+// and they are farther than kFlushFar walls from the faces across this face's wall (facesAcross), where its own
+// samples, and those of a corner it makes with another wall, are nearer. [in] cad, fs: a face and its samples; f:
+// its index; [in] thickness. Per sample: whether it lies so.
+std::vector<char> flushSamples(const CadSolid& cad, const FaceSide& fs, int f, double thickness) {
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(cad.faces(f + 1)));
+  const TriangleTree across = facesAcross(cad, fs);
+  std::vector<char> flush(fs.marks.size(), 0);
+  for (std::size_t k = 0; k < fs.marks.size(); ++k)
+    if (const RayMark& m = fs.marks[k]; !m.crossing)
+      flush[k] = !across.anyWithin(toVec(surface->Value(m.u, m.v).XYZ()), kFlushFar * thickness);
+  return flush;
+}
+
+// The face's parameter lines through its vertices: where a flush rim leaves the wall, the face's outline turns.
+std::vector<double> vertexParameters(const TopoDS_Face& face, bool u) {
+  std::vector<double> out;
+  for (TopExp_Explorer v(face, TopAbs_VERTEX); v.More(); v.Next()) {
+    const gp_Pnt2d uv = BRep_Tool::Parameters(TopoDS::Vertex(v.Current()), face);
+    out.push_back(u ? uv.X() : uv.Y());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The band of a flat wall face beyond one of its vertices' parameter lines that holds a flush rim: mostly
+// (kFlushShare) flush samples (flushSamples) and no more crossing ones than a rim (kRimPiece), the rest of the face a
+// wall (kWallPiece); of those the line that misplaces the least sample area (crossing in the rim, not in the wall).
+// [in] cad, fs, f, thickness. Returns the split, or nothing.
+std::optional<FaceSplit> flushRimSplit(const CadSolid& cad, const FaceSide& fs, int f, double thickness) {
+  const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
+  std::vector<char> flush;  // measured when a band might hold a rim
+  std::optional<Candidate> best;
+  for (const bool alongV : {true, false}) {
+    const std::vector<double> lines = vertexParameters(face, alongV);
+    if (lines.size() < 3) continue;
+    const double span = lines.back() - lines.front();
+    for (std::size_t i = 1; i + 1 < lines.size(); ++i)
+      for (const Band band :
+           {Band{alongV, lines[i], lines.back() + span}, Band{alongV, lines.front() - span, lines[i]}}) {
+        const auto [below, rim, above] = bandPieces(fs.marks, band);
+        const Piece& wall = below.area > 0 ? below : above;
+        if (rim.area < kMinRimArea * thickness * thickness || rim.share() >= kRimPiece || wall.share() < kRimPiece)
+          continue;
+        if (flush.empty()) flush = flushSamples(cad, fs, f, thickness);
+        double flushArea = 0;
+        for (std::size_t k = 0; k < fs.marks.size(); ++k)
+          if (flush[k] && band.holds(fs.marks[k])) flushArea += fs.marks[k].area;
+        if (flushArea < kFlushShare * rim.area) continue;
+        const double at = band.from == lines[i] ? band.from : band.to;
+        keepBetter(best, Candidate{rim.crossing + wall.area - wall.crossing, {{f, alongV, at}}, band});
+      }
+  }
+  if (!best) return std::nullopt;
+  return best->splits.front();
+}
+
+// The stretches [from, to] of a face's parameter line (its parameter along the line) to split the face along: the
+// whole span over the face's bounds, or, where the line runs along a boundary edge somewhere (a flush rim's line
+// continuing the wall's edge), only the stretches between its crossings with the boundary whose middle is inside.
+// [in] face, line; [in] from, to: the line's span over the face's bounds.
+std::vector<std::pair<double, double>> insideStretches(const TopoDS_Face& face, const Handle(Geom2d_Line) & line,
+                                                       double from, double to) {
+  std::vector<double> at{from, to};
+  bool alongBoundary = false;
+  const double tolerance = BRep_Tool::Tolerance(face);
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+    double first, last;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face, first, last);
+    if (pcurve.IsNull()) continue;
+    const Geom2dAPI_InterCurveCurve meet(line, new Geom2d_TrimmedCurve(pcurve, first, last), tolerance);
+    for (int i = 1; i <= meet.NbPoints(); ++i) at.push_back(ElCLib::Parameter(line->Lin2d(), meet.Point(i)));
+    for (int i = 1; i <= meet.NbSegments(); ++i) {
+      Handle(Geom2d_Curve) a, b;
+      meet.Segment(i, a, b);
+      at.push_back(ElCLib::Parameter(line->Lin2d(), a->Value(a->FirstParameter())));
+      at.push_back(ElCLib::Parameter(line->Lin2d(), a->Value(a->LastParameter())));
+      alongBoundary = true;
+    }
+  }
+  if (!alongBoundary) return {{from, to}};
+  std::sort(at.begin(), at.end());
+  BRepTopAdaptor_FClass2d inside(face, tolerance);
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t i = 0; i + 1 < at.size(); ++i)
+    if (at[i] >= from && at[i + 1] <= to && at[i + 1] - at[i] > 10 * tolerance &&
+        inside.Perform(line->Value(0.5 * (at[i] + at[i + 1]))) == TopAbs_IN)
+      out.emplace_back(at[i], at[i + 1]);
+  return out;
+}
+
+// The face's parameter line of a split, and the span of its parameter over the face's bounds.
+struct SplitLine {
+  Handle(Geom2d_Line) line;
+  double from, to;
+};
+SplitLine splitLine(const TopoDS_Face& face, const FaceSplit& s) {
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  if (s.alongV) return {new Geom2d_Line(gp_Pnt2d(s.at, 0), gp_Dir2d(0, 1)), v0, v1};
+  return {new Geom2d_Line(gp_Pnt2d(0, s.at), gp_Dir2d(1, 0)), u0, u1};
+}
+
+// The solid with its faces split along the lines (their stretches to split along, insideStretches), or nothing if
+// OpenCASCADE could not split them. [in] cad, splits; [out] split: the splitter, whose Modified tells the pieces of
+// each face.
+std::optional<TopoDS_Solid> splitAlongLines(const CadSolid& cad, const std::vector<FaceSplit>& splits,
+                                            BRepFeat_SplitShape& split) {
+  split.Init(cad.solid);
+  for (const FaceSplit& s : splits) {
+    const TopoDS_Face face = TopoDS::Face(cad.faces(s.face + 1));
+    const auto [line, from, to] = splitLine(face, s);
+    for (const auto& [a, b] : insideStretches(face, line, from, to)) {
+      BRepBuilderAPI_MakeEdge edge(line, BRep_Tool::Surface(face), a, b);
+      if (!edge.IsDone()) return std::nullopt;
+      TopoDS_Edge e = edge.Edge();
+      BRepLib::BuildCurves3d(e);
+      split.Add(e, face);
+    }
+  }
+  split.Build();
+  if (!split.IsDone()) return std::nullopt;
+  TopExp_Explorer solids(split.Shape(), TopAbs_SOLID);
+  if (!solids.More()) return std::nullopt;
+  return TopoDS::Solid(solids.Current());
+}
+
+// A flush rim's split line ends on the bend rounds beside it (the round of the corner the wall it leaves makes
+// with another, running on up the rim): each is split there too, along its parameter line across it (the narrower
+// way), so that the round's piece beside the rim is a rim and the rest stays a bend round. [in] cad, sides; [in]
+// split: a flush rim's. Returns the rounds' splits.
+std::vector<FaceSplit> splitsAcrossRounds(const CadSolid& cad, const WallSides& sides, const FaceSplit& split) {
+  const TopoDS_Face face = TopoDS::Face(cad.faces(split.face + 1));
+  const auto [line, from, to] = splitLine(face, split);
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+  std::vector<FaceSplit> out;
+  for (const auto& [a, b] : insideStretches(face, line, from, to))
+    for (const double t : {a, b}) {
+      const gp_Pnt end = surface->Value(line->Value(t).X(), line->Value(t).Y());
+      const TopoDS_Vertex vertex = BRepBuilderAPI_MakeVertex(end).Vertex();
+      for (int g : sides.bendRounds) {
+        const TopoDS_Face round = TopoDS::Face(cad.faces(g + 1));
+        BRepExtrema_DistShapeShape distance(vertex, round);
+        if (!distance.IsDone() || distance.Value() > 10 * BRep_Tool::Tolerance(round)) continue;
+        const Handle(Geom_Surface) roundSurface = BRep_Tool::Surface(round);
+        GeomAPI_ProjectPointOnSurf on(end, roundSurface);
+        if (on.NbPoints() == 0) continue;
+        double u, v, u0, u1, v0, v1;
+        on.LowerDistanceParameters(u, v);
+        BRepTools::UVBounds(round, u0, u1, v0, v1);
+        gp_Pnt p;
+        gp_Vec du, dv;
+        roundSurface->D1(u, v, p, du, dv);
+        const bool acrossU = du.Magnitude() * (u1 - u0) < dv.Magnitude() * (v1 - v0);  // u runs across the round
+        out.push_back(acrossU ? FaceSplit{g, false, v, true} : FaceSplit{g, true, u, true});
+      }
+    }
+  return out;
+}
+
 }  // namespace
 
 std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& sides) {
@@ -171,32 +373,31 @@ std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& side
   for (int f = 0; f < static_cast<int>(sides.faces.size()); ++f) {
     const FaceSide& fs = sides.faces[f];
     if (fs.marks.size() < kMinMarks || fs.wallShare < kRimPiece) continue;  // a rim face
-    if (std::optional<std::vector<FaceSplit>> s = bestSplit(cad, fs, sides.thickness, f))
+    if (std::optional<std::vector<FaceSplit>> s = bestSplit(cad, fs, sides.thickness, f)) {
       splits.insert(splits.end(), s->begin(), s->end());
+      continue;
+    }
+    if (fs.side == Side::Lateral || BRepAdaptor_Surface(TopoDS::Face(cad.faces(f + 1))).GetType() != GeomAbs_Plane)
+      continue;
+    if (std::optional<FaceSplit> s = flushRimSplit(cad, fs, f, sides.thickness)) {
+      splits.push_back(*s);
+      const std::vector<FaceSplit> rounds = splitsAcrossRounds(cad, sides, *s);
+      splits.insert(splits.end(), rounds.begin(), rounds.end());
+    }
   }
   return splits;
 }
 
-CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
+namespace {
+
+// One pass of splitFaces: the solid with the faces split (nothing if OpenCASCADE could not), each piece named after
+// its input face. [in] cad, splits.
+CadSolid splitOnce(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
   try {
-    BRepFeat_SplitShape split(cad.solid);
-    for (const FaceSplit& s : splits) {
-      const TopoDS_Face face = TopoDS::Face(cad.faces(s.face + 1));
-      double u0, u1, v0, v1;
-      BRepTools::UVBounds(face, u0, u1, v0, v1);
-      const Handle(Geom2d_Line) line = s.alongV ? new Geom2d_Line(gp_Pnt2d(s.at, 0), gp_Dir2d(0, 1))
-                                                : new Geom2d_Line(gp_Pnt2d(0, s.at), gp_Dir2d(1, 0));
-      BRepBuilderAPI_MakeEdge edge(line, BRep_Tool::Surface(face), s.alongV ? v0 : u0, s.alongV ? v1 : u1);
-      if (!edge.IsDone()) return {};
-      TopoDS_Edge e = edge.Edge();
-      BRepLib::BuildCurves3d(e);
-      split.Add(e, face);
-    }
-    split.Build();
-    if (!split.IsDone()) return {};
-    TopExp_Explorer solids(split.Shape(), TopAbs_SOLID);
-    if (!solids.More()) return {};
-    CadSolid out = prepareSolid(TopoDS::Solid(solids.Current()), 1);
+    BRepFeat_SplitShape split;
+    const std::optional<TopoDS_Solid> solid = splitAlongLines(cad, splits, split);
+    if (!solid) return {};
+    CadSolid out = prepareSolid(*solid, 1);
     out.unit = cad.unit;
     out.inputFace.assign(out.faces.Extent(), -1);
     for (int f = 1; f <= cad.faces.Extent(); ++f) {
@@ -210,6 +411,29 @@ CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
   } catch (const Standard_Failure&) {
     return {};
   }
+}
+
+// The face of `to` that face f of `from` became when other faces were split (the same input face, on the same
+// surface), or -1. [in] from, to, f.
+int sameFace(const CadSolid& from, const CadSolid& to, int f) {
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(from.faces(f + 1)));
+  for (int g = 0; g < to.faces.Extent(); ++g)
+    if (inputFaceOf(to, g) == inputFaceOf(from, f) && BRep_Tool::Surface(TopoDS::Face(to.faces(g + 1))) == surface)
+      return g;
+  return -1;
+}
+
+}  // namespace
+
+CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
+  std::vector<FaceSplit> first, after;
+  for (const FaceSplit& s : splits) (s.afterOthers ? after : first).push_back(s);
+  CadSolid out = splitOnce(cad, first);
+  if (after.empty() || out.faces.Extent() == 0) return out;
+  for (FaceSplit& s : after) s.face = sameFace(cad, out, s.face);
+  after.erase(std::remove_if(after.begin(), after.end(), [](const FaceSplit& s) { return s.face < 0; }), after.end());
+  CadSolid more = splitOnce(out, after);
+  return more.faces.Extent() > 0 ? more : out;
 }
 
 std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides) {

@@ -15,6 +15,7 @@ struct FaceSplit {
   int face = -1;  // 0-based in CadSolid::faces
   bool alongV = true;
   double at = 0;
+  bool afterOthers = false;  // split once the others are (a round beside a flush rim, whose split line ends on it)
 };
 
 // [in] cad, sides (classifyWallSides, with its ray marks). The faces to split: a parameter line parts the
