@@ -1,6 +1,5 @@
 #include "geometry/mixed_faces.hpp"
 
-#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
@@ -16,6 +15,7 @@
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
@@ -53,6 +53,7 @@ constexpr std::size_t kMinMarks = 8;  // samples a face needs to be split
 constexpr int kLines = 64;            // parameter lines tried per direction, besides the surface's knots
 constexpr double kKnotSlack = 0.05;   // a knot is taken if it misplaces at most this share more of the area
 constexpr double kFlushFar = 1.5;     // a flush rim's sample: farther than this many walls from every face across
+constexpr double kFlushRay = 4;       // a flush rim's sample: its inward ray runs along a wall farther than this
 constexpr double kFlushShare = 0.5;   // a flush rim piece: at least this share of its area so far
 
 // The knots of the face's surface along u (alongV lines sit on them) or v: where a B-spline skin joins a flat
@@ -214,7 +215,7 @@ std::vector<char> flushSamples(const CadSolid& cad, const FaceSide& fs, int f, d
   const TriangleTree across = facesAcross(cad, fs);
   std::vector<char> flush(fs.marks.size(), 0);
   for (std::size_t k = 0; k < fs.marks.size(); ++k)
-    if (const RayMark& m = fs.marks[k]; !m.crossing)
+    if (const RayMark& m = fs.marks[k]; !m.crossing && (m.hitFace < 0 || m.length > kFlushRay * thickness))
       flush[k] = !across.anyWithin(toVec(surface->Value(m.u, m.v).XYZ()), kFlushFar * thickness);
   return flush;
 }
@@ -366,6 +367,12 @@ std::vector<FaceSplit> splitsAcrossRounds(const CadSolid& cad, const WallSides& 
   return out;
 }
 
+// Whether the face lies in a plane: a plane, or a surface of another kind that is flat (a plane written as a
+// B-spline by a CAD system or by a scaling). [in] face.
+bool isFlat(const TopoDS_Face& face) {
+  return GeomLib_IsPlanarSurface(BRep_Tool::Surface(face), 10 * BRep_Tool::Tolerance(face)).IsPlanar();
+}
+
 }  // namespace
 
 std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& sides) {
@@ -377,8 +384,7 @@ std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& side
       splits.insert(splits.end(), s->begin(), s->end());
       continue;
     }
-    if (fs.side == Side::Lateral || BRepAdaptor_Surface(TopoDS::Face(cad.faces(f + 1))).GetType() != GeomAbs_Plane)
-      continue;
+    if (fs.side == Side::Lateral || !isFlat(TopoDS::Face(cad.faces(f + 1)))) continue;
     if (std::optional<FaceSplit> s = flushRimSplit(cad, fs, f, sides.thickness)) {
       splits.push_back(*s);
       const std::vector<FaceSplit> rounds = splitsAcrossRounds(cad, sides, *s);

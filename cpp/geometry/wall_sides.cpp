@@ -103,7 +103,7 @@ FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, 
     out.meanNormal += s.area * s.normal;
     out.sampledArea += s.area;
     const std::optional<RayHit> hit = rays.nearest(s.point, -s.normal, skip, 2 * cad.diagonal);
-    out.marks.push_back({s.u, s.v, s.area, s.normal, false, hit ? hit->face : -1});
+    out.marks.push_back({s.u, s.v, s.area, s.normal, false, hit ? hit->face : -1, hit ? hit->w : 0});
     if (!hit) continue;
     const Ray ray{hit->w, hit->face, s.area};
     out.all.push_back(ray);

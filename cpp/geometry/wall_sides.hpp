@@ -15,12 +15,13 @@ namespace hexlayer {
 class BoundaryTriangles;
 
 // One sample of a face with its inward ray: where it is on the face, its share of the face's area, its
-// outward normal, whether the ray crosses the wall (classifyWallSides) and the face it hits (-1: none).
+// outward normal, whether the ray crosses the wall (classifyWallSides), the face it hits (-1: none) and how far.
 struct RayMark {
   double u = 0, v = 0, area = 0;
   Vec3 normal = Vec3::Zero();
   bool crossing = false;
   int hitFace = -1;
+  double length = 0;  // to the hit (0: none)
 };
 
 struct FaceSide {

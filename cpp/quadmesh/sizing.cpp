@@ -32,6 +32,12 @@ void limitGradation(const ChordalSurface& s, const std::vector<std::pair<int, in
   }
 }
 
+// Whether the chordal surface turns there more tightly than a bend of its wall can: a radius of curvature below the
+// wall's thickness 2r (the sharp inside corner of a bent sheet, the fold where walls meet). The facets' fold there
+// only gets sharper as they get smaller, and a quad as wide as the wall spans it anyway: the curvature term does
+// not refine it. [in] curvature (chordalCurvature), radius: at a vertex.
+bool isCrease(double curvature, double radius) { return curvature * 2 * radius > 1; }
+
 }  // namespace
 
 std::vector<double> chordalCurvature(const ChordalSurface& s) {
@@ -54,8 +60,9 @@ std::vector<double> adaptiveSizes(const ChordalSurface& s, const SizingOptions& 
   const std::vector<double> curvature = chordalCurvature(s);
   std::vector<double> h(s.vertices.size());
   for (size_t i = 0; i < h.size(); ++i) {
-    h[i] = medianRadius > 0 ? o.size * s.radius[i] / medianRadius : o.size;     // §6.1: radius function
-    if (curvature[i] > 0) h[i] = std::min(h[i], o.turnPerQuad / curvature[i]);  // §6.1: curvature
+    h[i] = medianRadius > 0 ? o.size * s.radius[i] / medianRadius : o.size;  // §6.1: radius function
+    if (curvature[i] > 0 && !isCrease(curvature[i], s.radius[i]))
+      h[i] = std::min(h[i], o.turnPerQuad / curvature[i]);  // §6.1: curvature
     h[i] = std::clamp(h[i], lo, hi);
   }
   limitGradation(s, facetEdges(s), o.gradation, h);

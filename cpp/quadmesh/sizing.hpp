@@ -16,7 +16,8 @@ struct SizingOptions {
 };
 
 // Target quad size at every chordal vertex (§6.1): size x r / median r (quads as many wall
-// thicknesses wide everywhere), at most turnPerQuad / curvature, within [minSize, maxSize], then
+// thicknesses wide everywhere), at most turnPerQuad / curvature where the surface bends no tighter than its wall
+// is thick (a crease is not refined: sizing.cpp's isCrease), within [minSize, maxSize], then
 // smoothed so that neighbours differ by at most gradation x their distance.
 std::vector<double> adaptiveSizes(const ChordalSurface& chordal, const SizingOptions& options);
 

@@ -1,8 +1,10 @@
 // Faces that are partly wall and partly rim (geometry/mixed_faces.hpp): a B-spline skin over the top wall
 // and round the strip's end is split where the wall meets the round, and only there.
 #include <gtest/gtest.h>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <Bnd_Box.hxx>
 #include <gp_GTrsf.hxx>
 #include <gp_Mat.hxx>
 
@@ -12,6 +14,7 @@
 #include "geometry/cad_solid.hpp"
 #include "geometry/mixed_faces.hpp"
 #include "geometry/wall_sides.hpp"
+#include "test_boxes.hpp"
 
 using namespace hexlayer;
 
@@ -56,7 +59,54 @@ void expectSkinSplit(const std::string& sample, int lines, int lateral) {
   EXPECT_EQ(rims, lateral);
 }
 
+// An open box 60 x 40 x 20 with 2 mm walls whose end wall at x = 0 is 10 high: the other walls stand to 20, and
+// the box's outer face at x = 0 (one face: the low end wall's, the side walls' ends above it, flush) is wall below
+// z = 10 and the side walls' rims above. Scaled by s; as B-splines (a plane written so by another CAD system or
+// by a scaling) if bspline.
+TopoDS_Solid lowEndWallBox(double s, bool bspline) {
+  using test_boxes::Box;
+  const TopoDS_Solid box = test_boxes::boxes(
+      {{0, 0, 0, 60, 40, 2}, {0, 0, 0, 60, 2, 20}, {0, 38, 0, 60, 2, 20}, {58, 0, 0, 2, 40, 20}, {0, 0, 0, 2, 40, 10}},
+      s);
+  if (!bspline) return box;
+  gp_GTrsf same;  // the identity, which GTransform writes as B-splines all the same
+  TopExp_Explorer it(BRepBuilderAPI_GTransform(box, same, true).Shape(), TopAbs_SOLID);
+  return TopoDS::Solid(it.Current());
+}
+
 }  // namespace
+
+// The low end wall's outer face (lowEndWallBox) is split at the end wall's top, along the two stretches of the
+// line z = 10 inside it (beside the end wall's top rim, a boundary edge): its two strips above (2 x 10 each) are
+// rims, the rest (40 x 10) a wall, the side walls' ends then rims like any other wall's end. At x1, 1e-3 and 1e3,
+// and as B-splines.
+TEST(MixedFaces, AWallFaceRunningOnUpTheEndsOfHigherWallsIsSplitWhereItsWallEnds) {
+  for (const double s : {1.0, 1e-3, 1e3})
+    for (const bool bspline : {false, true}) {
+      SCOPED_TRACE(testing::Message() << "scale " << s << (bspline ? ", B-splines" : ""));
+      const CadSolid cad = prepareSolid(lowEndWallBox(s, bspline));
+      const std::vector<FaceSplit> splits = findMixedFaces(cad, classifyWallSides(cad));
+      ASSERT_EQ(splits.size(), 1u);
+      Bnd_Box bounds;
+      BRepBndLib::AddOptimal(cad.faces(splits[0].face + 1), bounds, false, false);
+      double x0, y0, z0, x1, y1, z1;
+      bounds.Get(x0, y0, z0, x1, y1, z1);
+      EXPECT_NEAR(x1 / s, 0, 1e-3) << "the face at x = 0";
+      EXPECT_NEAR(z1 / s, 20, 1e-3);
+      const CadSolid split = splitFaces(cad, splits);
+      ASSERT_EQ(split.faces.Extent(), cad.faces.Extent() + 2) << "three pieces";
+      EXPECT_NEAR(split.volume, cad.volume, 1e-9 * cad.volume);
+      const WallSides after = classifyWallSides(split);
+      std::vector<double> rims, walls;
+      for (int f = 0; f < split.faces.Extent(); ++f)
+        if (inputFaceOf(split, f) == inputFaceOf(cad, splits[0].face))
+          (after.faces[f].side == Side::Lateral ? rims : walls).push_back(after.faces[f].area / (s * s));
+      ASSERT_EQ(rims.size(), 2u);
+      ASSERT_EQ(walls.size(), 1u);
+      for (double a : rims) EXPECT_NEAR(a, 2 * 10, 0.05);
+      EXPECT_NEAR(walls[0], 40 * 10, 0.5);
+    }
+}
 
 // strip_skin_round: the top wall and the half-round end one face (Face1), which whole faces itself across the
 // wall. It is split once, on the knot where the line meets the circle (x = 40); then four rim faces.

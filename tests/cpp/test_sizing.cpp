@@ -2,6 +2,7 @@
 // curvature of the chordal surface, bounded, and graded.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -69,9 +70,27 @@ TEST(Sizing, CurvatureRefines) {
   for (size_t i = 0; i < h.size(); ++i) EXPECT_NEAR(h[i], 0.5 / k[i], 1e-9) << "turn of 0.5 rad per quad";
 }
 
-TEST(Sizing, WithoutTheCurvatureTermASharpFoldKeepsTheRadiusSize) {
-  // The strip folded by 90 degrees at x = 10 (the own-patch tries' sizes, quad_stage.hpp: the fold is a patch
-  // curve there): with the curvature term the fold's vertices get the smallest size, without it the radius's.
+TEST(Sizing, ABendTighterThanItsWallIsACreaseTheCurvatureTermLeaves) {
+  // The radius-5 cylinder of CurvatureRefines under a wall 8 thick (r = 4): its radius of curvature is below the
+  // wall's thickness, a crease (the inside of a sharp bend): the sizes are the radius term's alone.
+  ChordalSurface s = strip(20, [](double) { return 4.0; });
+  for (size_t i = 0; i < s.vertices.size(); ++i) {
+    const double a = 0.2 * s.vertices[i].x();
+    s.normals[i] = Vec3(std::sin(a), 0, std::cos(a));
+  }
+  const std::vector<double> k = chordalCurvature(s);
+  const std::vector<double> h = adaptiveSizes(s, {10.0, 0.1, 100, 10, 0.5});
+  for (size_t i = 0; i < h.size(); ++i) {
+    if (k[i] * 2 * s.radius[i] > 1) EXPECT_NEAR(h[i], 10.0, 1e-12) << "a crease at vertex " << i;
+    if (k[i] * 2 * s.radius[i] <= 1) EXPECT_NEAR(h[i], 0.5 / k[i], 1e-9) << "the strip's ends: " << i;
+  }
+  EXPECT_GT(std::count_if(k.begin(), k.end(), [](double c) { return c * 8 > 1; }), 30);
+}
+
+TEST(Sizing, ASharpFoldKeepsTheRadiusSizeWithOrWithoutTheCurvatureTerm) {
+  // The strip folded by 90 degrees at x = 10: the fold is a crease (isCrease: a turn of 45 degrees per unit edge
+  // on a wall 2 thick there), with the curvature term or without it (the own-patch tries' sizes, quad_stage.hpp:
+  // the fold is a patch curve there) its vertices keep the radius term's size.
   ChordalSurface s = strip(20, wedge);
   for (size_t i = 0; i < s.vertices.size(); ++i) {
     const double x = s.vertices[i].x();
@@ -79,12 +98,15 @@ TEST(Sizing, WithoutTheCurvatureTermASharpFoldKeepsTheRadiusSize) {
     if (x == 10) s.normals[i] = Vec3(-1, 0, 1).normalized();
   }
   SizingOptions o{2.0, 0.1, 100, 10, 0.5};
-  const std::vector<double> refined = adaptiveSizes(s, o);
+  const std::vector<double> withCurvature = adaptiveSizes(s, o);
   o.turnPerQuad = std::numeric_limits<double>::infinity();
   const std::vector<double> h = adaptiveSizes(s, o);
+  const std::vector<double> k = chordalCurvature(s);
   const double medianRadius = wedge(10);
   for (size_t i = 0; i < h.size(); ++i) {
     EXPECT_NEAR(h[i], 2.0 * s.radius[i] / medianRadius, 1e-12) << i;
-    if (s.vertices[i].x() == 10 && s.vertices[i].z() == 0) EXPECT_LT(refined[i], 0.5 * h[i]) << i;
+    if (s.vertices[i].x() != 10 || s.vertices[i].z() != 0) continue;
+    EXPECT_GT(k[i] * 2 * s.radius[i], 1) << "the fold is a crease";
+    EXPECT_NEAR(withCurvature[i], h[i], 1e-12) << i;
   }
 }
