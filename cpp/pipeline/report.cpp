@@ -78,6 +78,7 @@ nlohmann::json rimCap(const RimCapStats& s) {
 nlohmann::json smoothing(const SmoothingStats& s) {
   return {{"poor_hexes", s.poorHexes},
           {"moves", s.nodesMoved},
+          {"search_moves", s.searchMoves},
           {"worst_before", s.worstBefore},
           {"worst_after", s.worstAfter}};
 }

@@ -1,6 +1,7 @@
 #include "sweep/smoothing.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -10,10 +11,13 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kPoorHex = 0.6;               // the nodes of hexes below this scaled Jacobian are smoothed
-constexpr int kMaxRounds = 20;                 // rounds over those nodes, fewer if a round moves none
-constexpr double kSteps[] = {1.0, 0.5, 0.25};  // shares of the way to the neighbours' mean tried, longest first
-constexpr double kMinGain = 1e-6;              // a move must raise the node's worst hex by at least this
+constexpr double kPoorHex = 0.6;                     // the nodes of hexes below this scaled Jacobian are smoothed
+constexpr int kMaxRounds = 20;                       // rounds over those nodes, fewer if a round moves none
+constexpr double kSteps[] = {1.0, 0.5, 0.25};        // shares of the way to the neighbours' mean tried, longest first
+constexpr double kMinGain = 1e-6;                    // a move must raise the node's worst hex by at least this
+constexpr double kBadHex = 0.2;                      // then the nodes of hexes still below this are pattern-searched
+constexpr double kSearchGoal = 0.3;                  // they lower the shortfall of their hexes below this
+constexpr double kSearchSteps[] = {0.3, 0.1, 0.03};  // their steps, in mean edge lengths, longest first
 
 // How a node may move: not at all, freely (inside the part), or on the faces of one side.
 struct Freedom {
@@ -42,25 +46,119 @@ std::vector<std::vector<int>> edgeNeighbours(const HexMesh& mesh) {
   return around;
 }
 
+// Where node v goes when sent to `to`: there if it is free, else the nearest point of its side's faces.
+// [in] walls, f: v's freedom, to.
+std::optional<FacePoint> placeAt(const WallProjector& walls, const Freedom& f, const Vec3& to) {
+  if (!f.on) return FacePoint{to, -1};
+  return walls.project(*f.on, to);
+}
+
+// The worst hex around node v were it at `at` (it stays where it is). [in,out] mesh: v moved and back.
+template <class Worst>
+double worstIfAt(HexMesh& mesh, int v, const Vec3& at, const Worst& worstAround) {
+  const Vec3 from = mesh.nodes[v];
+  mesh.nodes[v] = at;
+  const double worst = worstAround(v);
+  mesh.nodes[v] = from;
+  return worst;
+}
+
+void moveTo(HexMesh& mesh, const Freedom& f, int v, const FacePoint& at) {
+  mesh.nodes[v] = at.point;
+  if (f.on) mesh.nodeFace[v] = at.face;
+}
+
+// One Laplacian move of node v: the longest step of kSteps towards its neighbours' mean that raises its worst hex
+// by kMinGain. [in,out] mesh; [in] walls, f: v's freedom, around: its neighbours. Returns whether it moved.
+template <class Worst>
+bool laplacianMove(HexMesh& mesh, const WallProjector& walls, const Freedom& f, int v, const std::vector<int>& around,
+                   const Worst& worstAround) {
+  Vec3 mean = Vec3::Zero();
+  for (int n : around) mean += mesh.nodes[n];
+  mean /= static_cast<double>(around.size());
+  const Vec3 from = mesh.nodes[v];
+  const double before = worstAround(v);
+  for (double step : kSteps) {
+    const std::optional<FacePoint> at = placeAt(walls, f, from + step * (mean - from));
+    if (!at) return false;
+    if (worstIfAt(mesh, v, at->point, worstAround) > before + kMinGain) return moveTo(mesh, f, v, *at), true;
+  }
+  return false;
+}
+
+// One pattern-search move of node v: of the steps towards and away from each neighbour (kSearchSteps of its mean
+// edge length: the directions turn and scale with the mesh), the one that lowers the shortfall of its hexes
+// below kSearchGoal most (the sum of its squares), longest steps first, keeping its worst hex no worse. Reaches
+// what the Laplacian move cannot: a node that must move away from its neighbours' mean to untangle a hex.
+// [in,out] mesh; [in] walls, f, around; shortfall(v), worstAround(v) of v's hexes. Returns whether it moved.
+template <class Shortfall, class Worst>
+bool searchMove(HexMesh& mesh, const WallProjector& walls, const Freedom& f, int v, const std::vector<int>& around,
+                const Shortfall& shortfall, const Worst& worstAround) {
+  const Vec3 from = mesh.nodes[v];
+  double length = 0;
+  for (int n : around) length += (mesh.nodes[n] - from).norm();
+  length /= static_cast<double>(around.size());
+  const double worst = worstAround(v);
+  const double before = shortfall(v);
+  for (double step : kSearchSteps) {
+    std::optional<FacePoint> best;
+    double bestShortfall = before - kMinGain;
+    for (int n : around)
+      for (double sign : {1.0, -1.0}) {
+        const Vec3 to = from + sign * step * length * (mesh.nodes[n] - from).normalized();
+        const std::optional<FacePoint> at = placeAt(walls, f, to);
+        if (!at) return false;
+        if (worstIfAt(mesh, v, at->point, worstAround) < worst) continue;
+        if (const double s = worstIfAt(mesh, v, at->point, shortfall); s < bestShortfall) best = at, bestShortfall = s;
+      }
+    if (best) return moveTo(mesh, f, v, *best), true;
+  }
+  return false;
+}
+
+// Gauss-Seidel rounds in node order over the candidate nodes, each moved by `move` (the same moves for the same
+// mesh), until a round moves none or kMaxRounds. Returns the moves kept.
+template <class Move>
+std::size_t smoothRounds(HexMesh& mesh, const WallSides& sides, const std::vector<char>& candidate,
+                         const std::vector<std::vector<int>>& neighbours, const Move& move) {
+  std::size_t total = 0;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+      const int v = static_cast<int>(i);
+      const Freedom f = candidate[v] ? freedomOf(mesh, sides, v) : Freedom{};
+      if (f.moves && !neighbours[v].empty() && move(f, v)) ++moved;
+    }
+    total += moved;
+    if (moved == 0) break;
+  }
+  return total;
+}
+
+// The nodes of the hexes below `below`. [in] mesh, below.
+std::vector<char> nodesOfHexesBelow(const HexMesh& mesh, double below) {
+  std::vector<char> candidate(mesh.nodes.size(), 0);
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+    if (hexScaledJacobian(hexCorners(mesh, h)) < below)
+      for (int v : mesh.hexes[h]) candidate[v] = 1;
+  return candidate;
+}
+
 }  // namespace
 
 SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const WallSides& sides) {
   SmoothingStats stats;
-  std::vector<double> sj(mesh.hexes.size());
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) sj[h] = hexScaledJacobian(hexCorners(mesh, h));
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+    const double sj = hexScaledJacobian(hexCorners(mesh, h));
+    stats.worstBefore = std::min(stats.worstBefore, sj);
+    stats.poorHexes += sj < kPoorHex;
+  }
+  stats.worstAfter = stats.worstBefore;
+  if (stats.poorHexes == 0) return stats;
   const Groups<std::size_t> hexesAt = groupByKey<std::size_t>(mesh.nodes.size(), [&](auto emit) {
     for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
       for (int v : mesh.hexes[h]) emit(static_cast<std::size_t>(v), h);
   });
-  std::vector<char> candidate(mesh.nodes.size(), 0);
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-    stats.worstBefore = std::min(stats.worstBefore, sj[h]);
-    if (sj[h] >= kPoorHex) continue;
-    ++stats.poorHexes;
-    for (int v : mesh.hexes[h]) candidate[v] = 1;
-  }
-  stats.worstAfter = stats.worstBefore;
-  if (stats.poorHexes == 0) return stats;
   const std::vector<std::vector<int>> neighbours = edgeNeighbours(mesh);
   auto worstAround = [&](int v) {
     double worst = 1;
@@ -68,37 +166,20 @@ SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const 
       worst = std::min(worst, hexScaledJacobian(hexCorners(mesh, hexesAt.items[i])));
     return worst;
   };
-  // Gauss-Seidel rounds in node order: the same moves for the same mesh.
-  for (int round = 0; round < kMaxRounds; ++round) {
-    std::size_t moved = 0;
-    for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-      const int v = static_cast<int>(i);
-      const Freedom f = candidate[v] ? freedomOf(mesh, sides, v) : Freedom{};
-      if (!f.moves || neighbours[v].empty()) continue;
-      Vec3 mean = Vec3::Zero();
-      for (int n : neighbours[v]) mean += mesh.nodes[n];
-      mean /= static_cast<double>(neighbours[v].size());
-      const Vec3 from = mesh.nodes[v];
-      const double before = worstAround(v);
-      for (double step : kSteps) {
-        FacePoint to{from + step * (mean - from), -1};
-        if (f.on) {
-          const std::optional<FacePoint> onCad = walls.project(*f.on, to.point);
-          if (!onCad) break;
-          to = *onCad;
-        }
-        mesh.nodes[v] = to.point;
-        if (worstAround(v) > before + kMinGain) {
-          if (f.on) mesh.nodeFace[v] = to.face;
-          ++moved;
-          break;
-        }
-        mesh.nodes[v] = from;
-      }
-    }
-    stats.nodesMoved += moved;
-    if (moved == 0) break;
-  }
+  auto shortfall = [&](int v) {  // of v's hexes below kSearchGoal, the sum of the squares
+    double sum = 0;
+    for (std::size_t i = hexesAt.start[v]; i < hexesAt.start[v + 1]; ++i)
+      sum += std::pow(std::max(0.0, kSearchGoal - hexScaledJacobian(hexCorners(mesh, hexesAt.items[i]))), 2);
+    return sum;
+  };
+  stats.nodesMoved = smoothRounds(
+      mesh, sides, nodesOfHexesBelow(mesh, kPoorHex), neighbours,
+      [&](const Freedom& f, int v) { return laplacianMove(mesh, walls, f, v, neighbours[v], worstAround); });
+  const std::vector<char> bad = nodesOfHexesBelow(mesh, kBadHex);
+  if (std::find(bad.begin(), bad.end(), 1) != bad.end())
+    stats.searchMoves = smoothRounds(mesh, sides, bad, neighbours, [&](const Freedom& f, int v) {
+      return searchMove(mesh, walls, f, v, neighbours[v], shortfall, worstAround);
+    });
   stats.worstAfter = 1;
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
     stats.worstAfter = std::min(stats.worstAfter, hexScaledJacobian(hexCorners(mesh, h)));

@@ -4,7 +4,9 @@
 // hex edges, kept on its CAD face: a wall node slides on the walls of its side, a rim node on the lateral
 // faces, an inner node is free; the nodes on the CAD edges where walls meet the rim, and the caps' nodes, stay.
 // A move is kept only if it raises the scaled Jacobian of the worst hex around the node, so no hex gets worse
-// than the worst it was beside.
+// than the worst it was beside. The nodes of hexes still below kBadHex then take pattern-search steps (towards or
+// away from each neighbour, the one that raises their worst hex most), under the same rule: an inverted hex
+// whose nodes must move away from their neighbours' mean to untangle it.
 #pragma once
 #include <cstddef>
 
@@ -16,7 +18,8 @@ namespace hexlayer {
 
 struct SmoothingStats {
   std::size_t poorHexes = 0;               // hexes below kPoorHex before
-  std::size_t nodesMoved = 0;              // moves kept (a node may move in several rounds)
+  std::size_t nodesMoved = 0;              // Laplacian moves kept (a node may move in several rounds)
+  std::size_t searchMoves = 0;             // pattern-search moves kept
   double worstBefore = 1, worstAfter = 1;  // scaled Jacobian of the worst hex
 };
 

@@ -169,9 +169,9 @@ class RealParts(unittest.TestCase):
         Every Gmsh classification of its chordal surface fails ("Wrong topology of boundary mesh for
         parametrization": its facets fold along the sharp bends, the patches touch themselves at vertices); since
         2026-12-03 HexLayer's own patches (chordal_patches.hpp) give it quads. It is still refused by validation:
-        measured 16 912 hexes, average 0.904, 27 inverted, nearly all in the column where a side wall's end rises
-        above the lower end wall's top, flush with the end wall's outer face (x = -57.5). Checked with --force: the
-        stage it now reaches, its quality and where its inverted hexes are."""
+        measured 16 912 hexes, average 0.904, 10 inverted (27 before the smoothing's pattern search), in the column
+        where a side wall's end rises above the lower end wall's top, flush with the end wall's outer face
+        (x = -57.5). Checked with --force: the stage it now reaches, its quality and where its inverted hexes are."""
         part = real_part("ender3_power_holder_box.step")
         with tempfile.TemporaryDirectory() as tmp:
             report = os.path.join(tmp, "r.json")
@@ -190,7 +190,8 @@ class RealParts(unittest.TestCase):
         self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.88)
         self.assertLess(abs(r["volume"]["relative_error"]), 0.015)
         self.assertFalse(r["validation"]["passed"])
-        self.assertLessEqual(r["inverted_hexes"], 40)
+        self.assertLessEqual(r["inverted_hexes"], 20)
+        self.assertGreater(r["smoothing"]["search_moves"], 0)
         self.assertLess(r["worst_hex_at"][0], -54, "the worst hex at the end wall's flush corner")
 
     def test_sheet_metal_flanges_with_rounded_corners(self):
