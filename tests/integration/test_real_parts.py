@@ -167,11 +167,14 @@ class RealParts(unittest.TestCase):
         inside edges and 0.5 mm outside rounds: cylinders, tori, spheres at the corners) is one bent sheet (its rounds
         are bends, bend_rounds.hpp), not four walls standing on each other (it was refused as T-junctions, exit 4).
         Every Gmsh classification of its chordal surface fails ("Wrong topology of boundary mesh for
-        parametrization": its facets fold along the sharp bends, the patches touch themselves at vertices); since
-        2026-12-03 HexLayer's own patches (chordal_patches.hpp) give it quads. It is still refused by validation:
-        measured 16 912 hexes, average 0.904, 10 inverted (27 before the smoothing's pattern search), in the column
+        parametrization": its facets fold along the sharp bends, the patches touch themselves at vertices), and
+        HexLayer's own patches (chordal_patches.hpp) gave it quads with 27 inverted hexes, nearly all in the column
         where a side wall's end rises above the lower end wall's top, flush with the end wall's outer face
-        (x = -57.5). Checked with --force: the stage it now reaches, its quality and where its inverted hexes are."""
+        (x = -57.5). Since 2026-12-03 that face is split at the end wall's top (mixed_faces.hpp: the side walls'
+        ends above are rims), Gmsh's classification then gives quads, the curvature term leaves the creases
+        (sizing.hpp) and the smoothing's pattern search untangles most of what is left: measured 17 654 hexes,
+        average 0.905, 7 inverted, all at the end wall's top corners. Still refused by validation; checked with
+        --force: the stage it reaches, its quality and where its inverted hexes are."""
         part = real_part("ender3_power_holder_box.step")
         with tempfile.TemporaryDirectory() as tmp:
             report = os.path.join(tmp, "r.json")
@@ -184,15 +187,14 @@ class RealParts(unittest.TestCase):
               f"{r['scaled_jacobian']['avg']:.3f}, worst at {r['worst_hex_at']}, quads {r['quad_mesh']['layout']}")
         self.assertNotIn("T-junction", done.stderr)
         self.assertEqual(r["quad_mesh"]["layout"], "gmsh")
-        tries = r["quad_mesh"]["gmsh_tries"]
-        self.assertEqual(tries["failed"], tries["run"] - 1, "every try failed but the own patches'")
         self.assertGreater(r["hexes"], 10000)
-        self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.88)
+        self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.89)
         self.assertLess(abs(r["volume"]["relative_error"]), 0.015)
         self.assertFalse(r["validation"]["passed"])
-        self.assertLessEqual(r["inverted_hexes"], 20)
+        self.assertLessEqual(r["inverted_hexes"], 15)
         self.assertGreater(r["smoothing"]["search_moves"], 0)
-        self.assertLess(r["worst_hex_at"][0], -54, "the worst hex at the end wall's flush corner")
+        self.assertLess(r["worst_hex_at"][0], -54, "the worst hex at the end wall's top corners")
+        self.assertLess(abs(r["worst_hex_at"][2] - 29), 3, "the worst hex at the end wall's top corners")
 
     def test_sheet_metal_flanges_with_rounded_corners(self):
         # Measured 2026-11-23 (2 layers): 4768 hexes, 0 inverted, SJ min 0.726 avg 0.930, volume -0.21 %.
