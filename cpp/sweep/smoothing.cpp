@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -11,12 +12,13 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kPoorHex = 0.6;                     // the nodes of hexes below this scaled Jacobian are smoothed
-constexpr int kMaxRounds = 20;                       // rounds over those nodes, fewer if a round moves none
-constexpr double kSteps[] = {1.0, 0.5, 0.25};        // shares of the way to the neighbours' mean tried, longest first
-constexpr double kMinGain = 1e-6;                    // a move must raise the node's worst hex by at least this
-constexpr double kBadHex = 0.2;                      // then the nodes of hexes still below this are pattern-searched
-constexpr double kSearchGoal = 0.3;                  // they lower the shortfall of their hexes below this
+constexpr double kPoorHex = 0.6;               // the nodes of hexes below this scaled Jacobian are smoothed
+constexpr int kMaxRounds = 20;                 // rounds over those nodes, fewer if a round moves none
+constexpr double kSteps[] = {1.0, 0.5, 0.25};  // shares of the way to the neighbours' mean tried, longest first
+constexpr double kMinGain = 1e-6;              // a move must raise the node's worst hex by at least this
+constexpr double kBadHex = 0.2;                // then the nodes of hexes still below this are pattern-searched
+constexpr double kSearchGoal = 0.3;            // they lower the shortfall of their hexes below this
+constexpr double kShortEdge = 0.2;  // nor shorten an edge of theirs below this share of their mean edge length
 constexpr double kSearchSteps[] = {0.3, 0.1, 0.03};  // their steps, in mean edge lengths, longest first
 
 // How a node may move: not at all, freely (inside the part), or on the faces of one side.
@@ -86,9 +88,18 @@ bool laplacianMove(HexMesh& mesh, const WallProjector& walls, const Freedom& f, 
   return false;
 }
 
+// The shortest of the edges from p to the nodes `around`. [in] mesh, p, around.
+double shortestEdge(const HexMesh& mesh, const Vec3& p, const std::vector<int>& around) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (int n : around) shortest = std::min(shortest, (mesh.nodes[n] - p).norm());
+  return shortest;
+}
+
 // One pattern-search move of node v: of the steps towards and away from each neighbour (kSearchSteps of its mean
 // edge length: the directions turn and scale with the mesh), the one that lowers the shortfall of its hexes
-// below kSearchGoal most (the sum of its squares), longest steps first, keeping its worst hex no worse. Reaches
+// below kSearchGoal most (the sum of its squares), longest steps first, keeping its worst hex no worse and its
+// edges no shorter than kShortEdge of that mean (the scaled Jacobian does not see an edge shrink: two nodes
+// drawn together would leave a collapsed hex). Reaches
 // what the Laplacian move cannot: a node that must move away from its neighbours' mean to untangle a hex.
 // [in,out] mesh; [in] walls, f, around; shortfall(v), worstAround(v) of v's hexes. Returns whether it moved.
 template <class Shortfall, class Worst>
@@ -108,7 +119,9 @@ bool searchMove(HexMesh& mesh, const WallProjector& walls, const Freedom& f, int
         const Vec3 to = from + sign * step * length * (mesh.nodes[n] - from).normalized();
         const std::optional<FacePoint> at = placeAt(walls, f, to);
         if (!at) return false;
-        if (worstIfAt(mesh, v, at->point, worstAround) < worst) continue;
+        if (worstIfAt(mesh, v, at->point, worstAround) < worst ||
+            shortestEdge(mesh, at->point, around) < kShortEdge * length)
+          continue;
         if (const double s = worstIfAt(mesh, v, at->point, shortfall); s < bestShortfall) best = at, bestShortfall = s;
       }
     if (best) return moveTo(mesh, f, v, *best), true;

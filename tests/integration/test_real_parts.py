@@ -173,7 +173,7 @@ class RealParts(unittest.TestCase):
         (x = -57.5). Since 2026-12-03 that face is split at the end wall's top (mixed_faces.hpp: the side walls'
         ends above are rims), Gmsh's classification then gives quads, the curvature term leaves the creases
         (sizing.hpp) and the smoothing's pattern search untangles most of what is left: measured 17 654 hexes,
-        average 0.905, 7 inverted, all at the end wall's top corners. Still refused by validation; checked with
+        average 0.905, 8 inverted, all at the end wall's top corners. Still refused by validation; checked with
         --force: the stage it reaches, its quality and where its inverted hexes are."""
         part = real_part("ender3_power_holder_box.step")
         with tempfile.TemporaryDirectory() as tmp:
