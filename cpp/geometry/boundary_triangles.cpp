@@ -21,8 +21,6 @@ namespace {
 
 constexpr double kFineDeflection = 1e-4;  // of the diagonal, for freeform faces (prepareSolid: 2e-3)
 
-Vec3 toVec(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
-
 // The points where the face's surface is singular: the vertices of its degenerated edges (a
 // sphere's or a cone's pole), with their tolerances.
 std::vector<std::pair<gp_Pnt, double>> facePoles(const TopoDS_Face& face) {
@@ -149,8 +147,7 @@ BoundaryTriangles::BoundaryTriangles(const CadSolid& cad) {
     const std::vector<Triangle2d> mesh = faceTriangles(face);
     if (mesh.empty()) return;
     deviation = std::max(deviation, largestDeviation(face, mesh, 2 * kFineDeflection * cad.diagonal));
-    for (const Triangle2d& t : mesh)
-      triangles.push_back({toVec(t.xyz[0].XYZ()), toVec(t.xyz[1].XYZ()), toVec(t.xyz[2].XYZ())});
+    for (const Triangle2d& t : mesh) triangles.push_back(spaceTriangle(t));
   }
   if (triangles.empty() || !closedSurface(triangles)) return;
   // A triangle with two corners at one point (at a pole) is a segment along its neighbours' edges.

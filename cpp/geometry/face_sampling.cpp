@@ -36,6 +36,11 @@ std::vector<Triangle2d> faceTriangles(const TopoDS_Face& face) {
   return out;
 }
 
+Triangle spaceTriangle(const Triangle2d& t) {
+  auto toVec = [](const gp_Pnt& p) { return Vec3(p.X(), p.Y(), p.Z()); };
+  return {toVec(t.xyz[0]), toVec(t.xyz[1]), toVec(t.xyz[2])};
+}
+
 double triangulatedArea(const TopoDS_Shape& face) {
   double a = 0;
   for (const Triangle2d& t : faceTriangles(TopoDS::Face(face))) a += area3d(t);

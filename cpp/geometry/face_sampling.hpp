@@ -6,6 +6,7 @@
 #include <gp_Pnt2d.hxx>
 #include <vector>
 
+#include "core/triangle_tree.hpp"
 #include "core/types.hpp"
 
 namespace hexlayer {
@@ -26,6 +27,9 @@ struct Triangle2d {
 // The face's triangulation (prepareSolid makes it), placed where the face is; empty if it has none
 // or no parameters at its nodes.
 std::vector<Triangle2d> faceTriangles(const TopoDS_Face& face);
+
+// The triangle's corners in space. [in] t.
+Triangle spaceTriangle(const Triangle2d& t);
 
 // Samples about one point per spacing x spacing of area (at least one per triangle of the face's
 // triangulation), in a deterministic order. The face must have been triangulated (prepareSolid does).

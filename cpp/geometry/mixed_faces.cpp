@@ -1,6 +1,5 @@
 #include "geometry/mixed_faces.hpp"
 
-#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -9,7 +8,6 @@
 #include <BRepTools.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
-#include <Bnd_Box.hxx>
 #include <ElCLib.hxx>
 #include <Geom2dAPI_InterCurveCurve.hxx>
 #include <Geom2d_Line.hxx>
@@ -98,10 +96,6 @@ double angleDegrees(const Vec3& a, const Vec3& b) {
   return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / M_PI;
 }
 
-// The band [from, to) of the face's parameter as its rim piece, the rest (below `from`, at or above `to`; one of
-// them may be empty) as wall pieces, if they part the samples so. The rim must turn away from each wall next to
-// it: a wall's normal is taken over a band beside the line as wide (in the parameter) as the rim piece, so a
-// curved wall's band along a flat rim is not taken for a rim.
 // The pieces of a face's samples below the band, in it (the rim) and above it. [in] marks, band.
 std::array<Piece, 3> bandPieces(const std::vector<RayMark>& marks, const Band& band) {
   std::array<Piece, 3> p;  // below, rim, above
@@ -112,6 +106,10 @@ std::array<Piece, 3> bandPieces(const std::vector<RayMark>& marks, const Band& b
   return p;
 }
 
+// The band [from, to) of the face's parameter as its rim piece, the rest (below `from`, at or above `to`; one of
+// them may be empty) as wall pieces, if they part the samples so. The rim must turn away from each wall next to
+// it: a wall's normal is taken over a band beside the line as wide (in the parameter) as the rim piece, so a
+// curved wall's band along a flat rim is not taken for a rim.
 std::optional<Candidate> tryBand(const std::vector<RayMark>& marks, bool alongV, double from, double to,
                                  double thickness, int face) {
   const Band band{alongV, from, to};
@@ -191,8 +189,6 @@ std::optional<std::vector<FaceSplit>> bestSplit(const CadSolid& cad, const FaceS
   return best->splits;
 }
 
-Vec3 toVec(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
-
 // The faces across a wall face's wall (those its crossing rays hit) as triangles (face_sampling.hpp).
 TriangleTree facesAcross(const CadSolid& cad, const FaceSide& fs) {
   std::set<int> across;
@@ -200,8 +196,7 @@ TriangleTree facesAcross(const CadSolid& cad, const FaceSide& fs) {
     if (m.crossing) across.insert(m.hitFace);
   std::vector<Triangle> triangles;
   for (int g : across)
-    for (const Triangle2d& t : faceTriangles(TopoDS::Face(cad.faces(g + 1))))
-      triangles.push_back({toVec(t.xyz[0].XYZ()), toVec(t.xyz[1].XYZ()), toVec(t.xyz[2].XYZ())});
+    for (const Triangle2d& t : faceTriangles(TopoDS::Face(cad.faces(g + 1)))) triangles.push_back(spaceTriangle(t));
   return TriangleTree(std::move(triangles));
 }
 
@@ -214,9 +209,12 @@ std::vector<char> flushSamples(const CadSolid& cad, const FaceSide& fs, int f, d
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(cad.faces(f + 1)));
   const TriangleTree across = facesAcross(cad, fs);
   std::vector<char> flush(fs.marks.size(), 0);
-  for (std::size_t k = 0; k < fs.marks.size(); ++k)
-    if (const RayMark& m = fs.marks[k]; !m.crossing && (m.hitFace < 0 || m.length > kFlushRay * thickness))
-      flush[k] = !across.anyWithin(toVec(surface->Value(m.u, m.v).XYZ()), kFlushFar * thickness);
+  for (std::size_t k = 0; k < fs.marks.size(); ++k) {
+    const RayMark& m = fs.marks[k];
+    if (m.crossing || (m.hitFace >= 0 && m.length <= kFlushRay * thickness)) continue;
+    const gp_Pnt p = surface->Value(m.u, m.v);
+    flush[k] = !across.anyWithin(Vec3(p.X(), p.Y(), p.Z()), kFlushFar * thickness);
+  }
   return flush;
 }
 

@@ -55,14 +55,14 @@ std::optional<FacePoint> placeAt(const WallProjector& walls, const Freedom& f, c
   return walls.project(*f.on, to);
 }
 
-// The worst hex around node v were it at `at` (it stays where it is). [in,out] mesh: v moved and back.
-template <class Worst>
-double worstIfAt(HexMesh& mesh, int v, const Vec3& at, const Worst& worstAround) {
+// measure(v) were node v at `at` (it stays where it is). [in,out] mesh: v moved and back.
+template <class Measure>
+auto measureIfAt(HexMesh& mesh, int v, const Vec3& at, const Measure& measure) {
   const Vec3 from = mesh.nodes[v];
   mesh.nodes[v] = at;
-  const double worst = worstAround(v);
+  const auto value = measure(v);
   mesh.nodes[v] = from;
-  return worst;
+  return value;
 }
 
 void moveTo(HexMesh& mesh, const Freedom& f, int v, const FacePoint& at) {
@@ -83,7 +83,7 @@ bool laplacianMove(HexMesh& mesh, const WallProjector& walls, const Freedom& f, 
   for (double step : kSteps) {
     const std::optional<FacePoint> at = placeAt(walls, f, from + step * (mean - from));
     if (!at) return false;
-    if (worstIfAt(mesh, v, at->point, worstAround) > before + kMinGain) return moveTo(mesh, f, v, *at), true;
+    if (measureIfAt(mesh, v, at->point, worstAround) > before + kMinGain) return moveTo(mesh, f, v, *at), true;
   }
   return false;
 }
@@ -95,34 +95,36 @@ double shortestEdge(const HexMesh& mesh, const Vec3& p, const std::vector<int>& 
   return shortest;
 }
 
+// The worst hex around a node and the sum of the squares of its hexes' shortfall below kSearchGoal.
+struct HexesAround {
+  double worst = 1, shortfall = 0;
+};
+
 // One pattern-search move of node v: of the steps towards and away from each neighbour (kSearchSteps of its mean
-// edge length: the directions turn and scale with the mesh), the one that lowers the shortfall of its hexes
-// below kSearchGoal most (the sum of its squares), longest steps first, keeping its worst hex no worse and its
-// edges no shorter than kShortEdge of that mean (the scaled Jacobian does not see an edge shrink: two nodes
-// drawn together would leave a collapsed hex). Reaches
+// edge length: the directions turn and scale with the mesh), the one that lowers its hexes' shortfall most,
+// longest steps first, keeping its worst hex no worse and its edges no shorter than kShortEdge of that mean (the
+// scaled Jacobian does not see an edge shrink: two nodes drawn together would leave a collapsed hex). Reaches
 // what the Laplacian move cannot: a node that must move away from its neighbours' mean to untangle a hex.
-// [in,out] mesh; [in] walls, f, around; shortfall(v), worstAround(v) of v's hexes. Returns whether it moved.
-template <class Shortfall, class Worst>
+// [in,out] mesh; [in] walls, f, around; hexesAround(v): v's HexesAround. Returns whether it moved.
+template <class Measure>
 bool searchMove(HexMesh& mesh, const WallProjector& walls, const Freedom& f, int v, const std::vector<int>& around,
-                const Shortfall& shortfall, const Worst& worstAround) {
+                const Measure& hexesAround) {
   const Vec3 from = mesh.nodes[v];
   double length = 0;
   for (int n : around) length += (mesh.nodes[n] - from).norm();
   length /= static_cast<double>(around.size());
-  const double worst = worstAround(v);
-  const double before = shortfall(v);
+  const HexesAround before = hexesAround(v);
   for (double step : kSearchSteps) {
     std::optional<FacePoint> best;
-    double bestShortfall = before - kMinGain;
+    double bestShortfall = before.shortfall - kMinGain;
     for (int n : around)
       for (double sign : {1.0, -1.0}) {
         const Vec3 to = from + sign * step * length * (mesh.nodes[n] - from).normalized();
         const std::optional<FacePoint> at = placeAt(walls, f, to);
         if (!at) return false;
-        if (worstIfAt(mesh, v, at->point, worstAround) < worst ||
-            shortestEdge(mesh, at->point, around) < kShortEdge * length)
-          continue;
-        if (const double s = worstIfAt(mesh, v, at->point, shortfall); s < bestShortfall) best = at, bestShortfall = s;
+        if (shortestEdge(mesh, at->point, around) < kShortEdge * length) continue;
+        const HexesAround after = measureIfAt(mesh, v, at->point, hexesAround);
+        if (after.worst >= before.worst && after.shortfall < bestShortfall) best = at, bestShortfall = after.shortfall;
       }
     if (best) return moveTo(mesh, f, v, *best), true;
   }
@@ -148,11 +150,18 @@ std::size_t smoothRounds(HexMesh& mesh, const WallSides& sides, const std::vecto
   return total;
 }
 
-// The nodes of the hexes below `below`. [in] mesh, below.
-std::vector<char> nodesOfHexesBelow(const HexMesh& mesh, double below) {
+// The scaled Jacobian of every hex. [in] mesh.
+std::vector<double> scaledJacobians(const HexMesh& mesh) {
+  std::vector<double> sj(mesh.hexes.size());
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) sj[h] = hexScaledJacobian(hexCorners(mesh, h));
+  return sj;
+}
+
+// The nodes of the hexes whose scaled Jacobian (sj) is below `below`. [in] mesh, sj, below.
+std::vector<char> nodesOfHexesBelow(const HexMesh& mesh, const std::vector<double>& sj, double below) {
   std::vector<char> candidate(mesh.nodes.size(), 0);
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-    if (hexScaledJacobian(hexCorners(mesh, h)) < below)
+    if (sj[h] < below)
       for (int v : mesh.hexes[h]) candidate[v] = 1;
   return candidate;
 }
@@ -161,10 +170,10 @@ std::vector<char> nodesOfHexesBelow(const HexMesh& mesh, double below) {
 
 SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const WallSides& sides) {
   SmoothingStats stats;
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
-    const double sj = hexScaledJacobian(hexCorners(mesh, h));
-    stats.worstBefore = std::min(stats.worstBefore, sj);
-    stats.poorHexes += sj < kPoorHex;
+  const std::vector<double> sj = scaledJacobians(mesh);
+  for (const double q : sj) {
+    stats.worstBefore = std::min(stats.worstBefore, q);
+    stats.poorHexes += q < kPoorHex;
   }
   stats.worstAfter = stats.worstBefore;
   if (stats.poorHexes == 0) return stats;
@@ -173,29 +182,24 @@ SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const 
       for (int v : mesh.hexes[h]) emit(static_cast<std::size_t>(v), h);
   });
   const std::vector<std::vector<int>> neighbours = edgeNeighbours(mesh);
-  auto worstAround = [&](int v) {
-    double worst = 1;
-    for (std::size_t i = hexesAt.start[v]; i < hexesAt.start[v + 1]; ++i)
-      worst = std::min(worst, hexScaledJacobian(hexCorners(mesh, hexesAt.items[i])));
-    return worst;
+  auto hexesAround = [&](int v) {
+    HexesAround a;
+    for (std::size_t i = hexesAt.start[v]; i < hexesAt.start[v + 1]; ++i) {
+      const double q = hexScaledJacobian(hexCorners(mesh, hexesAt.items[i]));
+      a.worst = std::min(a.worst, q);
+      a.shortfall += std::pow(std::max(0.0, kSearchGoal - q), 2);
+    }
+    return a;
   };
-  auto shortfall = [&](int v) {  // of v's hexes below kSearchGoal, the sum of the squares
-    double sum = 0;
-    for (std::size_t i = hexesAt.start[v]; i < hexesAt.start[v + 1]; ++i)
-      sum += std::pow(std::max(0.0, kSearchGoal - hexScaledJacobian(hexCorners(mesh, hexesAt.items[i]))), 2);
-    return sum;
-  };
+  auto worstAround = [&](int v) { return hexesAround(v).worst; };
   stats.nodesMoved = smoothRounds(
-      mesh, sides, nodesOfHexesBelow(mesh, kPoorHex), neighbours,
+      mesh, sides, nodesOfHexesBelow(mesh, sj, kPoorHex), neighbours,
       [&](const Freedom& f, int v) { return laplacianMove(mesh, walls, f, v, neighbours[v], worstAround); });
-  const std::vector<char> bad = nodesOfHexesBelow(mesh, kBadHex);
-  if (std::find(bad.begin(), bad.end(), 1) != bad.end())
-    stats.searchMoves = smoothRounds(mesh, sides, bad, neighbours, [&](const Freedom& f, int v) {
-      return searchMove(mesh, walls, f, v, neighbours[v], shortfall, worstAround);
-    });
-  stats.worstAfter = 1;
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-    stats.worstAfter = std::min(stats.worstAfter, hexScaledJacobian(hexCorners(mesh, h)));
+  stats.searchMoves =
+      smoothRounds(mesh, sides, nodesOfHexesBelow(mesh, scaledJacobians(mesh), kBadHex), neighbours,
+                   [&](const Freedom& f, int v) { return searchMove(mesh, walls, f, v, neighbours[v], hexesAround); });
+  const std::vector<double> after = scaledJacobians(mesh);
+  stats.worstAfter = *std::min_element(after.begin(), after.end());
   return stats;
 }
 

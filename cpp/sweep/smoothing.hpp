@@ -5,8 +5,9 @@
 // faces, an inner node is free; the nodes on the CAD edges where walls meet the rim, and the caps' nodes, stay.
 // A move is kept only if it raises the scaled Jacobian of the worst hex around the node, so no hex gets worse
 // than the worst it was beside. The nodes of hexes still below kBadHex then take pattern-search steps (towards or
-// away from each neighbour, the one that raises their worst hex most), under the same rule: an inverted hex
-// whose nodes must move away from their neighbours' mean to untangle it.
+// away from each neighbour, the one that most lowers their hexes' squared shortfall below kSearchGoal), under the
+// same rule and keeping their edges no shorter than kShortEdge of their mean: an inverted hex whose nodes must
+// move away from their neighbours' mean to untangle it.
 #pragma once
 #include <cstddef>
 
