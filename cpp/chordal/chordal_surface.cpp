@@ -147,6 +147,20 @@ void requireManifold(const ChordalSurface& s, double unit) {
 
 }  // namespace
 
+std::vector<double> rimLoopLengths(const ChordalSurface& s) {
+  const auto edges = facetEdgeUses(s);
+  UnionFind rims(s.vertices.size());
+  for (const auto& [edge, uses] : edges)
+    if (uses == 1) rims.unite(edge.first, edge.second);
+  std::vector<double> loopLength(s.vertices.size(), 0), out(s.vertices.size(), 0);
+  for (const auto& [edge, uses] : edges)
+    if (uses == 1) loopLength[rims.find(edge.first)] += (s.vertices[edge.first] - s.vertices[edge.second]).norm();
+  for (const auto& [edge, uses] : edges)
+    if (uses == 1)
+      for (const int v : {edge.first, edge.second}) out[v] = loopLength[rims.find(v)];
+  return out;
+}
+
 std::size_t dropUnusedVertices(ChordalSurface& s) {
   std::vector<int> renumber(s.vertices.size(), -1);
   for (const auto& f : s.facets)

@@ -38,6 +38,11 @@ void limitGradation(const ChordalSurface& s, const std::vector<std::pair<int, in
 // not refine it. [in] curvature (chordalCurvature), radius: at a vertex.
 bool isCrease(double curvature, double radius) { return curvature * 2 * radius > 1; }
 
+// Quad edges round a closed boundary loop of the chordal surface (a hole's rim): fewer, and a small hole's loop
+// collapses in the quad mesh (the hole is filled); eight make an o-grid round it. A loop shorter than the smallest
+// quad edge is a pinhole between facets, not a hole: it is left alone.
+constexpr double kEdgesRoundLoop = 8;
+
 }  // namespace
 
 std::vector<double> chordalCurvature(const ChordalSurface& s) {
@@ -58,12 +63,14 @@ std::vector<double> adaptiveSizes(const ChordalSurface& s, const SizingOptions& 
   const double lo = o.minSize > 0 ? o.minSize : 0.25 * o.size, hi = o.maxSize > 0 ? o.maxSize : 4 * o.size;
   const double medianRadius = median(s.radius);
   const std::vector<double> curvature = chordalCurvature(s);
+  const std::vector<double> loopLength = rimLoopLengths(s);
   std::vector<double> h(s.vertices.size());
   for (size_t i = 0; i < h.size(); ++i) {
     h[i] = medianRadius > 0 ? o.size * s.radius[i] / medianRadius : o.size;  // §6.1: radius function
     if (curvature[i] > 0 && !isCrease(curvature[i], s.radius[i]))
       h[i] = std::min(h[i], o.turnPerQuad / curvature[i]);  // §6.1: curvature
     h[i] = std::clamp(h[i], lo, hi);
+    if (loopLength[i] >= lo) h[i] = std::min(h[i], std::max(lo, loopLength[i] / kEdgesRoundLoop));  // a hole's rim
   }
   limitGradation(s, facetEdges(s), o.gradation, h);
   return h;

@@ -17,8 +17,10 @@ struct SizingOptions {
 
 // Target quad size at every chordal vertex (§6.1): size x r / median r (quads as many wall
 // thicknesses wide everywhere), at most turnPerQuad / curvature where the surface bends no tighter than its wall
-// is thick (a crease is not refined: sizing.cpp's isCrease), within [minSize, maxSize], then
-// smoothed so that neighbours differ by at most gradation x their distance.
+// is thick (a crease is not refined: sizing.cpp's isCrease), within [minSize, maxSize], at most an eighth of the rim
+// loop a rim vertex lies on (a hole keeps eight quad edges round it: fewer, and the quad mesh closes a small hole;
+// not below minSize, and a loop shorter than minSize is a pinhole, left alone), then smoothed so that neighbours
+// differ by at most gradation x their distance.
 std::vector<double> adaptiveSizes(const ChordalSurface& chordal, const SizingOptions& options);
 
 // Curvature of the chordal surface at every vertex: the mean over its edges of the angle between

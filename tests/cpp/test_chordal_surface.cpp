@@ -412,3 +412,23 @@ TEST(ChordalSurface, PinchedRimKeepsTheLargestFanAtEachVertex) {
   EXPECT_EQ(s.triangles, 2u);
   EXPECT_EQ(dropPinchedFacets(s), 0u) << "nothing pinched is left";
 }
+
+// A 3 x 3 grid of unit squares without its middle one: the rim loops are the outer square (12 long) and the
+// hole (4 long), each vertex on one of them.
+TEST(ChordalSurface, RimLoopLengthsAreThoseOfTheOuterRimAndTheHole) {
+  std::vector<Vec3> grid;
+  for (int j = 0; j <= 3; ++j)
+    for (int i = 0; i <= 3; ++i) grid.emplace_back(i, j, 0);
+  std::vector<std::array<int, 4>> squares;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      if (i != 1 || j != 1) squares.push_back({4 * j + i, 4 * j + i + 1, 4 * j + i + 5, 4 * j + i + 4});
+  const std::vector<double> loops = rimLoopLengths(flatSurface(grid, squares));
+  for (int v = 0; v < 16; ++v) {
+    const bool hole = v == 5 || v == 6 || v == 9 || v == 10;
+    EXPECT_DOUBLE_EQ(loops[v], hole ? 4.0 : 12.0) << v;
+  }
+  squares.push_back({5, 6, 10, 9});
+  const std::vector<double> filled = rimLoopLengths(flatSurface(grid, squares));
+  for (int v : {5, 6, 9, 10}) EXPECT_DOUBLE_EQ(filled[v], 0.0) << "inside once the hole is filled";
+}

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "quadmesh/sizing.hpp"
+#include "test_flat_surfaces.hpp"
 
 using namespace hexlayer;
 
@@ -79,9 +80,9 @@ TEST(Sizing, ABendTighterThanItsWallIsACreaseTheCurvatureTermLeaves) {
     s.normals[i] = Vec3(std::sin(a), 0, std::cos(a));
   }
   const std::vector<double> k = chordalCurvature(s);
-  const std::vector<double> h = adaptiveSizes(s, {10.0, 0.1, 100, 10, 0.5});
+  const std::vector<double> h = adaptiveSizes(s, {5.2, 0.1, 100, 10, 0.5});  // under the strip's rim cap 42 / 8
   for (size_t i = 0; i < h.size(); ++i) {
-    if (k[i] * 2 * s.radius[i] > 1) EXPECT_NEAR(h[i], 10.0, 1e-12) << "a crease at vertex " << i;
+    if (k[i] * 2 * s.radius[i] > 1) EXPECT_NEAR(h[i], 5.2, 1e-12) << "a crease at vertex " << i;
     if (k[i] * 2 * s.radius[i] <= 1) EXPECT_NEAR(h[i], 0.5 / k[i], 1e-9) << "the strip's ends: " << i;
   }
   EXPECT_GT(std::count_if(k.begin(), k.end(), [](double c) { return c * 8 > 1; }), 30);
@@ -109,4 +110,34 @@ TEST(Sizing, ASharpFoldKeepsTheRadiusSizeWithOrWithoutTheCurvatureTerm) {
     EXPECT_GT(k[i] * 2 * s.radius[i], 1) << "the fold is a crease";
     EXPECT_NEAR(withCurvature[i], h[i], 1e-12) << i;
   }
+}
+
+// A 10 x 10 plate of unit quads with a 2 x 2 hole in its middle (rim loop 8 long), a wall of constant radius asking
+// for quads of 4: the hole's rim is held to 8 / 8 = 1 (eight quad edges round it; at 4 the quad mesh closes the
+// hole) and the rest graded from there; the outer rim (40 long) asks no less than 4. At scales 1e-3, 1 and 1e3.
+TEST(Sizing, AHolesRimKeepsEightQuadEdgesRoundIt) {
+  for (const double scale : {1e-3, 1.0, 1e3}) {
+    ChordalSurface s = test_flat_surfaces::rectangle(10, 10, {{4, 6, 4, 6}});
+    for (Vec3& v : s.vertices) v *= scale;
+    s.radius.assign(s.vertices.size(), 0.5 * scale);
+    const std::vector<double> h = adaptiveSizes(s, {4.0 * scale, 0.25 * scale, 16 * scale, 0.3, 0.5});
+    for (size_t i = 0; i < h.size(); ++i) {
+      const Vec3 p = s.vertices[i] / scale;
+      const Vec3 off = p - Vec3(std::clamp(p.x(), 4.0, 6.0), std::clamp(p.y(), 4.0, 6.0), 0);
+      const double fromHole = off.norm(), alongEdges = off.lpNorm<1>();
+      const bool onHoleRim = p.x() >= 4 && p.x() <= 6 && p.y() >= 4 && p.y() <= 6;
+      if (onHoleRim) EXPECT_NEAR(h[i], scale, 1e-9 * scale) << "vertex " << i << " at scale " << scale;
+      EXPECT_LE(h[i], scale * (1 + 0.3 * alongEdges) + 1e-9 * scale) << "graded from the hole's rim";
+      EXPECT_GT(h[i], scale * (0.99 + 0.3 * std::max(0.0, fromHole - 1.5))) << "no smaller than the grading asks";
+    }
+  }
+}
+
+// A hole whose rim loop is shorter than the smallest quad edge is a pinhole between facets (closed by
+// buildChordalSurface's closePinholes, or too small for any quad): the sizes are not held down round it.
+TEST(Sizing, ALoopShorterThanTheSmallestQuadEdgeIsLeftAlone) {
+  ChordalSurface s = test_flat_surfaces::rectangle(10, 10, {{4, 5, 4, 5}});
+  s.radius.assign(s.vertices.size(), 0.5);
+  const std::vector<double> h = adaptiveSizes(s, {4.0, 5.0, 16, 0.3, 0.5});  // the loop is 4 long
+  for (size_t i = 0; i < h.size(); ++i) EXPECT_NEAR(h[i], 5.0, 1e-12) << "the radius size 4, raised to the bound";
 }
