@@ -21,14 +21,19 @@ constexpr double kSearchGoal = 0.3;            // they lower the shortfall of th
 constexpr double kShortEdge = 0.2;  // nor shorten an edge of theirs below this share of their mean edge length
 constexpr double kSearchSteps[] = {0.3, 0.1, 0.03};  // their steps, in mean edge lengths, longest first
 
-// How a node may move: not at all, freely (inside the part), or on the faces of one side.
+// How a node may move: not at all, freely (inside the part), on the faces of one side, or along the edges where
+// one side's wall meets the rim.
 struct Freedom {
   bool moves = false;
-  std::optional<Side> on;  // the side whose faces it stays on; none: free
+  std::optional<Side> on;      // the side whose faces (or rim edges) it stays on; none: free
+  bool alongRimEdges = false;  // on the rim edges of `on`
 };
 
-Freedom freedomOf(const HexMesh& mesh, const WallSides& sides, int v) {
+// [in] rimEdges: whether the nodes on the CAD edges where the walls meet the rim may slide along them.
+Freedom freedomOf(const HexMesh& mesh, const WallSides& sides, int v, bool rimEdges) {
   const bool wallLayer = mesh.nodeLayer[v] == 0 || mesh.nodeLayer[v] == mesh.layers;
+  if (mesh.nodeOnRim[v] == kRimSwept && wallLayer && rimEdges)
+    return {true, mesh.nodeLayer[v] == 0 ? Side::Bottom : Side::Top, true};
   if (mesh.nodeOnRim[v] == kRimCap || (mesh.nodeOnRim[v] == kRimSwept && wallLayer))
     return {};  // on a CAD edge or a cap
   if (mesh.nodeFace[v] >= 0) return {true, sides.faces[mesh.nodeFace[v]].side};
@@ -52,7 +57,7 @@ std::vector<std::vector<int>> edgeNeighbours(const HexMesh& mesh) {
 // [in] walls, f: v's freedom, to.
 std::optional<FacePoint> placeAt(const WallProjector& walls, const Freedom& f, const Vec3& to) {
   if (!f.on) return FacePoint{to, -1};
-  return walls.project(*f.on, to);
+  return f.alongRimEdges ? walls.projectOntoRimEdges(*f.on, to) : walls.project(*f.on, to);
 }
 
 // measure(v) were node v at `at` (it stays where it is). [in,out] mesh: v moved and back.
@@ -135,13 +140,13 @@ bool searchMove(HexMesh& mesh, const WallProjector& walls, const Freedom& f, int
 // mesh), until a round moves none or kMaxRounds. Returns the moves kept.
 template <class Move>
 std::size_t smoothRounds(HexMesh& mesh, const WallSides& sides, const std::vector<char>& candidate,
-                         const std::vector<std::vector<int>>& neighbours, const Move& move) {
+                         const std::vector<std::vector<int>>& neighbours, bool rimEdges, const Move& move) {
   std::size_t total = 0;
   for (int round = 0; round < kMaxRounds; ++round) {
     std::size_t moved = 0;
     for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
       const int v = static_cast<int>(i);
-      const Freedom f = candidate[v] ? freedomOf(mesh, sides, v) : Freedom{};
+      const Freedom f = candidate[v] ? freedomOf(mesh, sides, v, rimEdges) : Freedom{};
       if (f.moves && !neighbours[v].empty() && move(f, v)) ++moved;
     }
     total += moved;
@@ -164,6 +169,15 @@ std::vector<char> nodesOfHexesBelow(const HexMesh& mesh, const std::vector<doubl
     if (sj[h] < below)
       for (int v : mesh.hexes[h]) candidate[v] = 1;
   return candidate;
+}
+
+// The nodes `nodes` and those of every hex with one of them. [in] mesh, nodes: one flag per node.
+std::vector<char> withHexesAround(const HexMesh& mesh, const std::vector<char>& nodes) {
+  std::vector<char> out = nodes;
+  for (const auto& hex : mesh.hexes)
+    if (std::any_of(hex.begin(), hex.end(), [&](int v) { return nodes[v] != 0; }))
+      for (int v : hex) out[v] = 1;
+  return out;
 }
 
 }  // namespace
@@ -193,11 +207,11 @@ SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const 
   };
   auto worstAround = [&](int v) { return hexesAround(v).worst; };
   stats.nodesMoved = smoothRounds(
-      mesh, sides, nodesOfHexesBelow(mesh, sj, kPoorHex), neighbours,
+      mesh, sides, nodesOfHexesBelow(mesh, sj, kPoorHex), neighbours, false,
       [&](const Freedom& f, int v) { return laplacianMove(mesh, walls, f, v, neighbours[v], worstAround); });
-  stats.searchMoves =
-      smoothRounds(mesh, sides, nodesOfHexesBelow(mesh, scaledJacobians(mesh), kBadHex), neighbours,
-                   [&](const Freedom& f, int v) { return searchMove(mesh, walls, f, v, neighbours[v], hexesAround); });
+  stats.searchMoves = smoothRounds(
+      mesh, sides, withHexesAround(mesh, nodesOfHexesBelow(mesh, scaledJacobians(mesh), kBadHex)), neighbours, true,
+      [&](const Freedom& f, int v) { return searchMove(mesh, walls, f, v, neighbours[v], hexesAround); });
   const std::vector<double> after = scaledJacobians(mesh);
   stats.worstAfter = *std::min_element(after.begin(), after.end());
   return stats;

@@ -4,10 +4,12 @@
 // hex edges, kept on its CAD face: a wall node slides on the walls of its side, a rim node on the lateral
 // faces, an inner node is free; the nodes on the CAD edges where walls meet the rim, and the caps' nodes, stay.
 // A move is kept only if it raises the scaled Jacobian of the worst hex around the node, so no hex gets worse
-// than the worst it was beside. The nodes of hexes still below kBadHex then take pattern-search steps (towards or
-// away from each neighbour, the one that most lowers their hexes' squared shortfall below kSearchGoal), under the
-// same rule and keeping their edges no shorter than kShortEdge of their mean: an inverted hex whose nodes must
-// move away from their neighbours' mean to untangle it.
+// than the worst it was beside. The nodes of hexes still below kBadHex, and of the hexes around them, then take
+// pattern-search steps (towards or away from each neighbour, the one that most lowers their hexes' squared shortfall
+// below kSearchGoal), under the same rule and keeping their edges no shorter than kShortEdge of their mean: an
+// inverted hex whose nodes must move away from their neighbours' mean to untangle it. In the search the nodes on the
+// CAD edges where the walls meet the rim slide along those edges (a rim column drawn onto another where a rim
+// turns a corner folds the hexes between them).
 #pragma once
 #include <cstddef>
 

@@ -14,7 +14,9 @@ namespace {
 // A 3 x 3 x 2 block of unit hexes in a box: its boundary nodes are not put on the CAD (fixed), its four inner
 // nodes (layer 1) free. Returns the mesh; id(i, j, k) is node (i, j, k).
 int id(int i, int j, int k) { return (k * 4 + j) * 4 + i; }
-HexMesh block() {
+// rimOnCad: only the nodes on the box's faces x = 0 and y = 0 are rim nodes (the rest of the block's boundary is
+// fixed off the CAD); else every boundary column is.
+HexMesh block(bool rimOnCad = false) {
   HexMesh m;
   m.layers = 2;
   for (int k = 0; k <= 2; ++k)
@@ -22,7 +24,8 @@ HexMesh block() {
       for (int i = 0; i <= 3; ++i) {
         m.nodes.emplace_back(i, j, k);
         m.nodeLayer.push_back(k);
-        m.nodeOnRim.push_back(i == 0 || i == 3 || j == 0 || j == 3 ? kRimSwept : 0);
+        const bool rim = rimOnCad ? i == 0 || j == 0 : i == 0 || i == 3 || j == 0 || j == 3;
+        m.nodeOnRim.push_back(rim ? kRimSwept : 0);
         m.nodeFace.push_back(-1);
       }
   for (int k = 0; k < 2; ++k)
@@ -68,4 +71,29 @@ TEST(Smoothing, APatternSearchSharesASlantTheLaplacianMoveLeaves) {
   EXPECT_LT(s.worstBefore, 0.1);
   EXPECT_GT(s.searchMoves, 0u);
   EXPECT_GT(s.worstAfter, 0.17);
+}
+
+// The block in the box's corner with its rim on the box's lateral faces x = 0 and y = 0: wall node (0, 1, 0), on the
+// CAD edge where the bottom wall meets the face x = 0, drawn along that edge past its neighbour (0, 2, 0) to
+// y = 2.5 folds the hexes beside it. The Laplacian moves leave it (a node on a rim edge stays); the search slides it
+// (and its neighbours) along the edge, and the hexes unfold. Every wall node of the rim stays on the rim edges.
+TEST(Smoothing, ANodeOnARimEdgeSlidesAlongItToUnfoldItsHexes) {
+  const Box box;
+  HexMesh m = block(true);
+  m.nodes[id(0, 1, 0)] = Vec3(0, 2.5, 0);
+  const SmoothingStats s = smoothPoorHexes(m, box.walls, box.sides);
+  EXPECT_LE(s.worstBefore, 0);
+  EXPECT_GT(s.searchMoves, 0u);
+  EXPECT_GT(s.worstAfter, 0.2);
+  const Vec3 slid = m.nodes[id(0, 1, 0)];
+  EXPECT_NEAR(slid.x(), 0, 1e-9);
+  EXPECT_NEAR(slid.z(), 0, 1e-9);
+  EXPECT_LT(slid.y(), m.nodes[id(0, 2, 0)].y()) << "back before its neighbour (which may have slid too)";
+  EXPECT_GT(slid.y(), m.nodes[id(0, 0, 0)].y());
+  for (int k = 0; k <= 2; k += 2)
+    for (int j = 0; j <= 3; ++j) {
+      const Vec3 p = m.nodes[id(0, j, k)];
+      EXPECT_NEAR(p.x(), 0, 1e-9) << "on the rim edge: " << j << " " << k;
+      EXPECT_NEAR(p.z(), k, 1e-9) << "on the rim edge: " << j << " " << k;
+    }
 }

@@ -175,8 +175,10 @@ class RealParts(unittest.TestCase):
         (sizing.hpp) and the smoothing's pattern search untangles most of what is left: measured 17 654 hexes,
         average 0.905, 8 inverted, all at the end wall's top corners. Its two 2.6 mm holes through the 4 mm pad were
         filled (quads of 4 mm asked round them) until every rim loop kept eight quad edges round it (sizing.hpp):
-        17 936 hexes, average 0.900, 8 inverted, the part's topology. Still refused by validation; checked with
-        --force: the stage it reaches, its quality, its topology and where its inverted hexes are."""
+        17 936 hexes, average 0.900, 8 inverted, the part's topology. Since the search slides the nodes on the rim
+        edges along them (smoothing.hpp): 4 inverted (with uniform sizes valid, min 0.03). Still refused by
+        validation; checked with --force: the stage it reaches, its quality, its topology and where its inverted hexes
+        are."""
         part = real_part("ender3_power_holder_box.step")
         with tempfile.TemporaryDirectory() as tmp:
             report = os.path.join(tmp, "r.json")
@@ -193,7 +195,7 @@ class RealParts(unittest.TestCase):
         self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.89)
         self.assertLess(abs(r["volume"]["relative_error"]), 0.015)
         self.assertFalse(r["validation"]["passed"])
-        self.assertLessEqual(r["inverted_hexes"], 15)
+        self.assertLessEqual(r["inverted_hexes"], 8)
         self.assertGreater(r["smoothing"]["search_moves"], 0)
         self.assertLess(r["worst_hex_at"][0], -54, "the worst hex at the end wall's top corners")
         self.assertLess(abs(r["worst_hex_at"][2] - 29), 3, "the worst hex at the end wall's top corners")
