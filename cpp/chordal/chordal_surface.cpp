@@ -147,17 +147,22 @@ void requireManifold(const ChordalSurface& s, double unit) {
 
 }  // namespace
 
-std::vector<double> rimLoopLengths(const ChordalSurface& s) {
+RimLoops rimLoops(const ChordalSurface& s) {
   const auto edges = facetEdgeUses(s);
   UnionFind rims(s.vertices.size());
+  std::vector<char> onRim(s.vertices.size(), 0);
   for (const auto& [edge, uses] : edges)
-    if (uses == 1) rims.unite(edge.first, edge.second);
-  std::vector<double> loopLength(s.vertices.size(), 0), out(s.vertices.size(), 0);
+    if (uses == 1) rims.unite(edge.first, edge.second), onRim[edge.first] = onRim[edge.second] = 1;
+  RimLoops out{std::vector<int>(s.vertices.size(), -1), {}};
+  std::vector<int> loopOfRoot(s.vertices.size(), -1);
+  for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+    if (!onRim[v]) continue;
+    int& loop = loopOfRoot[rims.find(static_cast<int>(v))];
+    if (loop < 0) loop = static_cast<int>(out.length.size()), out.length.push_back(0);
+    out.loopOf[v] = loop;
+  }
   for (const auto& [edge, uses] : edges)
-    if (uses == 1) loopLength[rims.find(edge.first)] += (s.vertices[edge.first] - s.vertices[edge.second]).norm();
-  for (const auto& [edge, uses] : edges)
-    if (uses == 1)
-      for (const int v : {edge.first, edge.second}) out[v] = loopLength[rims.find(v)];
+    if (uses == 1) out.length[out.loopOf[edge.first]] += (s.vertices[edge.first] - s.vertices[edge.second]).norm();
   return out;
 }
 

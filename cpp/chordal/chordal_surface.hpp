@@ -34,9 +34,13 @@ struct ChordalSurface {
 // the input's units: the tets' lengths are `unit` per input length (CadSolid::unit).
 ChordalSurface buildChordalSurface(const TetMesh& tets, double unit = 1);
 
-// For every vertex, the length of the rim (edges of one facet) through it: a hole's or the outer rim's loop (rim
-// loops that touch at a vertex count as one); 0 off the rim. [in] chordal.
-std::vector<double> rimLoopLengths(const ChordalSurface& chordal);
+// The rim loops (edges of one facet): a hole's or the outer rim (loops that touch at a vertex count as one).
+struct RimLoops {
+  std::vector<int> loopOf;     // per vertex, its loop; -1 off the rim
+  std::vector<double> length;  // per loop, the length of its edges
+};
+// [in] chordal. Returns its rim loops, numbered in the order of their lowest vertex.
+RimLoops rimLoops(const ChordalSurface& chordal);
 
 // For every facet edge (lower vertex id first), how many facets use it: 1 on the rim, 2 inside;
 // sorted by edge.

@@ -58,7 +58,8 @@ nlohmann::json quadMesh(const QuadMeshCounts& q) {
             {"failed", q.tries.failed},
             {"timed_out", q.tries.timedOut},
             {"not_started", q.tries.skipped},
-            {"same_patches_not_run", q.tries.samePatches}}},
+            {"same_patches_not_run", q.tries.samePatches},
+            {"given_up_on_faired_surfaces", q.tries.givenUp}}},
           {"time_budget_s", q.budgetSeconds}};
 }
 

@@ -442,6 +442,15 @@ long eulerCharacteristic(const ChordalSurface& s) {
          static_cast<long>(s.facets.size());
 }
 
+// The Euler characteristic the quads should have: the chordal surface's with its pinholes closed (rim loops shorter
+// than the smallest quad edge, left between facets where sheets meet at a corner: no quad mesh keeps one, and closing
+// it is no change of the part's topology). [in] s, smallest: the smallest target size.
+long eulerWithoutPinholes(const ChordalSurface& s, double smallest) {
+  const RimLoops loops = rimLoops(s);
+  return eulerCharacteristic(s) +
+         std::count_if(loops.length.begin(), loops.length.end(), [&](double length) { return length < smallest; });
+}
+
 // A smoothed try's quads, best first: the chordal surface's topology, fewest holes, fewest
 // inverted quads (and folded edges), fewest poor quads, best mean quad, best worst quad.
 struct QuadScore {
@@ -672,6 +681,10 @@ QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, lon
     ++tries.run, tries.timedOut += t.timedOut, tries.failed += !meshed;
     if (o.tried) o.tried(2 + i, 1 + splits);
     if (meshed && ranked.score.good()) break;
+    if (o.patchFailuresToGiveUp > 0 && failedPatches.size() >= o.patchFailuresToGiveUp && ranked.best.quads.empty()) {
+      tries.givenUp = splits - i - 1;
+      break;
+    }
   }
   if (ahead) stopChild(ahead->second);
   if (ranked.best.quads.empty()) ranked.best.failure = noQuadsReason(ranked, tries);
@@ -694,6 +707,7 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
 
 QuadTries& QuadTries::operator+=(const QuadTries& o) {
   run += o.run, failed += o.failed, timedOut += o.timedOut, skipped += o.skipped, samePatches += o.samePatches;
+  givenUp += o.givenUp;
   return *this;
 }
 
@@ -701,7 +715,7 @@ double gmshTryBudget(double quads) { return 60 + quads / 200; }
 
 QuadMesh tryQuadMeshes(const ChordalLocator& chordal, const QuadMeshOptions& o) {
   if (!(o.size > 0)) throw usageError("quad size must be positive");
-  const long chordalEuler = eulerCharacteristic(chordal.surface());
+  const long chordalEuler = eulerWithoutPinholes(chordal.surface(), smallestSize(o));
   Ranked ranked = bestBlockGrid(chordal, o, chordalEuler);
   if (o.tried) o.tried(1, 1 + o.patchSplits.size());
   ranked.best.tries = gmshTries(chordal, o, chordalEuler, ranked);

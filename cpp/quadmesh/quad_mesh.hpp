@@ -16,9 +16,10 @@ namespace hexlayer {
 
 // The Gmsh tries of a quad mesh: run, failed (Gmsh's error, a crash, a time-out or no quads), of those the ones
 // that ran out of their time budget, the ones not started because the quad stage's budget was spent, and those not
-// run because a try with the same patch angles had failed to make its patches (they would fail the same way).
+// run because a try with the same patch angles had failed to make its patches (they would fail the same way), and
+// those not run on a faired surface whose patches had failed at too many angles (patchFailuresToGiveUp).
 struct QuadTries {
-  std::size_t run = 0, failed = 0, timedOut = 0, skipped = 0, samePatches = 0;
+  std::size_t run = 0, failed = 0, timedOut = 0, skipped = 0, samePatches = 0, givenUp = 0;
   QuadTries& operator+=(const QuadTries& o);
 };
 
@@ -66,10 +67,10 @@ struct QuadMeshOptions {
   // The structured block grids are tried first (block_grids.hpp); Gmsh, one split after the other,
   // unless one of them is good with a mean quad of at least 0.98. Gmsh's reparametrization of a
   // patch can fail: the next split is tried then, or when the quads change the chordal surface's
-  // topology (close a hole) or some are inverted or below acceptableQuad once smoothed. Of the
-  // tries, the one that keeps the topology, then with the fewest holes, then the fewest inverted
-  // (or folded), then the fewest below acceptableQuad, then the best mean quad, then the best
-  // worst is kept. The last two splits cut HexLayer's own patches (PatchSplit::ownPatches): they run only
+  // topology (close a hole; a pinhole, a rim loop shorter than the smallest size, may close) or some
+  // are inverted or below acceptableQuad once smoothed. Of the tries, the one that keeps the topology, then with the
+  // fewest holes, then the fewest inverted (or folded), then the fewest below acceptableQuad, then the best mean quad,
+  // then the best worst is kept. The last two splits cut HexLayer's own patches (PatchSplit::ownPatches): they run only
   // while no try has given quads (a fallback where Gmsh's classification pinches every patch), and the quad
   // stage gives them to the unfaired chordal surface only, whose sharp bends they follow.
   std::vector<PatchSplit> patchSplits{{60, 60, true},
@@ -98,6 +99,11 @@ struct QuadMeshOptions {
   // Called after each try (the block grids as one, then each Gmsh try) with the tries done and the most there
   // can be; may be empty.
   std::function<void(std::size_t done, std::size_t total)> tried;
+  // If > 0: once this many patch splits with different angles have failed to make their patches and no try (nor
+  // block grid) has given quads, the rest are not run (QuadTries::givenUp): on a faired chordal surface whose sharp
+  // bends are rounded off, Gmsh's classification then fails at every angle (a sharply bent sheet: its patches touch
+  // themselves), and the less faired surface is the one to try. 0: every split is tried.
+  std::size_t patchFailuresToGiveUp = 0;
 };
 
 // The default time budget of one Gmsh try: 60 s plus a second per 200 quads the surface will get (Gmsh 4.8

@@ -18,6 +18,9 @@ namespace {
 // Where top and bottom walls meet at a knife edge, the chordal surface ends where the wall is thinner than
 // this share of its median thickness.
 constexpr double kKnifeRadius = 0.3;
+// On a faired level, the Gmsh tries stop once this many angles have failed to make their patches without quads: on a
+// sharply bent sheet every angle fails there (the U-channel's 12 tries on its two faired levels, 13 s).
+constexpr std::size_t kPatchFailuresToGiveUp = 2;
 
 double medianRadius(const ChordalSurface& chordal) {
   std::vector<double> r = chordal.radius;
@@ -49,6 +52,7 @@ QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const Q
   stage.knifeFacets = o.knifeEdges ? trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal)) : 0;
   const ChordalLocator locator(stage.chordal);
   QuadMeshOptions qo = base;
+  if (fairing > 0) qo.patchFailuresToGiveUp = kPatchFailuresToGiveUp;
   if (fairing > 0)  // HexLayer's own patches follow the creases of sharp bends, which fairing rounds off
     qo.patchSplits.erase(std::remove_if(qo.patchSplits.begin(), qo.patchSplits.end(),
                                         [](const PatchSplit& split) { return split.ownPatches; }),
@@ -74,6 +78,7 @@ std::string triesSummary(const QuadStage& stage) {
   std::ostringstream s;
   s << " (" << t.run << " Gmsh tries, " << t.failed << " failed, " << t.timedOut << " out of their time budget";
   if (t.samePatches > 0) s << ", " << t.samePatches << " not run: their patches had failed in an earlier try";
+  if (t.givenUp > 0) s << ", " << t.givenUp << " not run on faired surfaces whose patches failed at every angle tried";
   if (t.skipped > 0)
     s << ", " << t.skipped << " not started: the stage's budget of " << std::setprecision(3) << stage.budgetSeconds
       << " s was spent";

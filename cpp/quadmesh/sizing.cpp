@@ -63,14 +63,15 @@ std::vector<double> adaptiveSizes(const ChordalSurface& s, const SizingOptions& 
   const double lo = o.minSize > 0 ? o.minSize : 0.25 * o.size, hi = o.maxSize > 0 ? o.maxSize : 4 * o.size;
   const double medianRadius = median(s.radius);
   const std::vector<double> curvature = chordalCurvature(s);
-  const std::vector<double> loopLength = rimLoopLengths(s);
+  const RimLoops loops = rimLoops(s);
   std::vector<double> h(s.vertices.size());
   for (size_t i = 0; i < h.size(); ++i) {
     h[i] = medianRadius > 0 ? o.size * s.radius[i] / medianRadius : o.size;  // §6.1: radius function
     if (curvature[i] > 0 && !isCrease(curvature[i], s.radius[i]))
       h[i] = std::min(h[i], o.turnPerQuad / curvature[i]);  // §6.1: curvature
     h[i] = std::clamp(h[i], lo, hi);
-    if (loopLength[i] >= lo) h[i] = std::min(h[i], std::max(lo, loopLength[i] / kEdgesRoundLoop));  // a hole's rim
+    if (const int loop = loops.loopOf[i]; loop >= 0 && loops.length[loop] >= lo)  // a hole's rim
+      h[i] = std::min(h[i], std::max(lo, loops.length[loop] / kEdgesRoundLoop));
   }
   limitGradation(s, facetEdges(s), o.gradation, h);
   return h;

@@ -413,9 +413,9 @@ TEST(ChordalSurface, PinchedRimKeepsTheLargestFanAtEachVertex) {
   EXPECT_EQ(dropPinchedFacets(s), 0u) << "nothing pinched is left";
 }
 
-// A 3 x 3 grid of unit squares without its middle one: the rim loops are the outer square (12 long) and the
-// hole (4 long), each vertex on one of them.
-TEST(ChordalSurface, RimLoopLengthsAreThoseOfTheOuterRimAndTheHole) {
+// A 3 x 3 grid of unit squares without its middle one: the rim loops are the outer square (12 long, loop 0: it
+// holds vertex 0) and the hole (4 long), each rim vertex on one of them; filled, the hole's vertices are inside.
+TEST(ChordalSurface, RimLoopsAreTheOuterRimAndTheHole) {
   std::vector<Vec3> grid;
   for (int j = 0; j <= 3; ++j)
     for (int i = 0; i <= 3; ++i) grid.emplace_back(i, j, 0);
@@ -423,12 +423,16 @@ TEST(ChordalSurface, RimLoopLengthsAreThoseOfTheOuterRimAndTheHole) {
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
       if (i != 1 || j != 1) squares.push_back({4 * j + i, 4 * j + i + 1, 4 * j + i + 5, 4 * j + i + 4});
-  const std::vector<double> loops = rimLoopLengths(flatSurface(grid, squares));
+  const RimLoops loops = rimLoops(flatSurface(grid, squares));
+  ASSERT_EQ(loops.length.size(), 2u);
+  EXPECT_DOUBLE_EQ(loops.length[0], 12.0);
+  EXPECT_DOUBLE_EQ(loops.length[1], 4.0);
   for (int v = 0; v < 16; ++v) {
     const bool hole = v == 5 || v == 6 || v == 9 || v == 10;
-    EXPECT_DOUBLE_EQ(loops[v], hole ? 4.0 : 12.0) << v;
+    EXPECT_EQ(loops.loopOf[v], hole ? 1 : 0) << v;
   }
   squares.push_back({5, 6, 10, 9});
-  const std::vector<double> filled = rimLoopLengths(flatSurface(grid, squares));
-  for (int v : {5, 6, 9, 10}) EXPECT_DOUBLE_EQ(filled[v], 0.0) << "inside once the hole is filled";
+  const RimLoops filled = rimLoops(flatSurface(grid, squares));
+  EXPECT_EQ(filled.length.size(), 1u);
+  for (int v : {5, 6, 9, 10}) EXPECT_EQ(filled.loopOf[v], -1) << "inside once the hole is filled";
 }

@@ -137,9 +137,11 @@ class RealParts(unittest.TestCase):
         # quads), so it is given 600 s here. Since 2026-12-03 a try whose patches failed (Gmsh's classification and
         # reparametrization at its angles) is not run again with only the recombination changed: on each faired level
         # 6 of the 12 tries are not run (same_patches_not_run, 15 in all), the same quads in 38 s instead of 55 s.
+        # Since 2026-12-03 (session 35) a faired level stops after two angles have failed to make their patches
+        # (given_up_on_faired_surfaces: 20, same_patches_not_run: 3): the same quads, 21 -> 18 s on a quiet machine.
         # (name, thickness, tunnels the mesh closes, extra options, SJ min and avg floors, tries not run at least)
         cases = (("ender3_lcd_support_Lbracket.step", 2.0, 0, ("--drop-junctions",), 0.5, 0.95, 0),
-                 ("ender3_support_frame_Uchannel.step", 1.5, 2, ("--quad-budget", "600"), 0.13, 0.86, 12))
+                 ("ender3_support_frame_Uchannel.step", 1.5, 2, ("--quad-budget", "600"), 0.13, 0.86, 20))
         for name, thickness, tunnels_closed, extra, worst, mean, not_run in cases:
             with self.subTest(part=name):
                 r, (sj, volume, euler) = self.mesh(name, 2, *extra)
@@ -159,7 +161,8 @@ class RealParts(unittest.TestCase):
                 self.assertEqual(euler, cad_euler + 2 * tunnels_closed)
                 self.assertEqual(r["boundary"]["euler_characteristic"], euler, "the report agrees")
                 self.assertEqual(r["quad_mesh"]["unpaired_triangles"], 0)
-                self.assertGreaterEqual(r["quad_mesh"]["gmsh_tries"]["same_patches_not_run"], not_run)
+                tries = r["quad_mesh"]["gmsh_tries"]
+                self.assertGreaterEqual(tries["same_patches_not_run"] + tries["given_up_on_faired_surfaces"], not_run)
                 self.assertTrue(r["validation"]["passed"], r["validation"])
 
     def test_power_holder_box_is_one_bent_sheet(self):
