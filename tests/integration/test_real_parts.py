@@ -163,6 +163,8 @@ class RealParts(unittest.TestCase):
                 self.assertEqual(r["quad_mesh"]["unpaired_triangles"], 0)
                 tries = r["quad_mesh"]["gmsh_tries"]
                 self.assertGreaterEqual(tries["same_patches_not_run"] + tries["given_up_on_faired_surfaces"], not_run)
+                if name.startswith("ender3_support_frame_Uchannel"):  # measured: 6 run (was 21)
+                    self.assertLessEqual(tries["run"], 8, "a good try ends the tries: the quads may close a pinhole")
                 self.assertTrue(r["validation"]["passed"], r["validation"])
 
     def test_power_holder_box_is_one_bent_sheet(self):
