@@ -52,11 +52,13 @@ QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const Q
   stage.knifeFacets = o.knifeEdges ? trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal)) : 0;
   const ChordalLocator locator(stage.chordal);
   QuadMeshOptions qo = base;
-  if (fairing > 0) qo.patchFailuresToGiveUp = kPatchFailuresToGiveUp;
-  if (fairing > 0)  // HexLayer's own patches follow the creases of sharp bends, which fairing rounds off
+  if (fairing > 0) {
+    qo.patchFailuresToGiveUp = kPatchFailuresToGiveUp;
+    // HexLayer's own patches follow the creases of sharp bends, which fairing rounds off
     qo.patchSplits.erase(std::remove_if(qo.patchSplits.begin(), qo.patchSplits.end(),
                                         [](const PatchSplit& split) { return split.ownPatches; }),
                          qo.patchSplits.end());
+  }
   if (o.adaptive) qo.vertexSize = adaptiveSizes(stage.chordal, o.sizing);
   if (o.adaptive && fairing == 0) {  // §6.1's radius term only: the own patches' creases are their curves
     SizingOptions withoutCurvature = o.sizing;
