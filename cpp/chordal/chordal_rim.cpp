@@ -130,6 +130,28 @@ std::size_t dropRimSpikes(ChordalSurface& s) {
 
 }  // namespace
 
+std::size_t fillTears(ChordalSurface& s, const NearRim& nearRim, double maxLength) {
+  const RimLoops loops = rimLoops(s);
+  const RimWalk walk = rimWalk(s);
+  std::vector<std::vector<int>> members(loops.length.size());
+  for (std::size_t v = 0; v < s.vertices.size(); ++v)
+    if (loops.loopOf[v] >= 0) members[loops.loopOf[v]].push_back(static_cast<int>(v));
+  std::size_t filled = 0;
+  for (std::size_t loop = 0; loop < members.size(); ++loop) {
+    const std::vector<int>& ring = members[loop];
+    if (loops.length[loop] > maxLength || ring.size() < 3) continue;
+    if (std::any_of(ring.begin(), ring.end(), [&](int v) { return walk.next[v] < 0 || nearRim(s.vertices[v]); }))
+      continue;                       // the part's own rim, or a loop that passes a vertex twice
+    std::vector<int> cycle{ring[0]};  // in the facets' direction along the rim
+    while (cycle.size() <= ring.size() && walk.next[cycle.back()] != ring[0]) cycle.push_back(walk.next[cycle.back()]);
+    if (cycle.size() != ring.size()) continue;
+    for (std::size_t i = 1; i + 1 < cycle.size(); ++i)  // the rim edges taken the other way: facing as the rest
+      s.facets.push_back({cycle[0], cycle[i + 1], cycle[i], -1}), ++s.triangles;
+    ++filled;
+  }
+  return filled;
+}
+
 RimSnapStats snapRimBetweenWallEdges(ChordalSurface& s, const RimMiddle& middle, double reach) {
   RimSnapStats stats;
   for (;;) {

@@ -26,7 +26,19 @@ struct RimSnapStats {
   std::size_t spikesDropped = 0;  // facets on the rim that the move would turn over, ending a narrow spike, or of an
                                   // island that only they held to the rest (dropIslands)
   double largestMove = 0;         // in the surface's units
+  std::size_t tearsFilled = 0;    // rim loops filled as tears (fillTears), before the snap
 };
+
+// Whether a point lies near the lateral faces ω_l (the part's rims, holes' walls included).
+using NearRim = std::function<bool(const Vec3& p)>;
+
+// Fills the tears of the chordal surface: rim loops no longer than maxLength none of whose vertices is near a
+// lateral face. A hole or rim of the part runs along its lateral faces; a small loop in the middle of a wall is where
+// tets spanning a sharp inside corner were dropped as outside (their centre in the corner's empty side), and the
+// quads would carry it into the mesh as a hole the part does not have. Each is closed by a fan of triangles from
+// one of its vertices, turned as its neighbours. [in,out] chordal: before its normals and radius are computed;
+// [in] nearRim, maxLength. Returns the number of loops filled.
+std::size_t fillTears(ChordalSurface& chordal, const NearRim& nearRim, double maxLength);
 
 // [in,out] chordal: its rim vertices moved (normals and radius are computed afterwards);
 // [in] middle: the point between the walls' rim edges; [in] reach: the longest move (about the wall thickness).

@@ -51,6 +51,8 @@ constexpr double kMaxAutoQuads = 250000;
 // How far a rim node may move onto the rim faces, in walls: half of a rim cut obliquely 3.2 walls wide
 // (wall_sides.hpp), with room.
 constexpr double kRimReach = 1.6;
+// Tears of the chordal surface (fillTears) are rim loops no longer than this many walls.
+constexpr double kMaxTear = 5;
 
 // Runs one stage, records its wall time and the process's peak memory at its end in stages[name], and reports
 // its start and end as progress.
@@ -726,8 +728,13 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   r.chordal = countChordal(cut);
   const WallProjector walls(cad, sides);
   r.chordal.rim = clock.run("chordal_rim", [&] {
-    return snapRimBetweenWallEdges(
+    const std::size_t tears = fillTears(
+        cut, [&](const Vec3& p) { return walls.reaches(Side::Lateral, p, sides.thickness); },
+        kMaxTear * sides.thickness);
+    RimSnapStats snapped = snapRimBetweenWallEdges(
         cut, [&](const Vec3& p) { return walls.rimMiddle(p); }, sides.thickness);
+    snapped.tearsFilled = tears;
+    return snapped;
   });
   r.size = chooseSize(o, sides, chordalArea(cut), r.sizeSource);
   r.sizing = o.sizing;

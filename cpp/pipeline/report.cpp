@@ -23,7 +23,8 @@ nlohmann::json chordalRim(const RimSnapStats& s) {
   return {{"vertices", s.rimVertices},
           {"moved", s.moved},
           {"spikes_dropped", s.spikesDropped},
-          {"largest_move", s.largestMove}};
+          {"largest_move", s.largestMove},
+          {"tears_filled", s.tearsFilled}};
 }
 
 nlohmann::json chordal(const ChordalRecord& c) {

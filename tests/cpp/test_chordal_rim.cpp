@@ -3,6 +3,8 @@
 // a narrow spike dropped.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -78,4 +80,34 @@ TEST(ChordalRim, ANarrowSpikeIsDropped) {
   EXPECT_EQ(stats.spikesDropped, 1u);
   EXPECT_EQ(s.facets, straight.facets);
   EXPECT_EQ(s.vertices, straight.vertices);
+}
+
+// A strip 8 x 6 of unit quads (all rows at integer heights) without the square at (3, 3) and without the one at
+// (6, 1): two rim loops 4 long besides the outer rim (28 long). Of the lateral faces only the outer rim's line
+// y = 0 is "near" (nearRim: y < 1.5): the tear in the middle is filled with two triangles facing +z like the quads,
+// the hole beside the rim stays (a hole of the part runs along its lateral faces), and so does everything with a
+// bound shorter than the tear.
+TEST(ChordalRim, ATearAwayFromTheLateralFacesIsFilled) {
+  ChordalSurface s = strip(std::vector<double>(9, 0.0), 6);
+  s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(),
+                                [&](const std::array<int, 4>& f) {
+                                  const Vec3& corner = s.vertices[f[0]];
+                                  return corner == Vec3(3, 3, 0) || corner == Vec3(6, 1, 0);
+                                }),
+                 s.facets.end());
+  const auto nearRim = [](const Vec3& p) { return p.y() < 1.5; };
+  ChordalSurface unchanged = s;
+  EXPECT_EQ(fillTears(unchanged, nearRim, 3.9), 0u) << "the tear is 4 long";
+  EXPECT_EQ(unchanged.facets.size(), s.facets.size());
+  const std::size_t facets = s.facets.size();
+  EXPECT_EQ(fillTears(s, nearRim, 5), 1u);
+  ASSERT_EQ(s.facets.size(), facets + 2);
+  EXPECT_EQ(rimLoops(s).length.size(), 2u) << "the outer rim and the hole beside it";
+  for (const auto& [edge, uses] : facetEdgeUses(s)) EXPECT_LE(uses, 2) << edge.first << " " << edge.second;
+  for (std::size_t f = facets; f < s.facets.size(); ++f) {
+    const auto& t = s.facets[f];
+    EXPECT_EQ(t[3], -1);
+    const Vec3 n = (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]);
+    EXPECT_GT(n.z(), 0) << "facing +z as the quads";
+  }
 }
