@@ -123,7 +123,7 @@ CadFaceProbe::Surface& CadFaceProbe::surface(int face) {
   const double tolU = std::max(s.adaptor.UResolution(tolerance), Precision::PConfusion());
   const double tolV = std::max(s.adaptor.VResolution(tolerance), Precision::PConfusion());
   s.extrema.SetFlag(Extrema_ExtFlag_MINMAX);
-  s.extrema.SetAlgo(Extrema_ExtAlgo_Grad);
+  s.extrema.SetAlgo(Extrema_ExtAlgo_Tree);  // its grid sorted once, not walked per query
   s.extrema.Initialize(s.adaptor, f.uvBounds[0], f.uvBounds[1], f.uvBounds[2], f.uvBounds[3], tolU, tolV);
   return s;
 }
@@ -277,6 +277,29 @@ std::optional<std::pair<double, gp_Pnt>> CadFaceProbe::planeFoot(int face, const
   if (std::hypot(distance, apart) - distance <= 10 * kEps) return std::nullopt;
   if (vertexBox(p).Distance(f.extremaBox) > distance + kEps) return std::nullopt;
   return std::make_pair(distance, s.extrema.Point(1).Value());
+}
+
+// The same on a face of any surface: the nearest extremum, inside the face by its UvBoundary, kept where the face's
+// vertices and edges (those whose boxes are near enough) are all farther by more than 10 x the precision.
+std::optional<std::pair<double, gp_Pnt>> CadFaceProbe::foot(int face, const gp_Pnt& p) {
+  const CadFaces::Face& f = faces_.face(face);
+  Surface& s = surface(face);
+  if (s.adaptor.GetType() == GeomAbs_Plane) return planeFoot(face, p);
+  if (s.adaptor.GetType() == GeomAbs_OtherSurface || f.extremaBox.IsVoid() || f.vertices.empty()) return std::nullopt;
+  s.extrema.Perform(p);
+  if (!s.extrema.IsDone() || s.extrema.NbExt() == 0) return std::nullopt;
+  int nearest = 1;
+  for (int i = 2; i <= s.extrema.NbExt(); ++i)
+    if (s.extrema.SquareDistance(i) < s.extrema.SquareDistance(nearest)) nearest = i;
+  double u = 0, v = 0;
+  s.extrema.Point(nearest).Parameter(u, v);
+  if (f.boundary->side(u, v) != UvBoundary::Side::Inside) return std::nullopt;
+  const double distance = std::sqrt(s.extrema.SquareDistance(nearest));
+  const Bnd_Box pointBox = vertexBox(p);
+  if (pointBox.Distance(f.extremaBox) > distance + kEps) return std::nullopt;
+  const double boundary = edgesDistance(f, p, pointBox, vertexDistance(f, p)).value_or(0);
+  if (boundary - distance <= 10 * kEps) return std::nullopt;
+  return std::make_pair(distance, s.extrema.Point(nearest).Value());
 }
 
 // True if p is in the face's box and nearer to the face than its tolerance.

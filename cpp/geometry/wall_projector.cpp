@@ -182,7 +182,7 @@ std::optional<FacePoint> WallProjector::nearestOf(const std::vector<std::pair<do
 // one built for the query: Perform recomputes all but the piece's sub-shapes and their boxes).
 std::optional<WallProjector::Hit> WallProjector::distance(int piece, const TopoDS_Vertex& vertex) const {
   const std::size_t thread = static_cast<std::size_t>(threadIndex());
-  if (const std::optional<Hit> foot = planeFoot(piece, vertex, thread)) return foot;
+  if (const std::optional<Hit> foot = faceFoot(piece, vertex, thread)) return foot;
   Distance own;
   Distance& tool = thread < tools_.size() ? tools_[thread][piece] : own;
   if (!tool) {
@@ -196,14 +196,14 @@ std::optional<WallProjector::Hit> WallProjector::distance(int piece, const TopoD
   return Hit{tool->Value(), FacePoint{Vec3(q.X(), q.Y(), q.Z()), pieces_[piece].face}};
 }
 
-// The same answer on a planar face where it is p's foot point on the plane well inside the face
-// (CadFaceProbe::planeFoot), without BRepExtrema; nullopt elsewhere, for an edge, or off the threads' probes.
-std::optional<WallProjector::Hit> WallProjector::planeFoot(int piece, const TopoDS_Vertex& vertex,
-                                                           std::size_t thread) const {
+// The same answer where it is p's foot point well inside the face, with the face's vertices and edges farther
+// (CadFaceProbe::foot), without BRepExtrema; nullopt elsewhere, for an edge, or off the threads' probes.
+std::optional<WallProjector::Hit> WallProjector::faceFoot(int piece, const TopoDS_Vertex& vertex,
+                                                          std::size_t thread) const {
   const Piece& w = pieces_[piece];
   CadFaceProbe* own = w.shape.ShapeType() == TopAbs_FACE && thread < probes_.size() ? probe() : nullptr;
   if (!own) return std::nullopt;
-  const std::optional<std::pair<double, gp_Pnt>> foot = own->planeFoot(w.face, BRep_Tool::Pnt(vertex));
+  const std::optional<std::pair<double, gp_Pnt>> foot = own->foot(w.face, BRep_Tool::Pnt(vertex));
   if (!foot) return std::nullopt;
   const gp_Pnt& q = foot->second;
   return Hit{foot->first, FacePoint{Vec3(q.X(), q.Y(), q.Z()), w.face}};

@@ -24,7 +24,8 @@ class CadFaces;
 class CadFaceProbe;
 
 // The queries may run on several OpenMP threads at once: each thread keeps its own OpenCASCADE distance tools
-// (one per face or edge, built at its first query), the answers are the same bits on any thread.
+// (one per face or edge, built at its first query), the answers are the same bits on any thread. A foot point
+// well inside a face comes from the face's own extrema tool (CadFaceProbe::foot), BRepExtrema's elsewhere.
 class WallProjector {
  public:
   // [in] cad, sides: read at construction; cad's shapes are kept (by handle), not the objects.
@@ -36,7 +37,7 @@ class WallProjector {
   std::optional<FacePoint> project(Side side, const Vec3& p) const;
 
   // True if a face of the `side` wall is within `reach` of p: the distance of project(side, p), as
-  // BRepExtrema_DistShapeShape measures it (CadFaceProbe::distance, the same bits), without its nearest point.
+  // BRepExtrema_DistShapeShape measures it (CadFaceProbe::distance), without its nearest point.
   // [in] reach: >= 0.
   bool reaches(Side side, const Vec3& p, double reach) const;
 
@@ -82,8 +83,9 @@ class WallProjector {
   std::optional<FacePoint> nearestOf(const std::vector<std::pair<double, int>>& order, const TopoDS_Vertex& vertex,
                                      const Known& known) const;
   std::optional<Hit> distance(int piece, const TopoDS_Vertex& vertex) const;
-  // distance()'s answer in closed form on a planar face where that is certain, else nullopt. [in] thread: the caller's.
-  std::optional<Hit> planeFoot(int piece, const TopoDS_Vertex& vertex, std::size_t thread) const;
+  // distance()'s answer from the face's own extrema tool where that is certain, else nullopt.
+  // [in] thread: the caller's.
+  std::optional<Hit> faceFoot(int piece, const TopoDS_Vertex& vertex, std::size_t thread) const;
   // The calling thread's probe (built at its first query); null off the threads counted at construction.
   CadFaceProbe* probe() const;
 
@@ -93,7 +95,7 @@ class WallProjector {
   std::array<std::map<int, PieceSet>, 3> rimEdgesOf_;  // by side and lateral face: its rim edges
   std::vector<int> pieceOfFace_;                       // per face: its piece (-1: none)
   mutable std::vector<std::vector<Distance>> tools_;   // per thread, per piece (built at its first query)
-  // The faces for the closed form on planes (CadFaceProbe::planeFoot), and a probe per thread (built at its first
+  // The faces for the foot points (CadFaceProbe::foot), and a probe per thread (built at its first
   // query): on a face with many edges BRepExtrema walks them all for every point.
   std::unique_ptr<CadFaces> cadFaces_;
   mutable std::vector<std::unique_ptr<CadFaceProbe>> probes_;

@@ -1,6 +1,7 @@
 // Distances to the CAD faces (geometry/cad_faces.hpp): CadFaceProbe's distance to a trimmed
-// face is BRepExtrema_DistShapeShape's to the last bit, on the faces (inside, at and near their edges
-// and vertices), just off them and far away, on samples with planes, cylinders, spheres and B-splines.
+// face is BRepExtrema_DistShapeShape's, to the last bit on planes, cylinders, spheres (and up to the rounding of
+// their Newton steps, 1e-8, on B-splines), and whether a point lies on a face (within its tolerance) is always
+// BRepExtrema's, on the faces (inside, at and near their edges and vertices), just off them and far away.
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Curve.hxx>
@@ -59,6 +60,13 @@ std::vector<Vec3> probePoints(const CadFaces::Face& f) {
   return points;
 }
 
+// The faces whose nearest points Extrema_ExtPS finds in closed form (on other surfaces it walks its grid or tree).
+bool analytic(const CadFaces::Face& f) {
+  const GeomAbs_SurfaceType type = BRepAdaptor_Surface(f.face).GetType();
+  return type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_Sphere ||
+         type == GeomAbs_Torus;
+}
+
 // Checks every probe point of every face against its face and the faces around it; returns how many.
 int expectSameAsBRepExtrema(const CadSolid& cad) {
   const CadFaces faces(cad);
@@ -70,8 +78,11 @@ int expectSameAsBRepExtrema(const CadSolid& cad) {
       around.push_back(f);
       for (int g : around) {
         const double fast = probe.distance(g, p), exact = reference(faces, g, p);
-        EXPECT_EQ(std::memcmp(&fast, &exact, sizeof fast), 0)
-            << "face " << g << " at (" << p.transpose() << "): " << fast << " against BRepExtrema's " << exact;
+        if (analytic(faces.face(g)))
+          EXPECT_EQ(std::memcmp(&fast, &exact, sizeof fast), 0)
+              << "face " << g << " at (" << p.transpose() << "): " << fast << " against BRepExtrema's " << exact;
+        else  // Extrema's tree search and BRepExtrema's grid walk end their Newton steps a little apart
+          EXPECT_NEAR(fast, exact, 1e-8) << "face " << g << " at (" << p.transpose() << ")";
         EXPECT_EQ(probe.lies(g, p),
                   !faces.face(g).box.IsOut(gp_Pnt(p.x(), p.y(), p.z())) && exact < faces.tolerance(g));
         ++checked;

@@ -121,3 +121,44 @@ TEST(WallProjector, PlaneFeetAreBRepExtremasOnAPlateWithManyHoles) {
     EXPECT_GT(closedForm, 300);  // the closed form was used (not near an edge, not beside a face)
   }
 }
+
+// On B-spline faces (the twisted strip's walls) the foot point comes from the face's own extrema tool
+// (CadFaceProbe::foot) where the face's edges and vertices are farther: BRepExtrema_DistShapeShape's distance and
+// point up to its Newton steps' rounding, for points on, between and beyond the walls, inside and near the rim.
+TEST(WallProjector, FeetOnBSplineFacesAreBRepExtremas) {
+  const CadSolid cad =
+      prepareSolid(readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/twisted_strip.step").at(0));
+  const WallProjector walls(cad, classifyWallSides(cad));
+  CadFaces cadFaces(cad);
+  CadFaceProbe probe(cadFaces);
+  int faces = 0, feet = 0;
+  for (int f = 0; f < cadFaces.count(); ++f) {
+    const BRepAdaptor_Surface s(cadFaces.face(f).face);
+    if (s.GetType() != GeomAbs_BSplineSurface) continue;
+    const double* b = cadFaces.face(f).uvBounds;
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j) {
+        gp_Pnt on;
+        gp_Vec du, dv;
+        s.D1(b[0] + (b[1] - b[0]) * i / 8.0, b[2] + (b[3] - b[2]) * j / 8.0, on, du, dv);
+        const gp_Vec n = du.Crossed(dv).Normalized();
+        for (double offset : {0.0, 1e-9, 0.4, -0.7, 1.5}) {
+          const gp_Pnt p = on.Translated(offset * n);
+          BRepExtrema_DistShapeShape exact(BRepBuilderAPI_MakeVertex(p).Vertex(), cad.faces(f + 1));
+          ASSERT_TRUE(exact.IsDone() && exact.NbSolution() > 0);
+          const std::optional<FacePoint> got = walls.projectOntoFace(f, Vec3(p.X(), p.Y(), p.Z()));
+          ASSERT_TRUE(got);
+          const gp_Pnt q = exact.PointOnShape2(1);
+          EXPECT_NEAR((got->point - Vec3(q.X(), q.Y(), q.Z())).norm(), 0, 1e-6) << "face " << f << " " << i << " " << j;
+          EXPECT_EQ(got->face, f);
+          if (const auto foot = probe.foot(f, p)) {
+            EXPECT_NEAR(foot->first, exact.Value(), 1e-8);
+            ++feet;
+          }
+          ++faces;
+        }
+      }
+  }
+  EXPECT_GT(faces, 400);
+  EXPECT_GT(feet, faces / 2);  // the foot was used inside the faces, BRepExtrema near their edges
+}
