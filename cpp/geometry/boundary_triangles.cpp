@@ -41,14 +41,32 @@ bool touchesPole(const Triangle2d& t, const std::vector<std::pair<gp_Pnt, double
   return false;
 }
 
-// Distance from p to the nearest point of the surface, infinite if none is found.
-double distanceToSurface(const gp_Pnt& p, const BRepAdaptor_Surface& surface) {
-  const Extrema_ExtPS nearest(p, surface, 1e-9, 1e-9, Extrema_ExtFlag_MIN);
-  double d2 = INFINITY;
-  if (nearest.IsDone())
-    for (int i = 1; i <= nearest.NbExt(); ++i) d2 = std::min(d2, nearest.SquareDistance(i));
-  return std::sqrt(d2);
-}
+// Distances from points to the nearest point of the surface, with its extrema tool set up once (its sample grid
+// sorted as a tree: one built per point was most of the periodic shell's boundary triangles).
+class SurfaceDistance {
+ public:
+  explicit SurfaceDistance(const BRepAdaptor_Surface& surface) : surface_(surface) {}
+  // [in] p. Returns the distance, infinite if no nearest point is found.
+  double operator()(const gp_Pnt& p) {
+    if (!ready_) {
+      extrema_.SetFlag(Extrema_ExtFlag_MIN);
+      extrema_.SetAlgo(Extrema_ExtAlgo_Tree);
+      extrema_.Initialize(surface_, surface_.FirstUParameter(), surface_.LastUParameter(), surface_.FirstVParameter(),
+                          surface_.LastVParameter(), 1e-9, 1e-9);
+      ready_ = true;
+    }
+    extrema_.Perform(p);
+    double d2 = INFINITY;
+    if (extrema_.IsDone())
+      for (int i = 1; i <= extrema_.NbExt(); ++i) d2 = std::min(d2, extrema_.SquareDistance(i));
+    return std::sqrt(d2);
+  }
+
+ private:
+  const BRepAdaptor_Surface& surface_;
+  Extrema_ExtPS extrema_;
+  bool ready_ = false;  // the grid is built at the first point asked
+};
 
 // Largest distance between the face's triangles and the exact surface, at each triangle's corners,
 // edge midpoints and centre: to the surface point at the same parameters, or, where that is farther than
@@ -58,6 +76,7 @@ double largestDeviation(const TopoDS_Face& face, const std::vector<Triangle2d>& 
   static constexpr double kAt[7][3] = {
       {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, 0}, {0, 0.5, 0.5}, {0.5, 0, 0.5}, {1.0 / 3, 1.0 / 3, 1.0 / 3}};
   const BRepAdaptor_Surface surface(face);
+  SurfaceDistance distanceToSurface(surface);
   const std::vector<std::pair<gp_Pnt, double>> poles = facePoles(face);
   double worst = 0;
   for (const Triangle2d& t : mesh) {
@@ -67,7 +86,7 @@ double largestDeviation(const TopoDS_Face& face, const std::vector<Triangle2d>& 
       const gp_XYZ xyz = w[0] * t.xyz[0].XYZ() + w[1] * t.xyz[1].XYZ() + w[2] * t.xyz[2].XYZ();
       const double atParameters = (surface.Value(uv.X(), uv.Y()).XYZ() - xyz).Modulus();
       const bool uneven = pole || atParameters > near;
-      worst = std::max(worst, uneven ? std::min(atParameters, distanceToSurface(xyz, surface)) : atParameters);
+      worst = std::max(worst, uneven ? std::min(atParameters, distanceToSurface(xyz)) : atParameters);
     }
   }
   return worst;

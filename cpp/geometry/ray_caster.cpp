@@ -7,6 +7,8 @@
 #include <TopoDS.hxx>
 #include <gp_Lin.hxx>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 
@@ -74,6 +76,38 @@ IntCurveSurface_TransitionOnCurve transition(const BRepAdaptor_Surface& s, const
   return in ? IntCurveSurface_In : IntCurveSurface_Out;
 }
 
+// Cells per parameter direction of a SurfaceGrid: four per C2 piece of the surface (a B-spline's knot span), 16 to 96.
+int gridCells(int pieces) { return std::clamp(4 * pieces, 16, 96); }
+
+std::vector<double> spaced(double first, double last, int cells) {
+  std::vector<double> t(cells + 1);
+  for (int k = 0; k <= cells; ++k) t[k] = first + (last - first) * k / cells;
+  t[cells] = last;
+  return t;
+}
+
+Vec3 vec(const gp_Pnt& p) { return Vec3(p.X(), p.Y(), p.Z()); }
+
+// Newton's method on S(u, v) - (o + w d) = 0 from the given (u, v, w); false if it does not settle (|F| below
+// `close`) within 30 steps or its Jacobian [S_u S_v -d] is singular. [in,out] u, v, w.
+bool settle(const BRepAdaptor_Surface& s, const gp_Lin& line, double close, double& u, double& v, double& w) {
+  const Vec3 o = vec(line.Location()), d(line.Direction().X(), line.Direction().Y(), line.Direction().Z());
+  for (int step = 0, settled = 0; step < 30; ++step) {
+    gp_Pnt p;
+    gp_Vec su, sv;
+    s.D1(u, v, p, su, sv);
+    const Vec3 f = vec(p) - (o + w * d);
+    if (f.norm() <= close && ++settled == 2) return true;  // one more step once settled: to the rounding
+    Eigen::Matrix3d j;
+    j << su.X(), sv.X(), -d.x(), su.Y(), sv.Y(), -d.y(), su.Z(), sv.Z(), -d.z();
+    const Eigen::FullPivLU<Eigen::Matrix3d> lu(j);
+    if (!lu.isInvertible()) return false;
+    const Vec3 x = lu.solve(-f);
+    u += x.x(), v += x.y(), w += x.z();
+  }
+  return false;
+}
+
 }  // namespace
 
 RayCaster::RayCaster(const CadSolid& cad, double tolerance)
@@ -89,6 +123,85 @@ RayCaster::RayCaster(const CadSolid& cad, double tolerance)
     if (type == GeomAbs_Plane) plane->plane = plane->surface.Plane();
     planes_.push_back(type == GeomAbs_Plane ? std::move(plane) : nullptr);
   }
+  grids_.resize(faces_.size());
+}
+
+RayCaster::SurfaceGrid& RayCaster::surfaceGrid(int f) {
+  std::unique_ptr<SurfaceGrid>& grid = grids_[f];
+  if (grid) return *grid;
+  grid = std::make_unique<SurfaceGrid>();
+  SurfaceGrid& g = *grid;
+  g.surface.Initialize(faces_[f]->Face(), true);
+  const BRepAdaptor_Surface& s = g.surface;
+  g.us = spaced(s.FirstUParameter(), s.LastUParameter(), gridCells(s.NbUIntervals(GeomAbs_C2)));
+  g.vs = spaced(s.FirstVParameter(), s.LastVParameter(), gridCells(s.NbVIntervals(GeomAbs_C2)));
+  const int nu = static_cast<int>(g.us.size()), nv = static_cast<int>(g.vs.size());
+  std::vector<Vec3> corner(nu * nv);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) corner[i * nv + j] = vec(s.Value(g.us[i], g.vs[j]));
+  std::vector<Box> boxes;
+  for (int i = 0; i + 1 < nu; ++i)
+    for (int j = 0; j + 1 < nv; ++j) {
+      const Vec3 &a = corner[i * nv + j], &b = corner[(i + 1) * nv + j], &c = corner[i * nv + j + 1],
+                 &d = corner[(i + 1) * nv + j + 1];
+      Box box;
+      for (const Vec3* p : {&a, &b, &c, &d}) box.add(*p);
+      double strays = 0;  // from the bilinear patch of the corners
+      for (const auto& [x, y] : {std::pair(0.5, 0.5), {0.5, 0.0}, {0.5, 1.0}, {0.0, 0.5}, {1.0, 0.5}}) {
+        const Vec3 p = vec(s.Value(g.us[i] + x * (g.us[i + 1] - g.us[i]), g.vs[j] + y * (g.vs[j + 1] - g.vs[j])));
+        const Vec3 bilinear = (1 - x) * (1 - y) * a + x * (1 - y) * b + (1 - x) * y * c + x * y * d;
+        strays = std::max(strays, (p - bilinear).norm());
+        box.add(p);
+      }
+      const Vec3 grow = Vec3::Constant(2 * strays + tolerance_);
+      box.lo -= grow, box.hi += grow;
+      boxes.push_back(box);
+    }
+  g.cells = std::make_unique<BoxTree>(boxes);
+  g.boundary = faceUvBoundary(faces_[f]->Face(), diagonal_);
+  // Its margin is at least 1e-5 x the diagonal in 3D: far above the intersector's tolerance, as boundary(PlaneFace&)
+  // asks (there in (u, v), lengths on a plane).
+  if (10 * tolerance_ > 1e-5 * diagonal_) g.boundary.reset();
+  return g;
+}
+
+RayCaster::SurfaceHits RayCaster::surfaceHits(int f, const gp_Lin& line, double wMin, double wMax,
+                                              std::vector<RayHit>& hits) {
+  SurfaceGrid& g = surfaceGrid(f);
+  if (!g.boundary) return SurfaceHits::kUndecided;
+  const Vec3 from = vec(line.Location()), dir(line.Direction().X(), line.Direction().Y(), line.Direction().Z());
+  const int nv = static_cast<int>(g.vs.size()) - 1;
+  std::vector<RayHit> found;
+  bool undecided = false;
+  g.cells->traverse([&](const Box& b) { return rayEntersBox(from, dir, b, wMin, wMax) < INFINITY; },
+                    [&](int cell) {
+                      const int i = cell / nv, j = cell % nv;
+                      double u = 0.5 * (g.us[i] + g.us[i + 1]), v = 0.5 * (g.vs[j] + g.vs[j + 1]);
+                      double w = ElCLib::Parameter(line, g.surface.Value(u, v));
+                      if (!settle(g.surface, line, 1e-3 * tolerance_, u, v, w)) return undecided = true;
+                      const double du = 1e-9 * (g.us[i + 1] - g.us[i]), dv = 1e-9 * (g.vs[j + 1] - g.vs[j]);
+                      // a neighbour's hit is its own
+                      if (u < g.us[i] - du || u > g.us[i + 1] + du || v < g.vs[j] - dv || v > g.vs[j + 1] + dv)
+                        return false;
+                      if (w < wMin || w > wMax || !inBounds(g.surface, u, v)) return false;
+                      gp_Pnt at;
+                      gp_Vec su, sv;
+                      g.surface.D1(u, v, at, su, sv);
+                      const gp_Vec normal = su.Crossed(sv);
+                      // grazing, or near the boundary: the intersector's to decide
+                      if (std::abs(normal.Dot(gp_Vec(line.Direction()))) < 0.1 * normal.Magnitude())
+                        return undecided = true;
+                      const UvBoundary::Side side = g.boundary->side(u, v);
+                      if (side == UvBoundary::Side::Undecided) return undecided = true;
+                      if (side == UvBoundary::Side::Inside)
+                        found.push_back({w, f, vec(ElCLib::Value(w, line)), u, v, transition(g.surface, line, u, v)});
+                      return false;
+                    });
+  if (undecided) return SurfaceHits::kUndecided;
+  std::sort(found.begin(), found.end(), before);
+  for (std::size_t k = 0; k < found.size(); ++k)  // a hit on the side two cells share: once
+    if (k == 0 || found[k].w - found[k - 1].w > tolerance_) hits.push_back(found[k]);
+  return SurfaceHits::kDone;
 }
 
 const UvBoundary* RayCaster::boundary(PlaneFace& face) const {
@@ -156,6 +269,13 @@ void RayCaster::hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin
     ++closedForm_;
     return;
   }
+  if (!analytic_[f]) {
+    if (surfaceHits(f, line, wMin, wMax, hits) == SurfaceHits::kDone) {
+      ++gridAnswers_;
+      return;
+    }
+    ++intersectorOnOtherSurfaces_;
+  }
   IntCurvesFace_Intersector& on = *faces_[f];
   on.Perform(line, wMin, wMax);
   for (int i = 1; on.IsDone() && i <= on.NbPnt(); ++i) {
@@ -194,10 +314,11 @@ std::optional<bool> RayCaster::inside(const Vec3& p, double tolerance, double re
   for (const Vec3& d : kInsideRays) {
     const Vec3 dir = d.normalized();
     const std::vector<std::pair<double, int>> faces = candidates(p, dir, -tolerance, reach);
-    // On other surfaces OpenCASCADE's intersector searches a polyhedron, made to find the nearest hit, and may
-    // miss one (a B-spline face's seam): such a ray counts nothing.
-    if (std::any_of(faces.begin(), faces.end(), [&](const auto& f) { return !analytic_[f.second]; })) continue;
+    const long asked = intersectorOnOtherSurfaces_;
     const std::vector<RayHit> hits = hitsOnFaces(faces, p, dir, -tolerance, reach);
+    // On other surfaces OpenCASCADE's intersector searches a polyhedron, made to find the nearest hit, and may
+    // miss one (a B-spline face's seam): a ray that needed it counts nothing.
+    if (intersectorOnOtherSurfaces_ != asked) continue;
     if (!hits.empty() && std::abs(hits.front().w) <= tolerance) return false;  // on a face
     const std::optional<int> n = cleanCrossings(hits, tolerance);
     if (!n) continue;

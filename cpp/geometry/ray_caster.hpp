@@ -44,8 +44,9 @@ class RayCaster {
 
   // Whether p lies inside the solid, by the parity of the faces a ray from p crosses, where two rays agree (three
   // directions tried); nullopt if they disagree or fewer than two gave a clean count (a ray that passes a face's
-  // boundary, touches a face, has two hits within `tolerance` of each other, or passes near a face whose surface
-  // is not analytic, a plane, cylinder, cone, sphere or torus, is not counted). A point within
+  // boundary, touches a face, has two hits within `tolerance` of each other, or meets a face whose surface is not
+  // analytic, a plane, cylinder, cone, sphere or torus, where its SurfaceGrid leaves the hits undecided, is not
+  // counted). A point within
   // `tolerance` of a face along the ray is on the boundary: not inside.
   std::optional<bool> inside(const Vec3& p, double tolerance, double reach);
 
@@ -53,6 +54,8 @@ class RayCaster {
 
   // How many face queries a planar face answered in closed form (not asking its intersector) so far.
   long closedFormAnswers() const { return closedForm_; }
+  // How many face queries a non-analytic face answered from its SurfaceGrid (not asking its intersector) so far.
+  long gridAnswers() const { return gridAnswers_; }
 
  private:
   // The faces whose boxes the line meets in the range, by where it enters them, with that w.
@@ -83,10 +86,31 @@ class RayCaster {
   // The face's UvBoundary if its margin is far above the intersectors' tolerance, else null (no quick test).
   const UvBoundary* boundary(PlaneFace& face) const;
 
+  // A face whose surface is not analytic (a B-spline, a surface of revolution...) as a grid of cells over its
+  // parameter bounds, each boxed with its points and grown by how far the surface strays from its corners' bilinear
+  // patch (twice that, sampled at its middle and its sides' middles): a line meets the surface in a cell only where
+  // it passes the cell's box. OpenCASCADE's intersector walks a polyhedron of the surface and sorts its boxes at
+  // every query (Bnd_BoundSortBox::Compare): the periodic shell's rays were a quarter of its time.
+  struct SurfaceGrid {
+    BRepAdaptor_Surface surface;           // restricted to the face's parameter bounds, as the intersector's
+    std::vector<double> us, vs;            // the cells' corners' parameters
+    std::unique_ptr<BoxTree> cells;        // over the cells' boxes, cell (i, j) at i * (vs.size() - 1) + j
+    std::unique_ptr<UvBoundary> boundary;  // null if its margin is not far above the tolerance
+  };
+  enum class SurfaceHits { kDone, kUndecided };
+  SurfaceGrid& surfaceGrid(int f);
+  // The hits of the line on the non-analytic face f in [wMin, wMax] (kDone: appended to hits), each found by Newton's
+  // method on S(u, v) = from + w dir from the middle of a cell whose box the line passes; kUndecided (nothing
+  // appended) where a step does not settle, the line crosses the surface at a grazing angle, or a hit lies near the
+  // face's boundary: the intersector is to answer.
+  SurfaceHits surfaceHits(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits);
+
   std::vector<bool> analytic_;                      // per face: its surface is a plane, cylinder, cone, sphere or torus
   std::vector<std::unique_ptr<PlaneFace>> planes_;  // per face: null if it is not a plane
+  std::vector<std::unique_ptr<SurfaceGrid>> grids_;  // per non-analytic face, built at its first query
   double tolerance_, diagonal_;
-  long closedForm_ = 0;
+  long closedForm_ = 0, gridAnswers_ = 0;
+  long intersectorOnOtherSurfaces_ = 0;  // queries a non-analytic face left to its intersector
   BoxTree tree_;
 };
 

@@ -1,8 +1,9 @@
 // RayCaster (geometry/ray_caster.hpp): the hits of a line on a solid's faces, the nearest one, and inside or
 // outside by the parity of a ray's crossings, against OpenCASCADE's intersector and classifier that try every face,
-// on a plate with a grid of holes (many faces), its faces planes and B-splines (where the inside test leaves every
-// point to OpenCASCADE's classifier), scaled by 1, 1e-3 and 1e3; its closed-form hits on planar faces against each
-// face's own intersector on a plate with 77 holes, near its edges and vertices too.
+// on a plate with a grid of holes (many faces), its faces planes and B-splines (hits on those from their
+// SurfaceGrid, Newton's method from the cells a line passes, where that decides), scaled by 1, 1e-3 and 1e3; its
+// closed-form hits on planar faces against each face's own intersector on a plate with 77 holes, near its edges and
+// vertices too.
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
@@ -103,13 +104,11 @@ TEST(RayCaster, InsideAsOpenCascadesClassifier) {
             EXPECT_EQ(*in, exact.State() == TopAbs_IN) << p.transpose() / s;
             (*in ? inside : outside) += 1;
           }
-      if (bspline) {  // no ray is counted near a face that is not analytic: only rays that meet no face decide
-        EXPECT_EQ(inside, 0);
-        continue;
-      }
-      EXPECT_GT(inside, 150);
+      // on B-splines rays are counted where each face's SurfaceGrid decides its hits (not near its edges)
+      EXPECT_GT(inside, bspline ? 100 : 150);
       EXPECT_GT(outside, 150);
-      EXPECT_LT(unsure, 10);
+      EXPECT_LT(unsure, bspline ? 200 : 10) << inside << " inside, " << outside << " outside";
+      if (bspline) EXPECT_GT(rays.gridAnswers(), 1000);
     }
 }
 
