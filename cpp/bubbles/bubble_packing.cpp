@@ -4,6 +4,7 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepLProp_CLProps.hxx>
 #include <BRepLProp_SLProps.hxx>
+#include <BRepTools.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
@@ -175,14 +176,19 @@ std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, doub
 // One thread's OpenCASCADE tools on a face (neither is safe to share between threads: a B-spline
 // surface's adaptor caches its last span), and the face's quick test, shared.
 struct FaceTools {
-  FaceTools(const TopoDS_Face& face, const UvBoundary* quick) : surface(face), inside(face, 1e-9), quick(quick) {}
+  FaceTools(const TopoDS_Face& face, const UvBoundary* quick) : surface(face), inside(face, 1e-9), quick(quick) {
+    BRepTools::UVBounds(face, bounds[0], bounds[1], bounds[2], bounds[3]);
+  }
   BRepAdaptor_Surface surface;
   BRepTopAdaptor_FClass2d inside;
-  const UvBoundary* quick;  // on a plane (its parameters are not periodic, as FClass2d's may be), else null
+  const UvBoundary* quick;
+  double bounds[4] = {0, 0, 0, 0};  // the face's parameter bounds: u1, u2, v1, v2
   // Strictly inside the face: the quick test where it decides (beyond a margin of the edges, where FClass2d's answer,
-  // exact outside its polygons' sag, is the same), else FClass2d.
+  // exact outside its polygons' sag, is the same) within the face's parameter bounds (FClass2d moves a point beyond
+  // them by a period on a periodic surface), else FClass2d.
   bool within(double u, double v) {
-    const UvBoundary::Side side = quick ? quick->side(u, v) : UvBoundary::Side::Undecided;
+    const bool inBounds = u > bounds[0] && u < bounds[1] && v > bounds[2] && v < bounds[3];
+    const UvBoundary::Side side = inBounds ? quick->side(u, v) : UvBoundary::Side::Undecided;
     if (side != UvBoundary::Side::Undecided) return side == UvBoundary::Side::Inside;
     return inside.Perform(gp_Pnt2d(u, v)) == TopAbs_IN;
   }
@@ -253,8 +259,7 @@ void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<do
     const double d = faceDiameter[f];
     const std::vector<FaceSample> candidates = sampleFace(face, 0.2 * d);
     std::vector<FaceBubble> bubbles = seedFace(candidates, d, side, pack);
-    const std::unique_ptr<UvBoundary> quick =
-        BRepAdaptor_Surface(face).GetType() == GeomAbs_Plane ? faceUvBoundary(face, cad.diagonal) : nullptr;
+    const std::unique_ptr<UvBoundary> quick = faceUvBoundary(face, cad.diagonal);
     std::vector<std::unique_ptr<FaceTools>> tools;
     for (int t = 0; t < threadCount(); ++t) tools.push_back(std::make_unique<FaceTools>(face, quick.get()));
     for (int step = 0; step < o.relaxationSteps; ++step) relaxFace(d, pack, bubbles, tools);
