@@ -36,7 +36,9 @@ Eigen::Vector2d inverseBilinear(const std::array<Vec3, 4>& p, const Vec3& x) {
     J << (1 - v) * (p[1] - p[0]) + v * (p[2] - p[3]), (1 - u) * (p[3] - p[0]) + u * (p[2] - p[1]);
     const Eigen::Vector2d step = (J.transpose() * J).ldlt().solve(J.transpose() * (x - P));
     if (!step.allFinite()) break;
-    uv = (uv + step).cwiseMax(0.0).cwiseMin(1.0);
+    const Eigen::Vector2d next = (uv + step).cwiseMax(0.0).cwiseMin(1.0);
+    if (next == uv) break;  // held where it was by the clamp (p beyond the facet's side): every later step the same
+    uv = next;
     if (step.squaredNorm() < 1e-24) break;
   }
   return uv;
@@ -75,12 +77,17 @@ ChordalPoint ChordalLocator::project(int facet, const Vec3& p) const {
   return hit;
 }
 
-ChordalPoint ChordalLocator::locate(const Vec3& p) const {
-  const int f = facets_.nearest(p, [&](int id, double bestD2) {
-    // The facet's bounding box is farther than the nearest facet so far: it cannot be nearer.
-    if ((p - p.cwiseMax(lo_[id]).cwiseMin(hi_[id])).squaredNorm() > bestD2) return bestD2 * 2 + 1;
-    return (project(id, p).point - p).squaredNorm();
-  });
+ChordalPoint ChordalLocator::locate(const Vec3& p) const { return locate(p, -1); }
+
+ChordalPoint ChordalLocator::locate(const Vec3& p, int hint) const {
+  const int f = facets_.nearest(
+      p,
+      [&](int id, double bestD2) {
+        // The facet's bounding box is farther than the nearest facet so far: it cannot be nearer.
+        if ((p - p.cwiseMax(lo_[id]).cwiseMin(hi_[id])).squaredNorm() > bestD2) return bestD2 * 2 + 1;
+        return (project(id, p).point - p).squaredNorm();
+      },
+      hint >= 0 && hint < static_cast<int>(lo_.size()) ? hint : -1);
   return f < 0 ? ChordalPoint{} : project(f, p);
 }
 

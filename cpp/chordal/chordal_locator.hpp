@@ -32,6 +32,9 @@ class ChordalLocator {
  public:
   explicit ChordalLocator(const ChordalSurface& chordal);
   ChordalPoint locate(const Vec3& p) const;  // nearest point of the chordal surface
+  // The same point, found sooner where the facet `hint` (the answer for a point near p) is near p. [in] hint: a
+  // facet, or -1.
+  ChordalPoint locate(const Vec3& p, int hint) const;
   const ChordalSurface& surface() const { return chordal_; }
 
  private:

@@ -30,15 +30,17 @@ class BoxGrid {
   // nearest squared distance so far: an item that cannot be closer may return anything above it
   // (a bounding-box test instead of the exact distance). Returns the nearest id (-1 if the grid is
   // empty), the lowest id on a tie. An item spanning several cells may be offered more than once.
+  // start: an item to begin with (-1: none): the same answer, found sooner if it is near p.
   template <class Distance>
-  int nearest(const Vec3& p, Distance&& distance) const {
+  int nearest(const Vec3& p, Distance&& distance, int start = -1) const {
     if (!p.allFinite() || cells_.empty()) return -1;  // empty: lo_ > hi_, the rings would run to INT_MAX
     const Eigen::Vector3i c = cellOf(p);
     // Rings closer than the grid's box are empty, rings beyond it too: scan only those between.
     const int firstRing = std::max({0, (lo_ - c).maxCoeff(), (c - hi_).maxCoeff()});
     const int lastRing = std::max((hi_ - c).cwiseMax(c - lo_).maxCoeff(), firstRing);
-    int best = -1;
-    double bestD2 = std::numeric_limits<double>::infinity();
+    int best = start;
+    double bestD2 = start >= 0 ? distance(start, std::numeric_limits<double>::infinity())
+                               : std::numeric_limits<double>::infinity();
     for (int r = firstRing; r <= lastRing; ++r) {
       forRing(c, r, [&](const Eigen::Vector3i& cell) {
         const auto it = cells_.find(key(cell));

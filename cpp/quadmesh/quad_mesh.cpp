@@ -125,8 +125,10 @@ double smallestSize(const QuadMeshOptions& o) {
 }
 
 // The target size at a point of the chordal surface, interpolated from its facet's corners.
-double sizeAt(const ChordalLocator& chordal, const std::vector<double>& vertexSize, const Vec3& p) {
-  const ChordalPoint at = chordal.locate(p);
+// [in,out] facet: the facet of the point asked before (Gmsh asks along its mesh, point after nearby point), then p's.
+double sizeAt(const ChordalLocator& chordal, const std::vector<double>& vertexSize, const Vec3& p, int& facet) {
+  const ChordalPoint at = chordal.locate(p, facet);
+  facet = at.facet;
   const auto& f = chordal.surface().facets[at.facet];
   double h = 0;
   for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) h += at.weights[k] * vertexSize[f[k]];
@@ -140,7 +142,9 @@ void setQuadOptions(const QuadMeshOptions& o, const PatchSplit& split, const Cho
                           adaptive ? *std::max_element(o.vertexSize.begin(), o.vertexSize.end()) : o.size);
   if (adaptive)  // §6.1: geometry-adaptive quads
     gmsh::model::mesh::setSizeCallback(
-        [&](int, int, double x, double y, double z) { return sizeAt(chordal, o.vertexSize, Vec3(x, y, z)); });
+        [&, facet = -1](int, int, double x, double y, double z) mutable {
+          return sizeAt(chordal, o.vertexSize, Vec3(x, y, z), facet);
+        });
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -218,10 +222,11 @@ std::vector<SampledCurve> fourSides(int surface, std::map<int, SampledCurve>& cu
 // Number of segments a curve needs at the target size.
 double segmentsNeeded(const SampledCurve& c, const QuadMeshOptions& o, const ChordalLocator& chordal) {
   double segments = 0;
+  int facet = -1;
   for (size_t i = 0; i + 1 < c.points.size(); ++i) {
     const Vec3 mid = 0.5 * (c.points[i] + c.points[i + 1]);
-    segments +=
-        (c.points[i + 1] - c.points[i]).norm() / (o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, mid));
+    segments += (c.points[i + 1] - c.points[i]).norm() /
+                (o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, mid, facet));
   }
   return std::max(1.0, std::round(segments));
 }
@@ -509,7 +514,8 @@ SizeField blockGridSize(const ChordalLocator& chordal, const QuadMeshOptions& o)
   const ChordalLocator* surface = &chordal;
   const QuadMeshOptions* options = &o;
   return [surface, options](const Vec3& p) {
-    return options->vertexSize.empty() ? options->size : sizeAt(*surface, options->vertexSize, p);
+    int facet = -1;  // the field may be asked from several threads: no hint kept between points
+    return options->vertexSize.empty() ? options->size : sizeAt(*surface, options->vertexSize, p, facet);
   };
 }
 

@@ -306,11 +306,17 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, 
   const NodeQuads nq = quadsAroundNodes(q);
   const std::vector<std::array<int, 2>> rim = rimNeighbours(q);
   const std::vector<Vec3> rimStart = q.nodes;  // rim nodes slide along the rim as Gmsh placed it
+  std::vector<int> facet(q.nodes.size(), -1);  // the chordal facet a node was last put on: where to look first
+  auto locate = [&](int node, const Vec3& p) {
+    const ChordalPoint at = chordal.locate(p, facet[node]);
+    facet[node] = at.facet;
+    return at.point;
+  };
   gaussSeidel(q, nq, iterations, [&](int node) {
     if (rim[node][0] != -1) return false;
     const double before = worstAround(q, nq, node, q.nodes[node]);
     if (before >= kGoodQuad) return false;  // its quads are square already (a structured grid's)
-    const Vec3 target = chordal.locate(centroidTarget(q, nq, node)).point;
+    const Vec3 target = locate(node, centroidTarget(q, nq, node));
     if (!(worstAround(q, nq, node, target) >= std::min(before, 0.999)) || target == q.nodes[node]) return false;
     q.nodes[node] = target;
     return true;
@@ -321,7 +327,7 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, 
     if (rim[node][0] == -2 || (!slideRim && rim[node][0] != -1) || worstAround(q, nq, node, from) >= kGoodQuad)
       return false;
     if (rim[node][0] == -1) {
-      improveWorst(q, nq, node, tangentDirections(q, nq, node), [&](const Vec3& p) { return chordal.locate(p).point; });
+      improveWorst(q, nq, node, tangentDirections(q, nq, node), [&](const Vec3& p) { return locate(node, p); });
       return q.nodes[node] != from;
     }
     const Vec3 a = rimStart[rim[node][0]], b = rimStart[node], c = rimStart[rim[node][1]];

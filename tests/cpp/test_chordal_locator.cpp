@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "chordal/chordal_locator.hpp"
@@ -145,4 +146,39 @@ TEST(ChordalLocator, LocatesPointsOnTheNearestFacetOfAFoldedSurface) {
   for (int k = 0; k < 4; ++k) EXPECT_NEAR(beyond.weights[k], k == 0 || k == 3 ? 0.5 : 0, 1e-12) << "corner " << k;
   EXPECT_LT((normalAt(s, beyond) - up).norm(), 1e-12);
   EXPECT_NEAR(radiusAt(s, beyond), 2.5, 1e-12);
+}
+
+// With a hint (the facet of a point asked before) the located point is the same to the last bit, whether the
+// hint is the answer, a neighbour, a facet across the surface or not a facet: on a wavy 20 x 20 grid of quads and
+// triangles, for points above, below and beside it.
+TEST(ChordalLocator, AHintFindsTheSamePoint) {
+  ChordalSurface s;
+  const int n = 20;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) s.vertices.emplace_back(i, j, 0.8 * std::sin(0.5 * i) * std::cos(0.3 * j));
+  auto at = [&](int i, int j) { return i * (n + 1) + j; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      if ((i + j) % 3 == 0) {
+        s.facets.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), -1});
+        s.facets.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1), -1});
+      } else {
+        s.facets.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+  const ChordalLocator locator(s);
+  const int facets = static_cast<int>(s.facets.size());
+  int compared = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Vec3 p(-2 + 24 * std::fmod(0.618 * k, 1.0), -2 + 24 * std::fmod(0.382 * k + 0.1, 1.0), 2 * std::sin(k));
+    const ChordalPoint plain = locator.locate(p);
+    ASSERT_GE(plain.facet, 0);
+    for (int hint : {plain.facet, std::max(plain.facet - 1, 0), (plain.facet + facets / 2) % facets, -1, facets + 5}) {
+      const ChordalPoint hinted = locator.locate(p, hint);
+      EXPECT_EQ(hinted.facet, plain.facet) << p.transpose() << " hint " << hint;
+      EXPECT_EQ(hinted.point, plain.point) << p.transpose() << " hint " << hint;
+      EXPECT_EQ(hinted.weights, plain.weights);
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 2000);
 }
