@@ -39,8 +39,8 @@ class BoxGrid {
     const int firstRing = std::max({0, (lo_ - c).maxCoeff(), (c - hi_).maxCoeff()});
     const int lastRing = std::max((hi_ - c).cwiseMax(c - lo_).maxCoeff(), firstRing);
     int best = start;
-    double bestD2 = start >= 0 ? distance(start, std::numeric_limits<double>::infinity())
-                               : std::numeric_limits<double>::infinity();
+    double bestD2 =
+        start >= 0 ? distance(start, std::numeric_limits<double>::infinity()) : std::numeric_limits<double>::infinity();
     for (int r = firstRing; r <= lastRing; ++r) {
       forRing(c, r, [&](const Eigen::Vector3i& cell) {
         const auto it = cells_.find(key(cell));
