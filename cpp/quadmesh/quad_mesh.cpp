@@ -141,10 +141,9 @@ void setQuadOptions(const QuadMeshOptions& o, const PatchSplit& split, const Cho
   gmsh::option::setNumber("Mesh.MeshSizeMax",
                           adaptive ? *std::max_element(o.vertexSize.begin(), o.vertexSize.end()) : o.size);
   if (adaptive)  // §6.1: geometry-adaptive quads
-    gmsh::model::mesh::setSizeCallback(
-        [&, facet = -1](int, int, double x, double y, double z) mutable {
-          return sizeAt(chordal, o.vertexSize, Vec3(x, y, z), facet);
-        });
+    gmsh::model::mesh::setSizeCallback([&, facet = -1](int, int, double x, double y, double z) mutable {
+      return sizeAt(chordal, o.vertexSize, Vec3(x, y, z), facet);
+    });
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
