@@ -58,6 +58,7 @@ struct ChordalRecord {
   RimSnapStats rim;                      // its rim placed between the walls' rim edges
   int fairingIterations = 0;             // QuadStage::fairingIterations
   std::size_t knifeFacetsDropped = 0;    // QuadStage::knifeFacets
+  std::size_t sliverEdges = 0;           // QuadStage::sliverEdges
 };
 
 // The quad mesh's counts and layout ("quad_mesh"): QuadMesh without its nodes and quads.

@@ -749,6 +749,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   if (qo.adaptive) r.memory = requireMemoryOfQuads(o, quads.quads.size());
   r.chordal.fairingIterations = stage.fairingIterations;
   r.chordal.knifeFacetsDropped = stage.knifeFacets;
+  r.chordal.sliverEdges = stage.sliverEdges;
   r.quadMesh = countQuadMesh(quads);
   r.quadMesh.budgetSeconds = stage.budgetSeconds;
   const ChordalLocator locator(stage.chordal);

@@ -35,7 +35,8 @@ nlohmann::json chordal(const ChordalRecord& c) {
           {"island_facets_dropped", c.islandFacetsDropped},
           {"rim", chordalRim(c.rim)},
           {"fairing_iterations", c.fairingIterations},
-          {"knife_edge_facets_dropped", c.knifeFacetsDropped}};
+          {"knife_edge_facets_dropped", c.knifeFacetsDropped},
+          {"sliver_edges", c.sliverEdges}};
 }
 
 nlohmann::json smallFeatures(const SmallFeatures& s) {

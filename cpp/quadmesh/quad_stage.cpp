@@ -107,14 +107,28 @@ const char* layoutName(QuadLayout layout) {
 
 double quadStageBudget(double quads) { return 300 + quads / 100; }
 
+std::size_t sliverEdges(const ChordalSurface& s) {
+  std::vector<double> lengths;
+  for (const auto& [edge, count] : facetEdgeUses(s))
+    lengths.push_back((s.vertices[edge.first] - s.vertices[edge.second]).norm());
+  if (lengths.empty()) return 0;
+  std::vector<double> sorted = lengths;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double shortest = kSliverEdge * sorted[sorted.size() / 2];
+  return static_cast<std::size_t>(
+      std::count_if(lengths.begin(), lengths.end(), [&](double length) { return length < shortest; }));
+}
+
 QuadStage meshFairedChordalSurface(const ChordalSurface& cut, const TetMesh& tets, const QuadStageOptions& o) {
   const double quads = chordalArea(cut) / (o.size * o.size);
   QuadStage stage;
   stage.budgetSeconds = o.stageBudget > 0 ? o.stageBudget : quadStageBudget(quads);
   const QuadMeshOptions qo = triesWithin(o, stage.budgetSeconds);
+  stage.sliverEdges = sliverEdges(cut);
   std::string failure;
   for (std::size_t level = 0; level < std::size(kFairingIterations); ++level) {
     const int fairing = kFairingIterations[level];
+    if (fairing > 0 && stage.sliverEdges > 0) continue;  // not faired round slivers
     QuadMesh q = meshFairedLevel(cut, tets, o, qo, fairing, level, stage);
     stage.tries += q.tries;
     if (!q.quads.empty()) {

@@ -35,12 +35,25 @@ struct QuadStage {
   QuadMesh quads;
   int fairingIterations = 0;    // Taubin steps the quads were made on
   std::size_t knifeFacets = 0;  // facets dropped where the wall runs out to a knife edge
-  QuadTries tries;              // the Gmsh tries of every fairing level tried (also in quads.tries)
-  double budgetSeconds = 0;     // the stage's time budget used
+  // Facet edges shorter than kSliverEdge x the median edge of the surface as cut: where there are any, the faired
+  // levels are not tried (fairing folds the facets round them).
+  std::size_t sliverEdges = 0;
+  QuadTries tries;           // the Gmsh tries of every fairing level tried (also in quads.tries)
+  double budgetSeconds = 0;  // the stage's time budget used
 };
 
 // The fairing levels tried, strongest first.
 constexpr int kFairingIterations[] = {10, 3, 0};
+
+// A facet edge shorter than this share of the median edge is a sliver's: bubbles in pairs on a CAD face a few microns
+// wide (the real U-channel's zero-radius bends) cut tet edges whose midpoints nearly coincide. The normals of such
+// vertices are noise, and fairing moves them apart along those, folding the facets between them: every Gmsh try on
+// the faired levels of the U-channel (573 such edges) and of the power-holder box (3) failed to make its patches
+// ("Wrong topology of boundary mesh for parametrization"), 2 s each. No other part of 66 has one.
+constexpr double kSliverEdge = 0.01;
+
+// [in] s: a chordal surface. Returns its facet edges shorter than kSliverEdge x its median edge.
+std::size_t sliverEdges(const ChordalSurface& s);
 
 // The default time budget of the quad stage: 300 s plus a second per 100 quads the surface will get: a net for
 // a part whose Gmsh tries would run on for many minutes, generous enough that a loaded machine does not change

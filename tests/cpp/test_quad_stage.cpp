@@ -64,3 +64,31 @@ TEST(QuadStage, ReportsItsTriesAsProgress) {
   EXPECT_NEAR(stage.budgetSeconds, quadStageBudget(300), 1) << "the chordal surface's area is about 40 x 30";
   EXPECT_DOUBLE_EQ(quadStageBudget(4000), 340);
 }
+
+// Sliver edges (shorter than 1 % of the median facet edge) on a 10 x 10 grid of unit quads, at x1, 1e-3 and 1e3:
+// none on the grid; a vertex pair 0.002 apart (a CAD face a few microns wide, bubbles in pairs on both its edges)
+// joined by a thin triangle is one; 0.02 apart (2 % of the edge) is none.
+TEST(QuadStage, SliverEdgesAreThoseUnderOnePercentOfTheMedianEdge) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    auto grid = [&](double gap) {
+      ChordalSurface c;
+      const int n = 10;
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) c.vertices.push_back(Vec3(i, j, 0) * s);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          const int a = i * (n + 1) + j;
+          c.facets.push_back({a, a + n + 1, a + n + 2, a + 1});
+        }
+      if (gap > 0) {  // a vertex beside the grid's corner (10, 10), and a thin triangle to it
+        c.vertices.push_back(Vec3(n + gap, n, 0) * s);
+        c.facets.push_back({n * (n + 1) + n, static_cast<int>(c.vertices.size()) - 1, n * (n + 1) + n - 1, -1});
+      }
+      return c;
+    };
+    EXPECT_EQ(sliverEdges(grid(0)), 0u);
+    EXPECT_EQ(sliverEdges(grid(0.002)), 1u);
+    EXPECT_EQ(sliverEdges(grid(0.02)), 0u);
+  }
+}

@@ -139,9 +139,12 @@ class RealParts(unittest.TestCase):
         # 6 of the 12 tries are not run (same_patches_not_run, 15 in all), the same quads in 38 s instead of 55 s.
         # Since 2026-12-03 (session 35) a faired level stops after two angles have failed to make their patches
         # (given_up_on_faired_surfaces: 20, same_patches_not_run: 3): the same quads, 21 -> 18 s on a quiet machine.
+        # Since session 36 a chordal surface with sliver facets (edges under 1 % of the median: its zero-radius bends
+        # put bubbles in pairs; 573 here) is not faired, since fairing folds the facets round them: no try on the
+        # faired levels, the same quads from the unfaired surface's two tries, 10 -> 5 s.
         # (name, thickness, tunnels the mesh closes, extra options, SJ min and avg floors, tries not run at least)
         cases = (("ender3_lcd_support_Lbracket.step", 2.0, 0, ("--drop-junctions",), 0.5, 0.95, 0),
-                 ("ender3_support_frame_Uchannel.step", 1.5, 2, ("--quad-budget", "600"), 0.13, 0.86, 20))
+                 ("ender3_support_frame_Uchannel.step", 1.5, 2, ("--quad-budget", "600"), 0.13, 0.86, 0))
         for name, thickness, tunnels_closed, extra, worst, mean, not_run in cases:
             with self.subTest(part=name):
                 r, (sj, volume, euler) = self.mesh(name, 2, *extra)
@@ -163,8 +166,12 @@ class RealParts(unittest.TestCase):
                 self.assertEqual(r["quad_mesh"]["unpaired_triangles"], 0)
                 tries = r["quad_mesh"]["gmsh_tries"]
                 self.assertGreaterEqual(tries["same_patches_not_run"] + tries["given_up_on_faired_surfaces"], not_run)
-                if name.startswith("ender3_support_frame_Uchannel"):  # measured: 6 run (was 21)
-                    self.assertLessEqual(tries["run"], 8, "a good try ends the tries: the quads may close a pinhole")
+                if name.startswith("ender3_support_frame_Uchannel"):  # measured: 2 run (was 21, then 6)
+                    self.assertLessEqual(tries["run"], 4, "a good try ends the tries: the quads may close a pinhole")
+                    self.assertGreater(r["chordal_surface"]["sliver_edges"], 100, "the zero-radius bends' slivers")
+                    self.assertEqual(r["chordal_surface"]["fairing_iterations"], 0, "not faired round slivers")
+                else:
+                    self.assertEqual(r["chordal_surface"]["sliver_edges"], 0)
                 self.assertTrue(r["validation"]["passed"], r["validation"])
 
     def test_power_holder_box_is_one_bent_sheet(self):
