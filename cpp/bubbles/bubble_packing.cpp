@@ -23,6 +23,7 @@
 #include "core/error.hpp"
 #include "core/point_grid.hpp"
 #include "core/threads.hpp"
+#include "geometry/cad_solid.hpp"
 #include "geometry/face_sampling.hpp"
 #include "geometry/uv_boundary.hpp"
 
@@ -36,8 +37,6 @@ double bubbleForce(double w) {
 namespace {
 
 constexpr double kSmallestFaceThickness = 0.1;  // a face's thickness for its bubbles, at least, of the part's
-
-Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // Largest principal curvature of the face over a few samples.
 double maxFaceCurvature(const TopoDS_Shape& face, const std::vector<FaceSample>& samples) {

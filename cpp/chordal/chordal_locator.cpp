@@ -55,8 +55,7 @@ ChordalLocator::ChordalLocator(const ChordalSurface& chordal)
     extent[f] = (hi_[f] - lo_[f]).maxCoeff();
   }
   // Cells as large as a typical facet: a few facets per cell, a long sliver in a few more cells.
-  std::nth_element(extent.begin(), extent.begin() + extent.size() / 2, extent.end());
-  facets_ = BoxGrid(extent.empty() ? 1.0 : std::max(extent[extent.size() / 2], 1e-12));
+  facets_ = BoxGrid(extent.empty() ? 1.0 : std::max(median(extent), 1e-12));
   for (size_t f = 0; f < chordal.facets.size(); ++f) facets_.insert(static_cast<int>(f), lo_[f], hi_[f]);
 }
 

@@ -27,6 +27,13 @@ inline double nearestOnSegment(const Vec3& a, const Vec3& b, const Vec3& p) {
   return len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
 }
 
+// The median of the values (the upper one of an even count); 0 for none. [in] values: a copy, reordered.
+inline double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 // Which side of the thin wall a surface point belongs to (paper §3: ω_t, ω_b, ω_l).
 enum class Side : signed char { Bottom = -1, Lateral = 0, Top = 1 };
 

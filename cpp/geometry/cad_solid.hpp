@@ -3,6 +3,7 @@
 #include <Bnd_Box.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Solid.hxx>
+#include <gp_Pnt.hxx>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,9 @@ double normalizingUnit(const TopoDS_Solid& solid);
 // Euler characteristic of the solid's boundary, V - E + F - (W - F) (Euler-Poincaré with W wires):
 // 2 - 2 x (number of holes) for one shell; a mesh of the solid must have the same.
 long eulerCharacteristic(const CadSolid& cad);
+
+// An OpenCASCADE point as a Vec3.
+inline Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // Unit outward normal of face `f` at parameter (u, v), respecting the face orientation.
 Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v);

@@ -86,17 +86,15 @@ std::vector<double> spaced(double first, double last, int cells) {
   return t;
 }
 
-Vec3 vec(const gp_Pnt& p) { return Vec3(p.X(), p.Y(), p.Z()); }
-
 // Newton's method on S(u, v) - (o + w d) = 0 from the given (u, v, w); false if it does not settle (|F| below
 // `close`) within 30 steps or its Jacobian [S_u S_v -d] is singular. [in,out] u, v, w.
 bool settle(const BRepAdaptor_Surface& s, const gp_Lin& line, double close, double& u, double& v, double& w) {
-  const Vec3 o = vec(line.Location()), d(line.Direction().X(), line.Direction().Y(), line.Direction().Z());
+  const Vec3 o = toVec(line.Location()), d(line.Direction().X(), line.Direction().Y(), line.Direction().Z());
   for (int step = 0, settled = 0; step < 30; ++step) {
     gp_Pnt p;
     gp_Vec su, sv;
     s.D1(u, v, p, su, sv);
-    const Vec3 f = vec(p) - (o + w * d);
+    const Vec3 f = toVec(p) - (o + w * d);
     if (f.norm() <= close && ++settled == 2) return true;  // one more step once settled: to the rounding
     Eigen::Matrix3d j;
     j << su.X(), sv.X(), -d.x(), su.Y(), sv.Y(), -d.y(), su.Z(), sv.Z(), -d.z();
@@ -138,7 +136,7 @@ RayCaster::SurfaceGrid& RayCaster::surfaceGrid(int f) {
   const int nu = static_cast<int>(g.us.size()), nv = static_cast<int>(g.vs.size());
   std::vector<Vec3> corner(nu * nv);
   for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) corner[i * nv + j] = vec(s.Value(g.us[i], g.vs[j]));
+    for (int j = 0; j < nv; ++j) corner[i * nv + j] = toVec(s.Value(g.us[i], g.vs[j]));
   std::vector<Box> boxes;
   for (int i = 0; i + 1 < nu; ++i)
     for (int j = 0; j + 1 < nv; ++j) {
@@ -148,7 +146,7 @@ RayCaster::SurfaceGrid& RayCaster::surfaceGrid(int f) {
       for (const Vec3* p : {&a, &b, &c, &d}) box.add(*p);
       double strays = 0;  // from the bilinear patch of the corners
       for (const auto& [x, y] : {std::pair(0.5, 0.5), {0.5, 0.0}, {0.5, 1.0}, {0.0, 0.5}, {1.0, 0.5}}) {
-        const Vec3 p = vec(s.Value(g.us[i] + x * (g.us[i + 1] - g.us[i]), g.vs[j] + y * (g.vs[j + 1] - g.vs[j])));
+        const Vec3 p = toVec(s.Value(g.us[i] + x * (g.us[i + 1] - g.us[i]), g.vs[j] + y * (g.vs[j + 1] - g.vs[j])));
         const Vec3 bilinear = (1 - x) * (1 - y) * a + x * (1 - y) * b + (1 - x) * y * c + x * y * d;
         strays = std::max(strays, (p - bilinear).norm());
         box.add(p);
@@ -169,7 +167,7 @@ RayCaster::SurfaceHits RayCaster::surfaceHits(int f, const gp_Lin& line, double 
                                               std::vector<RayHit>& hits) {
   SurfaceGrid& g = surfaceGrid(f);
   if (!g.boundary) return SurfaceHits::kUndecided;
-  const Vec3 from = vec(line.Location()), dir(line.Direction().X(), line.Direction().Y(), line.Direction().Z());
+  const Vec3 from = toVec(line.Location()), dir(line.Direction().X(), line.Direction().Y(), line.Direction().Z());
   const int nv = static_cast<int>(g.vs.size()) - 1;
   std::vector<RayHit> found;
   bool undecided = false;
@@ -194,7 +192,7 @@ RayCaster::SurfaceHits RayCaster::surfaceHits(int f, const gp_Lin& line, double 
                       const UvBoundary::Side side = g.boundary->side(u, v);
                       if (side == UvBoundary::Side::Undecided) return undecided = true;
                       if (side == UvBoundary::Side::Inside)
-                        found.push_back({w, f, vec(ElCLib::Value(w, line)), u, v, transition(g.surface, line, u, v)});
+                        found.push_back({w, f, toVec(ElCLib::Value(w, line)), u, v, transition(g.surface, line, u, v)});
                       return false;
                     });
   if (undecided) return SurfaceHits::kUndecided;

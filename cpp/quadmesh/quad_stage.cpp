@@ -22,13 +22,6 @@ constexpr double kKnifeRadius = 0.3;
 // sharply bent sheet every angle fails there (the U-channel's 12 tries on its two faired levels, 13 s).
 constexpr std::size_t kPatchFailuresToGiveUp = 2;
 
-double medianRadius(const ChordalSurface& chordal) {
-  std::vector<double> r = chordal.radius;
-  if (r.empty()) return 0;
-  std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
-  return r[r.size() / 2];
-}
-
 // The quad mesh options every fairing level starts from: the size and the budgets (a try's, and the stage's
 // deadline, stageBudget seconds from now).
 QuadMeshOptions triesWithin(const QuadStageOptions& o, double stageBudget) {
@@ -49,7 +42,7 @@ QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const Q
   stage.chordal = cut;
   fairChordalSurface(stage.chordal, fairing);
   computeNormalsAndRadius(stage.chordal, tets);
-  stage.knifeFacets = o.knifeEdges ? trimKnifeEdges(stage.chordal, kKnifeRadius * medianRadius(stage.chordal)) : 0;
+  stage.knifeFacets = o.knifeEdges ? trimKnifeEdges(stage.chordal, kKnifeRadius * median(stage.chordal.radius)) : 0;
   const ChordalLocator locator(stage.chordal);
   QuadMeshOptions qo = base;
   if (fairing > 0) {
@@ -111,10 +104,7 @@ std::size_t sliverEdges(const ChordalSurface& s) {
   std::vector<double> lengths;
   for (const auto& [edge, count] : facetEdgeUses(s))
     lengths.push_back((s.vertices[edge.first] - s.vertices[edge.second]).norm());
-  if (lengths.empty()) return 0;
-  std::vector<double> sorted = lengths;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double shortest = kSliverEdge * sorted[sorted.size() / 2];
+  const double shortest = kSliverEdge * median(lengths);
   return static_cast<std::size_t>(
       std::count_if(lengths.begin(), lengths.end(), [&](double length) { return length < shortest; }));
 }

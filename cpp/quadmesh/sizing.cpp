@@ -13,12 +13,6 @@ std::vector<std::pair<int, int>> facetEdges(const ChordalSurface& s) {
   return out;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
 // h_i = min(h_i, h_j + g |x_i - x_j|) over the edges until nothing changes (a discrete Lipschitz bound).
 void limitGradation(const ChordalSurface& s, const std::vector<std::pair<int, int>>& edges, double g,
                     std::vector<double>& h) {
