@@ -570,6 +570,8 @@ double farthestQuadCentre(const QuadMesh& q, const ChordalLocator& chordal) {
 // Block grid tries finished side by side (a single try keeps its own parallel loops: an inactive region does not
 // nest them), then ranked in order; one with an inverted quad (its layout does not fit the surface), another
 // topology or a quad across a crease (kChordAcross) is refused, the shared grid also with a quad below kSharedWorst.
+// Another topology is refused before the try is finished (finishing keeps it: removing a doublet takes a node, two
+// edges and a quad), and the smoothing it would have cost is saved.
 // [in,out] blocks: the tries; [in,out] ranked. Returns whether the holed grid was refused.
 bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal, const QuadMeshOptions& o,
                     long chordalEuler, Ranked& ranked) {
@@ -577,6 +579,7 @@ bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal
   std::vector<char> across(blocks.size(), 0);  // a quad cuts across a crease
 #pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
   for (long i = 0; i < static_cast<long>(blocks.size()); ++i) {
+    if (eulerCharacteristic(blocks[i], quadEdgeUses(blocks[i])) != chordalEuler) continue;  // refused unfinished
     blocks[i].nodes = onChordalSurface(blocks[i], chordal).onSurface;
     scores[i] = finishTry(blocks[i], chordal, o, chordalEuler);
     across[i] = farthestQuadCentre(blocks[i], chordal) > kChordAcross * o.size;
