@@ -9,6 +9,7 @@
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_TVertex.hxx>
 #include <BRep_Tool.hxx>
 #include <BinTools.hxx>
 #include <GProp_GProps.hxx>
@@ -20,6 +21,7 @@
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapOfShapeShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 #include <XSControl_Reader.hxx>
@@ -263,6 +265,32 @@ Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {
   const double len = n.Magnitude();
   if (!(len > 0)) return Vec3::Zero();
   return Vec3(n.X(), n.Y(), n.Z()) / len;
+}
+
+std::vector<gp_Pnt2d> vertexParameters(const TopoDS_Face& face) {
+  TopTools_DataMapOfShapeShape firstEdge;  // vertex -> the first edge through it
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(TopoDS::Edge(e.Current()), first, last);
+    for (const TopoDS_Vertex& v : {first, last})
+      if (!v.IsNull() && !firstEdge.IsBound(v)) firstEdge.Bind(v, e.Current());
+  }
+  std::vector<gp_Pnt2d> uvs;
+  for (TopExp_Explorer v(face, TopAbs_VERTEX); v.More(); v.Next()) {
+    const TopoDS_Vertex& vertex = TopoDS::Vertex(v.Current());
+    const TopoDS_Shape* edge = firstEdge.Seek(vertex);
+    if (!edge || !static_cast<const BRep_TVertex*>(vertex.TShape().get())->Points().IsEmpty()) {
+      uvs.push_back(BRep_Tool::Parameters(vertex, face));
+      continue;
+    }
+    const TopoDS_Edge& e = TopoDS::Edge(*edge);
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(e, first, last);
+    gp_Pnt2d atFirst, atLast;
+    BRep_Tool::UVPoints(e, face, atFirst, atLast);
+    uvs.push_back(vertex.IsSame(first) ? atFirst : atLast);
+  }
+  return uvs;
 }
 
 long eulerCharacteristic(const CadSolid& cad) {

@@ -2,8 +2,10 @@
 #pragma once
 #include <Bnd_Box.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Pnt2d.hxx>
 #include <string>
 #include <vector>
 
@@ -51,6 +53,12 @@ double normalizingUnit(const TopoDS_Solid& solid);
 // Euler characteristic of the solid's boundary, V - E + F - (W - F) (Euler-Poincaré with W wires):
 // 2 - 2 x (number of holes) for one shell; a mesh of the solid must have the same.
 long eulerCharacteristic(const CadSolid& cad);
+
+// Each vertex of the face (in TopExp_Explorer's order, a vertex once per edge end) at its parameters on the face, as
+// BRep_Tool::Parameters gives them (a point-on-surface record, else the end of the face's first edge through the
+// vertex), found in one walk over the face's edges: Parameters walks them again for every vertex, which on a face
+// with a thousand vertices (a keyboard plate's top) is a million steps. [in] face. Returns the (u, v) of each.
+std::vector<gp_Pnt2d> vertexParameters(const TopoDS_Face& face);
 
 // An OpenCASCADE point as a Vec3.
 inline Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }

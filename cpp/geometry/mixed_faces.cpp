@@ -219,12 +219,10 @@ std::vector<char> flushSamples(const CadSolid& cad, const FaceSide& fs, int f, d
 }
 
 // The face's parameter lines through its vertices: where a flush rim leaves the wall, the face's outline turns.
-std::vector<double> vertexParameters(const TopoDS_Face& face, bool u) {
+// [in] uvs: its vertices' parameters (vertexParameters); [in] u: the u lines, else the v lines.
+std::vector<double> parameterLines(const std::vector<gp_Pnt2d>& uvs, bool u) {
   std::vector<double> out;
-  for (TopExp_Explorer v(face, TopAbs_VERTEX); v.More(); v.Next()) {
-    const gp_Pnt2d uv = BRep_Tool::Parameters(TopoDS::Vertex(v.Current()), face);
-    out.push_back(u ? uv.X() : uv.Y());
-  }
+  for (const gp_Pnt2d& uv : uvs) out.push_back(u ? uv.X() : uv.Y());
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
@@ -238,8 +236,9 @@ std::optional<FaceSplit> flushRimSplit(const CadSolid& cad, const FaceSide& fs, 
   const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
   std::vector<char> flush;  // measured when a band might hold a rim
   std::optional<Candidate> best;
+  const std::vector<gp_Pnt2d> uvs = vertexParameters(face);
   for (const bool alongV : {true, false}) {
-    const std::vector<double> lines = vertexParameters(face, alongV);
+    const std::vector<double> lines = parameterLines(uvs, alongV);
     if (lines.size() < 3) continue;
     const double span = lines.back() - lines.front();
     for (std::size_t i = 1; i + 1 < lines.size(); ++i)

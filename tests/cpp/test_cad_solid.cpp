@@ -1,13 +1,17 @@
 // The CAD solid as the pipeline reads it (geometry/cad_solid.hpp): its volume, the mesh's reference, exact also
-// on B-spline faces (OpenCASCADE's default rule is 1 % off there), run at scales 1, 1e-3 and 1e3; and a file that
-// holds only a closed shell, read as the solid it bounds.
+// on B-spline faces (OpenCASCADE's default rule is 1 % off there), run at scales 1, 1e-3 and 1e3; a file that
+// holds only a closed shell, read as the solid it bounds; and the vertices' parameters on a face, BRep_Tool's to the
+// last bit on a plate with many holes (analytic and B-spline faces, x1, 1e-3, 1e3).
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -30,7 +34,45 @@ TopoDS_Solid hemisphereShell(double s) {
   return TopoDS::Solid(solid.Current());
 }
 
+// A 60 x 40 x 2 plate with a 6 x 4 grid of holes of radius 2, scaled by s.
+TopoDS_Shape plateWithHoles(double s) {
+  TopoDS_Shape plate = BRepPrimAPI_MakeBox(60, 40, 2).Shape();
+  for (int i = 0; i < 6; ++i)
+    for (int k = 0; k < 4; ++k)
+      plate = BRepAlgoAPI_Cut(
+                  plate, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(5 + 10 * i, 5 + 10 * k, -1), gp::DZ()), 2, 4).Shape())
+                  .Shape();
+  gp_Trsf scale;
+  scale.SetScale(gp::Origin(), s);
+  return BRepBuilderAPI_Transform(plate, scale, true).Shape();
+}
+
 }  // namespace
+
+// vertexParameters walks a face's edges once; BRep_Tool::Parameters walks them for every vertex: the same answers.
+TEST(CadSolid, VertexParametersAreBRepToolsOnEveryFace) {
+  for (double s : {1.0, 1e-3, 1e3})
+    for (bool bspline : {false, true}) {
+      SCOPED_TRACE("x " + std::to_string(s) + (bspline ? " B-spline" : ""));
+      const TopoDS_Shape plate = plateWithHoles(s);
+      const TopoDS_Shape part = bspline ? BRepBuilderAPI_NurbsConvert(plate, true).Shape() : plate;
+      std::size_t vertices = 0;
+      for (TopExp_Explorer f(part, TopAbs_FACE); f.More(); f.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(f.Current());
+        const std::vector<gp_Pnt2d> uvs = vertexParameters(face);
+        std::size_t i = 0;
+        for (TopExp_Explorer v(face, TopAbs_VERTEX); v.More(); v.Next(), ++i) {
+          ASSERT_LT(i, uvs.size());
+          const gp_Pnt2d expected = BRep_Tool::Parameters(TopoDS::Vertex(v.Current()), face);
+          EXPECT_EQ(uvs[i].X(), expected.X());
+          EXPECT_EQ(uvs[i].Y(), expected.Y());
+        }
+        EXPECT_EQ(i, uvs.size());
+        vertices += i;
+      }
+      EXPECT_GT(vertices, 24u * 2 * 2 * 2);  // each hole's two circles, each with a vertex on the top or bottom face
+    }
+}
 
 TEST(CadSolid, VolumeIsExactOnAnalyticAndBSplineFaces) {
   for (double s : {1.0, 1e-3, 1e3})
