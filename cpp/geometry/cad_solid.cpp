@@ -41,10 +41,11 @@ namespace hexlayer {
 
 namespace {
 
-// normalizingUnit: parts whose diagonal is outside [kSmallestDiagonal, kLargestDiagonal] (in metres or
-// microns, if drawn in millimetres) are scaled to kPipelineDiagonal. Parts within are left as they are:
+// normalizingUnit: parts whose diagonal is outside [kSmallestDiagonal, kLargestDiagonal) (in metres or microns, if
+// drawn in millimetres) are scaled by the power of kUnitStep (a unit's step: mm, m, km) that brings them inside, so
+// that a part in metres is met at the size of the same part in millimetres. Parts within are left as they are:
 // Gmsh took 3x longer on the scaled copy of a B-spline part (the AnalysisSitus ski part) whatever the size.
-constexpr double kPipelineDiagonal = 100, kSmallestDiagonal = 10, kLargestDiagonal = 10000;
+constexpr double kSmallestDiagonal = 10, kLargestDiagonal = 10000, kUnitStep = 1000;
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -206,7 +207,10 @@ double normalizingUnit(const TopoDS_Solid& solid) {
   BRepBndLib::Add(solid, box, false);
   const double diagonal = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
   if (!(diagonal > 0) || !std::isfinite(diagonal)) return 1;
-  return diagonal < kSmallestDiagonal || diagonal > kLargestDiagonal ? kPipelineDiagonal / diagonal : 1;
+  double unit = 1;
+  while (diagonal * unit < kSmallestDiagonal) unit *= kUnitStep;
+  while (diagonal * unit >= kLargestDiagonal) unit /= kUnitStep;
+  return unit;
 }
 
 CadSolid prepareSolid(const TopoDS_Solid& input, double unit) {

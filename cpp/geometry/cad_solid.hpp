@@ -45,9 +45,10 @@ TopoDS_Shape readShapeInProcess(const std::string& path);
 // what is wrong.
 CadSolid prepareSolid(const TopoDS_Solid& solid, double unit = 1);
 
-// The scale that brings a solid whose bounding-box diagonal is below 10 or above 10 000 to a diagonal of
-// 100, else 1. OpenCASCADE's, TetGen's and Gmsh's tolerances are partly absolute: a part drawn in metres
-// (or in microns) is met at a millimetre size, and gives the mesh of the same part in millimetres, scaled.
+// The scale that brings a solid whose bounding-box diagonal is below 10 or at least 10 000 inside [10, 10 000): a
+// power of 1000 (a part in metres is scaled by 1000, one in microns by 1e-3), else 1. OpenCASCADE's, TetGen's and
+// Gmsh's tolerances are partly absolute: a part drawn in metres (or in microns) is met at the size of the same part
+// drawn in millimetres, and gives its mesh, scaled.
 double normalizingUnit(const TopoDS_Solid& solid);
 
 // Euler characteristic of the solid's boundary, V - E + F - (W - F) (Euler-Poincaré with W wires):

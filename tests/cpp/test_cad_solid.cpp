@@ -74,6 +74,32 @@ TEST(CadSolid, VertexParametersAreBRepToolsOnEveryFace) {
     }
 }
 
+// A part drawn in metres is met at the size of the same part in millimetres (x 1000), one in microns at 1e-3:
+// a power of 1000 brings the diagonal into [10, 10 000), and a part inside is left as it is.
+TEST(CadSolid, NormalizingUnitIsThePowerOfAThousandIntoRange) {
+  auto unitOf = [](double diagonal) {  // a cube with that diagonal
+    const double side = diagonal / std::sqrt(3.0);
+    return normalizingUnit(TopoDS::Solid(BRepPrimAPI_MakeBox(side, side, side).Shape()));
+  };
+  for (const auto& [diagonal, unit] : std::vector<std::pair<double, double>>{{0.011, 1e3},
+                                                                             {0.11, 1e3},
+                                                                             {9.5, 1e3},
+                                                                             {10.5, 1},
+                                                                             {100, 1},
+                                                                             {9000, 1},
+                                                                             {0.5, 1e3},
+                                                                             {5e-4, 1e6},
+                                                                             {2e4, 1e-3},
+                                                                             {5e6, 1e-3},
+                                                                             {2e7, 1e-6},
+                                                                             {9.0, 1e3}}) {
+    SCOPED_TRACE("diagonal " + std::to_string(diagonal));
+    EXPECT_EQ(unitOf(diagonal), unit);
+    EXPECT_GE(diagonal * unit * (1 + 1e-6), 10.0);
+    EXPECT_LT(diagonal * unit, 10000.0 * (1 + 1e-6));
+  }
+}
+
 TEST(CadSolid, VolumeIsExactOnAnalyticAndBSplineFaces) {
   for (double s : {1.0, 1e-3, 1e3})
     for (bool bspline : {false, true}) {
