@@ -16,12 +16,13 @@
 #include <Geom_Plane.hxx>
 #include <Geom_Surface.hxx>
 #include <IGESControl_Reader.hxx>
+#include <NCollection_DataMap.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Solid.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
-#include <TopTools_DataMapOfShapeShape.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 #include <XSControl_Reader.hxx>
@@ -272,27 +273,23 @@ Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {
 }
 
 std::vector<gp_Pnt2d> vertexParameters(const TopoDS_Face& face) {
-  TopTools_DataMapOfShapeShape firstEdge;  // vertex -> the first edge through it
+  NCollection_DataMap<TopoDS_Shape, gp_Pnt2d, TopTools_ShapeMapHasher> at;  // each vertex, from its first edge
   for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
     TopoDS_Vertex first, last;
-    TopExp::Vertices(TopoDS::Edge(e.Current()), first, last);
-    for (const TopoDS_Vertex& v : {first, last})
-      if (!v.IsNull() && !firstEdge.IsBound(v)) firstEdge.Bind(v, e.Current());
+    TopExp::Vertices(edge, first, last);
+    gp_Pnt2d atFirst, atLast;
+    BRep_Tool::UVPoints(edge, face, atFirst, atLast);
+    for (const auto& [v, uv] : {std::pair(first, atFirst), std::pair(last, atLast)})
+      if (!v.IsNull() && !at.IsBound(v))  // a point-on-surface record comes first, as in BRep_Tool::Parameters
+        at.Bind(v, static_cast<const BRep_TVertex*>(v.TShape().get())->Points().IsEmpty()
+                       ? uv
+                       : BRep_Tool::Parameters(v, face));
   }
   std::vector<gp_Pnt2d> uvs;
   for (TopExp_Explorer v(face, TopAbs_VERTEX); v.More(); v.Next()) {
-    const TopoDS_Vertex& vertex = TopoDS::Vertex(v.Current());
-    const TopoDS_Shape* edge = firstEdge.Seek(vertex);
-    if (!edge || !static_cast<const BRep_TVertex*>(vertex.TShape().get())->Points().IsEmpty()) {
-      uvs.push_back(BRep_Tool::Parameters(vertex, face));
-      continue;
-    }
-    const TopoDS_Edge& e = TopoDS::Edge(*edge);
-    TopoDS_Vertex first, last;
-    TopExp::Vertices(e, first, last);
-    gp_Pnt2d atFirst, atLast;
-    BRep_Tool::UVPoints(e, face, atFirst, atLast);
-    uvs.push_back(vertex.IsSame(first) ? atFirst : atLast);
+    const gp_Pnt2d* uv = at.Seek(v.Current());
+    uvs.push_back(uv ? *uv : BRep_Tool::Parameters(TopoDS::Vertex(v.Current()), face));
   }
   return uvs;
 }
