@@ -103,13 +103,13 @@ def sampled_distances(gmsh, face, points):
     return np.array([np.linalg.norm(samples - p, axis=1).min() for p in points])
 
 
-def face_distances(gmsh, x, index, sets, far=None):
+def face_distances(gmsh, x, index, sets):
     """Per CAD face N, the largest distance of the mesh's nodes grouped on it (the .inp's FACE<N> node sets)
     from that face, by Gmsh's closest point: {N: distance}. x: node coordinates; index: node label -> row of x.
     Gmsh's projection onto a B-spline face can stop at a far local minimum (on a B-spline torus it answered the
-    far side, 7.4 mm off, for a node 0.33 mm from it): where a node is farther than `far` (default: 1e-3 of the
-    part's extent), its distance to the face's sampled points is taken if smaller (an upper bound of the true one)."""
-    far = 1e-6 * float(np.ptp(x, axis=0).max()) if far is None else far
+    far side, 7.4 mm off, for a node 0.33 mm from it): where a node is farther than 1e-3 of the part's extent, its
+    distance to the face's sampled points is taken if smaller (an upper bound of the true one)."""
+    far = 1e-3 * float(np.ptp(x, axis=0).max())
     worst = {}
     for name, labels in sets.items():
         if not name.startswith("FACE") or not labels:
