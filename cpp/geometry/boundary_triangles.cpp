@@ -2,7 +2,6 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
-#include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Tool.hxx>
 #include <Extrema_ExtPS.hxx>
 #include <TopExp.hxx>
@@ -148,8 +147,7 @@ bool hasFreeformFace(const CadSolid& cad) {
 TopTools_IndexedMapOfShape triangulatedFaces(const CadSolid& cad) {
   if (!hasFreeformFace(cad)) return cad.faces;
   const TopoDS_Shape copy = BRepBuilderAPI_Copy(cad.solid, false).Shape();  // without the solid's triangulation
-  // faces in parallel, as prepareSolid
-  BRepMesh_IncrementalMesh(copy, kFineDeflection * cad.diagonal, false, 0.3, true);
+  triangulateFaces(copy, kFineDeflection * cad.diagonal);
   TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(copy, TopAbs_FACE, faces);
   return faces;

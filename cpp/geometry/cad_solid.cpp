@@ -16,6 +16,7 @@
 #include <Geom_Plane.hxx>
 #include <Geom_Surface.hxx>
 #include <IGESControl_Reader.hxx>
+#include <IMeshTools_Parameters.hxx>
 #include <NCollection_DataMap.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Solid.hxx>
@@ -245,10 +246,23 @@ CadSolid prepareSolid(const TopoDS_Solid& input, double unit) {
   Bnd_Box box;
   BRepBndLib::Add(cad.solid, box);
   cad.diagonal = std::sqrt(box.SquareExtent());
-  // Triangulation used for sampling the faces (thickness rays, bubble candidates); the faces in parallel, each from
-  // its edges' polygons, made first: the same triangles on any number of threads.
-  BRepMesh_IncrementalMesh(cad.solid, 0.002 * cad.diagonal, false, 0.3, true);
+  triangulateFaces(cad.solid, 0.002 * cad.diagonal);  // for sampling the faces (thickness rays, bubble candidates)
   return cad;
+}
+
+void triangulateFaces(const TopoDS_Shape& shape, double deflection) {
+  IMeshTools_Parameters p;
+  p.Deflection = deflection;
+  p.Angle = 0.3;
+  p.InParallel = true;
+  p.MeshAlgo = IMeshTools_MeshAlgoType_Delabella;
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+    TopTools_IndexedMapOfShape edges;
+    TopExp::MapShapes(it.Current(), TopAbs_EDGE, edges);
+    if (edges.Extent() > kManyEdges) BRepMesh_IncrementalMesh(it.Current(), p);
+  }
+  p.MeshAlgo = IMeshTools_MeshAlgoType_Watson;  // the other faces, and any Delabella left without triangles
+  BRepMesh_IncrementalMesh(shape, p);
 }
 
 double largestTolerance(const TopoDS_Shape& shape) {

@@ -61,6 +61,14 @@ long eulerCharacteristic(const CadSolid& cad);
 // with a thousand vertices (a keyboard plate's top) is a million steps. [in] face. Returns the (u, v) of each.
 std::vector<gp_Pnt2d> vertexParameters(const TopoDS_Face& face);
 
+// Triangulates the faces of a shape (BRepMesh, faces in parallel, each from its edges' polygons made first: the same
+// triangles on any number of threads) to `deflection` and an angle of 0.3 rad by Watson's Delaunay (OpenCASCADE's
+// default), but a face bounded by more than kManyEdges edges by Delabella's first: Watson's takes 0.8 s on a plane
+// with 200 holes, whose 8 404 boundary points are all its nodes, Delabella's 0.08 s (a face it leaves without
+// triangles, which it can, gets Watson's). [in,out] shape; [in] deflection: absolute.
+constexpr int kManyEdges = 100;
+void triangulateFaces(const TopoDS_Shape& shape, double deflection);
+
 // An OpenCASCADE point as a Vec3.
 inline Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 

@@ -1,19 +1,27 @@
 // The CAD solid as the pipeline reads it (geometry/cad_solid.hpp): its volume, the mesh's reference, exact also
 // on B-spline faces (OpenCASCADE's default rule is 1 % off there), run at scales 1, 1e-3 and 1e3; a file that
 // holds only a closed shell, read as the solid it bounds; and the vertices' parameters on a face, BRep_Tool's to the
-// last bit on a plate with many holes (analytic and B-spline faces, x1, 1e-3, 1e3).
+// last bit on a plate with many holes (analytic and B-spline faces, x1, 1e-3, 1e3); the faces' triangulation, each
+// face covered once (Delabella's on a face of more than kManyEdges edges, Watson's on the rest).
 #include <gtest/gtest.h>
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <Poly_Triangulation.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 
 #include <cmath>
 #include <cstdio>
@@ -47,7 +55,62 @@ TopoDS_Shape plateWithHoles(double s) {
   return BRepBuilderAPI_Transform(plate, scale, true).Shape();
 }
 
+// The triangles of a face's triangulation, placed, with their normals (length: twice their area).
+std::vector<gp_Vec> triangleNormals(const TopoDS_Face& face) {
+  TopLoc_Location place;
+  const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(face, place);
+  std::vector<gp_Vec> normals;
+  if (mesh.IsNull()) return normals;
+  for (int t = 1; t <= mesh->NbTriangles(); ++t) {
+    int a, b, c;
+    mesh->Triangle(t).Get(a, b, c);
+    const gp_Pnt pa = mesh->Node(a).Transformed(place), pb = mesh->Node(b).Transformed(place),
+                 pc = mesh->Node(c).Transformed(place);
+    normals.push_back(gp_Vec(pa, pb).Crossed(gp_Vec(pa, pc)));
+  }
+  return normals;
+}
+
 }  // namespace
+
+// A plate with 120 holes: its top and bottom have 124 edges (Delabella's), its sides and the holes' walls a few
+// (Watson's). Every face gets triangles that cover it once: their area is the face's but for the holes' polygons
+// (within 1 %), and on the flat faces they all turn the same way (no triangle folded over another).
+TEST(CadSolid, TriangulationCoversEveryFaceOnce) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    TopoDS_Compound holes;
+    BRep_Builder builder;
+    builder.MakeCompound(holes);
+    for (int i = 0; i < 12; ++i)
+      for (int k = 0; k < 10; ++k)
+        builder.Add(holes, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt((5 + 5 * i) * s, (5 + 5 * k) * s, -s), gp::DZ()),
+                                                    1.5 * s, 4 * s)
+                               .Shape());
+    TopExp_Explorer solid(
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 65 * s, 55 * s, 2 * s).Shape(), holes).Shape(),
+        TopAbs_SOLID);
+    ASSERT_TRUE(solid.More());
+    const CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
+    int manyEdged = 0;
+    for (int f = 1; f <= cad.faces.Extent(); ++f) {
+      const TopoDS_Face face = TopoDS::Face(cad.faces(f));
+      TopTools_IndexedMapOfShape edges;
+      TopExp::MapShapes(face, TopAbs_EDGE, edges);
+      manyEdged += edges.Extent() > kManyEdges;
+      const std::vector<gp_Vec> normals = triangleNormals(face);
+      ASSERT_FALSE(normals.empty()) << "face " << f << " has no triangles";
+      GProp_GProps props;
+      BRepGProp::SurfaceProperties(face, props);
+      double area = 0;
+      gp_Vec sum(0, 0, 0);
+      for (const gp_Vec& n : normals) area += n.Magnitude() / 2, sum += n / 2;
+      EXPECT_NEAR(area / props.Mass(), 1, 0.01) << "face " << f;
+      if (BRepAdaptor_Surface(face).GetType() == GeomAbs_Plane) EXPECT_NEAR(sum.Magnitude() / area, 1, 1e-9);
+    }
+    EXPECT_EQ(manyEdged, 2);
+  }
+}
 
 // vertexParameters walks a face's edges once; BRep_Tool::Parameters walks them for every vertex: the same answers.
 TEST(CadSolid, VertexParametersAreBRepToolsOnEveryFace) {
