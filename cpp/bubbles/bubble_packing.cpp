@@ -232,9 +232,11 @@ void relaxFace(double d, const Packing& pack, std::vector<FaceBubble>& bubbles,
   PointGrid own(d);
   for (size_t i = 0; i < bubbles.size(); ++i) own.insert(static_cast<int>(i), bubbles[i].point);
   std::vector<std::optional<FaceBubble>> next(bubbles.size());
+  ParallelErrors errors;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < static_cast<long>(bubbles.size()); ++i)
-    next[i] = relaxedBubble(i, d, pack, own, bubbles, *tools[threadIndex()]);
+    errors.run([&] { next[i] = relaxedBubble(i, d, pack, own, bubbles, *tools[threadIndex()]); });
+  errors.rethrow();
   std::vector<FaceBubble> moved;
   for (const auto& b : next)
     if (b) moved.push_back(*b);

@@ -3,6 +3,7 @@
 // [--min-size H] [--max-size H] [--order 1|2] [--shell] [--report R] [--force] [--quiet]`, `hexlayer --version`
 #include <unistd.h>
 #include <CLI/CLI.hpp>
+#include <Standard_Failure.hxx>
 
 #include <fstream>
 #include <iomanip>
@@ -196,6 +197,9 @@ int main(int argc, char** argv) {
     return static_cast<int>(e.code());
   } catch (const std::exception& e) {
     std::cerr << "hexlayer: internal error: " << e.what() << std::endl;
+    return static_cast<int>(ExitCode::Internal);
+  } catch (const Standard_Failure& e) {  // OpenCASCADE's exceptions are not std::exceptions
+    std::cerr << "hexlayer: internal error: OpenCASCADE: " << e.GetMessageString() << std::endl;
     return static_cast<int>(ExitCode::Internal);
   }
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "writers/writers.hpp"
 
 namespace hexlayer {
@@ -136,17 +137,20 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
   // The distance queries in parallel, each thread with its own probe (OpenCASCADE's extrema tools on the
   // shared, read-only faces); the groups are filled afterwards in the nodes' order, the same for any thread count.
   const long nBoundary = static_cast<long>(boundary.size());
+  ParallelErrors errors;
 #pragma omp parallel
   {
     CadFaceProbe probe(faces);
 #pragma omp for schedule(static)
-    for (long k = 0; k < nBoundary; ++k) {
-      const int i = boundary[k];
-      FacesAtPoint at = probe.facesAt(mesh.nodeFace[i], mesh.nodes[i]);
-      facesOf[i] = std::move(at.faces);
-      distance[i] = at.distance;
-    }
+    for (long k = 0; k < nBoundary; ++k)
+      errors.run([&] {
+        const int i = boundary[k];
+        FacesAtPoint at = probe.facesAt(mesh.nodeFace[i], mesh.nodes[i]);
+        facesOf[i] = std::move(at.faces);
+        distance[i] = at.distance;
+      });
   }
+  errors.rethrow();
   std::size_t several = 0;
   for (int i : boundary) {  // ascending: the groups' nodes come out sorted
     for (int f : facesOf[i]) out.groups[f].nodes.push_back(i);
@@ -159,12 +163,14 @@ SurfaceGroups surfaceGroups(const HexMesh& mesh, const CadFaces& faces, const st
   {
     CadFaceProbe probe(faces);
 #pragma omp for schedule(static)
-    for (long k = 0; k < nQuads; ++k) {
-      std::size_t a = 0;
-      faceOf[k] = faceOfQuad(mesh, probe, quads[k], facesOf, a);
-      isAcross[k] = a > 0;
-    }
+    for (long k = 0; k < nQuads; ++k)
+      errors.run([&] {
+        std::size_t a = 0;
+        faceOf[k] = faceOfQuad(mesh, probe, quads[k], facesOf, a);
+        isAcross[k] = a > 0;
+      });
   }
+  errors.rethrow();
   std::size_t across = 0;
   for (std::size_t k = 0; k < quads.size(); ++k) {
     out.groups[faceOf[k]].hexFaces.push_back({quads[k].hex, quads[k].localFace});

@@ -284,15 +284,19 @@ struct CapPlan {
 CapPlan planCaps(const HexMesh& mesh, const std::vector<std::vector<int>>& columns, const std::vector<RimEdge>& edges,
                  const CapLayout& layout, std::deque<WallRays>& rays, const WallProjector& walls) {
   CapPlan plan{std::vector<char>(edges.size(), 0), std::vector<Cap>(columns.size())};
+  ParallelErrors errors;
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < static_cast<long>(edges.size()); ++i) {
-    const RimEdge& e = edges[i];
-    const Column a = ends(mesh, columns[e.a]), b = ends(mesh, columns[e.b]);
-    const Profile p = rimProfile(rays[threadIndex()], 0.5 * (a.bottom + b.bottom), 0.5 * (a.top + b.top), e.outward);
-    if (p.points.size() < 3 || !inside(walls, p)) continue;
-    const double uncapped = leftOut(p, sweptNodes(p, layout.t.layers)), capped = leftOut(p, profileNodes(p, layout.t));
-    plan.capped[i] = uncapped > kMinLoss * 4 * p.h * p.h && capped <= kGain * uncapped;
-  }
+  for (long i = 0; i < static_cast<long>(edges.size()); ++i)
+    errors.run([&] {
+      const RimEdge& e = edges[i];
+      const Column a = ends(mesh, columns[e.a]), b = ends(mesh, columns[e.b]);
+      const Profile p = rimProfile(rays[threadIndex()], 0.5 * (a.bottom + b.bottom), 0.5 * (a.top + b.top), e.outward);
+      if (p.points.size() < 3 || !inside(walls, p)) return;
+      const double uncapped = leftOut(p, sweptNodes(p, layout.t.layers)),
+                   capped = leftOut(p, profileNodes(p, layout.t));
+      plan.capped[i] = uncapped > kMinLoss * 4 * p.h * p.h && capped <= kGain * uncapped;
+    });
+  errors.rethrow();
   for (bool dropped = true; dropped;) {  // ends: every round drops an edge or none
     std::vector<Vec3> outward(columns.size(), Vec3::Zero()), along(columns.size(), Vec3::Zero());
     for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -304,9 +308,12 @@ CapPlan planCaps(const HexMesh& mesh, const std::vector<std::vector<int>>& colum
     }
 #pragma omp parallel for schedule(static)
     for (long c = 0; c < static_cast<long>(columns.size()); ++c)
-      plan.caps[c] = outward[c].norm() > 0 ? layCap(rays[threadIndex()], walls,
-                                                    nudged(ends(mesh, columns[c]), along[c]), outward[c], layout)
-                                           : Cap{};
+      errors.run([&] {
+        plan.caps[c] = outward[c].norm() > 0 ? layCap(rays[threadIndex()], walls,
+                                                      nudged(ends(mesh, columns[c]), along[c]), outward[c], layout)
+                                             : Cap{};
+      });
+    errors.rethrow();
     auto poor = [&](const RimEdge& e) {
       if (plan.caps[e.a].empty() || plan.caps[e.b].empty()) return true;
       const std::vector<double> sj = capQualities(mesh, columns, plan.caps, e, layout.t);

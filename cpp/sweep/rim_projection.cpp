@@ -147,13 +147,16 @@ std::vector<CornerEdge> cornerEdges(const CadSolid& cad, const WallSides& sides,
   const double tolerance = 1e-6 * cad.diagonal;
   auto on = [&](Side side, const Vec3& p) { return walls.reaches(side, p, tolerance); };
   std::vector<char> joins(candidates.size(), 0);
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 8)
-  for (long i = 0; i < static_cast<long>(candidates.size()); ++i) {
-    CornerEdge& corner = candidates[i];
-    if (on(Side::Top, corner.points.front()) && on(Side::Bottom, corner.points.back()))
-      std::reverse(corner.points.begin(), corner.points.end());
-    joins[i] = on(Side::Bottom, corner.points.front()) && on(Side::Top, corner.points.back());
-  }
+  for (long i = 0; i < static_cast<long>(candidates.size()); ++i)
+    errors.run([&] {
+      CornerEdge& corner = candidates[i];
+      if (on(Side::Top, corner.points.front()) && on(Side::Bottom, corner.points.back()))
+        std::reverse(corner.points.begin(), corner.points.end());
+      joins[i] = on(Side::Bottom, corner.points.front()) && on(Side::Top, corner.points.back());
+    });
+  errors.rethrow();
   std::vector<CornerEdge> corners;
   for (std::size_t i = 0; i < candidates.size(); ++i)
     if (joins[i]) corners.push_back(std::move(candidates[i]));
@@ -406,10 +409,13 @@ RimProjectionStats projectRim(HexMesh& mesh, const CadSolid& cad, const WallSide
   std::vector<std::vector<std::optional<FacePoint>>> to(columns.size());
   std::deque<WallRays> rays;
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
+  ParallelErrors errors;
 #pragma omp parallel for schedule(static)
-  for (long c = 0; c < static_cast<long>(columns.size()); ++c) {
-    to[c] = layColumn(mesh, columns[c], rimFrame(mesh, columns[c], normal), rays[threadIndex()], walls, reach);
-  }
+  for (long c = 0; c < static_cast<long>(columns.size()); ++c)
+    errors.run([&] {
+      to[c] = layColumn(mesh, columns[c], rimFrame(mesh, columns[c], normal), rays[threadIndex()], walls, reach);
+    });
+  errors.rethrow();
   layCorners(cornerEdges(cad, sides, walls), mesh, columns, to, reach);
   // Then all columns at once, and back where the sweep put them those that spoil a hex (below a scaled
   // Jacobian of 0.2 and worse than before), until none does: the result does not depend on the order.

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "quality/quality.hpp"
 
 namespace hexlayer {
@@ -97,11 +98,14 @@ SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, 
   for (size_t i = 0; i < dir.size(); ++i) normal[i] = dir[i].normal;
   auto place = [&](int i) { placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, walls); };
   const WallMap& first = aimed ? aimed : walls;
+  ParallelErrors errors;
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i) {
-    const SweepLine line = placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, first);
-    if (const Vec3 d = (line.top - line.bottom).normalized(); aimed && d.dot(normal[i]) < kTurned) normal[i] = d;
-  }
+  for (int i = 0; i < static_cast<int>(q.nodes.size()); ++i)
+    errors.run([&] {
+      const SweepLine line = placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, first);
+      if (const Vec3 d = (line.top - line.bottom).normalized(); aimed && d.dot(normal[i]) < kTurned) normal[i] = d;
+    });
+  errors.rethrow();
   result.untangled =
       untangleSweep(q, normal, kUntangleTarget, place, [&](int j) { return columnQuality(result.mesh, j); });
   return result;

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "geometry/boundary_triangles.hpp"
 #include "geometry/ray_caster.hpp"
 
@@ -149,24 +150,27 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad) {
 
 TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad, const BoundaryTriangles& triangles) {
   std::vector<char> verdict(mesh.tets.size());
+  ParallelErrors errors;
 #pragma omp parallel
   {
     std::optional<RayCaster> rays;
     std::optional<BRepClass3d_SolidClassifier> exact;
 #pragma omp for schedule(static)
-    for (long i = 0; i < static_cast<long>(mesh.tets.size()); ++i) {
-      const auto& t = mesh.tets[i];
-      int top = 0;
-      for (int v : t) top += mesh.side[v] == Side::Top;
-      const Vec3 c = 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
-      if (top == 0 || top == 4)
-        verdict[i] = kFlat;
-      else if (!insideSolid(c, triangles, cad, rays, exact))
-        verdict[i] = kOutside;
-      else
-        verdict[i] = isCoplanar(mesh, t) ? kKeptCoplanar : kKept;
-    }
+    for (long i = 0; i < static_cast<long>(mesh.tets.size()); ++i)
+      errors.run([&] {
+        const auto& t = mesh.tets[i];
+        int top = 0;
+        for (int v : t) top += mesh.side[v] == Side::Top;
+        const Vec3 c = 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
+        if (top == 0 || top == 4)
+          verdict[i] = kFlat;
+        else if (!insideSolid(c, triangles, cad, rays, exact))
+          verdict[i] = kOutside;
+        else
+          verdict[i] = isCoplanar(mesh, t) ? kKeptCoplanar : kKept;
+      });
   }
+  errors.rethrow();
   TetFilterCounts counts;
   counts.delaunay = mesh.tets.size();
   counts.flat = std::count(verdict.begin(), verdict.end(), kFlat);

@@ -1,0 +1,52 @@
+// OpenMP loops whose bodies may throw (core/threads.hpp ParallelErrors): the exception, OpenCASCADE's too, reaches
+// the caller after the loop instead of terminating the process; the bodies that do not throw all run.
+#include <gtest/gtest.h>
+
+#include <Standard_NullObject.hxx>
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include "core/threads.hpp"
+
+using namespace hexlayer;
+
+namespace {
+
+// A parallel loop over n items whose body throws `thrown` at item `bad`, marking the others done.
+template <class Thrown>
+void loopThrowingAt(long n, long bad, const Thrown& thrown, std::vector<char>& done) {
+  ParallelErrors errors;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    errors.run([&] {
+      if (i == bad) throw thrown;
+      done[i] = 1;
+    });
+  errors.rethrow();
+}
+
+}  // namespace
+
+TEST(ParallelErrors, OpenCascadeFailureReachesTheCallerAfterTheLoop) {
+  std::vector<char> done(1000, 0);
+  bool caught = false;
+  try {
+    loopThrowingAt(1000, 617, Standard_NullObject("no surface"), done);
+  } catch (const Standard_Failure& e) {
+    caught = true;
+    EXPECT_STREQ(e.GetMessageString(), "no surface");
+  }
+  EXPECT_TRUE(caught);
+  EXPECT_EQ(std::count(done.begin(), done.end(), 1), 999);
+  EXPECT_EQ(done[617], 0);
+}
+
+TEST(ParallelErrors, StandardExceptionReachesTheCallerAndNoneMeansNoThrow) {
+  std::vector<char> done(100, 0);
+  EXPECT_THROW(loopThrowingAt(100, 0, std::runtime_error("first item"), done), std::runtime_error);
+  std::vector<char> all(100, 0);
+  EXPECT_NO_THROW(loopThrowingAt(100, -1, std::runtime_error("never"), all));
+  EXPECT_EQ(std::count(all.begin(), all.end(), 1), 100);
+}
