@@ -1,12 +1,14 @@
 // Distances to the CAD faces (geometry/cad_faces.hpp): CadFaceProbe's distance to a trimmed
 // face is BRepExtrema_DistShapeShape's, to the last bit on planes, cylinders, spheres (and up to the rounding of
 // their Newton steps, 1e-8, on B-splines), and whether a point lies on a face (within its tolerance) is always
-// BRepExtrema's, on the faces (inside, at and near their edges and vertices), just off them and far away.
+// BRepExtrema's, on the faces (inside, at and near their edges and vertices), just off them and far away, also where
+// a B-spline's nearest point is outside the face (over a hole).
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Tool.hxx>
@@ -129,6 +131,27 @@ TEST(CadFaces, PointsOnTheLinesThroughTheHoleCentresAreBRepExtremas) {
           }
         }
   EXPECT_GT(onFace, 2000);  // the points off the holes, on the top and bottom faces
+}
+
+// The same plate with every face a B-spline: on the lines through the holes' centres the surface's nearest point
+// lies in a hole (outside the face) for many points, and the face's distance is BRepExtrema's from all its extrema.
+TEST(CadFaces, PointsOverTheHolesOfBSplineFacesAreBRepExtremas) {
+  const CadSolid plate = readPart(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/plate_holes.step");
+  const CadSolid cad = prepareSolid(TopoDS::Solid(BRepBuilderAPI_NurbsConvert(plate.solid, true).Shape()));
+  const CadFaces faces(cad);
+  CadFaceProbe probe(faces);
+  int overHoles = 0;
+  for (int f = 0; f < faces.count(); ++f)
+    for (double z : {0.0, 0.5, 2.0})
+      for (double y : {12.0, 38.0})
+        for (double x = 0.5; x < 80; x += 0.5) {
+          const Vec3 p(x, y, z);
+          const double exact = reference(faces, f, p);
+          EXPECT_NEAR(probe.distance(f, p), exact, 1e-8) << "face " << f << " at (" << p.transpose() << ")";
+          overHoles += (z == 0.0 || z == 2.0) && exact > 0.1 && exact < 10;
+        }
+  EXPECT_GT(overHoles, 20);
+  EXPECT_GT(expectSameAsBRepExtrema(cad), 500);
 }
 
 TEST(CadFaces, DistancesAreBRepExtremasOnARealSheetMetalPart) {
