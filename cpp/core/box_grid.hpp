@@ -41,6 +41,9 @@ class BoxGrid {
     int best = start;
     double bestD2 =
         start >= 0 ? distance(start, std::numeric_limits<double>::infinity()) : std::numeric_limits<double>::infinity();
+    // A cell of ring r+1 lies r+1 cells off along some axis: at least r*h plus p's clearance in its own cell away.
+    const Vec3 inCell = p - h_ * c.cast<double>();
+    const double clearance = std::max(0.0, std::min(inCell.minCoeff(), h_ - inCell.maxCoeff()));
     for (int r = firstRing; r <= lastRing; ++r) {
       forRing(c, r, [&](const Eigen::Vector3i& cell) {
         const auto it = cells_.find(key(cell));
@@ -49,7 +52,8 @@ class BoxGrid {
           if (const double d2 = distance(id, bestD2); d2 < bestD2 || (d2 == bestD2 && id < best))
             best = id, bestD2 = d2;
       });
-      if (best >= 0 && bestD2 <= (r * h_) * (r * h_)) break;  // cells of ring r+1 are at least r*h away
+      const double beyond = r * h_ + clearance;  // to the nearest cell of ring r+1
+      if (best >= 0 && bestD2 <= beyond * beyond) break;
     }
     return best;
   }

@@ -1,5 +1,6 @@
 // The hash grid over boxes (core/box_grid.hpp): the nearest item to a point, as brute force finds it, on random
-// segments of very different lengths (fixed seed), with the exact distance and with a bounding-box shortcut.
+// segments of very different lengths (fixed seed), with the exact distance and with a bounding-box shortcut, also at
+// points on and next to the segments and on the cells' faces.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -66,6 +67,28 @@ TEST(BoxGrid, NearestIsTheBruteForceNearestOnRandomSegments) {
       return squaredDistance(segments[id], p);
     };
     EXPECT_EQ(grid.nearest(p, shortcut), expected) << "at " << p.transpose();
+  }
+}
+
+// Points on the items and just off them (the quad smoothing's and the sweep's queries), and points on the cells'
+// faces (no clearance in their cell): the search stops as soon as the nearest found is nearer than p's clearance in
+// its cell plus the rings scanned, and still finds brute force's nearest.
+TEST(BoxGrid, NearestOnAndNextToTheItemsAndOnCellFacesIsTheBruteForceNearest) {
+  std::mt19937 random(23);
+  const std::vector<Segment> segments = randomSegments(random);
+  BoxGrid grid(0.5);
+  for (int i = 0; i < static_cast<int>(segments.size()); ++i)
+    grid.insert(i, segments[i].a.cwiseMin(segments[i].b), segments[i].a.cwiseMax(segments[i].b));
+  std::uniform_real_distribution<double> share(0, 1), unit(-1, 1);
+  std::uniform_int_distribution<int> which(0, static_cast<int>(segments.size()) - 1), cell(0, 20);
+  for (int q = 0; q < 1500; ++q) {
+    const Segment& s = segments[which(random)];
+    Vec3 p = s.a + share(random) * (s.b - s.a);
+    if (q % 3 == 1) p += 1e-9 * Vec3(unit(random), unit(random), unit(random));
+    if (q % 3 == 2) p.x() = 0.5 * cell(random);  // on a face between two cells
+    const int expected = nearestByBruteForce(segments, p);
+    EXPECT_EQ(grid.nearest(p, [&](int id, double) { return squaredDistance(segments[id], p); }), expected)
+        << "at " << p.transpose();
   }
 }
 
