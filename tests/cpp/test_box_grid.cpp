@@ -46,14 +46,20 @@ std::vector<Segment> randomSegments(std::mt19937& random) {
   return segments;
 }
 
+// The segments in a grid of 0.5 cells, each by its bounding box.
+BoxGrid gridOf(const std::vector<Segment>& segments) {
+  BoxGrid grid(0.5);
+  for (int i = 0; i < static_cast<int>(segments.size()); ++i)
+    grid.insert(i, segments[i].a.cwiseMin(segments[i].b), segments[i].a.cwiseMax(segments[i].b));
+  return grid;
+}
+
 }  // namespace
 
 TEST(BoxGrid, NearestIsTheBruteForceNearestOnRandomSegments) {
   std::mt19937 random(17);
   const std::vector<Segment> segments = randomSegments(random);
-  BoxGrid grid(0.5);
-  for (int i = 0; i < static_cast<int>(segments.size()); ++i)
-    grid.insert(i, segments[i].a.cwiseMin(segments[i].b), segments[i].a.cwiseMax(segments[i].b));
+  const BoxGrid grid = gridOf(segments);
   std::uniform_real_distribution<double> around(-5, 15);  // inside the grid's box and beyond it
   for (int q = 0; q < 500; ++q) {
     const Vec3 p(around(random), around(random), around(random));
@@ -76,9 +82,7 @@ TEST(BoxGrid, NearestIsTheBruteForceNearestOnRandomSegments) {
 TEST(BoxGrid, NearestOnAndNextToTheItemsAndOnCellFacesIsTheBruteForceNearest) {
   std::mt19937 random(23);
   const std::vector<Segment> segments = randomSegments(random);
-  BoxGrid grid(0.5);
-  for (int i = 0; i < static_cast<int>(segments.size()); ++i)
-    grid.insert(i, segments[i].a.cwiseMin(segments[i].b), segments[i].a.cwiseMax(segments[i].b));
+  const BoxGrid grid = gridOf(segments);
   std::uniform_real_distribution<double> share(0, 1), unit(-1, 1);
   std::uniform_int_distribution<int> which(0, static_cast<int>(segments.size()) - 1), cell(0, 20);
   for (int q = 0; q < 1500; ++q) {
