@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/polygon.hpp"
+#include "core/threads.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
 namespace hexlayer {
@@ -90,22 +92,35 @@ std::vector<LoopPoint> loopPoints(const SurfaceMap& map, const std::vector<int>&
   return points;
 }
 
-// Rows of quads between a box's boundary walk and as many loop points the same way round, out to the
-// outer rim or in to a hole: as many rows as the most any line between them needs, the nodes spaced
-// along each line by the target size, the last row on the loop.
-void addRing(BlockGrid& grid, const MapLocator& locate, const GridLines& lines, const Box& box,
-             const std::vector<LoopPoint>& loop, bool outward, const SizeField& size) {
+// The rows of a ring between a box's boundary walk and as many loop points the same way round, out to the outer rim
+// or in to a hole: as many rows as the most any line between them needs, the nodes spaced along each line by the
+// target size, row after row (positions t = 0 .. n - 1 of the walk), the last row on the loop.
+struct Ring {
+  int rows = 1;
+  std::vector<Vec3> nodes;
+};
+
+Ring layRing(const MapLocator& locate, const GridLines& lines, const Box& box, const std::vector<LoopPoint>& loop,
+             const SizeField& size) {
   const int n = box.around();
   std::vector<PlaneLine> across;
-  int m = 1;
+  Ring ring;
   for (int t = 0; t < n; ++t) {
     const auto [i, k] = box.walk(t);
     across.push_back(planeLine(locate, lines.uv(i, k), loop[t], size));
-    m = std::max(m, static_cast<int>(std::round(across.back().quads.back())));
+    ring.rows = std::max(ring.rows, static_cast<int>(std::round(across.back().quads.back())));
   }
+  for (int j = 1; j <= ring.rows; ++j)
+    for (int t = 0; t < n; ++t)
+      ring.nodes.push_back(j == ring.rows ? loop[t].x : locate(linePoint(across[t], j, ring.rows)));
+  return ring;
+}
+
+// The ring's nodes and quads added to the grid (its row 0 is the box's boundary walk on the grid's lines).
+void appendRing(BlockGrid& grid, const GridLines& lines, const Box& box, const Ring& ring, bool outward) {
+  const int n = box.around(), m = ring.rows;
   const int first = static_cast<int>(grid.nodes.size());  // row j >= 1, position t: first + (j - 1) n + t
-  for (int j = 1; j <= m; ++j)
-    for (int t = 0; t < n; ++t) grid.nodes.push_back(j == m ? loop[t].x : locate(linePoint(across[t], j, m)));
+  grid.nodes.insert(grid.nodes.end(), ring.nodes.begin(), ring.nodes.end());
   auto node = [&](int j, int t) {
     const auto [i, k] = box.walk(t);
     return j == 0 ? lines.node(i, k) : first + (j - 1) * n + t % n;
@@ -116,6 +131,11 @@ void addRing(BlockGrid& grid, const MapLocator& locate, const GridLines& lines, 
                                ? std::array<int, 4>{node(j, t), node(j + 1, t), node(j + 1, t + 1), node(j, t + 1)}
                                : std::array<int, 4>{node(j, t), node(j, t + 1), node(j + 1, t + 1), node(j + 1, t)});
   grid.blocks += 4;
+}
+
+void addRing(BlockGrid& grid, const MapLocator& locate, const GridLines& lines, const Box& box,
+             const std::vector<LoopPoint>& loop, bool outward, const SizeField& size) {
+  appendRing(grid, lines, box, layRing(locate, lines, box, loop, size), outward);
 }
 
 // The grid's nodes at their points and its cells as quads, but for the cells in `skip`.
@@ -716,11 +736,22 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
   BlockGrid grid;
   addCells(grid, locate, lines, inPocket);
   grid.blocks = 1;
-  for (const auto& [box, h] : pockets) {
-    std::vector<int> hole = map.holes[h];
-    std::array<int, 4> corners;
-    if (!holeCorners(map, hole, corners)) return {};
-    addRing(grid, locate, lines, box, loopPoints(map, hole, corners, box.sides(), size), false, size);
+  // The pockets' rings laid out side by side (each on its own), added in the holes' order.
+  std::vector<std::optional<Ring>> rings(pockets.size());
+  ParallelErrors errors;
+#pragma omp parallel for schedule(dynamic)
+  for (long p = 0; p < static_cast<long>(pockets.size()); ++p)
+    errors.run([&] {
+      const auto& [box, h] = pockets[p];
+      std::vector<int> hole = map.holes[h];
+      std::array<int, 4> corners;
+      if (holeCorners(map, hole, corners))
+        rings[p] = layRing(locate, lines, box, loopPoints(map, hole, corners, box.sides(), size), size);
+    });
+  errors.rethrow();
+  for (std::size_t p = 0; p < pockets.size(); ++p) {
+    if (!rings[p]) return {};
+    appendRing(grid, lines, pockets[p].first, *rings[p], false);
   }
   dropUnusedNodes(grid.nodes, grid.quads);  // those inside the pockets
   return grid;
