@@ -10,7 +10,10 @@ HexLayer / Gmsh. Writes all numbers as JSON, and optionally a scaling plot.
 Usage (Debian's /usr/bin/python3, which has python3-gmsh and matplotlib):
     bench/bench.py [--hexlayer build/hexlayer] [--suite target|scaling|samples|many|junctions|all]
                    [--threads N] [--out out/bench] [--plot docs/scaling.png]
-                   [--no-gmsh-above HEXES] [--timeout SECONDS]
+                   [--no-gmsh-above HEXES] [--timeout SECONDS] [--repeat N]
+
+With --repeat N each part is meshed N times by HexLayer and by Gmsh, alternately, and the medians are reported
+(Gmsh's own time moves by up to 40 % from run to run on a shared machine); the row lists every run's pair too.
 
 Suite `many` (issue 19): parts with many features, at HexLayer's default size (the wall thickness): the keyboard
 plate and the plate with 200 holes of `scripts/make_samples.py --only many` (written into OUT/many), and every
@@ -185,6 +188,14 @@ def make_many(out_dir):
                    check=True, stdout=subprocess.DEVNULL)
 
 
+def median_run(runs):
+    """The run whose wall time is the median (the lower middle one of an even count), with every run's wall time
+    in `walls_s` (in the order they ran)."""
+    middle = dict(sorted(runs, key=lambda r: r["wall_s"])[(len(runs) - 1) // 2])
+    middle["walls_s"] = [r["wall_s"] for r in runs]
+    return middle
+
+
 def print_row(case, h, g):
     faces = f"{g['faces']:4d} faces  " if g and "faces" in g else ""
     if h["exit_code"] != 0:
@@ -199,6 +210,9 @@ def print_row(case, h, g):
     elif g and g["exit_code"] == 0:
         line += (f" | gmsh tets {g['tets']:8d}  {g['wall_s']:7.2f} s  {g['peak_mib']:6.0f} MiB"
                  f" | ratio {h['wall_s'] / g['wall_s']:.2f}")
+        if len(h.get("walls_s", [])) > 1:  # --repeat: the medians above, every run's times and ratio here
+            runs = ", ".join(f"{a:.2f}/{b:.2f} s = {a / b:.2f}" for a, b in zip(h["walls_s"], g["walls_s"]))
+            line += f" (medians of {len(h['walls_s'])}; runs {runs})"
     elif g:
         line += f" | gmsh failed (exit {g['exit_code']})"
     print(line)
@@ -275,6 +289,8 @@ def main():
     p.add_argument("--timeout", type=float, default=3600)
     p.add_argument("--keep-meshes", action="store_true")
     p.add_argument("--max-hexes", type=int, default=0, help="skip cases above this many hexes (0: none)")
+    p.add_argument("--repeat", type=int, default=1,
+                   help="run HexLayer and Gmsh this many times each, alternately; report the median wall times")
     args = p.parse_args()
     if not os.access(args.hexlayer, os.X_OK):
         sys.exit(f"bench.py: no hexlayer executable at {args.hexlayer}; build first or pass --hexlayer")
@@ -290,9 +306,14 @@ def main():
         if args.max_hexes and case["hexes"] > args.max_hexes:
             print(f"{case['name']:16s} skipped (--max-hexes {args.max_hexes})")
             continue
-        h = run_hexlayer(args, case, args.out)
-        size = case["size"] or h.get("size") or 2.0  # Gmsh at the size HexLayer used
-        g = run_gmsh_tets(args, case, size) if case["hexes"] <= args.no_gmsh_above else None
+        hs, gs = [], []
+        for _ in range(max(1, args.repeat)):  # alternately, so that both meet the machine as it is then
+            hs.append(run_hexlayer(args, case, args.out))
+            size = case["size"] or hs[0].get("size") or 2.0  # Gmsh at the size HexLayer used
+            if case["hexes"] <= args.no_gmsh_above:
+                gs.append(run_gmsh_tets(args, case, size))
+        h = median_run(hs)
+        g = median_run(gs) if gs else None
         results.append({"case": case, "hexlayer": h, "gmsh": g})
         print_row(case, h, g)
     with open(os.path.join(args.out, f"results_{args.suite}.json"), "w") as f:
