@@ -14,14 +14,12 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
-#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <Poly_Triangulation.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 
 #include <cmath>
 #include <cstdio>
@@ -29,6 +27,7 @@
 #include <vector>
 
 #include "geometry/cad_solid.hpp"
+#include "test_parts.hpp"
 
 using namespace hexlayer;
 
@@ -73,25 +72,13 @@ std::vector<gp_Vec> triangleNormals(const TopoDS_Face& face) {
 
 }  // namespace
 
-// A plate with 120 holes: its top and bottom have 124 edges (Delabella's), its sides and the holes' walls a few
-// (Watson's). Every face gets triangles that cover it once: their area is the face's but for the holes' polygons
-// (within 1 %), and on the flat faces they all turn the same way (no triangle folded over another).
+// A plate with 120 holes (test_parts, 12 x 10): its top and bottom have 124 edges (Delabella's), its sides and the
+// holes' walls a few (Watson's). Every face gets triangles that cover it once: their area is the face's but for the
+// holes' polygons (within 1 %), and on the flat faces they all turn the same way (no triangle folded over another).
 TEST(CadSolid, TriangulationCoversEveryFaceOnce) {
   for (double s : {1.0, 1e-3, 1e3}) {
     SCOPED_TRACE("x " + std::to_string(s));
-    TopoDS_Compound holes;
-    BRep_Builder builder;
-    builder.MakeCompound(holes);
-    for (int i = 0; i < 12; ++i)
-      for (int k = 0; k < 10; ++k)
-        builder.Add(holes, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt((5 + 5 * i) * s, (5 + 5 * k) * s, -s), gp::DZ()),
-                                                    1.5 * s, 4 * s)
-                               .Shape());
-    TopExp_Explorer solid(
-        BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 65 * s, 55 * s, 2 * s).Shape(), holes).Shape(),
-        TopAbs_SOLID);
-    ASSERT_TRUE(solid.More());
-    const CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
+    const CadSolid cad = test_parts::plateWithManyHoles(s, 12, 10);
     int manyEdged = 0;
     for (int f = 1; f <= cad.faces.Extent(); ++f) {
       const TopoDS_Face face = TopoDS::Face(cad.faces(f));

@@ -23,18 +23,19 @@ inline CadSolid box(double dx, double dy, double dz) {
   return prepareSolid(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), dx, dy, dz).Solid());
 }
 
-// [in] s: the scale. A 60 x 40 x 2 plate with an 11 x 7 grid of Ø2 through holes at 5 pitch (77 holes: its top and
-// bottom faces have 78 wires), all lengths times s, prepared as the pipeline prepares a solid.
-inline CadSolid plateWithManyHoles(double s) {
+// [in] s: the scale; [in] columns, rows: of the holes. A 5 (columns + 1) x 5 (rows + 1) x 2 plate with a grid of Ø2
+// through holes at 5 pitch (by default 60 x 40 with 11 x 7 = 77 holes: its top and bottom faces have 78 wires), all
+// lengths times s, prepared as the pipeline prepares a solid.
+inline CadSolid plateWithManyHoles(double s, int columns = 11, int rows = 7) {
   TopoDS_Compound holes;
   BRep_Builder builder;
   builder.MakeCompound(holes);
-  for (int i = 1; i <= 11; ++i)
-    for (int j = 1; j <= 7; ++j)
+  for (int i = 1; i <= columns; ++i)
+    for (int j = 1; j <= rows; ++j)
       builder.Add(
           holes, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(5 * i * s, 5 * j * s, -s), gp_Dir(0, 0, 1)), s, 4 * s).Shape());
-  const TopoDS_Shape plate =
-      BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60 * s, 40 * s, 2 * s).Shape(), holes);
+  const TopoDS_Shape plate = BRepAlgoAPI_Cut(
+      BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 5 * (columns + 1) * s, 5 * (rows + 1) * s, 2 * s).Shape(), holes);
   TopExp_Explorer solid(plate, TopAbs_SOLID);
   return prepareSolid(TopoDS::Solid(solid.Current()));
 }
