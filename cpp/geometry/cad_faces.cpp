@@ -122,7 +122,7 @@ CadFaceProbe::Surface& CadFaceProbe::surface(int face) {
   const double tolerance = std::min(BRep_Tool::Tolerance(f.face), Precision::Confusion());
   const double tolU = std::max(s.adaptor.UResolution(tolerance), Precision::PConfusion());
   const double tolV = std::max(s.adaptor.VResolution(tolerance), Precision::PConfusion());
-  s.extrema.SetFlag(Extrema_ExtFlag_MIN);
+  s.extrema.SetFlag(Extrema_ExtFlag_MINMAX);
   s.extrema.SetAlgo(Extrema_ExtAlgo_Tree);  // its grid sorted once, not walked per query
   s.extrema.Initialize(s.adaptor, f.uvBounds[0], f.uvBounds[1], f.uvBounds[2], f.uvBounds[3], tolU, tolV);
   return s;
@@ -164,20 +164,11 @@ TopAbs_State CadFaceProbe::classify(int face, double u, double v) {
 }
 
 // The distance BRepExtrema_DistanceSS finds from p to the inside of the face: the nearest extremum of
-// those on the face (IN or ON), if one within kEps of it is IN; nullopt if none is. The nearest first: if it is IN,
-// it is that one (the farthest is not nearer); else the search again for both, as BRepExtrema searches.
+// those on the face (IN or ON), if one within kEps of it is IN; nullopt if none is.
 std::optional<double> CadFaceProbe::faceDistance(int face, const gp_Pnt& p) {
   Surface& s = surface(face);
   if (s.adaptor.GetType() == GeomAbs_OtherSurface) return std::nullopt;
   s.extrema.Perform(p);
-  if (s.extrema.IsDone() && s.extrema.NbExt() == 1) {
-    double u = 0, v = 0;
-    s.extrema.Point(1).Parameter(u, v);
-    if (classify(face, u, v) == TopAbs_IN) return std::sqrt(s.extrema.SquareDistance(1));
-  }
-  s.extrema.SetFlag(Extrema_ExtFlag_MINMAX);
-  s.extrema.Perform(p);
-  s.extrema.SetFlag(Extrema_ExtFlag_MIN);
   if (!s.extrema.IsDone()) return std::nullopt;
   std::vector<std::pair<double, TopAbs_State>> onFace;  // square distance, state
   for (int i = 1; i <= s.extrema.NbExt(); ++i) {

@@ -103,13 +103,9 @@ class CadFaceProbe {
   std::optional<std::pair<double, gp_Pnt>> foot(int face, const gp_Pnt& p);
 
  private:
-  // The extrema tool searches its tree of the surface's samples for the nearest (MIN), which is the foot point of a
-  // point on or near the face (all that the probe is asked); BRepExtrema's MINMAX also searches it for the farthest,
-  // which walks most of the tree (on the curved shell's B-splines 0.6 s of the surface groups' 1.6 s). faceDistance
-  // asks for both only where the nearest is not inside the face: BRepExtrema's answer, to the bit.
   struct Surface {
     BRepAdaptor_Surface adaptor;
-    Extrema_ExtPS extrema;  // points to adaptor; MIN
+    Extrema_ExtPS extrema;  // points to adaptor
   };
   Surface& surface(int face);
   BRepExtrema_ExtPC& curve(int edge);
