@@ -4,12 +4,16 @@
 #include <ElCLib.hxx>
 #include <ElSLib.hxx>
 #include <IntAna_IntConicQuad.hxx>
+#include <IntAna_IntLinTorus.hxx>
+#include <IntAna_Quadric.hxx>
+#include <Precision.hxx>
 #include <TopoDS.hxx>
 #include <gp_Lin.hxx>
 
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "geometry/bnd_box.hpp"
@@ -76,6 +80,12 @@ IntCurveSurface_TransitionOnCurve transition(const BRepAdaptor_Surface& s, const
   return in ? IntCurveSurface_In : IntCurveSurface_Out;
 }
 
+// A plane, cylinder, cone, sphere or torus: IntCurveSurface_Inter intersects a line with it in closed form.
+bool isElementary(GeomAbs_SurfaceType type) {
+  return type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_Sphere ||
+         type == GeomAbs_Torus;
+}
+
 // Cells per parameter direction of a SurfaceGrid: four per C2 piece of the surface (a B-spline's knot span), 16 to 96.
 int gridCells(int pieces) { return std::clamp(4 * pieces, 16, 96); }
 
@@ -113,13 +123,11 @@ RayCaster::RayCaster(const CadSolid& cad, double tolerance)
   for (int f = 1; f <= cad.faces.Extent(); ++f) {
     const TopoDS_Face& face = TopoDS::Face(cad.faces(f));
     faces_.push_back(std::make_unique<IntCurvesFace_Intersector>(face, tolerance));
-    auto plane = std::make_unique<PlaneFace>();
-    plane->surface.Initialize(face, true);  // as the intersector's: within the face's parameter bounds
-    const GeomAbs_SurfaceType type = plane->surface.GetType();
-    analytic_.push_back(type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone ||
-                        type == GeomAbs_Sphere || type == GeomAbs_Torus);
-    if (type == GeomAbs_Plane) plane->plane = plane->surface.Plane();
-    planes_.push_back(type == GeomAbs_Plane ? std::move(plane) : nullptr);
+    auto elementary = std::make_unique<ElementaryFace>();
+    elementary->surface.Initialize(face, true);  // as the intersector's: within the face's parameter bounds
+    elementary->type = elementary->surface.GetType();
+    if (elementary->type == GeomAbs_Plane) elementary->plane = elementary->surface.Plane();
+    elementary_.push_back(isElementary(elementary->type) ? std::move(elementary) : nullptr);
   }
   grids_.resize(faces_.size());
 }
@@ -202,41 +210,120 @@ RayCaster::SurfaceHits RayCaster::surfaceHits(int f, const gp_Lin& line, double 
   return SurfaceHits::kDone;
 }
 
-const UvBoundary* RayCaster::boundary(PlaneFace& face) const {
-  if (!face.boundary) face.boundary = faceUvBoundary(face.surface.Face(), diagonal_);
-  // The intersector classifies with max(tolerance, the edges' tolerances): the band left undecided must hold it (the
-  // margin is at least 1e-5 x the diagonal, the tolerance 1e-7 x the diagonal as WallRays, the tet filter and the
-  // side classification cast: a factor 100).
-  return face.boundary->margin() >= 10 * tolerance_ ? face.boundary.get() : nullptr;
+const UvBoundary* RayCaster::boundary(ElementaryFace& face) const {
+  if (face.type == GeomAbs_Plane) {
+    if (!face.boundary) face.boundary = faceUvBoundary(face.surface.Face(), diagonal_);
+    // The intersector classifies with max(tolerance, the edges' tolerances): the band left undecided must hold it (the
+    // margin is at least 1e-5 x the diagonal, the tolerance 1e-7 x the diagonal as WallRays, the tet filter and the
+    // side classification cast: a factor 100).
+    return face.boundary->margin() >= 10 * tolerance_ ? face.boundary.get() : nullptr;
+  }
+  if (!face.boundaryMade) {
+    // IntCurvesFace_Intersector::InternalCall's widest ON band in (u, v): max(tolerance, the resolution of the face's
+    // and its edges' largest tolerance); u is an angle on a cylinder: the band is wider there than on a plane.
+    const double largest = largestTolerance(face.surface.Face());
+    const double band = std::max({tolerance_, face.surface.UResolution(largest), face.surface.VResolution(largest)});
+    face.boundary = faceUvBoundary(face.surface.Face(), diagonal_, 10 * band);
+    face.boundaryMade = true;
+  }
+  return face.boundary.get();
 }
 
-// IntCurvesFace_Intersector::Perform on a plane, as OpenCASCADE 7.6 computes it: IntAna_IntConicQuad's line-plane
-// point and parameter (IntCurveSurface_Inter::PerformConicSurf, AppendIntAna), ElSLib's (u, v) of it, the bounds and
-// the transition of AppendPoint, the point on the line at w; the classification of (u, v) on the face by its
-// UvBoundary where that decides (IntCurvesFace_Intersector::InternalCall's keeps IN and ON).
-RayCaster::PlaneHit RayCaster::planeHit(int f, const gp_Lin& line, double wMin, double wMax,
-                                        std::vector<RayHit>& hits) {
-  PlaneFace& face = *planes_[f];
-  const IntAna_IntConicQuad meet(line, face.plane, kAngular);
-  if (!meet.IsDone() || meet.IsParallel() || meet.IsInQuadric() || meet.NbPoints() != 1) return PlaneHit::kNone;
-  const double w = meet.ParamOnConic(1);
-  double u = 0, v = 0;
-  ElSLib::Parameters(face.plane, meet.Point(1), u, v);
-  if (!inBounds(face.surface, u, v) || w < wMin || w > wMax) return PlaneHit::kNone;
-  const UvBoundary* quick = boundary(face);
-  const UvBoundary::Side side = quick ? quick->side(u, v) : UvBoundary::Side::Undecided;
-  if (side == UvBoundary::Side::Outside) return PlaneHit::kNone;
-  // ON an edge (kept) if within the classifier's tolerance of it
-  if (side == UvBoundary::Side::Undecided && !(quick && quick->onLineOrCircle(u, v, onEdgeBand(tolerance_))))
-    return PlaneHit::kUndecided;
-  const gp_Pnt p = ElCLib::Value(w, line);
-  hits.push_back({w, f, Vec3(p.X(), p.Y(), p.Z()), u, v, transition(face.surface, line, u, v)});
-  return PlaneHit::kHit;
+namespace {
+
+// IntCurveSurface_Inter's points of a line on an elementary surface (PerformConicSurf: IntAna's points, their (u, v)
+// by ElSLib), as (w, u, v) before AppendPoint brings u and v into the surface's periods; nullopt where the intersector
+// takes its general path (a cone of half-angle within 1e5 x Precision::Angular() of pi/2, a line IntAna_IntLinTorus
+// fails on). [in] s: the face's surface; [in] line.
+std::optional<std::vector<std::array<double, 3>>> conicSurfacePoints(const BRepAdaptor_Surface& s, const gp_Lin& line) {
+  std::vector<std::array<double, 3>> points;
+  auto append = [&](const IntAna_IntConicQuad& meet, auto parameters) {
+    if (!meet.IsDone() || meet.IsParallel() || meet.IsInQuadric()) return;  // AppendIntAna: no point
+    for (int i = 1; i <= meet.NbPoints(); ++i) {
+      double u = 0, v = 0;
+      parameters(meet.Point(i), u, v);
+      points.push_back({meet.ParamOnConic(i), u, v});
+    }
+  };
+  switch (s.GetType()) {
+    case GeomAbs_Plane:
+      append(IntAna_IntConicQuad(line, s.Plane(), kAngular),
+             [&](const gp_Pnt& p, double& u, double& v) { ElSLib::Parameters(s.Plane(), p, u, v); });
+      return points;
+    case GeomAbs_Cylinder:
+      append(IntAna_IntConicQuad(line, IntAna_Quadric(s.Cylinder())),
+             [&](const gp_Pnt& p, double& u, double& v) { ElSLib::Parameters(s.Cylinder(), p, u, v); });
+      return points;
+    case GeomAbs_Sphere:
+      append(IntAna_IntConicQuad(line, IntAna_Quadric(s.Sphere())),
+             [&](const gp_Pnt& p, double& u, double& v) { ElSLib::Parameters(s.Sphere(), p, u, v); });
+      return points;
+    case GeomAbs_Cone: {
+      const gp_Cone cone = s.Cone();
+      if (std::abs(cone.SemiAngle()) >= M_PI / 2 - 1e5 * Precision::Angular()) return std::nullopt;
+      append(IntAna_IntConicQuad(line, IntAna_Quadric(cone)),
+             [&](const gp_Pnt& p, double& u, double& v) { ElSLib::Parameters(cone, p, u, v); });
+      return points;
+    }
+    case GeomAbs_Torus: {
+      const IntAna_IntLinTorus meet(line, s.Torus());
+      if (!meet.IsDone()) return std::nullopt;
+      for (int i = 1; i <= meet.NbPoints(); ++i) {
+        double u = 0, v = 0;
+        meet.ParamOnTorus(i, u, v);
+        points.push_back({meet.ParamOnLine(i), u, v});
+      }
+      return points;
+    }
+    default:
+      return std::nullopt;
+  }
+}
+
+}  // namespace
+
+// IntCurvesFace_Intersector::Perform on an elementary surface, as OpenCASCADE 7.6 computes it: the line's points on the
+// surface (conicSurfacePoints), u and v brought into the surface's periods and kept within its bounds (AppendPoint),
+// the transition, the point on the line at w; each point classified on the face by its UvBoundary where that decides
+// (IntCurvesFace_Intersector::InternalCall keeps IN and ON, in [wMin, wMax]).
+RayCaster::ElementaryHits RayCaster::elementaryHits(int f, const gp_Lin& line, double wMin, double wMax,
+                                                    std::vector<RayHit>& hits) {
+  ElementaryFace& face = *elementary_[f];
+  const BRepAdaptor_Surface& s = face.surface;
+  const std::optional<std::vector<std::array<double, 3>>> points = conicSurfacePoints(s, line);
+  if (!points) return ElementaryHits::kUndecided;
+  std::vector<RayHit> appended, found;
+  for (auto [w, u, v] : *points) {  // AppendPoint
+    if (s.IsUPeriodic() || face.type == GeomAbs_Cylinder || face.type == GeomAbs_Cone || face.type == GeomAbs_Sphere)
+      u = ElCLib::InPeriod(u, s.FirstUParameter(), s.FirstUParameter() + s.UPeriod());
+    if (s.IsVPeriodic()) v = ElCLib::InPeriod(v, s.FirstVParameter(), s.FirstVParameter() + s.VPeriod());
+    if (!inBounds(s, u, v)) continue;
+    const RayHit hit{w, f, toVec(ElCLib::Value(w, line)), u, v, transition(s, line, u, v)};
+    // IntCurveSurface_Intersection::Append keeps one of two points within 1e-8 in u, v and w with the same transition
+    // (a line tangent to a cylinder: IntAna's double root)
+    if (std::none_of(appended.begin(), appended.end(), [&](const RayHit& a) {
+          return std::abs(a.u - u) < 1e-8 && std::abs(a.v - v) < 1e-8 && std::abs(a.w - w) < 1e-8 &&
+                 a.transition == hit.transition;
+        }))
+      appended.push_back(hit);
+  }
+  for (const RayHit& hit : appended) {  // InternalCall
+    if (hit.w < wMin || hit.w > wMax) continue;
+    const UvBoundary* quick = boundary(face);
+    const UvBoundary::Side side = quick ? quick->side(hit.u, hit.v) : UvBoundary::Side::Undecided;
+    if (side == UvBoundary::Side::Outside) continue;
+    // ON an edge (kept) if within the classifier's tolerance of it
+    if (side == UvBoundary::Side::Undecided && !(quick && quick->onLineOrCircle(hit.u, hit.v, onEdgeBand(tolerance_))))
+      return ElementaryHits::kUndecided;
+    found.push_back(hit);
+  }
+  hits.insert(hits.end(), found.begin(), found.end());
+  return ElementaryHits::kDone;
 }
 
 bool RayCaster::missesPlane(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax) const {
-  if (!planes_[f]) return false;
-  const gp_Ax3& frame = planes_[f]->plane.Position();
+  if (!elementary_[f] || elementary_[f]->type != GeomAbs_Plane) return false;
+  const gp_Ax3& frame = elementary_[f]->plane.Position();
   const Vec3 normal(frame.Direction().X(), frame.Direction().Y(), frame.Direction().Z());
   const Vec3 origin(frame.Location().X(), frame.Location().Y(), frame.Location().Z());
   const double across = normal.dot(dir.normalized());  // w as OpenCASCADE measures it: along the unit direction
@@ -263,11 +350,11 @@ void RayCaster::hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin
                            std::vector<RayHit>& hits) {
   if (missesPlane(f, from, dir, wMin, wMax)) return;
   const gp_Lin line(gp_Pnt(from.x(), from.y(), from.z()), gp_Dir(dir.x(), dir.y(), dir.z()));
-  if (planes_[f] && planeHit(f, line, wMin, wMax, hits) != PlaneHit::kUndecided) {
+  if (elementary_[f] && elementaryHits(f, line, wMin, wMax, hits) == ElementaryHits::kDone) {
     ++closedForm_;
     return;
   }
-  if (!analytic_[f]) {
+  if (!elementary_[f]) {
     if (surfaceHits(f, line, wMin, wMax, hits) == SurfaceHits::kDone) {
       ++gridAnswers_;
       return;

@@ -1,8 +1,9 @@
 // Where a line meets the faces of a CAD solid, with only the faces whose boxes the line passes looked at (a
 // box tree built once), where OpenCASCADE's IntCurvesFace_ShapeIntersector tries every face for every ray: the
-// side classification and the sweep cast a few rays per sample or node, so that was rays x faces. On a planar face
-// the hit is computed in closed form and classified with the face's UvBoundary, the intersector asked only near the
-// face's boundary: its own classification walks every edge of the face at every hit.
+// side classification and the sweep cast a few rays per sample or node, so that was rays x faces. On a face whose
+// surface is elementary (a plane, cylinder, cone, sphere or torus) the hits are computed in closed form, as the
+// intersector computes them, and classified with the face's UvBoundary, the intersector asked only near the face's
+// boundary: its own classification walks every edge of the face at every hit (a cylinder with 150 holes: rays x 150).
 #pragma once
 #include <BRepAdaptor_Surface.hxx>
 #include <IntCurveSurface_TransitionOnCurve.hxx>
@@ -52,7 +53,7 @@ class RayCaster {
 
   const TopoDS_Face& face(int f) const { return faces_[f]->Face(); }
 
-  // How many face queries a planar face answered in closed form (not asking its intersector) so far.
+  // How many face queries a face on an elementary surface answered in closed form (not asking its intersector) so far.
   long closedFormAnswers() const { return closedForm_; }
   // How many face queries a non-analytic face answered from its SurfaceGrid (not asking its intersector) so far.
   long gridAnswers() const { return gridAnswers_; }
@@ -73,18 +74,23 @@ class RayCaster {
   // on the face (costly on a face with many edges).
   bool missesPlane(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax) const;
 
-  // A planar face as IntCurvesFace_Intersector sees it, and its boundary for the quick classification.
-  struct PlaneFace {
-    BRepAdaptor_Surface surface;           // restricted to the face's parameter bounds, as the intersector's
-    gp_Pln plane;                          // the surface's
-    std::unique_ptr<UvBoundary> boundary;  // built at the face's first hit in range
+  // A face on an elementary surface (a plane, cylinder, cone, sphere or torus) as IntCurvesFace_Intersector sees it,
+  // and its boundary for the quick classification.
+  struct ElementaryFace {
+    BRepAdaptor_Surface surface;  // restricted to the face's parameter bounds, as the intersector's
+    GeomAbs_SurfaceType type = GeomAbs_Plane;
+    gp_Pln plane;                          // the surface's, if it is a plane
+    bool boundaryMade = false;             // `boundary` was built (at the face's first hit in range)
+    std::unique_ptr<UvBoundary> boundary;  // null if its margin is not far above the intersector's tolerance
   };
-  enum class PlaneHit { kNone, kHit, kUndecided };
-  // The hit of the line on planar face f in [wMin, wMax] computed as the intersector does (kHit: appended to hits),
-  // or kNone; kUndecided where the hit lies near the face's boundary (the intersector is to decide).
-  PlaneHit planeHit(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits);
-  // The face's UvBoundary if its margin is far above the intersectors' tolerance, else null (no quick test).
-  const UvBoundary* boundary(PlaneFace& face) const;
+  enum class ElementaryHits { kDone, kUndecided };
+  // The hits of the line on the elementary face f in [wMin, wMax] computed as the intersector does (kDone: appended to
+  // hits, if any), or kUndecided (nothing appended) where a hit lies near the face's boundary or the intersector
+  // would take its general path (a cone opened nearly flat, a line IntAna_IntLinTorus fails on): the intersector is to
+  // decide.
+  ElementaryHits elementaryHits(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits);
+  // The face's UvBoundary, its margin far above the intersector's tolerance in (u, v), else null (no quick test).
+  const UvBoundary* boundary(ElementaryFace& face) const;
 
   // A face whose surface is not analytic (a B-spline, a surface of revolution...) as a grid of cells over its
   // parameter bounds, each boxed with its points and grown by how far the surface strays from its corners' bilinear
@@ -105,9 +111,8 @@ class RayCaster {
   // face's boundary: the intersector is to answer.
   SurfaceHits surfaceHits(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits);
 
-  std::vector<bool> analytic_;                      // per face: its surface is a plane, cylinder, cone, sphere or torus
-  std::vector<std::unique_ptr<PlaneFace>> planes_;  // per face: null if it is not a plane
-  std::vector<std::unique_ptr<SurfaceGrid>> grids_;  // per non-analytic face, built at its first query
+  std::vector<std::unique_ptr<ElementaryFace>> elementary_;  // per face: null if its surface is not elementary
+  std::vector<std::unique_ptr<SurfaceGrid>> grids_;          // per non-analytic face, built at its first query
   double tolerance_, diagonal_;
   long closedForm_ = 0, gridAnswers_ = 0;
   long intersectorOnOtherSurfaces_ = 0;  // queries a non-analytic face left to its intersector

@@ -231,11 +231,12 @@ bool UvBoundary::onLineOrCircle(double u, double v, double tolerance) const {
 
 double onEdgeBand(double tolerance) { return 0.5 * std::min(tolerance, Precision::Confusion()); }
 
-std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal) {
+std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal, double leastMargin) {
   const double tolerance = largestTolerance(face), margin = std::max(1e-5 * diagonal, kToleranceMargin * tolerance);
   const BRepAdaptor_Surface surface(face, false);
-  return std::make_unique<UvBoundary>(face, std::max(surface.UResolution(margin), kToleranceMargin * tolerance),
-                                      std::max(surface.VResolution(margin), kToleranceMargin * tolerance));
+  const double least = std::max(kToleranceMargin * tolerance, leastMargin);
+  return std::make_unique<UvBoundary>(face, std::max(surface.UResolution(margin), least),
+                                      std::max(surface.VResolution(margin), least));
 }
 
 }  // namespace hexlayer

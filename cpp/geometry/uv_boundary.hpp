@@ -75,7 +75,8 @@ double onEdgeBand(double tolerance);
 // A face's UvBoundary with the margins the exact classifiers' callers use: max(1e-5 x the part's diagonal,
 // 3 x the face's largest tolerance) in 3D, turned into (u, v) by the surface's resolution (at least 3 x that
 // tolerance): beyond the band in which BRepClass_FaceClassifier calls a point ON an edge.
-// [in] face: the face; [in] diagonal: the part's bounding-box diagonal. Returns the boundary (built here).
-std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal);
+// [in] face: the face; [in] diagonal: the part's bounding-box diagonal; [in] leastMargin: the least margin in u and
+// in v (a caller's classifier whose ON band in (u, v) is wider). Returns the boundary (built here).
+std::unique_ptr<UvBoundary> faceUvBoundary(const TopoDS_Face& face, double diagonal, double leastMargin = 0);
 
 }  // namespace hexlayer

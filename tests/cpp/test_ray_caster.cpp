@@ -3,14 +3,19 @@
 // on a plate with a grid of holes (many faces), its faces planes and B-splines (hits on those from their
 // SurfaceGrid, Newton's method from the cells a line passes, where that decides), scaled by 1, 1e-3 and 1e3; its
 // closed-form hits on planar faces against each face's own intersector on a plate with 77 holes, near its edges and
-// vertices too.
+// vertices too, and on cylinders, spheres, cones and tori pierced by holes.
 #include <gtest/gtest.h>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRep_Tool.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -132,6 +137,91 @@ std::vector<RayHit> everyFacesHits(std::vector<std::unique_ptr<IntCurvesFace_Int
   return hits;
 }
 
+// Checks RayCaster::all's hits of each line (point, direction) on the solid against each face's own OpenCASCADE
+// intersector (what RayCaster asked before): the same hits, faces, parameters, points and transitions, to the last
+// bit. [in] cad; [in,out] rays: its caster; [in] lines; [in] reach: w in [-reach, reach]. Returns the hit count.
+std::size_t expectHitsAsTheIntersectors(const CadSolid& cad, RayCaster& rays,
+                                        const std::vector<std::pair<Vec3, Vec3>>& lines, double reach) {
+  std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces;
+  for (int f = 1; f <= cad.faces.Extent(); ++f)
+    faces.push_back(std::make_unique<IntCurvesFace_Intersector>(TopoDS::Face(cad.faces(f)), 1e-7 * cad.diagonal));
+  std::size_t hitCount = 0;
+  for (const auto& [p, d] : lines) {
+    std::vector<RayHit> expected;
+    try {
+      expected = everyFacesHits(faces, lineOf(p, d), -reach, reach);
+    } catch (const Standard_Failure&) {  // an edge without a 3D curve (a sphere's pole) met near the face's boundary
+      EXPECT_ANY_THROW(rays.all(p, d, -reach, reach));
+      continue;
+    }
+    const std::vector<RayHit> hits = rays.all(p, d, -reach, reach);
+    EXPECT_EQ(hits.size(), expected.size()) << p.transpose() << " along " << d.transpose();
+    if (hits.size() != expected.size()) continue;
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+      EXPECT_EQ(hits[i].face, expected[i].face);
+      EXPECT_EQ(hits[i].w, expected[i].w);
+      EXPECT_EQ(hits[i].u, expected[i].u);
+      EXPECT_EQ(hits[i].v, expected[i].v);
+      EXPECT_EQ(hits[i].point, expected[i].point);
+      EXPECT_EQ(hits[i].transition, expected[i].transition);
+    }
+    hitCount += hits.size();
+  }
+  return hitCount;
+}
+
+// A shell between two elementary surfaces pierced by holes: a tube (R 12 / 10, 30 long) with 6 x 3 radial holes, a
+// spherical shell (R 12 / 10) with 8 radial holes, a conical one (R 12 -> 6 outside, 10 -> 4 inside, 20 high) with 6,
+// a toroidal one (R 20, r 5 / 3) with 8 holes along z through its tube; all lengths times s.
+TopoDS_Solid pierced(const std::string& kind, double s) {
+  TopoDS_Shape shell;
+  std::vector<gp_Ax2> holes;  // each a Ø3 hole 40 long from its axis' origin
+  auto radial = [&](double angle, double z, double tilt) {
+    const gp_Dir d(std::cos(angle) * std::cos(tilt), std::sin(angle) * std::cos(tilt), std::sin(tilt));
+    holes.emplace_back(gp_Pnt(0, 0, z * s), d);
+  };
+  if (kind == "tube") {
+    shell = BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(12 * s, 30 * s).Shape(),
+                            BRepPrimAPI_MakeCylinder(10 * s, 30 * s).Shape())
+                .Shape();
+    for (int i = 0; i < 6; ++i)
+      for (int k = 0; k < 3; ++k) radial(0.3 + i * 1.0, 6 + 9 * k, 0);
+  } else if (kind == "sphere") {
+    shell = BRepAlgoAPI_Cut(BRepPrimAPI_MakeSphere(12 * s).Shape(), BRepPrimAPI_MakeSphere(10 * s).Shape()).Shape();
+    for (int i = 0; i < 8; ++i) radial(0.3 + i * 0.8, 0, -0.9 + 0.25 * i);
+  } else if (kind == "cone") {
+    shell = BRepAlgoAPI_Cut(BRepPrimAPI_MakeCone(12 * s, 6 * s, 20 * s).Shape(),
+                            BRepPrimAPI_MakeCone(10 * s, 4 * s, 20 * s).Shape())
+                .Shape();
+    for (int i = 0; i < 6; ++i) radial(0.2 + i * 1.05, 4 + 2.5 * i, 0);
+  } else {  // torus
+    shell = BRepAlgoAPI_Cut(BRepPrimAPI_MakeTorus(20 * s, 5 * s).Shape(), BRepPrimAPI_MakeTorus(20 * s, 3 * s).Shape())
+                .Shape();
+    for (int i = 0; i < 8; ++i) {
+      const double a = 0.1 + i * 0.79, r = 20 + 3.5 * std::cos(2.0 * i);
+      holes.emplace_back(gp_Pnt(r * std::cos(a) * s, r * std::sin(a) * s, -20 * s), gp_Dir(0, 0, 1));
+    }
+  }
+  for (const gp_Ax2& axis : holes)
+    shell = BRepAlgoAPI_Cut(shell, BRepPrimAPI_MakeCylinder(axis, 1.5 * s, 40 * s).Shape());
+  TopExp_Explorer solid(shell, TopAbs_SOLID);
+  return TopoDS::Solid(solid.Current());
+}
+
+// Points on the solid's edges (two along each) and off them by 1e-12 .. 0.3 (times s) along a slant.
+std::vector<Vec3> pointsNearEdgesOf(const CadSolid& cad, double s) {
+  std::vector<Vec3> points;
+  for (TopExp_Explorer e(cad.solid, TopAbs_EDGE); e.More(); e.Next()) {
+    if (BRep_Tool::Degenerated(TopoDS::Edge(e.Current()))) continue;
+    const BRepAdaptor_Curve c(TopoDS::Edge(e.Current()));
+    for (double t : {0.17, 0.62}) {
+      const Vec3 at = toVec(c.Value(c.FirstParameter() + t * (c.LastParameter() - c.FirstParameter())));
+      for (double off : {0.0, 1e-12, -1e-7, 1e-5, 0.3}) points.push_back(at + off * s * Vec3(0.6, -0.48, 0.64));
+    }
+  }
+  return points;
+}
+
 }  // namespace
 
 // The closed-form hits on planar faces against each face's own OpenCASCADE intersector (what RayCaster asked before):
@@ -142,11 +232,7 @@ TEST(RayCaster, ClosedFormPlaneHitsAsTheIntersectorsOnAPlateWithManyHoles) {
     SCOPED_TRACE("x " + std::to_string(s));
     const CadSolid cad = test_parts::plateWithManyHoles(s);
     ASSERT_EQ(cad.faces.Extent(), 6 + 77);
-    const double tolerance = 1e-7 * cad.diagonal;
-    RayCaster rays(cad, tolerance);
-    std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces;
-    for (int f = 1; f <= cad.faces.Extent(); ++f)
-      faces.push_back(std::make_unique<IntCurvesFace_Intersector>(TopoDS::Face(cad.faces(f)), tolerance));
+    RayCaster rays(cad, 1e-7 * cad.diagonal);
     std::vector<std::pair<Vec3, Vec3>> lines;  // point, direction
     for (int k = 0; k < 60; ++k)               // through the plate at many angles, some through holes
       lines.emplace_back(Vec3(3 + 0.97 * k, 2 + 0.61 * k, 1) * s,
@@ -154,22 +240,27 @@ TEST(RayCaster, ClosedFormPlaneHitsAsTheIntersectorsOnAPlateWithManyHoles) {
     for (const Vec3& p : test_parts::pointsNearEdges(s))  // near the edges: across the plate, oblique and along it
       for (const Vec3& d : {Vec3(0, 0, 1), Vec3(0.3, -0.2, 1).normalized(), Vec3(1, 0.4, 1e-3).normalized()})
         lines.emplace_back(p, d);
-    std::size_t hitCount = 0;
-    for (const auto& [p, d] : lines) {
-      const std::vector<RayHit> hits = rays.all(p, d, -100 * s, 100 * s);
-      const std::vector<RayHit> expected = everyFacesHits(faces, lineOf(p, d), -100 * s, 100 * s);
-      ASSERT_EQ(hits.size(), expected.size()) << p.transpose() / s << " along " << d.transpose();
-      for (std::size_t i = 0; i < hits.size(); ++i) {
-        EXPECT_EQ(hits[i].face, expected[i].face);
-        EXPECT_EQ(hits[i].w, expected[i].w);
-        EXPECT_EQ(hits[i].u, expected[i].u);
-        EXPECT_EQ(hits[i].v, expected[i].v);
-        EXPECT_EQ(hits[i].point, expected[i].point);
-        EXPECT_EQ(hits[i].transition, expected[i].transition);
-      }
-      hitCount += hits.size();
-    }
-    EXPECT_GT(hitCount, 500u);
+    EXPECT_GT(expectHitsAsTheIntersectors(cad, rays, lines, 100 * s), 500u);
     EXPECT_GT(rays.closedFormAnswers(), 300);  // the closed form was used (most rays are far from the edges)
   }
+}
+
+// The same on cylinders, spheres, cones and tori pierced by holes (a perforated tube's faces: the intersector's
+// classification walked its 150 holes' edges at every hit): lines through the shell at many angles, through the
+// holes, and through points on and near every edge.
+TEST(RayCaster, ClosedFormHitsOnCylindersSpheresConesAndToriAsTheIntersectors) {
+  for (const std::string kind : {"tube", "sphere", "cone", "torus"})
+    for (double s : {1.0, 1e-3, 1e3}) {
+      SCOPED_TRACE(kind + " x " + std::to_string(s));
+      const CadSolid cad = prepareSolid(pierced(kind, s));
+      RayCaster rays(cad, 1e-7 * cad.diagonal);
+      std::vector<std::pair<Vec3, Vec3>> lines;
+      for (int k = 0; k < 80; ++k)  // through the shell's middle at many angles
+        lines.emplace_back(Vec3(std::sin(0.9 * k), 3 * std::cos(1.1 * k), 6 + 0.2 * k) * s,
+                           Vec3(std::cos(0.7 * k), std::sin(0.7 * k), 0.4 * std::sin(1.3 * k)).normalized());
+      for (const Vec3& p : pointsNearEdgesOf(cad, s))
+        for (const Vec3& d : {Vec3(0, 0, 1), Vec3(0.8, -0.3, 0.2).normalized()}) lines.emplace_back(p, d);
+      EXPECT_GT(expectHitsAsTheIntersectors(cad, rays, lines, 100 * s), 200u);
+      EXPECT_GT(rays.closedFormAnswers(), 200);  // decided in closed form, away from the edges
+    }
 }
