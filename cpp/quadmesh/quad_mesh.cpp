@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <set>
@@ -23,6 +24,7 @@
 #include "quadmesh/chordal_patches.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
+#include "quadmesh/sizing.hpp"
 
 namespace hexlayer {
 namespace {
@@ -124,26 +126,16 @@ double smallestSize(const QuadMeshOptions& o) {
   return o.vertexSize.empty() ? o.size : *std::min_element(o.vertexSize.begin(), o.vertexSize.end());
 }
 
-// The target size at a point of the chordal surface, interpolated from its facet's corners.
-// [in,out] facet: the facet of the point asked before (Gmsh asks along its mesh, point after nearby point), then p's.
-double sizeAt(const ChordalLocator& chordal, const std::vector<double>& vertexSize, const Vec3& p, int& facet) {
-  const ChordalPoint at = chordal.locate(p, facet);
-  facet = at.facet;
-  const auto& f = chordal.surface().facets[at.facet];
-  double h = 0;
-  for (int k = 0; k < (f[3] < 0 ? 3 : 4); ++k) h += at.weights[k] * vertexSize[f[k]];
-  return h;
-}
-
 void setQuadOptions(const QuadMeshOptions& o, const PatchSplit& split, const ChordalLocator& chordal) {
   const bool adaptive = !o.vertexSize.empty();
   gmsh::option::setNumber("Mesh.MeshSizeMin", smallestSize(o));
   gmsh::option::setNumber("Mesh.MeshSizeMax",
                           adaptive ? *std::max_element(o.vertexSize.begin(), o.vertexSize.end()) : o.size);
   if (adaptive)  // §6.1: geometry-adaptive quads
-    gmsh::model::mesh::setSizeCallback([&, facet = -1](int, int, double x, double y, double z) mutable {
-      return sizeAt(chordal, o.vertexSize, Vec3(x, y, z), facet);
-    });
+    gmsh::model::mesh::setSizeCallback(
+        [size = ChordalSizeField(chordal, o.vertexSize)](int, int, double x, double y, double z) mutable {
+          return size(Vec3(x, y, z));
+        });
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -221,11 +213,11 @@ std::vector<SampledCurve> fourSides(int surface, std::map<int, SampledCurve>& cu
 // Number of segments a curve needs at the target size.
 double segmentsNeeded(const SampledCurve& c, const QuadMeshOptions& o, const ChordalLocator& chordal) {
   double segments = 0;
-  int facet = -1;
+  std::optional<ChordalSizeField> size;
+  if (!o.vertexSize.empty()) size.emplace(chordal, o.vertexSize);
   for (size_t i = 0; i + 1 < c.points.size(); ++i) {
     const Vec3 mid = 0.5 * (c.points[i] + c.points[i + 1]);
-    segments += (c.points[i + 1] - c.points[i]).norm() /
-                (o.vertexSize.empty() ? o.size : sizeAt(chordal, o.vertexSize, mid, facet));
+    segments += (c.points[i + 1] - c.points[i]).norm() / (size ? (*size)(mid) : o.size);
   }
   return std::max(1.0, std::round(segments));
 }
@@ -510,11 +502,10 @@ QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOp
 
 // The target quad size of the block grids at a point (uniform, or the adaptive sizing's).
 SizeField blockGridSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
-  const ChordalLocator* surface = &chordal;
-  const QuadMeshOptions* options = &o;
-  return [surface, options](const Vec3& p) {
-    int facet = -1;  // the field may be asked from several threads: no hint kept between points
-    return options->vertexSize.empty() ? options->size : sizeAt(*surface, options->vertexSize, p, facet);
+  if (o.vertexSize.empty()) return [size = o.size](const Vec3&) { return size; };
+  return [field = std::make_shared<const ChordalSizeField>(chordal, o.vertexSize)](const Vec3& p) {
+    int facet = -1;  // the field may be asked from several threads: no facet kept between points
+    return field->at(p, facet);
   };
 }
 

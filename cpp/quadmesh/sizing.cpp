@@ -71,4 +71,27 @@ std::vector<double> adaptiveSizes(const ChordalSurface& s, const SizingOptions& 
   return h;
 }
 
+ChordalSizeField::ChordalSizeField(const ChordalLocator& chordal, const std::vector<double>& vertexSize)
+    : chordal_(&chordal),
+      vertexSize_(&vertexSize),
+      reachLo_(Vec3::Constant(INFINITY)),
+      reachHi_(Vec3::Constant(-INFINITY)) {
+  for (const Vec3& v : chordal.surface().vertices) reachLo_ = reachLo_.cwiseMin(v), reachHi_ = reachHi_.cwiseMax(v);
+  const double grow = reachLo_.allFinite() ? (reachHi_ - reachLo_).norm() : 0.0;
+  reachLo_ -= Vec3::Constant(grow), reachHi_ += Vec3::Constant(grow);
+}
+
+double ChordalSizeField::at(const Vec3& p, int& facet) const {
+  const std::vector<double>& size = *vertexSize_;
+  const bool near = p.allFinite() && (p.array() >= reachLo_.array()).all() && (p.array() <= reachHi_.array()).all();
+  if (!near && facet < 0) return *std::max_element(size.begin(), size.end());
+  const ChordalPoint found = near ? chordal_->locate(p, facet) : ChordalPoint{};  // far: the facet before, evenly
+  if (near) facet = found.facet;
+  const auto& f = chordal_->surface().facets[facet];
+  const int corners = f[3] < 0 ? 3 : 4;
+  double h = 0;
+  for (int k = 0; k < corners; ++k) h += (near ? found.weights[k] : 1.0 / corners) * size[f[k]];  // sum w_k h_k
+  return h;
+}
+
 }  // namespace hexlayer

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "quadmesh/sizing.hpp"
 #include "test_flat_surfaces.hpp"
@@ -140,4 +141,32 @@ TEST(Sizing, ALoopShorterThanTheSmallestQuadEdgeIsLeftAlone) {
   s.radius.assign(s.vertices.size(), 0.5);
   const std::vector<double> h = adaptiveSizes(s, {4.0, 5.0, 16, 0.3, 0.5});  // the loop is 4 long
   for (size_t i = 0; i < h.size(); ++i) EXPECT_NEAR(h[i], 5.0, 1e-12) << "the radius size 4, raised to the bound";
+}
+
+// The size field Gmsh asks (§6.1): on the strip, the size interpolated linearly along it (the sizes at its vertices
+// grow linearly), at x1, 1e-3 and 1e3; a point far beyond the surface (Gmsh's (1e21, 1e21, 1e21) where its
+// parametrization has no point) takes the mean size of the facet found before, or the largest size before any.
+TEST(Sizing, TheSizeFieldInterpolatesOnTheSurfaceAndKeepsTheFacetBeforeForAFarPoint) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    ChordalSurface chordal = strip(20, wedge);
+    for (Vec3& v : chordal.vertices) v *= s;
+    std::vector<double> size;
+    for (const Vec3& v : chordal.vertices) size.push_back((1 + 0.1 * v.x() / s) * s);  // h = (1 + x / 10) s
+    const ChordalLocator locator(chordal);
+    ChordalSizeField field(locator, size);
+    const Vec3 far = Vec3::Constant(1e21);
+    EXPECT_DOUBLE_EQ(field(far), 3 * s);  // before any point: the largest size (x = 20)
+    for (double x : {0.3, 7.25, 19.9}) EXPECT_NEAR(field(Vec3(x, 0.4, 0.01) * s), (1 + 0.1 * x) * s, 1e-12 * s) << x;
+    // after x = 19.9 (on the facet [19, 20]): that facet's corners' mean, whatever the far point
+    EXPECT_NEAR(field(far), 2.95 * s, 1e-12 * s);
+    EXPECT_NEAR(field(Vec3(-1e30, 5e29, 0)), 2.95 * s, 1e-12 * s);
+    EXPECT_NEAR(field(Vec3(NAN, 0, 0)), 2.95 * s, 1e-12 * s);
+    // a point beside the strip but within its grown box: the nearest facet's size, not the one before
+    EXPECT_NEAR(field(Vec3(2.5, 3, 4) * s), 1.25 * s, 1e-12 * s);
+    int facet = -1;  // the thread-safe form, from no facet: the same
+    EXPECT_DOUBLE_EQ(field.at(far, facet), 3 * s);
+    EXPECT_NEAR(field.at(Vec3(7.25, 0.5, 0) * s, facet), 1.725 * s, 1e-12 * s);
+    EXPECT_EQ(facet, 7);
+  }
 }
