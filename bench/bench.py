@@ -159,7 +159,7 @@ JUNCTIONS = ("plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split"
              "plate_ribs_tee", "shell_rib", "box_partition", "lbracket_gusset", "plate_rib_grid", "plate_rib_fillet",
              "box_rib_fillet")
 # Parts with many features (scripts/make_samples.py --only many) and the real parts.
-MANY = ("keyboard_plate", "plate_200_holes")
+MANY = ("keyboard_plate", "plate_200_holes", "perforated_tube")
 REAL = os.path.join(os.path.dirname(ROOT), "shared", "parts", "real")
 
 
