@@ -1,6 +1,7 @@
 #include "geometry/ray_caster.hpp"
 
 #include <BRepBndLib.hxx>
+#include <BRepClass_FaceClassifier.hxx>
 #include <ElCLib.hxx>
 #include <ElSLib.hxx>
 #include <IntAna_IntConicQuad.hxx>
@@ -289,10 +290,29 @@ std::optional<std::vector<std::array<double, 3>>> conicSurfacePoints(const BRepA
 RayCaster::ElementaryHits RayCaster::elementaryHits(int f, const gp_Lin& line, double wMin, double wMax,
                                                     std::vector<RayHit>& hits) {
   ElementaryFace& face = *elementary_[f];
+  const std::optional<std::vector<RayHit>> appended = surfacePoints(f, line);
+  if (!appended) return ElementaryHits::kUndecided;
+  std::vector<RayHit> found;
+  for (const RayHit& hit : *appended) {  // InternalCall
+    if (hit.w < wMin || hit.w > wMax) continue;
+    const UvBoundary* quick = boundary(face);
+    const UvBoundary::Side side = quick ? quick->side(hit.u, hit.v) : UvBoundary::Side::Undecided;
+    if (side == UvBoundary::Side::Outside) continue;
+    // ON an edge (kept) if within the classifier's tolerance of it
+    if (side == UvBoundary::Side::Undecided && !(quick && quick->onLineOrCircle(hit.u, hit.v, onEdgeBand(tolerance_))))
+      return ElementaryHits::kUndecided;
+    found.push_back(hit);
+  }
+  hits.insert(hits.end(), found.begin(), found.end());
+  return ElementaryHits::kDone;
+}
+
+std::optional<std::vector<RayHit>> RayCaster::surfacePoints(int f, const gp_Lin& line) const {
+  const ElementaryFace& face = *elementary_[f];
   const BRepAdaptor_Surface& s = face.surface;
   const std::optional<std::vector<std::array<double, 3>>> points = conicSurfacePoints(s, line);
-  if (!points) return ElementaryHits::kUndecided;
-  std::vector<RayHit> appended, found;
+  if (!points) return std::nullopt;
+  std::vector<RayHit> appended;
   for (auto [w, u, v] : *points) {  // AppendPoint
     if (s.IsUPeriodic() || face.type == GeomAbs_Cylinder || face.type == GeomAbs_Cone || face.type == GeomAbs_Sphere)
       u = ElCLib::InPeriod(u, s.FirstUParameter(), s.FirstUParameter() + s.UPeriod());
@@ -307,18 +327,19 @@ RayCaster::ElementaryHits RayCaster::elementaryHits(int f, const gp_Lin& line, d
         }))
       appended.push_back(hit);
   }
-  for (const RayHit& hit : appended) {  // InternalCall
+  return appended;
+}
+
+void RayCaster::classifiedPoints(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits) const {
+  const TopoDS_Face& face = faces_[f]->Face();
+  const BRepAdaptor_Surface& s = elementary_[f]->surface;
+  const double largest = largestTolerance(face);  // the intersector's widest ON band in (u, v), as boundary()'s
+  const double band = std::max({tolerance_, s.UResolution(largest), s.VResolution(largest)});
+  for (const RayHit& hit : *surfacePoints(f, line)) {
     if (hit.w < wMin || hit.w > wMax) continue;
-    const UvBoundary* quick = boundary(face);
-    const UvBoundary::Side side = quick ? quick->side(hit.u, hit.v) : UvBoundary::Side::Undecided;
-    if (side == UvBoundary::Side::Outside) continue;
-    // ON an edge (kept) if within the classifier's tolerance of it
-    if (side == UvBoundary::Side::Undecided && !(quick && quick->onLineOrCircle(hit.u, hit.v, onEdgeBand(tolerance_))))
-      return ElementaryHits::kUndecided;
-    found.push_back(hit);
+    const TopAbs_State state = BRepClass_FaceClassifier(face, gp_Pnt2d(hit.u, hit.v), band).State();
+    if (state == TopAbs_IN || state == TopAbs_ON) hits.push_back(hit);
   }
-  hits.insert(hits.end(), found.begin(), found.end());
-  return ElementaryHits::kDone;
 }
 
 bool RayCaster::missesPlane(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax) const {
@@ -362,7 +383,16 @@ void RayCaster::hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin
     ++intersectorOnOtherSurfaces_;
   }
   IntCurvesFace_Intersector& on = *faces_[f];
-  on.Perform(line, wMin, wMax);
+  try {
+    on.Perform(line, wMin, wMax);
+  } catch (const Standard_Failure&) {
+    // Its ON test near the boundary projects the point on every edge's 3D curve, and a degenerated edge (a sphere's
+    // pole, a cone's apex) has none: Standard_NullObject. The face's points classified exactly instead, if it has
+    // them in closed form.
+    if (!elementary_[f] || !surfacePoints(f, line)) throw;
+    classifiedPoints(f, line, wMin, wMax, hits);
+    return;
+  }
   for (int i = 1; on.IsDone() && i <= on.NbPnt(); ++i) {
     const gp_Pnt& p = on.Pnt(i);
     hits.push_back(

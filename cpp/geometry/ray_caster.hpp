@@ -89,6 +89,13 @@ class RayCaster {
   // would take its general path (a cone opened nearly flat, a line IntAna_IntLinTorus fails on): the intersector is to
   // decide.
   ElementaryHits elementaryHits(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits);
+  // The line's points on the elementary face f's surface, before classification, as the intersector appends them
+  // (its parameters within the surface's periods and bounds, equal points merged); nullopt where the intersector
+  // would take its general path.
+  std::optional<std::vector<RayHit>> surfacePoints(int f, const gp_Lin& line) const;
+  // Those of surfacePoints' (not nullopt) in [wMin, wMax] that BRepClass_FaceClassifier puts IN or ON face f with the
+  // intersector's widest ON band, appended to hits: where the intersector throws.
+  void classifiedPoints(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits) const;
   // The face's UvBoundary, its margin far above the intersector's tolerance in (u, v), else null (no quick test).
   const UvBoundary* boundary(ElementaryFace& face) const;
 
