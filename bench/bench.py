@@ -16,7 +16,8 @@ With --repeat N each part is meshed N times by HexLayer and by Gmsh, alternately
 (Gmsh's own time moves by up to 40 % from run to run on a shared machine); the row lists every run's pair too.
 
 Suite `many` (issue 19): parts with many features, at HexLayer's default size (the wall thickness): the keyboard
-plate and the plate with 200 holes of `scripts/make_samples.py --only many` (written into OUT/many), and every
+plate, the plate with 200 holes and the perforated tube of `scripts/make_samples.py --only many` (written into
+OUT/many), and every
 part of ../shared/parts/real (with --drop-junctions). Per part it prints the CAD faces too, and its --plot is
 time against the number of CAD faces.
 """
