@@ -40,6 +40,22 @@ inline CadSolid plateWithManyHoles(double s, int columns = 11, int rows = 7) {
   return prepareSolid(TopoDS::Solid(solid.Current()));
 }
 
+// [in] s: the scale. A tube R12 outside, R10 inside, 30 long along z, with 6 x 3 radial Ø3 holes (6 around from 0.3
+// rad, 1 rad apart, at z = 6, 15, 24), all lengths times s: its faces cylinders and planes.
+inline TopoDS_Solid perforatedTube(double s) {
+  TopoDS_Shape tube = BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(12 * s, 30 * s).Shape(),
+                                      BRepPrimAPI_MakeCylinder(10 * s, 30 * s).Shape())
+                          .Shape();
+  for (int i = 0; i < 6; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double a = 0.3 + i * 1.0;
+      const gp_Ax2 axis(gp_Pnt(0, 0, (6 + 9 * k) * s), gp_Dir(std::cos(a), std::sin(a), 0));
+      tube = BRepAlgoAPI_Cut(tube, BRepPrimAPI_MakeCylinder(axis, 1.5 * s, 40 * s).Shape()).Shape();
+    }
+  TopExp_Explorer solid(tube, TopAbs_SOLID);
+  return TopoDS::Solid(solid.Current());
+}
+
 // [in] s: the scale. Points of plateWithManyHoles(s) on and near its edges and vertices: on the holes' rims, the
 // plate's edges and a corner, and 1e-12 .. 0.3 (times s) off them in and out.
 inline std::vector<Vec3> pointsNearEdges(double s) {

@@ -3,14 +3,18 @@
 // timed); the same box drawn in metres meshed into the same hexes, scaled; every stage's start and end as progress.
 #include <gtest/gtest.h>
 
+#include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <GProp_GProps.hxx>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
 #include "pipeline/pipeline.hpp"
 #include "quality/quality.hpp"
+#include "test_parts.hpp"
 
 using namespace hexlayer;
 
@@ -90,6 +94,33 @@ TEST(Pipeline, MetresGiveTheSameMeshScaled) {
   for (std::size_t v = 0; v < a.mesh.nodes.size(); ++v)
     EXPECT_LT((a.mesh.nodes[v] * 1e-3 - b.mesh.nodes[v]).norm(), 0.01 * diagonal);
   for (std::size_t h = 0; h < b.mesh.hexes.size(); ++h) EXPECT_GT(hexScaledJacobian(hexCorners(b.mesh, h)), 0.98);
+}
+
+// A tube pierced by 18 radial holes (its faces cylinders: ray hits on them in closed form, Gmsh's quads sized by the
+// radius function) meshed in millimetres and in metres: all hex, none inverted, scaled Jacobian min >= 0.25 and avg
+// >= 0.88 (measured 0.357 / 0.914 in millimetres, 0.309 / 0.897 in metres: Gmsh's quads differ in the last bits'
+// wake), the CAD volume within 1 % (+0.3 %), validated, a surface group per CAD face.
+TEST(Pipeline, APerforatedTubeIsMeshedAllHexInMillimetresAndMetres) {
+  for (double s : {1.0, 1e-3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const TopoDS_Solid tube = test_parts::perforatedTube(s);
+    MeshOptions o;
+    const MeshResult r = meshSolid(tube, o);
+    ASSERT_GT(r.mesh.hexes.size(), 500u);
+    double volume = 0, worst = 1, sum = 0;
+    for (std::size_t h = 0; h < r.mesh.hexes.size(); ++h) {
+      const double q = hexScaledJacobian(hexCorners(r.mesh, h));
+      worst = std::min(worst, q), sum += q;
+      volume += hexVolume(hexCorners(r.mesh, h));
+    }
+    EXPECT_GE(worst, 0.25);
+    EXPECT_GE(sum / static_cast<double>(r.mesh.hexes.size()), 0.88);
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(tube, props);
+    EXPECT_NEAR(volume, props.Mass(), 0.01 * props.Mass());
+    EXPECT_TRUE(r.report.mesh.passed());
+    EXPECT_EQ(r.surfaceGroups.size(), 2u + 18u + 2u);  // two cylinders, 18 holes' walls, two ends
+  }
 }
 
 // Every stage reports its start, then its end (the report's stages, in the order they ran); between them only

@@ -178,9 +178,9 @@ Compared expectHitsAsTheIntersectors(const CadSolid& cad, RayCaster& rays,
   return compared;
 }
 
-// A shell between two elementary surfaces pierced by holes: a tube (R 12 / 10, 30 long) with 6 x 3 radial holes, a
-// spherical shell (R 12 / 10) with 8 radial holes, a conical one (R 12 -> 6 outside, 10 -> 4 inside, 20 high) with 6,
-// a toroidal one (R 20, r 5 / 3) with 8 holes along z through its tube; all lengths times s.
+// A shell between two elementary surfaces pierced by holes: a tube (test_parts::perforatedTube), a spherical shell (R
+// 12 / 10) with 8 radial holes, a conical one (R 12 -> 6 outside, 10 -> 4 inside, 20 high) with 6, a toroidal one (R
+// 20, r 5 / 3) with 8 holes along z through its tube; all lengths times s.
 TopoDS_Solid pierced(const std::string& kind, double s) {
   TopoDS_Shape shell;
   std::vector<gp_Ax2> holes;  // each a Ø3 hole 40 long from its axis' origin
@@ -189,11 +189,7 @@ TopoDS_Solid pierced(const std::string& kind, double s) {
     holes.emplace_back(gp_Pnt(0, 0, z * s), d);
   };
   if (kind == "tube") {
-    shell = BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(12 * s, 30 * s).Shape(),
-                            BRepPrimAPI_MakeCylinder(10 * s, 30 * s).Shape())
-                .Shape();
-    for (int i = 0; i < 6; ++i)
-      for (int k = 0; k < 3; ++k) radial(0.3 + i * 1.0, 6 + 9 * k, 0);
+    return test_parts::perforatedTube(s);
   } else if (kind == "sphere") {
     shell = BRepAlgoAPI_Cut(BRepPrimAPI_MakeSphere(12 * s).Shape(), BRepPrimAPI_MakeSphere(10 * s).Shape()).Shape();
     for (int i = 0; i < 8; ++i) radial(0.3 + i * 0.8, 0, -0.9 + 0.25 * i);
