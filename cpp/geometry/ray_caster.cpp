@@ -211,21 +211,22 @@ RayCaster::SurfaceHits RayCaster::surfaceHits(int f, const gp_Lin& line, double 
   return SurfaceHits::kDone;
 }
 
+double RayCaster::onBand(const ElementaryFace& face) const {
+  const double largest = largestTolerance(face.surface.Face());
+  return std::max({tolerance_, face.surface.UResolution(largest), face.surface.VResolution(largest)});
+}
+
 const UvBoundary* RayCaster::boundary(ElementaryFace& face) const {
+  if (face.boundaryMade) return face.boundary.get();
+  face.boundaryMade = true;
   if (face.type == GeomAbs_Plane) {
-    if (!face.boundary) face.boundary = faceUvBoundary(face.surface.Face(), diagonal_);
+    face.boundary = faceUvBoundary(face.surface.Face(), diagonal_);
     // The intersector classifies with max(tolerance, the edges' tolerances): the band left undecided must hold it (the
     // margin is at least 1e-5 x the diagonal, the tolerance 1e-7 x the diagonal as WallRays, the tet filter and the
     // side classification cast: a factor 100).
-    return face.boundary->margin() >= 10 * tolerance_ ? face.boundary.get() : nullptr;
-  }
-  if (!face.boundaryMade) {
-    // IntCurvesFace_Intersector::InternalCall's widest ON band in (u, v): max(tolerance, the resolution of the face's
-    // and its edges' largest tolerance); u is an angle on a cylinder: the band is wider there than on a plane.
-    const double largest = largestTolerance(face.surface.Face());
-    const double band = std::max({tolerance_, face.surface.UResolution(largest), face.surface.VResolution(largest)});
-    face.boundary = faceUvBoundary(face.surface.Face(), diagonal_, 10 * band);
-    face.boundaryMade = true;
+    if (face.boundary->margin() < 10 * tolerance_) face.boundary.reset();
+  } else {  // u is an angle on a cylinder: the intersector's ON band is wider there than on a plane
+    face.boundary = faceUvBoundary(face.surface.Face(), diagonal_, 10 * onBand(face));
   }
   return face.boundary.get();
 }
@@ -330,16 +331,16 @@ std::optional<std::vector<RayHit>> RayCaster::surfacePoints(int f, const gp_Lin&
   return appended;
 }
 
-void RayCaster::classifiedPoints(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits) const {
-  const TopoDS_Face& face = faces_[f]->Face();
-  const BRepAdaptor_Surface& s = elementary_[f]->surface;
-  const double largest = largestTolerance(face);  // the intersector's widest ON band in (u, v), as boundary()'s
-  const double band = std::max({tolerance_, s.UResolution(largest), s.VResolution(largest)});
-  for (const RayHit& hit : *surfacePoints(f, line)) {
+bool RayCaster::classifiedPoints(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits) const {
+  const std::optional<std::vector<RayHit>> points = surfacePoints(f, line);
+  if (!points) return false;
+  const double band = onBand(*elementary_[f]);
+  for (const RayHit& hit : *points) {
     if (hit.w < wMin || hit.w > wMax) continue;
-    const TopAbs_State state = BRepClass_FaceClassifier(face, gp_Pnt2d(hit.u, hit.v), band).State();
+    const TopAbs_State state = BRepClass_FaceClassifier(faces_[f]->Face(), gp_Pnt2d(hit.u, hit.v), band).State();
     if (state == TopAbs_IN || state == TopAbs_ON) hits.push_back(hit);
   }
+  return true;
 }
 
 bool RayCaster::missesPlane(int f, const Vec3& from, const Vec3& dir, double wMin, double wMax) const {
@@ -389,8 +390,7 @@ void RayCaster::hitsOnFace(int f, const Vec3& from, const Vec3& dir, double wMin
     // Its ON test near the boundary projects the point on every edge's 3D curve, and a degenerated edge (a sphere's
     // pole, a cone's apex) has none: Standard_NullObject. The face's points classified exactly instead, if it has
     // them in closed form.
-    if (!elementary_[f] || !surfacePoints(f, line)) throw;
-    classifiedPoints(f, line, wMin, wMax, hits);
+    if (!elementary_[f] || !classifiedPoints(f, line, wMin, wMax, hits)) throw;
     return;
   }
   for (int i = 1; on.IsDone() && i <= on.NbPnt(); ++i) {

@@ -93,10 +93,15 @@ class RayCaster {
   // (its parameters within the surface's periods and bounds, equal points merged); nullopt where the intersector
   // would take its general path.
   std::optional<std::vector<RayHit>> surfacePoints(int f, const gp_Lin& line) const;
-  // Those of surfacePoints' (not nullopt) in [wMin, wMax] that BRepClass_FaceClassifier puts IN or ON face f with the
-  // intersector's widest ON band, appended to hits: where the intersector throws.
-  void classifiedPoints(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits) const;
-  // The face's UvBoundary, its margin far above the intersector's tolerance in (u, v), else null (no quick test).
+  // Those of surfacePoints' in [wMin, wMax] that BRepClass_FaceClassifier puts IN or ON face f with the intersector's
+  // widest ON band (onBand), appended to hits: where the intersector throws. False (nothing appended) where
+  // surfacePoints has none in closed form.
+  bool classifiedPoints(int f, const gp_Lin& line, double wMin, double wMax, std::vector<RayHit>& hits) const;
+  // IntCurvesFace_Intersector::InternalCall's widest ON band in (u, v) on the face: max(tolerance, the resolution of
+  // the face's and its edges' largest tolerance).
+  double onBand(const ElementaryFace& face) const;
+  // The face's UvBoundary (built at its first use), its margin far above the intersector's ON band in (u, v), else
+  // null (no quick test).
   const UvBoundary* boundary(ElementaryFace& face) const;
 
   // A face whose surface is not analytic (a B-spline, a surface of revolution...) as a grid of cells over its

@@ -210,14 +210,22 @@ std::vector<SampledCurve> fourSides(int surface, std::map<int, SampledCurve>& cu
   return sides;
 }
 
+// The target quad size at a point (uniform, or the adaptive sizing's), for the structured patches and the block
+// grids; its field is built once.
+SizeField targetSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+  if (o.vertexSize.empty()) return [size = o.size](const Vec3&) { return size; };
+  return [field = std::make_shared<const ChordalSizeField>(chordal, o.vertexSize)](const Vec3& p) {
+    int facet = -1;  // the field may be asked from several threads: no facet kept between points
+    return field->at(p, facet);
+  };
+}
+
 // Number of segments a curve needs at the target size.
-double segmentsNeeded(const SampledCurve& c, const QuadMeshOptions& o, const ChordalLocator& chordal) {
+double segmentsNeeded(const SampledCurve& c, const SizeField& size) {
   double segments = 0;
-  std::optional<ChordalSizeField> size;
-  if (!o.vertexSize.empty()) size.emplace(chordal, o.vertexSize);
   for (size_t i = 0; i + 1 < c.points.size(); ++i) {
     const Vec3 mid = 0.5 * (c.points[i] + c.points[i + 1]);
-    segments += (c.points[i + 1] - c.points[i]).norm() / (size ? (*size)(mid) : o.size);
+    segments += (c.points[i + 1] - c.points[i]).norm() / size(mid);
   }
   return std::max(1.0, std::round(segments));
 }
@@ -243,9 +251,10 @@ std::size_t structurePatches(const QuadMeshOptions& o, const ChordalLocator& cho
   for (const auto& [surface, sides] : patches)
     for (int k = 0; k < 2; ++k) opposite.unite(index[sides[k].tag], index[sides[k + 2].tag]);
   std::map<int, double> segments;  // union-find root -> segments of every curve in it
+  const SizeField size = targetSize(chordal, o);
   for (const auto& [tag, at] : index) {
     double& s = segments[opposite.find(at)];
-    s = std::max(s, segmentsNeeded(curves[tag], o, chordal));
+    s = std::max(s, segmentsNeeded(curves[tag], size));
   }
   for (const auto& [tag, at] : index)
     gmsh::model::mesh::setTransfiniteCurve(tag, static_cast<int>(segments[opposite.find(at)]) + 1);
@@ -500,15 +509,6 @@ QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOp
   return scoreQuads(q, chordal, chordalEuler, o.acceptableQuad);
 }
 
-// The target quad size of the block grids at a point (uniform, or the adaptive sizing's).
-SizeField blockGridSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
-  if (o.vertexSize.empty()) return [size = o.size](const Vec3&) { return size; };
-  return [field = std::make_shared<const ChordalSizeField>(chordal, o.vertexSize)](const Vec3& p) {
-    int facet = -1;  // the field may be asked from several threads: no facet kept between points
-    return field->at(p, facet);
-  };
-}
-
 // A block grid as a try, if it has quads. [in,out] tries; [in] grid, layout.
 void addBlockGrid(std::vector<QuadMesh>& tries, BlockGrid grid, QuadLayout layout) {
   if (grid.empty()) return;
@@ -524,7 +524,7 @@ void addBlockGrid(std::vector<QuadMesh>& tries, BlockGrid grid, QuadLayout layou
 // [in] chordal; [in] square: its map onto the square; [in] o. Returns the tries.
 std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const SurfaceMap& square,
                                      const QuadMeshOptions& o) {
-  const SizeField size = blockGridSize(chordal, o);
+  const SizeField size = targetSize(chordal, o);
   std::vector<QuadMesh> tries;
   if (BlockGrid holed = holedGrid(square, size); !holed.empty())
     addBlockGrid(tries, std::move(holed), QuadLayout::Grid);
@@ -593,7 +593,7 @@ Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, lo
   std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o);
   if (rankBlockGrids(blocks, chordal, o, chordalEuler, ranked)) {
     std::vector<QuadMesh> shared;
-    addBlockGrid(shared, sharedGrid(square, blockGridSize(chordal, o)), QuadLayout::SharedGrid);
+    addBlockGrid(shared, sharedGrid(square, targetSize(chordal, o)), QuadLayout::SharedGrid);
     rankBlockGrids(shared, chordal, o, chordalEuler, ranked);
   }
   return ranked;
