@@ -24,6 +24,7 @@
 #include "quadmesh/chordal_patches.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
+#include "quadmesh/quad_strips.hpp"
 #include "quadmesh/sizing.hpp"
 
 namespace hexlayer {
@@ -509,12 +510,14 @@ QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOp
   return scoreQuads(q, chordal, chordalEuler, o.acceptableQuad);
 }
 
-// A block grid as a try, if it has quads. [in,out] tries; [in] grid, layout.
+// A block grid as a try, if it has quads, pillowed where a corner lies on a smooth stretch of its rim
+// (pillowFlatCorners). [in,out] tries; [in] grid, layout.
 void addBlockGrid(std::vector<QuadMesh>& tries, BlockGrid grid, QuadLayout layout) {
   if (grid.empty()) return;
   QuadMesh q;
   q.nodes = std::move(grid.nodes), q.quads = std::move(grid.quads), q.structuredPatches = grid.blocks,
   q.layout = layout;
+  q.structuredPatches += pillowFlatCorners(q);  // the ring is a block
   tries.push_back(std::move(q));
 }
 

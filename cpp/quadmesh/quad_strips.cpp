@@ -34,6 +34,43 @@ std::vector<std::vector<int>> rimLoops(const QuadMesh& q) {
   return loops;
 }
 
+// The longest rim loop (by its edges' length): the outer rim. [in] q. Returns it (empty if q has none).
+std::vector<int> longestRimLoop(const QuadMesh& q) {
+  const std::vector<std::vector<int>> loops = rimLoops(q);
+  auto length = [&](const std::vector<int>& loop) {
+    double l = 0;
+    for (std::size_t i = 0; i < loop.size(); ++i) l += (q.nodes[loop[(i + 1) % loop.size()]] - q.nodes[loop[i]]).norm();
+    return l;
+  };
+  auto longest =
+      std::max_element(loops.begin(), loops.end(), [&](const auto& a, const auto& b) { return length(a) < length(b); });
+  return longest == loops.end() ? std::vector<int>{} : *longest;
+}
+
+// Whether a node of the loop in one quad (three other corners) has its rim edges at more than kFlatCorner.
+// [in] q, loop; [in] corners: per node, the other corners of its quads.
+bool hasFlatCorner(const QuadMesh& q, const std::vector<int>& loop, const std::vector<std::vector<int>>& corners) {
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const int c = loop[i];
+    if (corners[c].size() != 3) continue;
+    const Vec3 ca = q.nodes[loop[(i + 1) % loop.size()]] - q.nodes[c];
+    const Vec3 cb = q.nodes[loop[(i + loop.size() - 1) % loop.size()]] - q.nodes[c];
+    if (std::atan2(ca.cross(cb).norm(), ca.dot(cb)) > kFlatCorner) return true;
+  }
+  return false;
+}
+
+// [in] q; [in,out] loop: a rim loop of q (two nodes at least), turned so that its quads lie on its left (each runs
+// its rim edge the loop's way).
+void orientLikeItsQuads(const QuadMesh& q, std::vector<int>& loop) {
+  for (const auto& quad : q.quads)
+    for (int k = 0; k < 4; ++k)
+      if (keyOf(quad[k], quad[(k + 1) % 4]) == keyOf(loop[0], loop[1])) {
+        if (quad[k] != loop[0]) std::reverse(loop.begin(), loop.end());
+        return;
+      }
+}
+
 }  // namespace
 
 QuadsOfEdges quadsOfEdges(const std::vector<std::array<int, 4>>& quads) {
@@ -111,6 +148,34 @@ std::size_t evenRimLoops(QuadMesh& q, const std::function<bool(const Vec3&)>& mu
     halveStrip(q.quads, q.nodes, best, static_cast<int>(q.nodes.size()) - 1);
     blocked.resize(q.quads.size(), 0);
   }
+}
+
+bool pillowFlatCorners(QuadMesh& q) {
+  std::vector<int> rim = longestRimLoop(q);
+  std::vector<std::vector<int>> corners(q.nodes.size());  // per node, the other corners of its quads (with repeats)
+  for (const auto& quad : q.quads)
+    for (int k = 0; k < 4; ++k)
+      for (int l = 1; l < 4; ++l) corners[quad[k]].push_back(quad[(k + l) % 4]);
+  if (!hasFlatCorner(q, rim, corners)) return false;
+  orientLikeItsQuads(q, rim);
+  std::vector<char> onRim(q.nodes.size(), 0);
+  for (int n : rim) onRim[n] = 1;
+  const int first = static_cast<int>(q.nodes.size());
+  std::vector<Vec3> inward;
+  for (int n : rim) {
+    q.nodes.push_back(q.nodes[n]);
+    Vec3 inner = Vec3::Zero();
+    int count = 0;
+    for (int m : corners[n])
+      if (!onRim[m]) inner += q.nodes[m], ++count;
+    inward.push_back(count ? 0.5 * (q.nodes[n] + inner / count) : q.nodes[n]);
+  }
+  for (std::size_t i = 0; i < rim.size(); ++i) {
+    const int j = static_cast<int>((i + 1) % rim.size());
+    q.quads.push_back({rim[j], rim[i], first + static_cast<int>(i), first + j});
+    q.nodes[rim[i]] = inward[i];
+  }
+  return true;
 }
 
 }  // namespace hexlayer

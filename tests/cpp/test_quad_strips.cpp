@@ -1,15 +1,18 @@
 // Quad strips (quadmesh/quad_strips.hpp): a strip found from an edge across a grid to the rim, stopped by a blocked
 // quad; halved, the grid stays all quads and conformal with one more node on each rim end; a ring of quads with an
 // odd number round has its inner loop (the one that must be even) made even by a strip to the outer loop, both loops
-// by one strip if both must be, none if the strip would cross a blocked quad. Also on
+// by one strip if both must be, none if the strip would cross a blocked quad; a grid on a disc (its corners on the
+// circle, flat) is pillowed, the same grid on the square (sharp corners) is not. Also on
 // copies scaled by 1e-3 and 1e3 (only the nodes' positions scale).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
 #include <vector>
 
+#include "quadmesh/quad_smoothing.hpp"
 #include "quadmesh/quad_strips.hpp"
 
 using namespace hexlayer;
@@ -55,7 +58,56 @@ int rimEdges(const QuadMesh& q) {
   return rim;
 }
 
+// The worst scaled Jacobian of the quads.
+double worstQuad(const QuadMesh& q) {
+  double worst = 1;
+  for (const auto& quad : q.quads)
+    worst =
+        std::min(worst, quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]}));
+  return worst;
+}
+
+// Per node, the quads it is a corner of.
+std::vector<int> quadsAt(const QuadMesh& q) {
+  std::vector<int> at(q.nodes.size(), 0);
+  for (const auto& quad : q.quads)
+    for (int n : quad) ++at[n];
+  return at;
+}
+
 }  // namespace
+
+TEST(QuadStrips, AGridWithItsCornersOnACircleIsPillowedOneOnASquareIsNot) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    const int n = 6;
+    QuadMesh square = grid(n, n, s);
+    const QuadMesh before = square;
+    EXPECT_FALSE(pillowFlatCorners(square)) << "sharp corners: left as they are";
+    EXPECT_EQ(square.quads, before.quads);
+    EXPECT_EQ(square.nodes.size(), before.nodes.size());
+    // The square [-1, 1]^2 onto the unit disc (x sqrt(1 - y^2 / 2), y sqrt(1 - x^2 / 2)): the corners land on the
+    // circle, where it does not turn: each corner's quad is flat there (180 degrees).
+    QuadMesh disc = grid(n, n, s);
+    for (Vec3& p : disc.nodes) {
+      const double x = 2 * p.x() / (n * s) - 1, y = 2 * p.y() / (n * s) - 1;
+      p = s * Vec3(x * std::sqrt(1 - y * y / 2), y * std::sqrt(1 - x * x / 2), 0);
+    }
+    const double flattest = worstQuad(disc);
+    EXPECT_LT(flattest, 0.3);
+    const std::size_t nodes = disc.nodes.size(), quads = disc.quads.size();
+    ASSERT_TRUE(pillowFlatCorners(disc));
+    EXPECT_EQ(disc.nodes.size(), nodes + 4 * n) << "a copy of every rim node";
+    EXPECT_EQ(disc.quads.size(), quads + 4 * n) << "a quad on every rim edge";
+    EXPECT_EQ(rimEdges(disc), 4 * n) << "conformal, one orientation, the rim as long";
+    const std::vector<int> at = quadsAt(disc);
+    for (std::size_t v = nodes; v < disc.nodes.size(); ++v) {
+      EXPECT_EQ(at[v], 2) << "every rim node in two quads";
+      EXPECT_NEAR(disc.nodes[v].norm(), s, 1e-12 * s) << "the rim nodes stay on the circle";
+    }
+    for (int corner : {0, n, n * (n + 1), n * (n + 1) + n}) EXPECT_EQ(at[corner], 3) << "a corner now inside";
+    EXPECT_GT(worstQuad(disc), flattest + 0.05) << "no quad flatter than a corner's was, before any smoothing";
+  }
+}
 
 TEST(QuadStrips, AStripCrossesAGridToTheRimAndHalvedKeepsItConformal) {
   for (double s : {1.0, 1e-3, 1e3}) {
