@@ -1,7 +1,10 @@
 #include "geometry/wall_sides.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
@@ -13,6 +16,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -39,6 +43,15 @@ constexpr double kMinWallShare = 0.5, kMinWallWidth = 0.25;
 // A face beyond a knife edge at most this many walls wide across the edge is an oblique rim: its last hexes
 // are sheared by the cut, to a scaled Jacobian of about 1 / this (the cosine of the cut's tilt) at worst.
 constexpr double kMaxObliqueRim = 3.2;
+// A rim-like face tangent to a wall face whose rays land where that wall's do, at the wall's thickness within this
+// share, carries the wall on (wallExtensions).
+constexpr double kExtensionThickness = 0.15;
+// Of the part's diagonal: a face's samples this near another face's surface lie on it (a face split on its surface).
+constexpr double kOnSurface = 1e-6;
+constexpr int kSurfaceSamples = 8;  // of a face's ray samples, checked to lie on the other face's surface
+// A wall's extension faces the way the wall does within this angle (mean normals): a piece of the same plane or of a
+// gently curved wall, not a piece of a round that turns away from it.
+constexpr double kExtensionTurn = 10 * M_PI / 180;
 
 struct Ray {
   double length;
@@ -121,6 +134,47 @@ int dominantHit(const std::vector<Ray>& rays) {
   for (const auto& [face, w] : weight)
     if (w > bestWeight) best = face, bestWeight = w;
   return best;
+}
+
+// Whether face f lies on face g's surface (the untrimmed one: a plane, a cylinder, any), as a face split into two
+// does: up to kSurfaceSamples of its ray samples within kOnSurface of it. [in] cad, w, f, g.
+bool onSurfaceOf(const CadSolid& cad, const WallSides& w, int f, int g) {
+  const std::vector<RayMark>& marks = w.faces[f].marks;
+  if (marks.empty()) return false;
+  const BRepAdaptor_Surface surface(TopoDS::Face(cad.faces(f + 1)));
+  const Handle(Geom_Surface) other = BRep_Tool::Surface(TopoDS::Face(cad.faces(g + 1)));
+  const std::size_t step = std::max<std::size_t>(1, marks.size() / kSurfaceSamples);
+  for (std::size_t k = 0; k < marks.size(); k += step) {
+    GeomAPI_ProjectPointOnSurf onOther(surface.Value(marks[k].u, marks[k].v), other);
+    if (onOther.NbPoints() == 0 || onOther.LowerDistance() > kOnSurface * cad.diagonal) return false;
+  }
+  return true;
+}
+
+// Lateral faces that carry a wall on: on the surface of a wall face they meet in a smooth edge (a wall face split
+// there), facing as it does (kExtensionTurn), narrower than the wall is thick, their rays landing mostly on the face
+// that wall's rays cross to or on a face on its surface (split there too), at the wall's thickness
+// (kExtensionThickness), though most pass a rim on the way and do not count as crossing the wall: a narrow ring of a
+// plate round a hole (a boss's bore bottom over a hole through the plate, a top face split round a hole). A rim's
+// round meets a wall in a smooth edge too, but off its surface; the part of a round split off as a rim (mixed_faces)
+// lies on the wall part's surface but turns away from it. [in] cad; [in] w: the first classification; [in] landing:
+// per face, the face most of its rays land on; [in] meanNormal: per face, its area-weighted normal. Returns the faces,
+// ascending.
+std::vector<int> wallExtensions(const CadSolid& cad, const WallSides& w, const std::vector<int>& landing,
+                                const std::vector<Vec3>& meanNormal) {
+  std::set<int> found;
+  for (const SheetJoin& j : w.sheetJoins)
+    for (auto [f, g] : {std::pair{j.a, j.b}, std::pair{j.b, j.a}}) {
+      const FaceSide &fs = w.faces[f], &wall = w.faces[g];
+      const int lands = landing[f], across = wall.opposite;
+      if (!j.smooth || fs.side != Side::Lateral || wall.side == Side::Lateral || lands < 0 || lands == f ||
+          across < 0 || fs.width < kMinWallWidth * fs.thickness || fs.width >= w.thickness ||
+          std::atan2(meanNormal[f].cross(meanNormal[g]).norm(), meanNormal[f].dot(meanNormal[g])) > kExtensionTurn ||
+          std::abs(fs.thickness - w.thickness) > kExtensionThickness * w.thickness)
+        continue;
+      if (onSurfaceOf(cad, w, f, g) && (lands == across || onSurfaceOf(cad, w, lands, across))) found.insert(f);
+    }
+  return {found.begin(), found.end()};
 }
 
 // Union-find whose links carry a parity: 0 = same side, 1 = opposite sides.
@@ -287,10 +341,12 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
   RayCaster rays(cad, 1e-7 * cad.diagonal);
   std::vector<Vec3> meanNormal(n);
   std::vector<std::map<int, double>> across(n);  // per face: ray area crossing the wall to each face
+  std::vector<int> landing(n, -1);               // per face: where most of its rays land
   double totalArea = 0;
   for (int f = 0; f < n; ++f) {
     FaceSide& fs = w.faces[f];
     FaceRays hits = castInwardRays(cad, boundary, rays, f);
+    landing[f] = dominantHit(hits.all);
     meanNormal[f] = hits.meanNormal;
     fs.area = triangulatedArea(cad.faces(f + 1));
     fs.width = 2 * fs.area / std::max(perimeter(cad.faces(f + 1)), 1e-30);
@@ -317,6 +373,7 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
   w.sheetJoins = sheetJoins(cad);
   w.bendRounds = findBendRounds(cad, w, across);
   for (int f : w.bendRounds) w.faces[f].side = Side::Top, w.faces[f].thickness = w.thickness;
+  for (int f : wallExtensions(cad, w, landing, meanNormal)) w.faces[f].side = Side::Top;
   std::vector<std::pair<int, int>> rootParity = solveSides(cad, w, across);
   w.obliqueRims = obliqueRimFaces(cad, w);
   if (!w.obliqueRims.empty()) {  // sides again without them

@@ -62,6 +62,10 @@ struct WallSides {
 //    last column lies on it (sheared by the cut's angle) instead of the wall running out to its tip.
 //  - A narrow face whose rays cross no wall but that joins two walls bent round a sharp inside edge (the outside
 //    round of a zero-radius bend, bend_rounds.hpp) is a wall face too, listed in bendRounds.
+//  - A face narrower than the wall is thick on the surface of a wall face it meets in a smooth edge, facing its way,
+//    whose rays land across the wall where that wall's do (or on a face on the same surface), at the wall's thickness,
+//    is a wall face too, though most of its rays pass a rim on the way: a wall split into a narrow ring round a hole
+//    (a top face split round a hole, a boss's bore bottom over a hole through the plate).
 //  - Walls whose rays cross to a wall that the relations put on their own side (over 2 % of the wall
 //    area) are where the sheet branches: they are listed in ownSideFaces (see ownSideError).
 // [in] cad: the prepared solid; [in] boundary: its triangles (built here if not given). Throws geometryError when the

@@ -764,6 +764,77 @@ QuadMesh gapTry(const std::vector<Vec3>& at, const GapMap& map, const ChordalLoc
   return q;
 }
 
+// Where along a loop (segment k from its node k to k + 1, plus the share of it) its point nearest to p lies, in 3D.
+double nearestAlong(const std::vector<Vec3>& at, const Loop& loop, const Vec3& p) {
+  double best = std::numeric_limits<double>::infinity(), along = 0;
+  for (std::size_t k = 0; k < loop.size(); ++k)
+    if (const auto [d, t] = toSegment(p, at[loop[k]], at[loop[(k + 1) % loop.size()]]); d < best)
+      best = d, along = static_cast<double>(k) + t;
+  return along;
+}
+
+// The point of a loop at a position along it (nearestAlong's).
+Vec3 pointAlong(const std::vector<Vec3>& at, const Loop& loop, double along) {
+  const std::size_t k = static_cast<std::size_t>(along) % loop.size();
+  const double t = along - std::floor(along);
+  return (1 - t) * at[loop[k]] + t * at[loop[(k + 1) % loop.size()]];
+}
+
+// Where the points of a rim loop nearest to the nodes of a fixed loop round the same ring lie along it (nearestAlong),
+// if they go round it once, in order: the two loops run round the ring opposite ways (the gap on the left of each),
+// so the points go down the rim loop. [in] at, fixed, rim. Returns them, per fixed node; empty if not so.
+std::vector<double> ringPoints(const std::vector<Vec3>& at, const Loop& fixed, const Loop& rim) {
+  const double turn = static_cast<double>(rim.size());
+  std::vector<double> along;
+  for (int b : fixed) along.push_back(nearestAlong(at, rim, at[b]));
+  double turned = 0;
+  for (std::size_t i = 0; i < along.size(); ++i) {
+    const double step = std::fmod(along[i] - along[(i + 1) % along.size()] + turn, turn);
+    if (!(step > 0)) return {};
+    turned += step;
+  }
+  return std::abs(turned - turn) <= 1e-9 * turn ? along : std::vector<double>{};
+}
+
+// A surface of the gap between a fixed loop (a footprint's or the kept quads' edges, no rim edge) and a loop of the
+// sheet's rim alone (a hole through the sheet inside a boss's ring foot): a thin ring, where Gmsh's quads fold between
+// loops of other node counts (every boundary node is fixed). It gets one ring of quads: the rim loop's nodes replaced
+// by as many as the fixed loop has, each the rim loop's point nearest to its fixed node (ringPoints), a quad between
+// each fixed edge and the rim points of its ends.
+// [in,out] nodes: the new rim points appended; [in] map, free, s. Returns the ring's quads (counter-clockwise in the
+// map) and their worst scaled Jacobian in the map; none if s is not such a ring, its points are not in order or a quad
+// folds.
+std::pair<std::vector<Quad>, double> rimRing(Nodes& nodes, const GapMap& map, const std::set<Edge>& free,
+                                             const Surface& s) {
+  if (s.size() != 2) return {};
+  auto freeEdges = [&](const Loop& l) {
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < l.size(); ++k) count += free.count({l[k], l[(k + 1) % l.size()]});
+    return count;
+  };
+  const bool firstFree = freeEdges(s[0]) == s[0].size() && freeEdges(s[1]) == 0;
+  if (!firstFree && !(freeEdges(s[1]) == s[1].size() && freeEdges(s[0]) == 0)) return {};
+  const Loop &rim = s[firstFree ? 0 : 1], &fixed = s[firstFree ? 1 : 0];
+  const std::vector<double> along = ringPoints(nodes.at, fixed, rim);
+  if (along.empty()) return {};
+  const int m = static_cast<int>(fixed.size()), first = static_cast<int>(nodes.at.size());
+  std::vector<Vec3> flat;  // the ring in the map: the fixed nodes, then the rim points
+  for (int b : fixed) flat.emplace_back(map.at(nodes.at[b]).x(), map.at(nodes.at[b]).y(), 0);
+  for (double a : along) {
+    nodes.at.push_back(pointAlong(nodes.at, rim, a));
+    flat.emplace_back(map.at(nodes.at.back()).x(), map.at(nodes.at.back()).y(), 0);
+  }
+  std::vector<Quad> local, quads;
+  for (int i = 0; i < m; ++i) {
+    local.push_back({i, (i + 1) % m, m + (i + 1) % m, m + i});
+    quads.push_back({fixed[i], fixed[(i + 1) % m], first + (i + 1) % m, first + i});
+  }
+  const double worst = worstInPlane(flat, local);
+  if (worst > 0) return {quads, worst};
+  nodes.at.resize(first);
+  return {};
+}
+
 // The gap's quads on the sheet: of Gmsh's algorithms (kGapAlgorithms), on the gap as it is and with its acute
 // corners cut off (cutAcuteCorners), the one whose worst quad, smoothed, is best; finer (kGapSpacing) while none of
 // them gives quads only, all at least kGoodGap.
@@ -923,19 +994,28 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
     const GapEdges edges = gapEdges(nodes, map, sheet, quadsOfEdge, footprint, gap, size);
     std::vector<Loop> loops = chainLoops(edges.edges);
     dropTinyRimEdges(nodes, edges.free, size, loops);
-    std::vector<Surface> surfaces = surfacesOf(nodes, map, loops);
+    std::vector<Surface> surfaces;
+    for (Surface& s : surfacesOf(nodes, map, loops)) {
+      auto [ring, worst] = rimRing(nodes, map, edges.free, s);
+      if (ring.empty()) surfaces.push_back(std::move(s));
+      added.insert(added.end(), ring.begin(), ring.end());
+      if (!ring.empty()) out.worstQuad = std::min(out.worstQuad, worst), out.quadsMeshed += ring.size();
+    }
     evenBoundaries(nodes, edges.free, surfaces, kept);
-    double worst = 0;
-    const QuadMesh q = gapQuads(nodes.at, map, chordal, surfaces, worst);  // its first nodes are nodes.at
-    out.worstQuad = std::min(out.worstQuad, worst);
-    nodes.at.insert(nodes.at.end(), q.nodes.begin() + static_cast<long>(nodes.at.size()), q.nodes.end());
-    added.insert(added.end(), q.quads.begin(), q.quads.end());
+    if (!surfaces.empty()) {
+      double worst = 0;
+      const QuadMesh q = gapQuads(nodes.at, map, chordal, surfaces, worst);  // its first nodes are nodes.at
+      out.worstQuad = std::min(out.worstQuad, worst);
+      nodes.at.insert(nodes.at.end(), q.nodes.begin() + static_cast<long>(nodes.at.size()), q.nodes.end());
+      added.insert(added.end(), q.quads.begin(), q.quads.end());
+      out.quadsMeshed += q.quads.size();
+    }
     for (int f : gap.footprintQuads) {
       Quad quad = footprint.quads[f];
       for (int& n : quad) n += nodes.sheetNodes;
       added.push_back(quad);
     }
-    out.quadsRemoved += gap.sheetQuads.size(), out.quadsMeshed += q.quads.size();
+    out.quadsRemoved += gap.sheetQuads.size();
   }
   // Renumber: the kept quads' nodes in their order, then the others as the added quads use them.
   std::vector<int> id(nodes.at.size(), -1);

@@ -4,8 +4,9 @@
 // quads near a footprint are taken out, and the gap between the quads kept and the footprint is meshed again with
 // quads in the gap unfolded onto the plane (least-squares conformal map: a gap on a curved sheet or across a bend is
 // meshed as a flat one; Gmsh, every boundary node fixed: the kept quads', the footprint's, and the sheet's rim,
-// divided again where a footprint reaches it). The footprint's quads are then the sheet's, node for node, whatever
-// the sheet's outline, holes or quad layout.
+// divided again where a footprint reaches it; a ring between a footprint and a hole through the sheet inside it, one
+// row of quads from the footprint's nodes to as many placed anew on the hole's rim). The footprint's quads are then the
+// sheet's, node for node, whatever the sheet's outline, holes or quad layout.
 #pragma once
 #include <array>
 #include <vector>

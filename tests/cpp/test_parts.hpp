@@ -2,6 +2,7 @@
 // mesh or classify, so that each is written once.
 #pragma once
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
@@ -54,6 +55,38 @@ inline TopoDS_Solid perforatedTube(double s) {
     }
   TopExp_Explorer solid(tube, TopAbs_SOLID);
   return TopoDS::Solid(solid.Current());
+}
+
+// [in] s: the scale. The first solid of a shape (a boolean's result).
+inline TopoDS_Solid firstSolid(const TopoDS_Shape& shape) {
+  TopExp_Explorer solid(shape, TopAbs_SOLID);
+  return TopoDS::Solid(solid.Current());
+}
+
+// [in] s: the scale. A 60 x 40 x 2 plate with a Ø2 hole through it at (30, 20), its top and bottom faces split by
+// circles R2 and R4 round the hole (fused from a plate with a Ø8 hole and two rings, the faces not unified: as a
+// CAD system leaves faces split): a ring 1 wide (half the wall) round the hole on each side, all lengths times s.
+inline TopoDS_Solid plateSplitRoundAHole(double s) {
+  auto cylinder = [&](double r) {
+    return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30 * s, 20 * s, 0), gp_Dir(0, 0, 1)), r * s, 2 * s).Shape();
+  };
+  const TopoDS_Shape plate =
+      BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60 * s, 40 * s, 2 * s).Shape(), cylinder(4));
+  const TopoDS_Shape outer = BRepAlgoAPI_Cut(cylinder(4), cylinder(2)),
+                     inner = BRepAlgoAPI_Cut(cylinder(2), cylinder(1));
+  return firstSolid(BRepAlgoAPI_Fuse(BRepAlgoAPI_Fuse(plate, outer).Shape(), inner).Shape());
+}
+
+// [in] s: the scale. A 60 x 40 x 2 plate with a hollow boss at (30, 20): R5 outside, 10 high above the plate, a
+// bore R3 down to the plate's top, and a hole R2 through the plate under it (the plate's top round the hole a ring 1
+// wide, half the wall), all lengths times s.
+inline TopoDS_Solid bossOverAHole(double s) {
+  auto cylinder = [&](double r, double z0, double h) {
+    return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30 * s, 20 * s, z0 * s), gp_Dir(0, 0, 1)), r * s, h * s).Shape();
+  };
+  const TopoDS_Shape plate = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60 * s, 40 * s, 2 * s).Shape();
+  const TopoDS_Shape boss = BRepAlgoAPI_Cut(cylinder(5, 1, 11), cylinder(3, 2, 12));
+  return firstSolid(BRepAlgoAPI_Cut(BRepAlgoAPI_Fuse(plate, boss).Shape(), cylinder(2, -1, 4)).Shape());
 }
 
 // [in] s: the scale. Points of plateWithManyHoles(s) on and near its edges and vertices: on the holes' rims, the

@@ -34,6 +34,23 @@ std::string usageMessage(const MeshOptions& o) {
   return "";
 }
 
+// Meshes a part with the default options and checks what every end-to-end test of a part does: hexes, none
+// inverted, the scaled Jacobian's min and mean at least sjMin and sjAvg, the hexes' volume within volumeShare of the
+// CAD's, validated. [in] part, sjMin, sjAvg, volumeShare. Returns the result, for the test's own checks.
+MeshResult expectMeshedAllHex(const TopoDS_Solid& part, double sjMin, double sjAvg, double volumeShare) {
+  const MeshResult r = meshSolid(part, MeshOptions{});
+  EXPECT_GT(r.mesh.hexes.size(), 500u);
+  const QualityReport q = measureQuality(r.mesh);
+  EXPECT_EQ(q.inverted, 0u);
+  EXPECT_GE(q.sjMin, sjMin);
+  EXPECT_GE(q.sjAvg, sjAvg);
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(part, props);
+  EXPECT_NEAR(q.volume, props.Mass(), volumeShare * props.Mass());
+  EXPECT_TRUE(r.report.mesh.passed());
+  return r;
+}
+
 }  // namespace
 
 TEST(Pipeline, BadOptionsAreNamed) {
@@ -103,23 +120,22 @@ TEST(Pipeline, MetresGiveTheSameMeshScaled) {
 TEST(Pipeline, APerforatedTubeIsMeshedAllHexInMillimetresAndMetres) {
   for (double s : {1.0, 1e-3}) {
     SCOPED_TRACE("x " + std::to_string(s));
-    const TopoDS_Solid tube = test_parts::perforatedTube(s);
-    MeshOptions o;
-    const MeshResult r = meshSolid(tube, o);
-    ASSERT_GT(r.mesh.hexes.size(), 500u);
-    double volume = 0, worst = 1, sum = 0;
-    for (std::size_t h = 0; h < r.mesh.hexes.size(); ++h) {
-      const double q = hexScaledJacobian(hexCorners(r.mesh, h));
-      worst = std::min(worst, q), sum += q;
-      volume += hexVolume(hexCorners(r.mesh, h));
-    }
-    EXPECT_GE(worst, 0.25);
-    EXPECT_GE(sum / static_cast<double>(r.mesh.hexes.size()), 0.88);
-    GProp_GProps props;
-    BRepGProp::VolumeProperties(tube, props);
-    EXPECT_NEAR(volume, props.Mass(), 0.01 * props.Mass());
-    EXPECT_TRUE(r.report.mesh.passed());
+    const MeshResult r = expectMeshedAllHex(test_parts::perforatedTube(s), 0.25, 0.88, 0.01);
     EXPECT_EQ(r.surfaceGroups.size(), 2u + 18u + 2u);  // two cylinders, 18 holes' walls, two ends
+  }
+}
+
+// A hollow boss over a hole through the plate (bossOverAHole): the plate's top under the bore, a ring round the hole
+// half the wall wide, is the plate's wall (its rim nodes' hexes end on the hole, not on the boss's foot), and the ring
+// between the foot and the hole is one row of quads (footprint_insert's rimRing: Gmsh's quads folded there). All hex,
+// one ring junction, SJ min >= 0.5 and avg >= 0.95 (measured 0.719 / 0.981; before, 0.10 / 0.93), the volume within
+// 2 %, validated. In millimetres and metres.
+TEST(Pipeline, ABossOverAHoleThroughThePlateIsMeshedAllHex) {
+  for (double s : {1.0, 1e-3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const MeshResult r = expectMeshedAllHex(test_parts::bossOverAHole(s), 0.5, 0.95, 0.02);
+    ASSERT_EQ(r.report.junctions.size(), 1u);
+    EXPECT_EQ(r.report.junctions[0].kind, "ring");
   }
 }
 

@@ -133,6 +133,25 @@ TEST(WallSides, SplitWallsAreWallsInEveryPiece) {
   EXPECT_EQ(findSheets(bend, b).size(), 1u);
 }
 
+// A plate's top and bottom split by circles R2 and R4 round a Ø2 hole: the rings next to the hole, 1 wide (half the
+// wall), are wall though most of their rays pass the hole on the way (wallExtensions): every face facing +-z is wall,
+// three on each side, the hole's wall and the four sides are rims. On copies scaled by 1e-3 and 1e3.
+TEST(WallSides, ANarrowRingOfASplitWallRoundAHoleIsWall) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const CadSolid cad = prepareSolid(test_parts::plateSplitRoundAHole(s));
+    const WallSides w = classifyWallSides(cad);
+    ASSERT_EQ(w.faces.size(), 11u);
+    EXPECT_EQ(count(w, Side::Top), 3);
+    EXPECT_EQ(count(w, Side::Bottom), 3);
+    for (int f = 0; f < static_cast<int>(w.faces.size()); ++f)
+      if (surfaceOf(cad, f).GetType() == GeomAbs_Plane &&
+          std::abs(surfaceOf(cad, f).Plane().Axis().Direction().Z()) > 0.99)
+        EXPECT_NE(w.faces[f].side, Side::Lateral) << "face " << f;
+    EXPECT_NEAR(w.thickness, 2 * s, 1e-6 * s);
+  }
+}
+
 // A rib standing on a plate still branches the sheet: it is found (here as a second sheet), where it is.
 TEST(WallSides, RibOnAPlateIsStillAJunction) {
   const CadSolid cad = readSample("tests/data/robustness/t_junction.step");
