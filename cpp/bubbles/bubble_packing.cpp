@@ -36,7 +36,10 @@ double bubbleForce(double w) {
 
 namespace {
 
-constexpr double kSmallestFaceThickness = 0.1;  // a face's thickness for its bubbles, at least, of the part's
+constexpr double kSmallestFaceThickness = 0.1;
+// A seam of a wall is packed at the wall's bubble size where a face beside it is narrower than this x the wall (a ring
+// half the wall wide round a hole): wider faces keep their curved edges' nodes (a boss's foot circle on the plate).
+constexpr double kNarrowSeamFace = 0.75;  // a face's thickness for its bubbles, at least, of the part's
 
 // Largest principal curvature of the face over a few samples.
 double maxFaceCurvature(const TopoDS_Shape& face, const std::vector<FaceSample>& samples) {
@@ -121,6 +124,21 @@ void packVertices(const CadSolid& cad, const WallSides& sides, const std::vector
   }
 }
 
+// Whether an edge is a seam inside a wall beside a narrow face: two faces of one side meeting in a smooth edge, one
+// narrower than kNarrowSeamFace x the wall (a wall face split into a ring round a hole, a boss's bore bottom over a
+// hole through the plate). Its curve is no feature of the wall the nodes must follow: packed as densely as a curved
+// rim, it crowds one wall with nodes the other does not have, and the tets between the two make the chordal surface's
+// rim round the hole ragged. [in] faces: the edge's; [in] cad, sides.
+bool seamInWall(const TopTools_ListOfShape& faces, const CadSolid& cad, const WallSides& sides) {
+  if (faces.Extent() != 2) return false;
+  const int a = cad.faces.FindIndex(faces.First()) - 1, b = cad.faces.FindIndex(faces.Last()) - 1;
+  if (a == b || sides.faces[a].side == Side::Lateral || sides.faces[a].side != sides.faces[b].side) return false;
+  if (std::min(sides.faces[a].width, sides.faces[b].width) >= kNarrowSeamFace * sides.thickness) return false;
+  return std::any_of(sides.sheetJoins.begin(), sides.sheetJoins.end(), [&](const SheetJoin& j) {
+    return j.smooth && ((j.a == a && j.b == b) || (j.a == b && j.b == a));
+  });
+}
+
 // 1D packing: with one diameter along the edge, the bubble system's equilibrium is equal
 // arc-length spacing between the two vertex bubbles, which is placed directly.
 void packEdges(const CadSolid& cad, const WallSides& sides, const std::vector<double>& faceDiameter,
@@ -134,8 +152,8 @@ void packEdges(const CadSolid& cad, const WallSides& sides, const std::vector<do
     if (side == Side::Lateral || BRep_Tool::Degenerated(edge)) continue;
     const BRepAdaptor_Curve curve(edge);
     const double length = GCPnts_AbscissaPoint::Length(curve);
-    const double diameter =
-        std::min(curvatureLimit(maxEdgeCurvature(curve), o), diameterAround(faces, cad, faceDiameter));
+    const double bend = seamInWall(faces, cad, sides) ? 0.0 : maxEdgeCurvature(curve);  // a seam is no feature
+    const double diameter = std::min(curvatureLimit(bend, o), diameterAround(faces, cad, faceDiameter));
     const int intervals = std::max(1, static_cast<int>(std::lround(length / diameter)));
     if (intervals < 2) continue;
     const GCPnts_QuasiUniformAbscissa split(curve, intervals + 1);

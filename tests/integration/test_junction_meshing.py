@@ -1,7 +1,8 @@
 """Issue 18: walls standing on a plate or a curved sheet meshed all-hex and conformal by default, no flag: the
 junction samples plate_rib (a rib rim to rim: a T), plate_rib_thin (the rib half the plate's thickness),
 plate_rib_thick (1.5 x), plate_rib_split (faces the boolean left split), plate_rib_inside (the rib ending inside the
-plate) and plate_boss (a hollow boss: its foot a ring), plate_ribs_tee (a rib standing on the plate and on another
+plate), plate_boss (a hollow boss: its foot a ring) and plate_boss_hole (the same over a hole through the plate),
+plate_ribs_tee (a rib standing on the plate and on another
 rib), shell_rib (a rib along a cylindrical shell), box_partition (a partition across an open box's floor, bends
 and walls), plate_rib_grid (ribs crossing), plate_rib_fillet and box_rib_fillet (filleted feet, the fillets
 smoothed over), with 2 and 3 layers, and at order 2 (20-node hexes) with 2 layers;
@@ -45,6 +46,10 @@ from hex_geometry import HEX_EDGES, HEX_FACES, boundary_quads, hex_scaled_jacobi
 # The part and its junctions' kinds: a rib's foot a strip ("T"), a boss's a ring.
 PARTS = {"plate_rib": ["T"], "plate_rib_thin": ["T"], "plate_rib_thick": ["T"], "plate_rib_split": ["T"],
          "plate_rib_inside": ["T"], "plate_boss": ["ring"], "plate_ribs_tee": ["T", "T"],
+         # A Ø2 hole through the plate under the boss's Ø4 bore: the plate's top between them, a ring half the wall
+         # wide, is wall (wall_sides' wallExtensions), and packed with the plate's nodes (seams in a wall are not
+         # curvature-refined), one row of quads between the foot and the hole (footprint_insert's rimRing).
+         "plate_boss_hole": ["ring"],
          # Walls standing on curved walls: a rib along a cylindrical shell, a partition across an open box's floor,
          # its bends and two walls (its foot across two bends). The gusset in an L-bracket's bend meshes (exit 0,
          # test_junction_samples.py) but is not checked here yet: its hexes stop 0.9 mm short of its two 45-degree
