@@ -36,10 +36,10 @@ double bubbleForce(double w) {
 
 namespace {
 
-constexpr double kSmallestFaceThickness = 0.1;
+constexpr double kSmallestFaceThickness = 0.1;  // a face's thickness for its bubbles, at least, of the part's
 // A seam of a wall is packed at the wall's bubble size where a face beside it is narrower than this x the wall (a ring
 // half the wall wide round a hole): wider faces keep their curved edges' nodes (a boss's foot circle on the plate).
-constexpr double kNarrowSeamFace = 0.75;  // a face's thickness for its bubbles, at least, of the part's
+constexpr double kNarrowSeamFace = 0.75;
 
 // Largest principal curvature of the face over a few samples.
 double maxFaceCurvature(const TopoDS_Shape& face, const std::vector<FaceSample>& samples) {

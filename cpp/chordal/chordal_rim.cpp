@@ -89,7 +89,7 @@ std::vector<char> spoiledRimFacets(const ChordalSurface& s, const std::vector<Ve
 // The angle at vertex b between its rim neighbours a and c.
 double rimAngle(const ChordalSurface& s, int a, int b, int c) {
   const Vec3 ba = s.vertices[a] - s.vertices[b], bc = s.vertices[c] - s.vertices[b];
-  return std::atan2(ba.cross(bc).norm(), ba.dot(bc));
+  return angleBetween(ba, bc);
 }
 
 constexpr double kMaxSliver = 15 * M_PI / 180;

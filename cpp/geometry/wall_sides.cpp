@@ -169,7 +169,7 @@ std::vector<int> wallExtensions(const CadSolid& cad, const WallSides& w, const s
       const int lands = landing[f], across = wall.opposite;
       if (!j.smooth || fs.side != Side::Lateral || wall.side == Side::Lateral || lands < 0 || lands == f ||
           across < 0 || fs.width < kMinWallWidth * fs.thickness || fs.width >= w.thickness ||
-          std::atan2(meanNormal[f].cross(meanNormal[g]).norm(), meanNormal[f].dot(meanNormal[g])) > kExtensionTurn ||
+          angleBetween(meanNormal[f], meanNormal[g]) > kExtensionTurn ||
           std::abs(fs.thickness - w.thickness) > kExtensionThickness * w.thickness)
         continue;
       if (onSurfaceOf(cad, w, f, g) && (lands == across || onSurfaceOf(cad, w, lands, across))) found.insert(f);

@@ -819,11 +819,12 @@ std::pair<std::vector<Quad>, double> rimRing(Nodes& nodes, const GapMap& map, co
   if (along.empty()) return {};
   const int m = static_cast<int>(fixed.size()), first = static_cast<int>(nodes.at.size());
   std::vector<Vec3> flat;  // the ring in the map: the fixed nodes, then the rim points
-  for (int b : fixed) flat.emplace_back(map.at(nodes.at[b]).x(), map.at(nodes.at[b]).y(), 0);
-  for (double a : along) {
-    nodes.at.push_back(pointAlong(nodes.at, rim, a));
-    flat.emplace_back(map.at(nodes.at.back()).x(), map.at(nodes.at.back()).y(), 0);
-  }
+  auto addFlat = [&](const Vec3& p) {
+    const Eigen::Vector2d uv = map.at(p);
+    flat.emplace_back(uv.x(), uv.y(), 0);
+  };
+  for (int b : fixed) addFlat(nodes.at[b]);
+  for (double a : along) nodes.at.push_back(pointAlong(nodes.at, rim, a)), addFlat(nodes.at.back());
   std::vector<Quad> local, quads;
   for (int i = 0; i < m; ++i) {
     local.push_back({i, (i + 1) % m, m + (i + 1) % m, m + i});
@@ -997,9 +998,12 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
     std::vector<Surface> surfaces;
     for (Surface& s : surfacesOf(nodes, map, loops)) {
       auto [ring, worst] = rimRing(nodes, map, edges.free, s);
-      if (ring.empty()) surfaces.push_back(std::move(s));
+      if (ring.empty()) {
+        surfaces.push_back(std::move(s));
+        continue;
+      }
       added.insert(added.end(), ring.begin(), ring.end());
-      if (!ring.empty()) out.worstQuad = std::min(out.worstQuad, worst), out.quadsMeshed += ring.size();
+      out.worstQuad = std::min(out.worstQuad, worst), out.quadsMeshed += ring.size();
     }
     evenBoundaries(nodes, edges.free, surfaces, kept);
     if (!surfaces.empty()) {

@@ -1,5 +1,7 @@
 #include "quadmesh/quad_strips.hpp"
 
+#include "quadmesh/surface_map.hpp"
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -37,11 +39,7 @@ std::vector<std::vector<int>> rimLoops(const QuadMesh& q) {
 // The longest rim loop (by its edges' length): the outer rim. [in] q. Returns it (empty if q has none).
 std::vector<int> longestRimLoop(const QuadMesh& q) {
   const std::vector<std::vector<int>> loops = rimLoops(q);
-  auto length = [&](const std::vector<int>& loop) {
-    double l = 0;
-    for (std::size_t i = 0; i < loop.size(); ++i) l += (q.nodes[loop[(i + 1) % loop.size()]] - q.nodes[loop[i]]).norm();
-    return l;
-  };
+  auto length = [&](const std::vector<int>& loop) { return arcLength(loop, q.nodes).back(); };
   auto longest =
       std::max_element(loops.begin(), loops.end(), [&](const auto& a, const auto& b) { return length(a) < length(b); });
   return longest == loops.end() ? std::vector<int>{} : *longest;
@@ -55,7 +53,7 @@ bool hasFlatCorner(const QuadMesh& q, const std::vector<int>& loop, const std::v
     if (corners[c].size() != 3) continue;
     const Vec3 ca = q.nodes[loop[(i + 1) % loop.size()]] - q.nodes[c];
     const Vec3 cb = q.nodes[loop[(i + loop.size() - 1) % loop.size()]] - q.nodes[c];
-    if (std::atan2(ca.cross(cb).norm(), ca.dot(cb)) > kFlatCorner) return true;
+    if (angleBetween(ca, cb) > kFlatCorner) return true;
   }
   return false;
 }

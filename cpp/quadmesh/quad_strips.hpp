@@ -45,11 +45,10 @@ std::size_t evenRimLoops(QuadMesh& q, const std::function<bool(const Vec3&)>& mu
 // A corner of a block grid (a rim node in one quad) on a smooth stretch of the outer rim: a corner of the square map
 // put where the rim does not turn (a rounded or straight rim, no four sharp corners), its quad flattened towards
 // 180 degrees there. Such a grid gets a ring of quads along its outer rim (pillowing): each outer rim node is copied,
-// the copy stays on the rim, the node moves half way towards the mean of the corners of its quads off the
-// rim, and a quad joins
-// each rim edge to its copy. Every corner becomes an inner node of three quads (about 120 degrees each), every outer
-// rim node lies in two. Pillowed only if a corner's quad is flatter than kFlatCorner there (one quad is nearer square
-// below it than a third of the angle would be: 135 - 90 = 90 - 135 / 3).
+// the copy stays on the rim, the node moves half way towards the mean of the corners of its quads off the rim, and a
+// quad joins each rim edge to its copy. Every corner becomes an inner node of three quads (about 120 degrees each),
+// every outer rim node lies in two. Pillowed only if a corner's quad is flatter than kFlatCorner there (one quad is
+// nearer square below it than a third of the angle would be: 135 - 90 = 90 - 135 / 3).
 constexpr double kFlatCorner = 135 * M_PI / 180;
 // [in,out] q: its outer rim (the longest rim loop) pillowed if a corner on it is flat. Returns whether it was.
 bool pillowFlatCorners(QuadMesh& q);
