@@ -1,5 +1,6 @@
 #include "geometry/cad_solid.hpp"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
@@ -13,6 +14,7 @@
 #include <BRep_Tool.hxx>
 #include <BinTools.hxx>
 #include <GProp_GProps.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
 #include <Geom_Plane.hxx>
 #include <Geom_Surface.hxx>
 #include <IGESControl_Reader.hxx>
@@ -268,6 +270,14 @@ void triangulateFaces(const TopoDS_Shape& shape, double deflection) {
 double largestTolerance(const TopoDS_Shape& shape) {
   return std::max({BRep_Tool::MaxTolerance(shape, TopAbs_VERTEX), BRep_Tool::MaxTolerance(shape, TopAbs_EDGE),
                    BRep_Tool::MaxTolerance(shape, TopAbs_FACE)});
+}
+
+std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance) {
+  const BRepAdaptor_Surface surface(TopoDS::Face(face));
+  if (surface.GetType() == GeomAbs_Plane) return surface.Plane();
+  GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(TopoDS::Face(face)), tolerance);
+  if (!planar.IsPlanar()) return std::nullopt;
+  return planar.Plan();
 }
 
 Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {

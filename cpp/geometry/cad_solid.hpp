@@ -4,8 +4,10 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
+#include <gp_Pln.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Pnt2d.hxx>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,10 @@ inline Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // Unit outward normal of face `f` at parameter (u, v), respecting the face orientation.
 Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v);
+
+// The face's plane: its surface's if a plane, or the plane a B-spline (or other) surface lies on within tolerance
+// (CAD systems and scaling write planes as B-splines); none if it is curved. [in] face, tolerance.
+std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance);
 
 // The largest tolerance of the shape's vertices, edges and faces.
 double largestTolerance(const TopoDS_Shape& shape);

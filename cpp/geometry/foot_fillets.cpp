@@ -75,18 +75,6 @@ std::optional<double> chamferWidth(const CadSolid& cad, const WallSides& sides,
   return sides.faces[f].width;
 }
 
-// Per face (0-based), the faces it shares an edge with.
-std::vector<std::set<int>> faceNeighbours(const CadSolid& cad) {
-  std::vector<std::set<int>> next(cad.faces.Extent());
-  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
-  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
-  for (int e = 1; e <= edgeFaces.Extent(); ++e)
-    for (const TopoDS_Shape& a : edgeFaces(e))
-      for (const TopoDS_Shape& b : edgeFaces(e))
-        if (const int i = cad.faces.FindIndex(a) - 1, j = cad.faces.FindIndex(b) - 1; i != j) next[i].insert(j);
-  return next;
-}
-
 // Whether sheet s meets a wall of an earlier sheet in a concave edge (the edge of a foot). [in] sheetOf: per face,
 // its sheet or -1.
 bool standsOnEdges(const std::vector<ConcaveEdge>& concave, const std::vector<int>& sheetOf, int s) {

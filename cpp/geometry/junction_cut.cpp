@@ -18,7 +18,6 @@
 #include <Geom2d_Curve.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <GeomLib.hxx>
-#include <GeomLib_IsPlanarSurface.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierSurface.hxx>
 #include <Geom_ElementarySurface.hxx>
@@ -82,16 +81,6 @@ std::vector<int> sheetOfFaces(const CadSolid& cad, const WallSides& sides, const
   return rimSheet;
 }
 
-// The face's plane: its surface's if a plane, or the plane a B-spline (or other) surface lies on within tolerance
-// (CAD systems and scaling write planes as B-splines); none if it is curved.
-std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance) {
-  const BRepAdaptor_Surface surface(TopoDS::Face(face));
-  if (surface.GetType() == GeomAbs_Plane) return surface.Plane();
-  GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(TopoDS::Face(face)), tolerance);
-  if (!planar.IsPlanar()) return std::nullopt;
-  return planar.Plan();
-}
-
 // What the feet are found from, worked out once for every standing sheet.
 struct Junctions {
   const CadSolid& cad;
@@ -100,6 +89,46 @@ struct Junctions {
   std::vector<int> sheetOf;          // sheetOfFaces
   std::vector<ConcaveEdge> concave;  // concaveEdges
 };
+
+// Whether p lies on the surface within `tolerance`. [in] surface, p, tolerance.
+bool liesOn(const Handle(Geom_Surface) & surface, const gp_Pnt& p, double tolerance) {
+  ShapeAnalysis_Surface on(surface);
+  on.ValueOfUV(p, tolerance);
+  return on.Gap() <= tolerance;
+}
+
+// Whether the edge lies on the surface: its ends and middle within `tolerance` of it. [in] edge, surface, tolerance.
+bool edgeLiesOn(const TopoDS_Edge& edge, const Handle(Geom_Surface) & surface, double tolerance) {
+  const BRepAdaptor_Curve curve(edge);
+  const double a = curve.FirstParameter(), b = curve.LastParameter();
+  return liesOn(surface, curve.Value(a), tolerance) && liesOn(surface, curve.Value(0.5 * (a + b)), tolerance) &&
+         liesOn(surface, curve.Value(b), tolerance);
+}
+
+// The edges of standing sheet s's wall faces with rim faces that lie on base wall face `base`'s surface: where a
+// wall stands flush with the base's rim (a box's lower end wall butting on its side walls, its outer face on the
+// side walls' ends), its foot runs to that rim along them. [in] j, s, base.
+std::vector<TopoDS_Edge> flushFootEdges(const Junctions& j, int s, int base) {
+  const double tolerance = kJoin * j.cad.diagonal;
+  const TopoDS_Face& face = TopoDS::Face(j.cad.faces(base + 1));
+  const std::optional<gp_Pln> plane = planeOf(face, tolerance);  // a plane written as a B-spline ends at the face
+  const Handle(Geom_Surface) surface = plane ? new Geom_Plane(*plane) : BRep_Tool::Surface(face);
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(j.cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  std::vector<TopoDS_Edge> out;
+  for (int f : j.sheets[s].faces)
+    for (TopExp_Explorer it(j.cad.faces(f + 1), TopAbs_EDGE); it.More(); it.Next()) {
+      const TopoDS_Edge edge = TopoDS::Edge(it.Current());
+      const TopTools_ListOfShape& faces = edgeFaces.FindFromKey(edge);
+      const bool byRim = std::any_of(faces.cbegin(), faces.cend(), [&](const TopoDS_Shape& g) {
+        return j.sides.faces[j.cad.faces.FindIndex(g) - 1].side == Side::Lateral;
+      });
+      if (byRim && edgeLiesOn(edge, surface, tolerance) &&
+          std::none_of(out.begin(), out.end(), [&](const TopoDS_Edge& e) { return e.IsSame(edge); }))
+        out.push_back(edge);
+    }
+  return out;
+}
 
 // Per base wall face, the concave edges between it and the faces of standing sheet s. A sheet stands on the earlier
 // (larger) sheets it meets in concave edges: the first sheet, or a wall standing on it (a rib's end on another rib,
@@ -111,6 +140,10 @@ std::map<int, std::vector<TopoDS_Edge>> footEdges(const Junctions& j, int s) {
       if (j.sheetOf[base] >= 0 && j.sheetOf[base] < s && j.sides.faces[base].side != Side::Lateral &&
           j.sheetOf[other] == s)
         edges[base].push_back(TopoDS::Edge(j.cad.edges(c.edge + 1)));
+  for (auto& [base, on] : edges) {
+    const std::vector<TopoDS_Edge> flush = flushFootEdges(j, s, base);
+    on.insert(on.end(), flush.begin(), flush.end());
+  }
   return edges;
 }
 
@@ -149,13 +182,6 @@ TopoDS_Edge edgeOnSurface(const Handle(Geom_Surface) & surface, const gp_Pnt& a,
   TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(GCE2d_MakeSegment(ua, ub).Value(), surface).Edge();
   BRepLib::BuildCurves3d(edge);
   return edge;
-}
-
-// Whether p lies on the surface within `tolerance`. [in] surface, p, tolerance.
-bool liesOn(const Handle(Geom_Surface) & surface, const gp_Pnt& p, double tolerance) {
-  ShapeAnalysis_Surface on(surface);
-  on.ValueOfUV(p, tolerance);
-  return on.Gap() <= tolerance;
 }
 
 // The edge closing a foot chain's gap from a to b on the base wall's surface: where a and b both lie on a curved

@@ -307,12 +307,10 @@ SplitLine splitLine(const TopoDS_Face& face, const FaceSplit& s) {
   return {new Geom2d_Line(gp_Pnt2d(0, s.at), gp_Dir2d(1, 0)), u0, u1};
 }
 
-// The solid with its faces split along the lines (their stretches to split along, insideStretches), or nothing if
-// OpenCASCADE could not split them. [in] cad, splits; [out] split: the splitter, whose Modified tells the pieces of
-// each face.
-std::optional<TopoDS_Solid> splitAlongLines(const CadSolid& cad, const std::vector<FaceSplit>& splits,
-                                            BRepFeat_SplitShape& split) {
-  split.Init(cad.solid);
+// The edges to split the faces along: the lines' stretches to split along (insideStretches), or nothing if
+// OpenCASCADE could not make one. [in] cad, splits.
+std::optional<std::vector<FaceCut>> lineCuts(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
+  std::vector<FaceCut> cuts;
   for (const FaceSplit& s : splits) {
     const TopoDS_Face face = TopoDS::Face(cad.faces(s.face + 1));
     const auto [line, from, to] = splitLine(face, s);
@@ -321,14 +319,10 @@ std::optional<TopoDS_Solid> splitAlongLines(const CadSolid& cad, const std::vect
       if (!edge.IsDone()) return std::nullopt;
       TopoDS_Edge e = edge.Edge();
       BRepLib::BuildCurves3d(e);
-      split.Add(e, face);
+      cuts.push_back({s.face, e});
     }
   }
-  split.Build();
-  if (!split.IsDone()) return std::nullopt;
-  TopExp_Explorer solids(split.Shape(), TopAbs_SOLID);
-  if (!solids.More()) return std::nullopt;
-  return TopoDS::Solid(solids.Current());
+  return cuts;
 }
 
 // A flush rim's split line ends on the bend rounds beside it (the round of the corner the wall it leaves makes
@@ -393,24 +387,12 @@ std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& side
 
 namespace {
 
-// One pass of splitFaces: the solid with the faces split (nothing if OpenCASCADE could not), each piece named after
-// its input face. [in] cad, splits.
+// One pass of splitFaces: the solid with the faces split along their parameter lines (nothing if OpenCASCADE could
+// not). [in] cad, splits.
 CadSolid splitOnce(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
   try {
-    BRepFeat_SplitShape split;
-    const std::optional<TopoDS_Solid> solid = splitAlongLines(cad, splits, split);
-    if (!solid) return {};
-    CadSolid out = prepareSolid(*solid, 1);
-    out.unit = cad.unit;
-    out.inputFace.assign(out.faces.Extent(), -1);
-    for (int f = 1; f <= cad.faces.Extent(); ++f) {
-      const int kept = out.faces.FindIndex(cad.faces(f));
-      if (kept > 0) out.inputFace[kept - 1] = inputFaceOf(cad, f - 1);
-      for (const TopoDS_Shape& piece : split.Modified(cad.faces(f)))
-        if (const int i = out.faces.FindIndex(piece); i > 0) out.inputFace[i - 1] = inputFaceOf(cad, f - 1);
-    }
-    if (std::find(out.inputFace.begin(), out.inputFace.end(), -1) != out.inputFace.end()) return {};
-    return out;
+    const std::optional<std::vector<FaceCut>> cuts = lineCuts(cad, splits);
+    return cuts ? splitFacesAlong(cad, *cuts) : CadSolid{};
   } catch (const Standard_Failure&) {
     return {};
   }
@@ -427,6 +409,33 @@ int sameFace(const CadSolid& from, const CadSolid& to, int f) {
 }
 
 }  // namespace
+
+CadSolid namedPieces(const CadSolid& cad, BRepBuilderAPI_MakeShape& split) {
+  TopExp_Explorer solids(split.Shape(), TopAbs_SOLID);
+  if (!solids.More()) return {};
+  CadSolid out = prepareSolid(TopoDS::Solid(solids.Current()), 1);
+  out.unit = cad.unit;
+  out.inputFace.assign(out.faces.Extent(), -1);
+  for (int f = 1; f <= cad.faces.Extent(); ++f) {
+    const int kept = out.faces.FindIndex(cad.faces(f));
+    if (kept > 0) out.inputFace[kept - 1] = inputFaceOf(cad, f - 1);
+    for (const TopoDS_Shape& piece : split.Modified(cad.faces(f)))
+      if (const int i = out.faces.FindIndex(piece); i > 0) out.inputFace[i - 1] = inputFaceOf(cad, f - 1);
+  }
+  if (std::find(out.inputFace.begin(), out.inputFace.end(), -1) != out.inputFace.end()) return {};
+  return out;
+}
+
+CadSolid splitFacesAlong(const CadSolid& cad, const std::vector<FaceCut>& cuts) {
+  try {
+    BRepFeat_SplitShape split(cad.solid);
+    for (const FaceCut& c : cuts) split.Add(c.edge, TopoDS::Face(cad.faces(c.face + 1)));
+    split.Build();
+    return split.IsDone() ? namedPieces(cad, split) : CadSolid{};
+  } catch (const Standard_Failure&) {
+    return {};
+  }
+}
 
 CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
   std::vector<FaceSplit> first, after;

@@ -8,6 +8,7 @@
 #include <TopoDS_Edge.hxx>
 
 #include <algorithm>
+#include <set>
 
 namespace hexlayer {
 namespace {
@@ -57,6 +58,17 @@ std::vector<ConcaveEdge> concaveEdges(const CadSolid& cad) {
     if (has(ChFiDS_Concave)) concave.push_back({edge, a, b});
   });
   return concave;
+}
+
+std::vector<std::set<int>> faceNeighbours(const CadSolid& cad) {
+  std::vector<std::set<int>> next(cad.faces.Extent());
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  for (int e = 1; e <= edgeFaces.Extent(); ++e)
+    for (const TopoDS_Shape& a : edgeFaces(e))
+      for (const TopoDS_Shape& b : edgeFaces(e))
+        if (const int i = cad.faces.FindIndex(a) - 1, j = cad.faces.FindIndex(b) - 1; i != j) next[i].insert(j);
+  return next;
 }
 
 }  // namespace hexlayer

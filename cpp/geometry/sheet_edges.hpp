@@ -3,6 +3,7 @@
 // a rib, boss or flange stands on the sheet (a T-junction), and the faces there need not be on the
 // same side. OpenCASCADE's offset analysis (BRepOffset_Analyse) tells the edges apart.
 #pragma once
+#include <set>
 #include <vector>
 
 #include "geometry/cad_solid.hpp"
@@ -25,5 +26,8 @@ struct ConcaveEdge {
 
 // [in] cad: the solid. Returns its concave sharp edges between two distinct faces.
 std::vector<ConcaveEdge> concaveEdges(const CadSolid& cad);
+
+// [in] cad: the solid. Per face (0-based), the faces it shares an edge with.
+std::vector<std::set<int>> faceNeighbours(const CadSolid& cad);
 
 }  // namespace hexlayer

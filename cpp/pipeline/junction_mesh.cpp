@@ -131,6 +131,17 @@ std::vector<int> footNodesShared(const HexMesh& sheet, const std::vector<int>& c
   return shared;
 }
 
+// At order 2, every edge at a moved node whose mid-edge node is not a wall's gets it at its middle. [in,out] sheet;
+// [in] moved: per node; [in] shared: footNodesShared's.
+void midEdgesAtMiddle(HexMesh& sheet, const std::vector<char>& moved, const std::vector<int>& shared) {
+  if (!sheet.quadratic()) return;
+  for (std::size_t h = 0; h < sheet.hexes.size(); ++h)
+    for (std::size_t e = 0; e < kHexEdges.size(); ++e) {
+      const int a = sheet.hexes[h][kHexEdges[e][0]], b = sheet.hexes[h][kHexEdges[e][1]], mid = sheet.midEdges[h][e];
+      if ((moved[a] || moved[b]) && shared[mid] < 0) sheet.nodes[mid] = 0.5 * (sheet.nodes[a] + sheet.nodes[b]);
+    }
+}
+
 void leanCrossedColumns(HexMesh& sheet, const QuadMesh& quads, const std::vector<int>& shared, const HexMesh& walls) {
   const int m = sheet.layers, stride = m + 1, columns = static_cast<int>(quads.nodes.size());
   if (columns * stride > static_cast<int>(shared.size())) return;
@@ -172,12 +183,24 @@ void leanCrossedColumns(HexMesh& sheet, const QuadMesh& quads, const std::vector
     for (int k = 0; k <= m; ++k)
       sheet.nodes[a + k] = from + (to - from) * (static_cast<double>(k) / m), moved[a + k] = 1;
   }
-  if (!sheet.quadratic()) return;
-  for (std::size_t h = 0; h < sheet.hexes.size(); ++h)
-    for (std::size_t e = 0; e < kHexEdges.size(); ++e) {
-      const int a = sheet.hexes[h][kHexEdges[e][0]], b = sheet.hexes[h][kHexEdges[e][1]], mid = sheet.midEdges[h][e];
-      if ((moved[a] || moved[b]) && shared[mid] < 0) sheet.nodes[mid] = 0.5 * (sheet.nodes[a] + sheet.nodes[b]);
-    }
+  midEdgesAtMiddle(sheet, moved, shared);
+}
+
+void evenFootColumns(HexMesh& sheet, int columns, const std::vector<int>& shared, const HexMesh& walls) {
+  const int m = sheet.layers, stride = m + 1;
+  if (columns * stride > static_cast<int>(shared.size()) || m < 2) return;
+  std::vector<char> moved(sheet.nodes.size(), 0);
+  for (int c = 0; c < columns; ++c) {
+    const int a = c * stride, b = a + m;
+    if ((shared[a] < 0) == (shared[b] < 0)) continue;  // on no foot, or on two (leanCrossedColumns)
+    const Vec3 from = shared[a] >= 0 ? walls.nodes[shared[a]] : sheet.nodes[a];
+    const Vec3 to = shared[b] >= 0 ? walls.nodes[shared[b]] : sheet.nodes[b];
+    double off = 0;
+    for (int k = 1; k < m; ++k) off = std::max(off, (sheet.nodes[a + k] - from - (to - from) * (double(k) / m)).norm());
+    if (off <= kUnevenColumn * (to - from).norm() / m) continue;
+    for (int k = 1; k < m; ++k) sheet.nodes[a + k] = from + (to - from) * (double(k) / m), moved[a + k] = 1;
+  }
+  midEdgesAtMiddle(sheet, moved, shared);
 }
 
 JunctionHexes junctionHexes(const HexMesh& mesh, const std::vector<double>& scaledJacobian,

@@ -71,6 +71,14 @@ std::vector<int> footNodesShared(const HexMesh& sheet, const std::vector<int>& c
 // it is swept from; [in] shared: footNodesShared's; [in] walls.
 void leanCrossedColumns(HexMesh& sheet, const QuadMesh& quads, const std::vector<int>& shared, const HexMesh& walls);
 
+// Sweep columns ending on one wall's foot whose inner nodes lie off their even places between the column's ends (the
+// foot node, the other end) by more than kUnevenColumn of a layer get them there: a column swept from a chordal point
+// near one end (on a bend whose chordal surface cuts the inside corner, where a wall's foot ends on the rim). Others
+// stay as swept. At order 2 the edges at moved nodes get their mid-edge nodes at their middles. [in,out] sheet; [in]
+// columns: its quad nodes' count; [in] shared: footNodesShared's; [in] walls.
+inline constexpr double kUnevenColumn = 0.25;
+void evenFootColumns(HexMesh& sheet, int columns, const std::vector<int>& shared, const HexMesh& walls);
+
 // The junction hexes: those with a corner among `footNodes`, and their scaled Jacobian's min and mean.
 struct JunctionHexes {
   std::size_t hexes = 0;

@@ -18,6 +18,7 @@
 #include "core/error.hpp"
 #include "core/memory.hpp"
 #include "geometry/boundary_triangles.hpp"
+#include "geometry/butt_joints.hpp"
 #include "geometry/cad_faces.hpp"
 #include "geometry/foot_fillets.hpp"
 #include "geometry/junction_cut.hpp"
@@ -465,6 +466,7 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
     const double reach = wallShare * piece.report.thickness + merged.shift;
     shared = footNodesShared(piece.mesh, column, t.joined, footNode, reach);
     leanCrossedColumns(piece.mesh, piece.quadMesh, shared, t.joined);
+    evenFootColumns(piece.mesh, static_cast<int>(piece.quadMesh.nodes.size()), shared, t.joined);
   }
   const std::vector<int> onFeet = toCutFaces(piece.mesh, t.cut.faceOrigin[s]);
   const std::vector<int> id = joinHexMesh(t.joined, piece.mesh, shared);
@@ -495,7 +497,7 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   MeshOptions piece = o;
   piece.force = true;
   for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s)
-    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 1.0 / 3);
+    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.5);
   return t;
 }
 
@@ -703,6 +705,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad, boundary.emplace(cad)); });
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   if (!o.dropJunctions && sides.ownSideFaces.empty()) {
+    r.facesSplit += clock.run("butt_joints", [&] { return splitButtJoints(cad, sides); });
     if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1) {
       if (std::optional<FootFillets> smooth =
               clock.run("foot_fillets", [&] { return removeFootFillets(cad, sides, sheets); }))

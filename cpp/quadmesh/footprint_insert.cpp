@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -232,15 +233,10 @@ struct GapEdges {
 
 // The rim edges of the taken-out quads, cut where a footprint reaches the rim: its nodes on an edge split it, and
 // the pieces the footprint covers are left out; a rim node where a footprint node is (a sheet's grid line through
-// the foot's corner) is that node. [in] rim: those edges; [in] footRim: the footprint's boundary edges on the rim;
-// [in] footNodes: its boundary nodes.
-std::vector<Edge> rimPieces(const Nodes& nodes, const std::vector<Edge>& rim, const std::vector<Edge>& footRim,
-                            const std::set<int>& footNodes, double tolerance) {
-  auto covered = [&](const Vec3& p) {  // p lies along a footprint's rim edge, not beyond its ends
-    for (const auto& [a, b] : footRim)
-      if (const auto [d, t] = toSegment(p, nodes.at[a], nodes.at[b]); d <= tolerance && t > 0 && t < 1) return true;
-    return false;
-  };
+// the foot's corner) is that node. [in] rim: those edges; [in] footNodes: the footprint's boundary nodes; [in]
+// covered: whether a point (a piece's middle) lies under the footprint.
+std::vector<Edge> rimPieces(const Nodes& nodes, const std::vector<Edge>& rim, const std::set<int>& footNodes,
+                            double tolerance, const std::function<bool(const Vec3&)>& covered) {
   const double same = kCoincide * tolerance;
   auto footNodeAt = [&](int n) {
     for (int f : footNodes)
@@ -299,9 +295,14 @@ GapEdges gapEdges(const Nodes& nodes, const GapMap& map, const QuadMesh& sheet, 
     for (int k = 0; k < 4; ++k) inFoot.emplace(c[k], c[(k + 1) % 4]);
   }
   const double tolerance = kOnRim * size;
+  auto flat = [&](const Vec3& p) {  // in the map: a foot running along the rim round a bend lies on it there too
+    const Eigen::Vector2d q = map.at(p);
+    return Vec3(q.x(), q.y(), 0);
+  };
   auto onRim = [&](const Vec3& p) {
+    const Vec3 at = flat(p);
     for (const auto& [a, b] : rim)
-      if (toSegment(p, nodes.at[a], nodes.at[b]).first <= tolerance) return true;
+      if (toSegment(at, flat(nodes.at[a]), flat(nodes.at[b])).first <= tolerance) return true;
     return false;
   };
   std::vector<Edge> footRim;
@@ -314,7 +315,20 @@ GapEdges gapEdges(const Nodes& nodes, const GapMap& map, const QuadMesh& sheet, 
     else
       g.edges.emplace_back(b, a);  // the gap is outside the footprint
   }
-  for (const Edge& e : rimPieces(nodes, rim, footRim, footNodes, tolerance)) g.edges.push_back(e), g.free.insert(e);
+  std::vector<std::vector<Eigen::Vector2d>> footInPlane;  // the footprints' quads in the map
+  for (int q : gap.footprintQuads) {
+    footInPlane.emplace_back();
+    for (int n : footprint.quads[q]) footInPlane.back().push_back(map.at(nodes.at[n + offset]));
+  }
+  auto covered = [&](const Vec3& p) {  // in the map: along a footprint's rim edge, not beyond its ends, or in its quad
+    const Vec3 at = flat(p);
+    for (const auto& [a, b] : footRim)
+      if (const auto [d, t] = toSegment(at, flat(nodes.at[a]), flat(nodes.at[b])); d <= tolerance && t > 0 && t < 1)
+        return true;
+    return std::any_of(footInPlane.begin(), footInPlane.end(),
+                       [&](const auto& q) { return insidePolygon(q, at.head<2>()); });
+  };
+  for (const Edge& e : rimPieces(nodes, rim, footNodes, tolerance, covered)) g.edges.push_back(e), g.free.insert(e);
   return g;
 }
 
@@ -921,9 +935,10 @@ std::vector<int> alikeNodes(const std::vector<Vec3>& at, const std::vector<int>&
 FootprintQuads onChordalSurface(FootprintQuads footprint, const ChordalLocator& chordal) {
   std::vector<Vec3> normal(footprint.nodes.size(), Vec3::Zero());
   for (const Quad& q : footprint.quads) {
-    Vec3 n = areaVector(footprint.nodes, q);
-    if (n.dot(normal[q[0]]) < 0) n = -n;  // a wall's normal, either way
-    for (int c : q) normal[c] += n.dot(normal[c]) < 0 ? Vec3(-n) : n;
+    Vec3 n = areaVector(footprint.nodes, q), centre = Vec3::Zero();
+    for (int c : q) centre += 0.25 * footprint.nodes[c];
+    if (n.dot(chordal.locate(centre).point - centre) < 0) n = -n;  // towards the surface: feet across a bend agree
+    for (int c : q) normal[c] += n;
   }
   for (std::size_t k = 0; k < footprint.nodes.size(); ++k) {
     const Vec3 p = footprint.nodes[k], n = normal[k].normalized();

@@ -40,4 +40,15 @@ inline TopoDS_Solid boxes(const std::vector<Box>& parts, double s) {
   return scaled(unify.Shape(), s);
 }
 
+// An open box 100 x 60 x 40 along x, walls 2 thick (a floor, two side walls), closed at x = 0 by an end wall
+// `thickness` thick and `height` high between the side walls, on the floor: its outside, the side walls' ends and the
+// floor's are one face (unified).
+inline std::vector<Box> boxWithEndWall(double height, double thickness = 2) {
+  return {{0, 0, 0, 100, 60, 2}, {0, 0, 0, 100, 2, 40}, {0, 58, 0, 100, 2, 40}, {0, 2, 2, thickness, 56, height - 2}};
+}
+
+// An L-bracket: a plate 80 x 60 x 2 and a flange 2 thick, 40 high and 30 wide at its end x = 0, its outside flush with
+// the plate's end face.
+inline std::vector<Box> narrowFlangeBracket() { return {{0, 0, 0, 80, 60, 2}, {0, 15, 0, 2, 30, 40}}; }
+
 }  // namespace hexlayer::test_boxes
