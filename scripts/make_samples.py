@@ -1405,6 +1405,23 @@ def lbracket_gusset():
         wall="bracket 3, gusset 2", junction="L-gusset: a T on each leg, meeting in the bend")
 
 
+def box_end_wall_low():
+    """box_sharp_inside_r025 (outside R0.5, every inside edge sharp) with its
+    end wall x = 0…2 cut down to 10 high between the long walls: they run on up to
+    the rim, 20, flush with its outside (its outside and their ends one face,
+    their R1 corner rounds on up), as a box with a lower end. It loses the slab
+    2 × 36 × 10."""
+    L, W, H, t = SHARP_BOX
+    vol, volume = sharp_inside_box(0.5)
+    h = 10.0
+    one_volume(occ.cut([(3, vol)], [(3, occ.addBox(-1.0, t, h, t + 1.0, W - 2 * t, H))])[0])
+    return volume - t * (W - 2 * t) * (H - h), dict(
+        dims=box_dims(0.5, "; the end wall x = 0…2 only 10 high between the long walls, which run on up to 20 "
+                           "flush with its outside"),
+        wall="2", junction="T butting on the long walls and the floor: the end wall's foot a U along their rim "
+                           "(a butt joint; mitred, the hexes fold where its top meets the long walls)")
+
+
 RIB = (0.0, 19.0, 60.0, 21.0, 12.0)    # the plate's rib: along X, rim to rim, 2 x 12
 BOSS_DIMS = "60 × 40 × 2 plate, a boss at its centre (30, 20), "
 
@@ -1461,6 +1478,8 @@ JUNCTION_PARTS = [
     ("plate_boss_solid", boss_plate(
         1.5, 0.0, 10.0, 0.0, BOSS_DIMS + "a solid pin Ø3 (1.5 × the plate), 10 high, no hole",
         "round foot without a hole (a pin)", wall="plate 2, pin Ø3")),
+    # A wall butting on the walls of its own sheet, its outside flush with their ends.
+    ("box_end_wall_low", box_end_wall_low),
 ]
 
 
@@ -1498,7 +1517,9 @@ JUNCTION_README_NOTES = [
     "(shell R29…R31 × 40, rib R19…R29 × 2) turned 120° about Z: by Pappus",
     "(θ/2) Σ (R_out² − R_in²) h. `lbracket_gusset` adds 2 × (15²/2 − (1 − π/4) 3²):",
     "the gusset's triangle less the spandrel of the inner bend (R3), which the",
-    "bracket already fills.",
+    "bracket already fills. `box_end_wall_low` is `../box_sharp_inside_r025.step`",
+    "with its end wall x = 0…2 cut down to 10 between the long walls (less",
+    "2 × 36 × 10).",
     "",
     "Made by `scripts/make_samples.py` after the parts in `..` and `../rims`",
     "(run it with `/usr/bin/python3`, which needs the Debian package",

@@ -80,12 +80,21 @@ std::vector<ButtJoint> findButtJoints(const CadSolid& cad, const WallSides& side
   const std::vector<std::set<int>> beside = faceNeighbours(cad);
   const double tolerance = kPlanar * cad.diagonal;
   auto planar = [&](int f) { return planeOf(cad.faces(f + 1), tolerance).has_value(); };
+  auto onPlaneOf = [&](int f, int g) {  // f is g, or lies on g's plane (a wall split where another ends)
+    if (f == g) return true;
+    const std::optional<gp_Pln> p = planeOf(cad.faces(f + 1), tolerance), q = planeOf(cad.faces(g + 1), tolerance);
+    return p && q && p->Axis().IsParallel(q->Axis(), 1e-9) && q->Distance(p->Location()) <= tolerance;
+  };
+  auto meetsPlaneOf = [&](int a, int b) {  // a meets b, or a face on b's plane, in a sharp inside edge
+    return std::any_of(inside.lower_bound({a, -1}), inside.lower_bound({a + 1, -1}),
+                       [&](const std::pair<int, int>& ab) { return onPlaneOf(ab.second, b); });
+  };
   std::set<int> walls;  // A: a rim face C beside it meets B of its sheet in an inside edge, and A meets B in one too
   for (const ConcaveEdge& e : concave)
     for (const auto& [c, b] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}})
       if (sheet[c] < 0 && sheet[b] >= 0 && runsOnPast(cad, e.edge, c, b, sides.thickness))
         for (int a : beside[c])
-          if (a != b && sheet[a] == sheet[b] && inside.count({a, b})) walls.insert(a);
+          if (a != b && sheet[a] == sheet[b] && meetsPlaneOf(a, b)) walls.insert(a);
   std::vector<ButtJoint> joints;
   for (int a : walls) {
     ButtJoint j{a, sides.faces[a].opposite, {}};

@@ -335,7 +335,9 @@ std::vector<SurfaceEdges> footEdgesBySurface(const Junctions& j, int s) {
     };
     auto at = std::find_if(surfaces.begin(), surfaces.end(), same);
     if (at == surfaces.end()) at = surfaces.insert(surfaces.end(), SurfaceEdges{surface, plane, base, sheet, {}});
-    at->edges.insert(at->edges.end(), edges.begin(), edges.end());
+    for (const TopoDS_Edge& e : edges)  // a flush foot edge lies on every face of the plane (flushFootEdges)
+      if (std::none_of(at->edges.begin(), at->edges.end(), [&](const TopoDS_Edge& f) { return f.IsSame(e); }))
+        at->edges.push_back(e);
   }
   for (SurfaceEdges& on : surfaces)
     if (!on.plane) on.surface = seamAwayFrom(on.surface, on.edges, tolerance);

@@ -705,6 +705,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   WallSides sides = clock.run("wall_sides", [&] { return classifyWallSides(cad, boundary.emplace(cad)); });
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   if (!o.dropJunctions && sides.ownSideFaces.empty()) {
+    // a wall butting on walls of its sheet stands on them (with --drop-junctions it stays mitred: it is no sheet to
+    // leave out under which the others' chordal surface runs on)
     r.facesSplit += clock.run("butt_joints", [&] { return splitButtJoints(cad, sides); });
     if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1) {
       if (std::optional<FootFillets> smooth =
