@@ -492,7 +492,7 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });  // sheets: crossings merged
   t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size()), t.crossed.assign(t.cut.pieces.size(), 0);
   // The sheet's node under a foot node is known by its column (the footprint's quad node); it is checked to be the
-  // column's end nearer to the foot within a third of the wall's thickness (the sheet's rim and poor hexes are
+  // column's end nearer to the foot within half the wall's thickness (the sheet's rim and poor hexes are
   // smoothed after the sweep, and in a bend its chordal facets are coarser than the wall), then is the foot's node.
   MeshOptions piece = o;
   piece.force = true;
