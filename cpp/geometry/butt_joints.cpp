@@ -22,7 +22,8 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kPlanar = 1e-7;  // times the part's diagonal: a face this near a plane is planar
+constexpr double kPlanar = 1e-7;    // times the part's diagonal: a face this near a plane is planar
+constexpr int kSectionSamples = 8;  // points along a section edge, less one, asked whether inside the face
 
 // Per face, the sheet it is a wall face of (findSheets), -1 for a rim face.
 std::vector<int> sheetOfWalls(const CadSolid& cad, const WallSides& sides) {
@@ -33,8 +34,9 @@ std::vector<int> sheetOfWalls(const CadSolid& cad, const WallSides& sides) {
   return sheet;
 }
 
-// The edges where the plane crosses the face's inside (the section's, not those along its boundary). [in] cad, face,
-// plane.
+// The edges where the plane crosses the face's inside: the section's edges with a point inside the face (one may run
+// on along its boundary: the General Fuse merges that part with the boundary's edge), not those all along it.
+// [in] cad, face, plane.
 std::vector<TopoDS_Edge> sectionInside(const CadSolid& cad, int face, const gp_Pln& plane) {
   const TopoDS_Face f = TopoDS::Face(cad.faces(face + 1));
   BRepAlgoAPI_Section section(f, new Geom_Plane(plane));
@@ -44,9 +46,13 @@ std::vector<TopoDS_Edge> sectionInside(const CadSolid& cad, int face, const gp_P
   std::vector<TopoDS_Edge> edges;
   for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
     const BRepAdaptor_Curve curve(TopoDS::Edge(it.Current()));
-    const gp_Pnt middle = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
-    if (inside.Perform(uv.ValueOfUV(middle, kPlanar * cad.diagonal)) == TopAbs_IN)
-      edges.push_back(TopoDS::Edge(it.Current()));
+    for (int k = 1; k < kSectionSamples; ++k) {
+      const double t = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * k / kSectionSamples;
+      if (inside.Perform(uv.ValueOfUV(curve.Value(t), kPlanar * cad.diagonal)) == TopAbs_IN) {
+        edges.push_back(TopoDS::Edge(it.Current()));
+        break;
+      }
+    }
   }
   return edges;
 }
