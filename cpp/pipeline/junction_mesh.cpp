@@ -131,6 +131,8 @@ std::vector<int> footNodesShared(const HexMesh& sheet, const std::vector<int>& c
   return shared;
 }
 
+namespace {
+
 // At order 2, every edge at a moved node whose mid-edge node is not a wall's gets it at its middle. [in,out] sheet;
 // [in] moved: per node; [in] shared: footNodesShared's.
 void midEdgesAtMiddle(HexMesh& sheet, const std::vector<char>& moved, const std::vector<int>& shared) {
@@ -141,6 +143,8 @@ void midEdgesAtMiddle(HexMesh& sheet, const std::vector<char>& moved, const std:
       if ((moved[a] || moved[b]) && shared[mid] < 0) sheet.nodes[mid] = 0.5 * (sheet.nodes[a] + sheet.nodes[b]);
     }
 }
+
+}  // namespace
 
 void leanCrossedColumns(HexMesh& sheet, const QuadMesh& quads, const std::vector<int>& shared, const HexMesh& walls) {
   const int m = sheet.layers, stride = m + 1, columns = static_cast<int>(quads.nodes.size());

@@ -226,3 +226,27 @@ TEST(JunctionMesh, AnObliqueCrossingLeansTheColumnsRoundIt) {
     for (std::size_t h = 0; h < g.hexes.hexes.size(); ++h) EXPECT_GT(hexScaledJacobian(hexCorners(g.hexes, h)), 0.5);
   }
 }
+
+// A column ending on a foot node whose middle node sits near that end (swept from a bend's chordal surface cutting
+// its inside corner) gets it midway between the foot node and its other end; a column already even, and one on no
+// foot, stay. Two layers: each column three nodes, bottom to top. Scaled by 1e-3 and 1e3.
+TEST(JunctionMesh, AColumnOnAFootWithItsMiddleNearOneEndIsEvened) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    HexMesh sheet;
+    sheet.layers = 2;
+    sheet.nodes = {Vec3(0, 0, 0), Vec3(0, 0.4, 0.3), Vec3(0, 2, 2),   // uneven: its middle 0.4 from the bottom
+                   Vec3(5, 0, 0), Vec3(5, 1, 1),     Vec3(5, 2, 2),   // even
+                   Vec3(9, 0, 0), Vec3(9, 0.2, 0.1), Vec3(9, 2, 2)};  // uneven, on no foot
+    for (Vec3& p : sheet.nodes) p *= s;
+    HexMesh walls;
+    walls.nodes = {Vec3(0, 0.1, 0) * s, Vec3(5, 0, 0) * s};  // the foot nodes under columns 0 and 1's bottoms
+    std::vector<int> shared(sheet.nodes.size(), -1);
+    shared[0] = 0, shared[3] = 1;
+    const HexMesh before = sheet;
+    evenFootColumns(sheet, 3, shared, walls);
+    EXPECT_NEAR((sheet.nodes[1] - Vec3(0, 1.05, 1) * s).norm(), 0, 1e-12 * s);  // between (0, 0.1, 0) and (0, 2, 2)
+    EXPECT_EQ(sheet.nodes[4], before.nodes[4]);
+    EXPECT_EQ(sheet.nodes[7], before.nodes[7]);
+  }
+}
