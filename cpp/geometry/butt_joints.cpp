@@ -25,15 +25,6 @@ namespace {
 constexpr double kPlanar = 1e-7;    // times the part's diagonal: a face this near a plane is planar
 constexpr int kSectionSamples = 8;  // points along a section edge, less one, asked whether inside the face
 
-// Per face, the sheet it is a wall face of (findSheets), -1 for a rim face.
-std::vector<int> sheetOfWalls(const CadSolid& cad, const WallSides& sides) {
-  std::vector<int> sheet(sides.faces.size(), -1);
-  const std::vector<Sheet> sheets = findSheets(cad, sides);
-  for (std::size_t s = 0; s < sheets.size(); ++s)
-    for (int f : sheets[s].faces) sheet[f] = static_cast<int>(s);
-  return sheet;
-}
-
 // The edges where the plane crosses the face's inside: the section's edges with a point inside the face (one may run
 // on along its boundary: the General Fuse merges that part with the boundary's edge), not those all along it.
 // [in] cad, face, plane.
@@ -82,14 +73,14 @@ std::vector<ButtJoint> findButtJoints(const CadSolid& cad, const WallSides& side
   const std::vector<ConcaveEdge> concave = concaveEdges(cad);
   std::set<std::pair<int, int>> inside;  // face pairs sharing a sharp inside edge, both ways
   for (const ConcaveEdge& c : concave) inside.emplace(c.a, c.b), inside.emplace(c.b, c.a);
-  const std::vector<int> sheet = sheetOfWalls(cad, sides);
+  const std::vector<int> sheet = wallSheetOfFaces(findSheets(cad, sides), sides.faces.size());
   const std::vector<std::set<int>> beside = faceNeighbours(cad);
   const double tolerance = kPlanar * cad.diagonal;
   auto planar = [&](int f) { return planeOf(cad.faces(f + 1), tolerance).has_value(); };
   auto onPlaneOf = [&](int f, int g) {  // f is g, or lies on g's plane (a wall split where another ends)
     if (f == g) return true;
     const std::optional<gp_Pln> p = planeOf(cad.faces(f + 1), tolerance), q = planeOf(cad.faces(g + 1), tolerance);
-    return p && q && p->Axis().IsParallel(q->Axis(), 1e-9) && q->Distance(p->Location()) <= tolerance;
+    return p && q && samePlane(*q, *p, tolerance);
   };
   auto meetsPlaneOf = [&](int a, int b) {  // a meets b, or a face on b's plane, in a sharp inside edge
     return std::any_of(inside.lower_bound({a, -1}), inside.lower_bound({a + 1, -1}),

@@ -81,6 +81,11 @@ Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v);
 // (CAD systems and scaling write planes as B-splines); none if it is curved. [in] face, tolerance.
 std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance);
 
+// Whether two planes are one: parallel (1e-9 rad) and the one's origin within `tolerance` of the other. [in] a, b.
+inline bool samePlane(const gp_Pln& a, const gp_Pln& b, double tolerance) {
+  return a.Axis().IsParallel(b.Axis(), 1e-9) && a.Distance(b.Location()) <= tolerance;
+}
+
 // The largest tolerance of the shape's vertices, edges and faces.
 double largestTolerance(const TopoDS_Shape& shape);
 

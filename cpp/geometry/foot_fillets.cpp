@@ -157,9 +157,7 @@ std::optional<CadSolid> withoutFaces(const CadSolid& cad, const std::set<int>& f
 
 std::optional<FootFillets> removeFootFillets(const CadSolid& cad, const WallSides& sides,
                                              const std::vector<Sheet>& sheets) {
-  FilletSearch search{cad, std::vector<int>(cad.faces.Extent(), -1), faceNeighbours(cad), {}, sides.thickness};
-  for (std::size_t s = 0; s < sheets.size(); ++s)
-    for (int f : sheets[s].faces) search.sheetOf[f] = static_cast<int>(s);
+  FilletSearch search{cad, wallSheetOfFaces(sheets, cad.faces.Extent()), faceNeighbours(cad), {}, sides.thickness};
   const std::vector<ConcaveEdge> concave = concaveEdges(cad);
   std::set<std::pair<int, int>> concavePairs;
   for (const ConcaveEdge& c : concave) concavePairs.insert(std::minmax(c.a, c.b));

@@ -62,14 +62,18 @@ double areaOf(const TopoDS_Shape& face) {
   return props.Mass();
 }
 
+// Per edge of the solid, its faces.
+TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges(const CadSolid& cad) {
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  return edgeFaces;
+}
+
 // Per face (0-based), the sheet it belongs to: a sheet's walls, and the rim faces beside a standing sheet's walls
 // (a rib's end face); -1 for the other rim faces.
 std::vector<int> sheetOfFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
-  std::vector<int> sheet(sides.faces.size(), -1);
-  for (std::size_t s = 0; s < sheets.size(); ++s)
-    for (int f : sheets[s].faces) sheet[f] = static_cast<int>(s);
-  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
-  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  const std::vector<int> sheet = wallSheetOfFaces(sheets, sides.faces.size());
+  const TopTools_IndexedDataMapOfShapeListOfShape edgeFaces = facesOfEdges(cad);
   std::vector<int> rimSheet(sheet);
   for (int e = 1; e <= edgeFaces.Extent(); ++e) {
     std::vector<int> faces;
@@ -86,8 +90,9 @@ struct Junctions {
   const CadSolid& cad;
   const WallSides& sides;
   const std::vector<Sheet>& sheets;
-  std::vector<int> sheetOf;          // sheetOfFaces
-  std::vector<ConcaveEdge> concave;  // concaveEdges
+  std::vector<int> sheetOf;                             // sheetOfFaces
+  std::vector<ConcaveEdge> concave;                     // concaveEdges
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;  // facesOfEdges
 };
 
 // Whether p lies on the surface within `tolerance`. [in] surface, p, tolerance.
@@ -107,25 +112,21 @@ bool edgeLiesOn(const TopoDS_Edge& edge, const Handle(Geom_Surface) & surface, d
 
 // The edges of standing sheet s's wall faces with rim faces that lie on base wall face `base`'s surface: where a
 // wall stands flush with the base's rim (a box's lower end wall butting on its side walls, its outer face on the
-// side walls' ends), its foot runs to that rim along them. [in] j, s, base.
+// side walls' ends), its foot runs to that rim along them (an edge of two such faces twice). [in] j, s, base.
 std::vector<TopoDS_Edge> flushFootEdges(const Junctions& j, int s, int base) {
   const double tolerance = kJoin * j.cad.diagonal;
   const TopoDS_Face& face = TopoDS::Face(j.cad.faces(base + 1));
   const std::optional<gp_Pln> plane = planeOf(face, tolerance);  // a plane written as a B-spline ends at the face
   const Handle(Geom_Surface) surface = plane ? new Geom_Plane(*plane) : BRep_Tool::Surface(face);
-  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
-  TopExp::MapShapesAndAncestors(j.cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
   std::vector<TopoDS_Edge> out;
   for (int f : j.sheets[s].faces)
     for (TopExp_Explorer it(j.cad.faces(f + 1), TopAbs_EDGE); it.More(); it.Next()) {
       const TopoDS_Edge edge = TopoDS::Edge(it.Current());
-      const TopTools_ListOfShape& faces = edgeFaces.FindFromKey(edge);
+      const TopTools_ListOfShape& faces = j.edgeFaces.FindFromKey(edge);
       const bool byRim = std::any_of(faces.cbegin(), faces.cend(), [&](const TopoDS_Shape& g) {
         return j.sides.faces[j.cad.faces.FindIndex(g) - 1].side == Side::Lateral;
       });
-      if (byRim && edgeLiesOn(edge, surface, tolerance) &&
-          std::none_of(out.begin(), out.end(), [&](const TopoDS_Edge& e) { return e.IsSame(edge); }))
-        out.push_back(edge);
+      if (byRim && edgeLiesOn(edge, surface, tolerance)) out.push_back(edge);
     }
   return out;
 }
@@ -331,11 +332,11 @@ std::vector<SurfaceEdges> footEdgesBySurface(const Junctions& j, int s) {
     auto same = [&](const SurfaceEdges& p) {
       if (p.base != sheet) return false;
       if (!plane || !p.plane) return !plane && !p.plane && sameSurface(p.surface, face, tolerance);
-      return p.plane->Axis().IsParallel(plane->Axis(), 1e-9) && p.plane->Distance(plane->Location()) <= tolerance;
+      return samePlane(*p.plane, *plane, tolerance);
     };
     auto at = std::find_if(surfaces.begin(), surfaces.end(), same);
     if (at == surfaces.end()) at = surfaces.insert(surfaces.end(), SurfaceEdges{surface, plane, base, sheet, {}});
-    for (const TopoDS_Edge& e : edges)  // a flush foot edge lies on every face of the plane (flushFootEdges)
+    for (const TopoDS_Edge& e : edges)  // a flush foot edge comes once per face of the plane and of the wall
       if (std::none_of(at->edges.begin(), at->edges.end(), [&](const TopoDS_Edge& f) { return f.IsSame(e); }))
         at->edges.push_back(e);
   }
@@ -571,7 +572,7 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
     std::iota(same.begin(), same.end(), 0);
     return {{cad.solid}, {}, {same}};
   }
-  const Junctions junctions{cad, sides, sheets, sheetOfFaces(cad, sides, sheets), concaveEdges(cad)};
+  const Junctions junctions{cad, sides, sheets, sheetOfFaces(cad, sides, sheets), concaveEdges(cad), facesOfEdges(cad)};
   JunctionCut cut;
   TopTools_ListOfShape arguments, tools;
   arguments.Append(cad.solid);

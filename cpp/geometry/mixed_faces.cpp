@@ -307,22 +307,23 @@ SplitLine splitLine(const TopoDS_Face& face, const FaceSplit& s) {
   return {new Geom2d_Line(gp_Pnt2d(0, s.at), gp_Dir2d(1, 0)), u0, u1};
 }
 
-// The edges to split the faces along: the lines' stretches to split along (insideStretches), or nothing if
-// OpenCASCADE could not make one. [in] cad, splits.
-std::optional<std::vector<FaceCut>> lineCuts(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
-  std::vector<FaceCut> cuts;
+// The faces split along the lines (their stretches to split along, insideStretches): false if OpenCASCADE could not
+// make an edge or split them. [in] cad, splits; [out] split: the splitter, its Shape the solid with the faces split.
+bool splitAlongLines(const CadSolid& cad, const std::vector<FaceSplit>& splits, BRepFeat_SplitShape& split) {
+  split.Init(cad.solid);
   for (const FaceSplit& s : splits) {
     const TopoDS_Face face = TopoDS::Face(cad.faces(s.face + 1));
     const auto [line, from, to] = splitLine(face, s);
     for (const auto& [a, b] : insideStretches(face, line, from, to)) {
       BRepBuilderAPI_MakeEdge edge(line, BRep_Tool::Surface(face), a, b);
-      if (!edge.IsDone()) return std::nullopt;
+      if (!edge.IsDone()) return false;
       TopoDS_Edge e = edge.Edge();
       BRepLib::BuildCurves3d(e);
-      cuts.push_back({s.face, e});
+      split.Add(e, face);
     }
   }
-  return cuts;
+  split.Build();
+  return split.IsDone();
 }
 
 // A flush rim's split line ends on the bend rounds beside it (the round of the corner the wall it leaves makes
@@ -387,12 +388,12 @@ std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& side
 
 namespace {
 
-// One pass of splitFaces: the solid with the faces split along their parameter lines (nothing if OpenCASCADE could
-// not). [in] cad, splits.
+// One pass of splitFaces: the solid with the faces split (nothing if OpenCASCADE could not), each piece named after
+// its input face (namedPieces). [in] cad, splits.
 CadSolid splitOnce(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
   try {
-    const std::optional<std::vector<FaceCut>> cuts = lineCuts(cad, splits);
-    return cuts ? splitFacesAlong(cad, *cuts) : CadSolid{};
+    BRepFeat_SplitShape split;
+    return splitAlongLines(cad, splits, split) ? namedPieces(cad, split) : CadSolid{};
   } catch (const Standard_Failure&) {
     return {};
   }
@@ -424,17 +425,6 @@ CadSolid namedPieces(const CadSolid& cad, BRepBuilderAPI_MakeShape& split) {
   }
   if (std::find(out.inputFace.begin(), out.inputFace.end(), -1) != out.inputFace.end()) return {};
   return out;
-}
-
-CadSolid splitFacesAlong(const CadSolid& cad, const std::vector<FaceCut>& cuts) {
-  try {
-    BRepFeat_SplitShape split(cad.solid);
-    for (const FaceCut& c : cuts) split.Add(c.edge, TopoDS::Face(cad.faces(c.face + 1)));
-    split.Build();
-    return split.IsDone() ? namedPieces(cad, split) : CadSolid{};
-  } catch (const Standard_Failure&) {
-    return {};
-  }
 }
 
 CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {

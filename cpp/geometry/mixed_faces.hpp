@@ -4,7 +4,6 @@
 // that every face is wall or rim; the pieces keep the input face's name (Face<N>) in everything the user sees.
 #pragma once
 #include <BRepBuilderAPI_MakeShape.hxx>
-#include <TopoDS_Edge.hxx>
 
 #include <vector>
 
@@ -28,17 +27,6 @@ struct FaceSplit {
 // misplaces the least sample area, on a knot of the surface where one is as good. A skin over a wall, its rim and
 // the other wall is split on two knots round the rim piece: two FaceSplits of one face.
 std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& sides);
-
-// A curve to split a face along: an edge on the face's surface (its curve on the surface made).
-struct FaceCut {
-  int face = -1;  // 0-based in CadSolid::faces
-  TopoDS_Edge edge;
-};
-
-// [in] cad, cuts. The solid with the faces split along the edges, prepared (prepareSolid) at the same unit, its
-// inputFace naming the input face of every face; an empty solid (faces.Extent() == 0) if OpenCASCADE could not split
-// them.
-CadSolid splitFacesAlong(const CadSolid& cad, const std::vector<FaceCut>& cuts);
 
 // [in] cad: the solid given to `split`; [in] split: done, its shape a solid with some of cad's faces split (Modified:
 // their pieces). That solid prepared (prepareSolid) at cad's unit, each face named after the input face it is (a

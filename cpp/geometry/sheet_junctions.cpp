@@ -55,6 +55,13 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
   return sheets;
 }
 
+std::vector<int> wallSheetOfFaces(const std::vector<Sheet>& sheets, std::size_t faces) {
+  std::vector<int> sheet(faces, -1);
+  for (std::size_t s = 0; s < sheets.size(); ++s)
+    for (int f : sheets[s].faces) sheet[f] = static_cast<int>(s);
+  return sheet;
+}
+
 void keepFirstSheet(const std::vector<Sheet>& sheets, WallSides& sides) {
   for (std::size_t s = 1; s < sheets.size(); ++s)
     for (int f : sheets[s].faces) sides.faces[f].side = Side::Lateral;

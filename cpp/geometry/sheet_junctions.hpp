@@ -31,6 +31,9 @@ std::string sheetPlace(const CadSolid& cad, const Sheet& s);
 // The given wall faces as one sheet (area, estimated volume, centre), e.g. to report them.
 Sheet sheetOf(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces);
 
+// Per face (0-based, `faces` of them), the index of the sheet it is a wall face of, -1 for the others. [in] sheets.
+std::vector<int> wallSheetOfFaces(const std::vector<Sheet>& sheets, std::size_t faces);
+
 // Leaves the faces of every sheet but the first out of the walls (they become lateral faces: no
 // nodes are placed on them, and the first sheet's chordal surface runs on under them).
 // [in] sheets (findSheets, the first kept); [in,out] sides: the other sheets' faces made lateral.

@@ -192,6 +192,11 @@ class GapMap {
     const Eigen::Vector2d st = (e.transpose() * e).ldlt().solve(e.transpose() * (p - a));
     return map_.uv[t[0]] + st.x() * (map_.uv[t[1]] - map_.uv[t[0]]) + st.y() * (map_.uv[t[2]] - map_.uv[t[0]]);
   }
+  // at(p) as a point of the plane z = 0, for the 3D segment and quad tools.
+  Vec3 flat(const Vec3& p) const {
+    const Eigen::Vector2d q = at(p);
+    return {q.x(), q.y(), 0};
+  }
   // The gap's point at q (on the sheet's quads; put it on the chordal surface after).
   Vec3 lift(const Eigen::Vector2d& q) const { return (*locator_)(q); }
   // The sheet's normal near p, on the side from which the map is counter-clockwise.
@@ -295,14 +300,10 @@ GapEdges gapEdges(const Nodes& nodes, const GapMap& map, const QuadMesh& sheet, 
     for (int k = 0; k < 4; ++k) inFoot.emplace(c[k], c[(k + 1) % 4]);
   }
   const double tolerance = kOnRim * size;
-  auto flat = [&](const Vec3& p) {  // in the map: a foot running along the rim round a bend lies on it there too
-    const Eigen::Vector2d q = map.at(p);
-    return Vec3(q.x(), q.y(), 0);
-  };
-  auto onRim = [&](const Vec3& p) {
-    const Vec3 at = flat(p);
+  auto onRim = [&](const Vec3& p) {  // in the map: a foot running along the rim round a bend lies on it there too
+    const Vec3 at = map.flat(p);
     for (const auto& [a, b] : rim)
-      if (toSegment(at, flat(nodes.at[a]), flat(nodes.at[b])).first <= tolerance) return true;
+      if (toSegment(at, map.flat(nodes.at[a]), map.flat(nodes.at[b])).first <= tolerance) return true;
     return false;
   };
   std::vector<Edge> footRim;
@@ -321,9 +322,10 @@ GapEdges gapEdges(const Nodes& nodes, const GapMap& map, const QuadMesh& sheet, 
     for (int n : footprint.quads[q]) footInPlane.back().push_back(map.at(nodes.at[n + offset]));
   }
   auto covered = [&](const Vec3& p) {  // in the map: along a footprint's rim edge, not beyond its ends, or in its quad
-    const Vec3 at = flat(p);
+    const Vec3 at = map.flat(p);
     for (const auto& [a, b] : footRim)
-      if (const auto [d, t] = toSegment(at, flat(nodes.at[a]), flat(nodes.at[b])); d <= tolerance && t > 0 && t < 1)
+      if (const auto [d, t] = toSegment(at, map.flat(nodes.at[a]), map.flat(nodes.at[b]));
+          d <= tolerance && t > 0 && t < 1)
         return true;
     return std::any_of(footInPlane.begin(), footInPlane.end(),
                        [&](const auto& q) { return insidePolygon(q, at.head<2>()); });
@@ -833,12 +835,8 @@ std::pair<std::vector<Quad>, double> rimRing(Nodes& nodes, const GapMap& map, co
   if (along.empty()) return {};
   const int m = static_cast<int>(fixed.size()), first = static_cast<int>(nodes.at.size());
   std::vector<Vec3> flat;  // the ring in the map: the fixed nodes, then the rim points
-  auto addFlat = [&](const Vec3& p) {
-    const Eigen::Vector2d uv = map.at(p);
-    flat.emplace_back(uv.x(), uv.y(), 0);
-  };
-  for (int b : fixed) addFlat(nodes.at[b]);
-  for (double a : along) nodes.at.push_back(pointAlong(nodes.at, rim, a)), addFlat(nodes.at.back());
+  for (int b : fixed) flat.push_back(map.flat(nodes.at[b]));
+  for (double a : along) nodes.at.push_back(pointAlong(nodes.at, rim, a)), flat.push_back(map.flat(nodes.at.back()));
   std::vector<Quad> local, quads;
   for (int i = 0; i < m; ++i) {
     local.push_back({i, (i + 1) % m, m + (i + 1) % m, m + i});
