@@ -144,15 +144,21 @@ std::size_t unpinch(const std::vector<std::array<int, 3>>& triangles, const Neig
   return moved;
 }
 
-// Patches grown across edges turning less than the feature angle, normals within it of the patch's first.
-std::vector<int> grownPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                              const Neighbours& across, double featureAngle) {
+// The unit normal of each triangle (zero for a degenerate one).
+std::vector<Vec3> triangleNormals(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles) {
   std::vector<Vec3> normal(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const auto& c = triangles[t];
     const Vec3 n = (points[c[1]] - points[c[0]]).cross(points[c[2]] - points[c[0]]);
     normal[t] = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
   }
+  return normal;
+}
+
+// Patches grown across edges turning less than the feature angle, normals within it of the patch's first.
+std::vector<int> grownPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                              const Neighbours& across, double featureAngle) {
+  const std::vector<Vec3> normal = triangleNormals(points, triangles);
   const double within = std::cos(featureAngle * M_PI / 180);
   auto near = [&](int a, int b) {
     return normal[a].isZero() || normal[b].isZero() || normal[a].dot(normal[b]) >= within;
@@ -174,13 +180,45 @@ std::vector<int> grownPatches(const std::vector<Vec3>& points, const std::vector
   return patch;
 }
 
-}  // namespace
+// The triangles of patches narrower than minWidth (twice their area over their perimeter: a strip's width) go, a row at
+// a time from the wider patches' edges, to the patch of the neighbour whose normal is nearest theirs: the facets of a
+// bend split between the faces on either side where the surface turns from the one to the other.
+// [in] points, triangles, across; [in,out] patch; [in] minWidth.
+void dissolveNarrowPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                           const Neighbours& across, std::vector<int>& patch, double minWidth) {
+  const std::vector<Vec3> normal = triangleNormals(points, triangles);
+  std::map<int, double> area, perimeter;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const auto& c = triangles[t];
+    area[patch[t]] += 0.5 * (points[c[1]] - points[c[0]]).cross(points[c[2]] - points[c[0]]).norm();
+    for (int j = 0; j < 3; ++j)
+      if (const int u = across[t][j]; u < 0 || patch[u] != patch[t])
+        perimeter[patch[t]] += (points[c[(j + 1) % 3]] - points[c[j]]).norm();
+  }
+  std::vector<int> label(patch.size());
+  for (std::size_t t = 0; t < patch.size(); ++t)
+    label[t] = 2 * area[patch[t]] >= minWidth * perimeter[patch[t]] ? patch[t] : -1;
+  if (std::none_of(label.begin(), label.end(), [](int l) { return l >= 0; })) return;
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<std::pair<int, int>> row;  // triangle, its new patch
+    for (int t = 0; t < static_cast<int>(patch.size()); ++t) {
+      if (label[t] >= 0) continue;
+      int best = -1;
+      for (int u : across[t])
+        if (u >= 0 && label[u] >= 0 && (best < 0 || normal[t].dot(normal[u]) > normal[t].dot(normal[best]))) best = u;
+      if (best >= 0) row.emplace_back(t, label[best]);
+    }
+    for (const auto& [t, l] : row) label[t] = l, changed = true;
+  }
+  for (std::size_t t = 0; t < patch.size(); ++t)
+    if (label[t] >= 0) patch[t] = label[t];
+}
 
-std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                                double featureAngle) {
-  const Neighbours across = triangleNeighbours(triangles);
-  const VertexTriangles vt = vertexTriangles(triangles, points.size());
-  std::vector<int> patch = grownPatches(points, triangles, across, featureAngle);
+// The cleaning rounds of chordalPatches: small patches joined, pinches undone, pieces numbered apart.
+// [in] triangles, across, vt; [in,out] patch.
+void cleanPatches(const std::vector<std::array<int, 3>>& triangles, const Neighbours& across, const VertexTriangles& vt,
+                  std::vector<int>& patch) {
   int count = splitIntoPieces(across, patch);
   for (int round = 0; round < kCleaningRounds; ++round) {
     std::size_t moved = joinSmallPatches(across, patch, count);
@@ -190,6 +228,25 @@ std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vect
     count = splitIntoPieces(across, patch);
     if (moved == 0) break;
   }
+}
+
+}  // namespace
+
+std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                             double featureAngle, double minWidth) {
+  const Neighbours across = triangleNeighbours(triangles);
+  std::vector<int> patch = grownPatches(points, triangles, across, featureAngle);
+  splitIntoPieces(across, patch);
+  dissolveNarrowPatches(points, triangles, across, patch, minWidth);
+  cleanPatches(triangles, across, vertexTriangles(triangles, points.size()), patch);
+  return patch;
+}
+
+std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                                double featureAngle) {
+  const Neighbours across = triangleNeighbours(triangles);
+  std::vector<int> patch = grownPatches(points, triangles, across, featureAngle);
+  cleanPatches(triangles, across, vertexTriangles(triangles, points.size()), patch);
   return patch;
 }
 

@@ -22,6 +22,15 @@ namespace hexlayer {
 std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
                                 double featureAngle);
 
+// Faces of the chordal surface between its creases, for the patch grids (patch_grids.hpp): patches grown as
+// chordalPatches' (across edges turning less than featureAngle, normals within it of the first's), then those narrower
+// than minWidth (twice their area over their perimeter: a bend's strips of facets turning between its faces) given
+// away a row of triangles at a time, each to the neighbour whose normal is nearest its own, then cleaned as
+// chordalPatches' (small pieces joined, pinches undone). [in] points, triangles, featureAngle: as chordalPatches';
+// [in] minWidth. Returns each triangle's patch.
+std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                             double featureAngle, double minWidth);
+
 // The curves between the patches and along the rim, for Gmsh's discrete model (made here, not by Gmsh's
 // createTopology, whose order depends on where its objects lie in memory: its meshes changed from run to run).
 struct PatchCurve {

@@ -22,6 +22,7 @@
 #include "core/union_find.hpp"
 #include "quadmesh/block_grids.hpp"
 #include "quadmesh/chordal_patches.hpp"
+#include "quadmesh/patch_grids.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 #include "quadmesh/quad_strips.hpp"
@@ -44,11 +45,15 @@ constexpr double kStructuredMean = 0.95;
 // layout fits the surface badly (a rounded rim's corner in a grid cell, a hole by a crooked rim), Gmsh meshes it
 // as before.
 constexpr double kSharedWorst = 0.5;
+constexpr double kCreaseAngle = 40;  // degrees: the patch grid cuts the surface where it turns more
 constexpr double kMinCorner = 45 * M_PI / 180, kMaxCorner = 135 * M_PI / 180;  // of a structured patch
 // A block grid whose quad has its centre farther than this x size from the chordal surface cuts across a crease (a
 // bend with a sharp inside edge, which its grid lines do not follow) and is refused: the hexes would cut the bend's
 // corner off. A bend of the radius of the sizing's curvature term strays a tenth of this.
 constexpr double kChordAcross = 0.25;
+// The patch grid's quads end at the creases by construction; where three faces meet (a box's corner) the chordal
+// surface cuts the corner off with a facet or two, and the quads round it lie off it by up to a third of a quad.
+constexpr double kPatchChordAcross = 0.5;
 
 // Nodes of a discrete Gmsh entity: the given vertices (ids + 1 as tags). [in] dim, tag, ids, points.
 void addEntityNodes(int dim, int tag, const std::vector<int>& ids, const std::vector<Vec3>& points) {
@@ -523,7 +528,8 @@ void addBlockGrid(std::vector<QuadMesh>& tries, BlockGrid grid, QuadLayout layou
 
 // The structured block grids of the chordal surface (block_grids.hpp): a grid with a pocket round each hole (where
 // the pockets would meet or reach the rim, the shared grid round all the holes), and if its rim has no four sharp
-// corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring).
+// corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring); and a grid per face
+// between its creases (patch_grids.hpp) where every face is four-sided.
 // [in] chordal; [in] square: its map onto the square; [in] o. Returns the tries.
 std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const SurfaceMap& square,
                                      const QuadMeshOptions& o) {
@@ -537,6 +543,10 @@ std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const Surfac
     addBlockGrid(tries, oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
   if (!square.empty() && square.holes.size() == 1)
     addBlockGrid(tries, ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size), QuadLayout::Ring);
+  QuadMeshOptions alongCreases = o;
+  if (!o.ownPatchSize.empty()) alongCreases.vertexSize = o.ownPatchSize;
+  addBlockGrid(tries, patchGrid(chordal.surface(), targetSize(chordal, alongCreases), kCreaseAngle),
+               QuadLayout::PatchGrid);
   return tries;
 }
 
@@ -576,15 +586,17 @@ bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal
     if (eulerCharacteristic(blocks[i], quadEdgeUses(blocks[i])) != chordalEuler) continue;  // refused unfinished
     blocks[i].nodes = onChordalSurface(blocks[i], chordal).onSurface;
     scores[i] = finishTry(blocks[i], chordal, o, chordalEuler);
-    across[i] = farthestQuadCentre(blocks[i], chordal) > kChordAcross * o.size;
+    const double reach = blocks[i].layout == QuadLayout::PatchGrid ? kPatchChordAcross : kChordAcross;
+    across[i] = farthestQuadCentre(blocks[i], chordal) > reach * o.size;
   }
   bool holedRefused = false;
-  for (std::size_t i = 0; i < blocks.size(); ++i)
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
     if (!scores[i].topologyChanged && scores[i].inverted == 0 && !across[i] &&
         (blocks[i].layout != QuadLayout::SharedGrid || scores[i].worst >= kSharedWorst))
       ranked.keep(blocks[i], scores[i]);
     else
       holedRefused |= blocks[i].layout == QuadLayout::Grid;
+  }
   return holedRefused;
 }
 

@@ -25,8 +25,8 @@ struct QuadTries {
 
 // How the quads were laid out: by Gmsh on its patches (some of them structured, the rest
 // unstructured), or as structured block grids in a map of the surface (block_grids.hpp: holedGrid, sharedGrid,
-// oGrid, ringGrid).
-enum class QuadLayout { Gmsh, Grid, SharedGrid, OGrid, Ring };
+// oGrid, ringGrid), or one grid per patch between its creases (patch_grids.hpp).
+enum class QuadLayout { Gmsh, Grid, SharedGrid, OGrid, Ring, PatchGrid };
 
 struct QuadMesh {
   std::vector<Vec3> nodes;                // on the chordal surface
@@ -60,9 +60,10 @@ struct PatchSplit {
 struct QuadMeshOptions {
   double size = 0;                 // target edge length (uniform sizing)
   std::vector<double> vertexSize;  // adaptive sizing: target edge length per chordal vertex (sizing.hpp)
-  // Adaptive sizing of the own-patch tries (PatchSplit::ownPatches), if not empty: without the curvature term,
-  // since the sharp creases they are for are their patches' curves (refining a crease does not make the surface
-  // turn less across a quad there).
+  // Adaptive sizing of the own-patch tries (PatchSplit::ownPatches) and of the patch grid (patch_grids.hpp), if not
+  // empty: without the curvature term, since the sharp creases they are for are their patches' curves (refining a
+  // crease does not make the surface turn less across a quad there; in a patch grid it would refine every quad
+  // along it, as far as the grid's rows run).
   std::vector<double> ownPatchSize;
   // The structured block grids are tried first (block_grids.hpp); Gmsh, one split after the other,
   // unless one of them is good with a mean quad of at least 0.98. Gmsh's reparametrization of a

@@ -53,7 +53,7 @@ QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const Q
                          qo.patchSplits.end());
   }
   if (o.adaptive) qo.vertexSize = adaptiveSizes(stage.chordal, o.sizing);
-  if (o.adaptive && fairing == 0) {  // §6.1's radius term only: the own patches' creases are their curves
+  if (o.adaptive) {  // §6.1's radius term only: the own patches' and the patch grid's creases are their curves
     SizingOptions withoutCurvature = o.sizing;
     withoutCurvature.turnPerQuad = std::numeric_limits<double>::infinity();
     qo.ownPatchSize = adaptiveSizes(stage.chordal, withoutCurvature);
@@ -93,6 +93,8 @@ const char* layoutName(QuadLayout layout) {
       return "o-grid";
     case QuadLayout::Ring:
       return "ring";
+    case QuadLayout::PatchGrid:
+      return "patch-grid";
     default:
       return "gmsh";
   }

@@ -66,7 +66,7 @@ double quadStageBudget(double quads);
 // level can be meshed (within the budget).
 QuadStage meshFairedChordalSurface(const ChordalSurface& cut, const TetMesh& tets, const QuadStageOptions& options);
 
-// The layout's name in the report: grid, shared-grid, o-grid, ring or gmsh.
+// The layout's name in the report: grid, shared-grid, o-grid, ring, patch-grid or gmsh.
 const char* layoutName(QuadLayout layout);
 
 }  // namespace hexlayer

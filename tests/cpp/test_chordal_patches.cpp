@@ -113,6 +113,37 @@ TEST(ChordalPatches, NoPatchMeetsItselfAtAVertexOnANoisySheet) {
   }
 }
 
+TEST(ChordalPatches, ABendsNarrowStripsGoToTheFacesBesideThem) {
+  // A U-channel (sheets 10 cells wide, 8 long) bent through 3 cells at each bend, at 20, 44 and 70 degrees (110, 136,
+  // 160 at the other). Cut at 40 degrees, each bend's last two cells (44 and 70, 136 and 160) are a strip of their own
+  // two cells wide, which chordalPatches keeps. facePatches gives it away a row at a time, each cell to the face of
+  // its neighbour with the nearest normal among those already given: 44 to the first wall (beside its 20), 70 to the
+  // floor, 136 to the floor (beside its 110), 160 to the far wall: three faces, at any scale.
+  const std::vector<double> turn = {0,  0,  0,  0,  0,   0,   0,   0,   0,   0,   20,  44,  70,  90,  90,  90,  90, 90,
+                                    90, 90, 90, 90, 110, 136, 160, 180, 180, 180, 180, 180, 180, 180, 180, 180, 180};
+  std::vector<Vec3> profile{Vec3(0, 0, 10)};
+  for (double degrees : turn) {
+    const double a = degrees * M_PI / 180;
+    profile.push_back(profile.back() + Vec3(std::sin(a), 0, -std::cos(a)));
+  }
+  const auto bent = [&](double x, double y) {
+    return Vec3(profile[static_cast<int>(x)].x(), y, profile[static_cast<int>(x)].z());
+  };
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    const Triangles t = grid(static_cast<int>(turn.size()), 8, bent, scale);
+    const std::vector<int> cut = chordalPatches(t.points, t.triangles, 40);
+    EXPECT_GT(std::set<int>(cut.begin(), cut.end()).size(), 3u);  // the strips, patches of their own
+    const std::vector<int> patch = facePatches(t.points, t.triangles, 40, 2 * scale);
+    EXPECT_EQ(std::set<int>(patch.begin(), patch.end()).size(), 3u) << "scale " << scale;
+    for (std::size_t k = 0; k < t.triangles.size(); ++k) {
+      const double degrees = turn[(k / 2) % turn.size()];
+      const int face = degrees <= 44 ? 0 : degrees <= 136 ? 1 : 2;
+      EXPECT_EQ(patch[k], patch[face == 0 ? 0 : face == 1 ? 30 : 60]) << "cell at " << degrees << " degrees";
+    }
+    EXPECT_TRUE(patchesConnected(t, patch));
+  }
+}
+
 TEST(ChordalPatches, TopologyOfAChannel) {
   // Four corners where the bends meet the rim; six curves: the two bends, the rim of each side sheet in one piece
   // and of the middle sheet in two; each curve a chain of its vertices from corner to corner.
