@@ -212,18 +212,22 @@ bool squareCorners(const std::vector<std::vector<Vec3>>& paths, const std::array
 constexpr double kCreaseGrading = 2;
 constexpr int kMeasureSamples = 256;  // points along a curve where its measure is summed
 
-// Where each curve ends on a crease other than itself (a box's floor edge where a wall's corner edge ends on it; a
-// wall's rim where the wall's corner edge reaches it): [0] its first vertex, [1] its last. [in] curves.
+// Where each crease ends on another crease away from the rim (a box's floor edge where a wall's corner edge ends on
+// it; a wall's corner edge at the floor): [0] its first vertex, [1] its last. The rim's curves are left even: rows
+// crowding where a crease reaches a rounded rim fold the rim's hexes there. [in] curves.
 std::vector<std::array<bool, 2>> endsOnCreases(const std::vector<Curve>& curves) {
   std::map<int, int> creaseEnds;  // vertex -> creases ending there
+  std::set<int> onRim;            // vertices where a rim curve ends
   for (const Curve& c : curves)
-    if (c.patches[0] >= 0) ++creaseEnds[c.vertices.front()], ++creaseEnds[c.vertices.back()];
+    for (int v : {c.vertices.front(), c.vertices.back()}) {
+      if (c.patches[0] >= 0) ++creaseEnds[v];
+      if (c.patches[0] < 0) onRim.insert(v);
+    }
   std::vector<std::array<bool, 2>> ends;
   for (const Curve& c : curves) {
-    const int own = c.patches[0] >= 0 ? 1 : 0;
     auto others = [&](int v) {
       const auto it = creaseEnds.find(v);
-      return (it == creaseEnds.end() ? 0 : it->second) > own;
+      return c.patches[0] >= 0 && !onRim.count(v) && it != creaseEnds.end() && it->second > 1;
     };
     ends.push_back({others(c.vertices.front()), others(c.vertices.back())});
   }
@@ -458,7 +462,7 @@ std::size_t gridOf(const PatchLayout& layout, const std::vector<Vec3>& x, const 
 
 }  // namespace
 
-BlockGrid patchGrid(const ChordalSurface& chordal, const SizeField& size, double featureAngle) {
+BlockGrid patchGrid(const ChordalSurface& chordal, const SizeField& size, double featureAngle, bool graded) {
   const std::vector<Vec3>& x = chordal.vertices;
   const std::vector<std::array<int, 3>> triangles = chordalTriangles(chordal);
   PatchLayout layout;
@@ -484,8 +488,8 @@ BlockGrid patchGrid(const ChordalSurface& chordal, const SizeField& size, double
   }
   for (std::size_t c = 0; c < layout.curves.size(); ++c) layout.chain.push_back(opposite.find(static_cast<int>(c)));
   BlockGrid grid;
-  if (gridOf(layout, x, size, true, grid) == 0) return grid;
-  grid = {};
+  if (gridOf(layout, x, size, graded, grid) == 0 || !graded) return grid;
+  grid = {};  // graded, a quad folds: even rows
   gridOf(layout, x, size, false, grid);
   return grid;
 }

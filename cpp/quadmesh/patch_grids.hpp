@@ -11,16 +11,20 @@
 
 namespace hexlayer {
 
-// [in] chordal: the chordal surface (its facets turn counter-clockwise seen from the top, normals set);
-// [in] size: the target quad size; [in] featureAngle: degrees, where the surface is cut (chordalPatches).
-// The patches' curves are cut where they turn more than 45 degrees within a quad (a rim's corner); every patch must
-// then be a disc bounded by four curves whose ends turn by 45 to 135 degrees, no curve twice. Opposite curves get as
-// many segments, the most any curve of their chain of patches needs at the target size (interval assignment: a
-// union-find of opposite curves), spaced evenly by arc length: both patches of a curve take the same nodes. A patch's
-// nodes inside are evenly spaced in its map onto the square (mean value weights, its sides by arc length, so that its
-// curves' nodes lie on the square's sides where the grid puts them).
-// Returns the grid (blocks: one per patch; quads counter-clockwise seen from the top); empty if the surface has
-// fewer than two patches or a patch is not four-sided.
-BlockGrid patchGrid(const ChordalSurface& chordal, const SizeField& size, double featureAngle);
+// [in] chordal: the chordal surface (its facets turn counter-clockwise seen from the top); [in] size: the target
+// quad size; [in] featureAngle: degrees, where the surface is cut (facePatches: a bend's strips narrower than a quad
+// go to the faces beside it); [in] graded: rows denser towards the creases.
+// The rim's curves are cut where they turn more than 45 degrees within a quad (a corner of the outline; a rim curve
+// shorter than 0.75 quad joins its neighbour: the chordal rim's chord across a wall's corner). Every face must then be
+// a disc bounded by four curves turning into one another by 45 to 135 degrees (over up to three quads), no curve
+// twice. A crease's path is its zigzag of facet edges averaged along it over a quad. Opposite curves get as many
+// segments, the most any curve of their chain of faces needs (interval assignment: a union-find of opposite curves),
+// placed at even shares of the curve's measure (the target size along it; if graded, twice as dense next to a crease
+// ending on it away from the rim, fading over a quad): both faces of a curve take the same nodes. A face's nodes
+// inside are a Coons patch of its four sides (bilinearly blended), put on the chordal surface by the caller. Graded
+// rows that fold a quad against its face's normal are made even.
+// Returns the grid (blocks: one per face; quads counter-clockwise seen from the top); empty if the surface has
+// fewer than two faces or a face is not four-sided.
+BlockGrid patchGrid(const ChordalSurface& chordal, const SizeField& size, double featureAngle, bool graded);
 
 }  // namespace hexlayer

@@ -216,14 +216,20 @@ std::vector<SampledCurve> fourSides(int surface, std::map<int, SampledCurve>& cu
   return sides;
 }
 
-// The target quad size at a point (uniform, or the adaptive sizing's), for the structured patches and the block
-// grids; its field is built once.
-SizeField targetSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
-  if (o.vertexSize.empty()) return [size = o.size](const Vec3&) { return size; };
-  return [field = std::make_shared<const ChordalSizeField>(chordal, o.vertexSize)](const Vec3& p) {
+// A quad size at a point: uniform (`size`) if vertexSize is empty, else interpolated from it (the field is built once
+// and keeps a pointer to vertexSize, which must outlive it).
+SizeField sizeField(const ChordalLocator& chordal, double size, const std::vector<double>& vertexSize) {
+  if (vertexSize.empty()) return [size](const Vec3&) { return size; };
+  return [field = std::make_shared<const ChordalSizeField>(chordal, vertexSize)](const Vec3& p) {
     int facet = -1;  // the field may be asked from several threads: no facet kept between points
     return field->at(p, facet);
   };
+}
+
+// The target quad size at a point (uniform, or the adaptive sizing's), for the structured patches and the block
+// grids.
+SizeField targetSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+  return sizeField(chordal, o.size, o.vertexSize);
 }
 
 // Number of segments a curve needs at the target size.
@@ -526,6 +532,11 @@ void addBlockGrid(std::vector<QuadMesh>& tries, BlockGrid grid, QuadLayout layou
   tries.push_back(std::move(q));
 }
 
+// The target size of the patch grid: the own patches' (without the curvature term) where the sizing is adaptive.
+SizeField creaseSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
+  return sizeField(chordal, o.size, o.ownPatchSize.empty() ? o.vertexSize : o.ownPatchSize);
+}
+
 // The structured block grids of the chordal surface (block_grids.hpp): a grid with a pocket round each hole (where
 // the pockets would meet or reach the rim, the shared grid round all the holes), and if its rim has no four sharp
 // corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring); and a grid per face
@@ -543,10 +554,7 @@ std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const Surfac
     addBlockGrid(tries, oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
   if (!square.empty() && square.holes.size() == 1)
     addBlockGrid(tries, ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size), QuadLayout::Ring);
-  QuadMeshOptions alongCreases = o;
-  if (!o.ownPatchSize.empty()) alongCreases.vertexSize = o.ownPatchSize;
-  addBlockGrid(tries, patchGrid(chordal.surface(), targetSize(chordal, alongCreases), kCreaseAngle),
-               QuadLayout::PatchGrid);
+  addBlockGrid(tries, patchGrid(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, true), QuadLayout::PatchGrid);
   return tries;
 }
 
@@ -601,15 +609,24 @@ bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal
 }
 
 // Structured block grids first: where one has square enough quads, Gmsh is not needed. Where the holed grid is
-// refused, the shared grid round all the holes is tried in its place.
+// refused, the shared grid round all the holes is tried in its place; where the patch grid graded towards its creases
+// is refused or outranked, the patch grid with even rows.
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
   const SurfaceMap square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
   std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o);
+  const bool patchGrid =
+      std::any_of(blocks.begin(), blocks.end(), [](const QuadMesh& q) { return q.layout == QuadLayout::PatchGrid; });
   if (rankBlockGrids(blocks, chordal, o, chordalEuler, ranked)) {
     std::vector<QuadMesh> shared;
     addBlockGrid(shared, sharedGrid(square, targetSize(chordal, o)), QuadLayout::SharedGrid);
     rankBlockGrids(shared, chordal, o, chordalEuler, ranked);
+  }
+  if (patchGrid && ranked.best.layout != QuadLayout::PatchGrid) {  // its rows even, if graded it lost or was refused
+    std::vector<QuadMesh> even;
+    addBlockGrid(even, hexlayer::patchGrid(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, false),
+                 QuadLayout::PatchGrid);
+    rankBlockGrids(even, chordal, o, chordalEuler, ranked);
   }
   return ranked;
 }

@@ -70,47 +70,50 @@ GridShape shapeOf(const BlockGrid& g) {
 
 TEST(PatchGrids, AnOpenBoxIsOneGridPerFaceRegularButAtItsBottomCorners) {
   const int L = 12, W = 8, H = 5;
+  const std::size_t even = L * W + 2 * (L + W) * H;  // the quads of unit size
   for (const double jitter : {0.0, 0.4})
-    for (const double scale : {1.0, 1e-3, 1e3}) {
-      SCOPED_TRACE(testing::Message() << "jitter " << jitter << " scale " << scale);
-      const ChordalSurface box = openBox(L, W, H, jitter, scale);
-      const BlockGrid g = patchGrid(
-          box, [&](const Vec3&) { return scale; }, 40);
-      ASSERT_FALSE(g.empty());
-      EXPECT_EQ(g.blocks, 5u);
-      // rows denser towards the creases (kCreaseGrading): a row or two more on every face than the size needs
-      const std::size_t even = L * W + 2 * (L + W) * H;
-      EXPECT_GT(g.quads.size(), even);
-      EXPECT_LT(g.quads.size(), 1.6 * even);
-      const GridShape shape = shapeOf(g);
-      // conformal and oriented alike: every edge inside in two quads, run opposite ways
-      for (const auto& [edge, uses] : shape.edgeUses) {
-        ASSERT_LE(uses.size(), 2u);
-        if (uses.size() == 2) EXPECT_EQ(uses[0].first, uses[1].second);
-      }
-      EXPECT_EQ(static_cast<long>(g.nodes.size()) - static_cast<long>(shape.edgeUses.size()) +
-                    static_cast<long>(g.quads.size()),
-                1);  // a disc, as the surface
-      int irregular = 0;
-      for (const auto& [node, quads] : shape.quadsAt)
-        if (!shape.rim.count(node) && quads != 4) {
-          EXPECT_EQ(quads, 3) << "at " << g.nodes[node].transpose();
-          EXPECT_NEAR(g.nodes[node].z(), 0, 0.5 * scale);  // a bottom corner
-          ++irregular;
+    for (const double scale : {1.0, 1e-3, 1e3})
+      for (const bool graded : {false, true}) {
+        SCOPED_TRACE(testing::Message() << "jitter " << jitter << " scale " << scale << " graded " << graded);
+        const ChordalSurface box = openBox(L, W, H, jitter, scale);
+        const SizeField unit = [&](const Vec3&) { return scale; };
+        const BlockGrid g = patchGrid(box, unit, 40, graded);
+        ASSERT_FALSE(g.empty());
+        EXPECT_EQ(g.blocks, 5u);
+        if (graded) {  // denser rows towards the creases: a row or two more across every face
+          EXPECT_GT(g.quads.size(), even);
+          EXPECT_LT(g.quads.size(), 1.6 * even);
+        } else {
+          EXPECT_EQ(g.quads.size(), even);
         }
-      EXPECT_EQ(irregular, 4);
-      for (const auto& [edge, uses] : shape.edgeUses) {
-        const double length = (g.nodes[edge.first] - g.nodes[edge.second]).norm() / scale;
-        EXPECT_GT(length, 0.3);
-        EXPECT_LT(length, 1.5);
+        const GridShape shape = shapeOf(g);
+        // conformal and oriented alike: every edge inside in two quads, run opposite ways
+        for (const auto& [edge, uses] : shape.edgeUses) {
+          ASSERT_LE(uses.size(), 2u);
+          if (uses.size() == 2) EXPECT_EQ(uses[0].first, uses[1].second);
+        }
+        EXPECT_EQ(static_cast<long>(g.nodes.size()) - static_cast<long>(shape.edgeUses.size()) +
+                      static_cast<long>(g.quads.size()),
+                  1);  // a disc, as the surface
+        int irregular = 0;
+        for (const auto& [node, quads] : shape.quadsAt)
+          if (!shape.rim.count(node) && quads != 4) {
+            EXPECT_EQ(quads, 3) << "at " << g.nodes[node].transpose();
+            EXPECT_NEAR(g.nodes[node].z(), 0, 0.5 * scale);  // a bottom corner
+            ++irregular;
+          }
+        EXPECT_EQ(irregular, 4);
+        for (const auto& [edge, uses] : shape.edgeUses) {
+          const double length = (g.nodes[edge.first] - g.nodes[edge.second]).norm() / scale;
+          EXPECT_GT(length, 0.3);
+          EXPECT_LT(length, 1.5);
+        }
       }
-    }
 }
 
 TEST(PatchGrids, NoGridWhereAFaceIsNotFourSidedOrThereIsOneFace) {
-  EXPECT_TRUE(patchGrid(
-                  test_flat_surfaces::rectangle(6, 4), [](const Vec3&) { return 1.0; }, 40)
-                  .empty());
+  const SizeField unit = [](const Vec3&) { return 1.0; };
+  EXPECT_TRUE(patchGrid(test_flat_surfaces::rectangle(6, 4), unit, 40, true).empty());
   ChordalSurface holed = openBox(12, 8, 5, 0, 1);  // a hole of 2 x 2 cells in the floor
   holed.facets.erase(std::remove_if(holed.facets.begin(), holed.facets.end(),
                                     [&](const auto& f) {
@@ -120,9 +123,7 @@ TEST(PatchGrids, NoGridWhereAFaceIsNotFourSidedOrThereIsOneFace) {
                                     }),
                      holed.facets.end());
   EXPECT_EQ(holed.facets.size(), 12u * 8 + 2 * 20 * 5 - 4);
-  EXPECT_TRUE(patchGrid(
-                  holed, [](const Vec3&) { return 1.0; }, 40)
-                  .empty());
+  EXPECT_TRUE(patchGrid(holed, unit, 40, true).empty());
 }
 
 }  // namespace

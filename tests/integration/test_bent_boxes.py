@@ -14,9 +14,9 @@ and from the report: one sheet (no junction), the part's topology, validation pa
 
 The quads are one structured grid per face between the bends (patch_grids.hpp: node rows along every crease,
 graded towards them), where Gmsh's quads fanned round the bends (mean 0.84-0.87, the R0.5 box's folding at a
-vertical round: refused). Measured 2026-12-04 (2 layers): box_sharp_inside 3 484 hexes, min 0.560 avg 0.955,
-volume -1.22 %; box_sharp 3 590, 0.214 / 0.946, -0.53 % (its worst hex where a corner edge reaches the rim);
-box_sharp_inside_metres and _split alike; box_sharp_inside_r025 4 312, 0.597 / 0.940, -0.53 %.
+vertical round: refused). Measured 2026-12-04 (2 layers): box_sharp_inside 3 120 hexes, min 0.429 avg 0.952,
+volume -1.38 %; box_sharp 3 590, 0.307 / 0.946, -0.59 % (its worst hex where a corner edge reaches the rim);
+box_sharp_inside_metres and _split alike; box_sharp_inside_r025 4 072, 0.555 / 0.940, -0.61 %.
 
 Run by CTest as: /usr/bin/python3 test_bent_boxes.py --hexlayer PATH --source DIR
 """
@@ -114,8 +114,8 @@ class BentBoxes(unittest.TestCase):
         walls, which run on up flush with its outside. As one sheet mitred at every sharp inside edge the hexes folded
         where the end wall's top meets the long walls (no sweep column serves the mitre below and the long wall above);
         the end wall is now a wall standing on the long walls and the floor (butt_joints.hpp: one T, its foot a U along
-        their rim). Measured 2026-12-04 (patch grid): 2 layers 6 334 hexes, min 0.396 avg 0.941, volume -0.43 %; 3 layers
-        9 588, 0.477 / 0.947 (Gmsh's quads before: 3 820, 0.481 / 0.881)."""
+        their rim). Measured 2026-12-04 (patch grid): 2 layers 5 168 hexes, min 0.513 avg 0.941, volume -0.54 %
+        (Gmsh's quads before: 3 820, 0.481 / 0.881)."""
         volume = readme_table()["box_end_wall_low"][1]
         for layers in (2, 3):
             with self.subTest(layers=layers):
