@@ -118,8 +118,9 @@ std::vector<Curve> cutAtSharpTurns(const PatchTopology& topology, const std::vec
 }
 
 // A rim curve shorter than this many quads joins the rim curve of its patch it meets (the rim's chord across a
-// corner of the part, where the crease between two walls reaches the rim a facet away from the corner).
-constexpr double kShortRim = 0.75;
+// corner of the part, where the crease between two walls reaches the rim a facet or two away from the corner: 1.5 mm
+// on a sharply bent hat section of 2 mm sheet).
+constexpr double kShortRim = 1.0;
 
 // Rim curves shorter than kShortRim quads joined to the rim curve of the same patch they meet, until none is.
 // [in,out] curves; [in] x; [in] size: a quad's length.

@@ -15,7 +15,7 @@ namespace hexlayer {
 // quad size; [in] featureAngle: degrees, where the surface is cut (facePatches: a bend's strips narrower than a quad
 // go to the faces beside it); [in] graded: rows denser towards the creases.
 // The rim's curves are cut where they turn more than 45 degrees within a quad (a corner of the outline; a rim curve
-// shorter than 0.75 quad joins its neighbour: the chordal rim's chord across a wall's corner). Every face must then be
+// shorter than a quad joins its neighbour: the chordal rim's chord across a wall's corner). Every face must then be
 // a disc bounded by four curves turning into one another by 45 to 135 degrees (over up to three quads), no curve
 // twice. A crease's path is its zigzag of facet edges averaged along it over a quad. Opposite curves get as many
 // segments, the most any curve of their chain of faces needs (interval assignment: a union-find of opposite curves),

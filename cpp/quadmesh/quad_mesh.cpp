@@ -54,6 +54,11 @@ constexpr double kChordAcross = 0.25;
 // The patch grid's quads end at the creases by construction; where three faces meet (a box's corner) the chordal
 // surface cuts the corner off with a facet or two, and the quads round it lie off it by up to a third of a quad.
 constexpr double kPatchChordAcross = 0.5;
+// Beside an acceptable patch grid, a grid with a quad's centre farther than this x size from the chordal surface has
+// quads across a sharp bend (the patch grid's rows run along it): the patch grid is kept in its place (a hat section
+// bent sharply: the single grid's rows across its bends left 2.3 % of its volume out). A quad on a cylinder of radius
+// R strays s / 8R of its size s: R >= 0.8 s passes.
+constexpr double kCutsCrease = 0.15;
 
 // Nodes of a discrete Gmsh entity: the given vertices (ids + 1 as tags). [in] dim, tag, ids, points.
 void addEntityNodes(int dim, int tag, const std::vector<int>& ids, const std::vector<Vec3>& points) {
@@ -581,26 +586,36 @@ double farthestQuadCentre(const QuadMesh& q, const ChordalLocator& chordal) {
 
 // Block grid tries finished side by side (a single try keeps its own parallel loops: an inactive region does not
 // nest them), then ranked in order; one with an inverted quad (its layout does not fit the surface), another
-// topology or a quad across a crease (kChordAcross) is refused, the shared grid also with a quad below kSharedWorst.
+// topology or a quad across a crease (kChordAcross; kPatchChordAcross for the patch grid) is refused, the shared grid
+// also with a quad below kSharedWorst, and beside an acceptable patch grid any grid with quads across its bends
+// (kCutsCrease).
 // Another topology is refused before the try is finished (finishing keeps it: removing a doublet takes a node, two
 // edges and a quad), and the smoothing it would have cost is saved.
 // [in,out] blocks: the tries; [in,out] ranked. Returns whether the holed grid was refused.
 bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal, const QuadMeshOptions& o,
                     long chordalEuler, Ranked& ranked) {
   std::vector<QuadScore> scores(blocks.size());
-  std::vector<char> across(blocks.size(), 0);  // a quad cuts across a crease
+  std::vector<double> farthest(blocks.size(), 0.0);  // of a quad's centre from the surface, in sizes
 #pragma omp parallel for schedule(dynamic) if (blocks.size() > 1)
   for (long i = 0; i < static_cast<long>(blocks.size()); ++i) {
     if (eulerCharacteristic(blocks[i], quadEdgeUses(blocks[i])) != chordalEuler) continue;  // refused unfinished
     blocks[i].nodes = onChordalSurface(blocks[i], chordal).onSurface;
     scores[i] = finishTry(blocks[i], chordal, o, chordalEuler);
-    const double reach = blocks[i].layout == QuadLayout::PatchGrid ? kPatchChordAcross : kChordAcross;
-    across[i] = farthestQuadCentre(blocks[i], chordal) > reach * o.size;
+    farthest[i] = farthestQuadCentre(blocks[i], chordal) / o.size;
   }
+  auto acceptable = [&](std::size_t i) {
+    const bool patch = blocks[i].layout == QuadLayout::PatchGrid;
+    return !scores[i].topologyChanged && scores[i].inverted == 0 &&
+           farthest[i] <= (patch ? kPatchChordAcross : kChordAcross) &&
+           (blocks[i].layout != QuadLayout::SharedGrid || scores[i].worst >= kSharedWorst);
+  };
+  bool patchGrid = false;  // an acceptable patch grid: the grids whose quads cut its creases are not
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    patchGrid |= blocks[i].layout == QuadLayout::PatchGrid && acceptable(i);
   bool holedRefused = false;
   for (std::size_t i = 0; i < blocks.size(); ++i) {
-    if (!scores[i].topologyChanged && scores[i].inverted == 0 && !across[i] &&
-        (blocks[i].layout != QuadLayout::SharedGrid || scores[i].worst >= kSharedWorst))
+    const bool cutsCreases = patchGrid && blocks[i].layout != QuadLayout::PatchGrid && farthest[i] > kCutsCrease;
+    if (acceptable(i) && !cutsCreases)
       ranked.keep(blocks[i], scores[i]);
     else
       holedRefused |= blocks[i].layout == QuadLayout::Grid;

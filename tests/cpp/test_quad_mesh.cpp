@@ -1,13 +1,15 @@
 // The quad mesh of the chordal surface (quadmesh/quad_mesh.hpp): meshChordalSurface on flat chordal surfaces built
 // by hand, a rectangle and a rectangle with a hole, checked on the quads themselves (they tile the surface, lie
 // on it, are squares of the size asked), and rimEdgeNeighbours on a strip of two quads; the Gmsh tries' time budgets
-// (a try out of its budget is a failed try; none starts after the deadline).
+// (a try out of its budget is a failed try; none starts after the deadline); a sharply folded sheet (Gmsh's own-patch
+// try, and the patch grid kept over a single grid whose rows cross the fold).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "chordal/chordal_locator.hpp"
@@ -151,17 +153,25 @@ ChordalSurface foldedRectangle(double scale) {
   return s;
 }
 
+// The folded sheet at the scales 1, 1e-3 and 1e3 given to `check` with its locator and options asking for quads of
+// the scale's unit size.
+void onFoldedSheets(const std::function<void(double, const ChordalLocator&, const QuadMeshOptions&)>& check) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    const ChordalSurface surface = foldedRectangle(scale);
+    const ChordalLocator chordal(surface);
+    QuadMeshOptions o;
+    o.size = scale;
+    check(scale, chordal, o);
+  }
+}
+
 }  // namespace
 
 // A Gmsh try of HexLayer's own patches (chordal_patches.hpp) on a sheet folded sharply along a line across its
 // facets: quads on the surface, none inverted, their area the surface's, the same quads on every run (Gmsh is
 // given the patches' curves and points, not its createTopology, whose order changed from run to run).
 TEST(QuadMesh, OwnPatchesOfASharplyFoldedSheet) {
-  for (const double scale : {1.0, 1e-3, 1e3}) {
-    const ChordalSurface surface = foldedRectangle(scale);
-    const ChordalLocator chordal(surface);
-    QuadMeshOptions o;
-    o.size = scale;
+  onFoldedSheets([](double scale, const ChordalLocator& chordal, const QuadMeshOptions& o) {
     const PatchSplit own{60, 60, false, 3, true};
     QuadMesh first;
     for (int run = 0; run < 2; ++run) {
@@ -183,5 +193,32 @@ TEST(QuadMesh, OwnPatchesOfASharplyFoldedSheet) {
       else
         EXPECT_EQ(q.nodes, first.nodes) << "scale " << scale;
     }
-  }
+  });
+}
+
+// The same fold meshed by the stage: the single grid's rows (along the rectangle's sides) cross the oblique fold, so
+// the patch grid of its two faces is kept in its place (quad_mesh.cpp's kCutsCrease): no Gmsh try, every quad on one
+// side of the fold, its nodes on the surface, the area the surface's.
+TEST(QuadMesh, ASharpFoldAcrossTheGridGetsOneGridPerFace) {
+  onFoldedSheets([](double scale, const ChordalLocator& chordal, const QuadMeshOptions& o) {
+    const QuadMesh q = meshChordalSurface(chordal, o);
+    EXPECT_EQ(q.layout, QuadLayout::PatchGrid) << "scale " << scale;
+    EXPECT_EQ(q.tries.run, 0u);
+    double area = 0;
+    const Vec3 origin = Vec3(8, 0, 0) * scale, across = Vec3(1, -0.5, 0).normalized();  // across the fold, unfolded
+    for (const auto& quad : q.quads) {
+      area += quadArea(q, quad);
+      int flat = 0, up = 0;  // nodes on the flat part and on the folded one (off the fold line)
+      for (int v : quad) {
+        const Vec3& x = q.nodes[v];
+        if (x.z() > 1e-6 * scale)
+          ++up;
+        else if ((x - origin).dot(across) < -1e-6 * scale)
+          ++flat;
+      }
+      EXPECT_TRUE(flat == 0 || up == 0) << "a quad across the fold, scale " << scale;
+    }
+    EXPECT_NEAR(area, 24 * 12 * scale * scale, 0.03 * 24 * 12 * scale * scale) << "scale " << scale;
+    for (const Vec3& x : q.nodes) EXPECT_LT((chordal.locate(x).point - x).norm(), 1e-9 * scale);
+  });
 }

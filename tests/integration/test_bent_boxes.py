@@ -16,7 +16,7 @@ The quads are one structured grid per face between the bends (patch_grids.hpp: n
 graded towards them), where Gmsh's quads fanned round the bends (mean 0.84-0.87, the R0.5 box's folding at a
 vertical round: refused). Measured 2026-12-04 (2 layers): box_sharp_inside 3 120 hexes, min 0.429 avg 0.952,
 volume -1.38 %; box_sharp 3 590, 0.307 / 0.946, -0.59 % (its worst hex where a corner edge reaches the rim);
-box_sharp_inside_metres and _split alike; box_sharp_inside_r025 4 072, 0.555 / 0.940, -0.61 %.
+box_sharp_inside_metres and _split alike; box_sharp_inside_r025 5 432, 0.555 / 0.947, -0.55 %.
 
 Run by CTest as: /usr/bin/python3 test_bent_boxes.py --hexlayer PATH --source DIR
 """
