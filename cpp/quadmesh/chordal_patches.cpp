@@ -199,17 +199,29 @@ void dissolveNarrowPatches(const std::vector<Vec3>& points, const std::vector<st
   for (std::size_t t = 0; t < patch.size(); ++t)
     label[t] = 2 * area[patch[t]] >= minWidth * perimeter[patch[t]] ? patch[t] : -1;
   if (std::none_of(label.begin(), label.end(), [](int l) { return l >= 0; })) return;
-  for (bool changed = true; changed;) {
-    changed = false;
+  // The rows: the triangles not yet given beside given ones, each row labelled from the labels before it.
+  auto unlabelledBeside = [&](const std::vector<int>& given) {
+    std::vector<int> next;
+    for (int t : given)
+      for (int u : across[t])
+        if (u >= 0 && label[u] < 0) next.push_back(u);
+    std::sort(next.begin(), next.end());
+    next.erase(std::unique(next.begin(), next.end()), next.end());
+    return next;
+  };
+  std::vector<int> given;
+  for (int t = 0; t < static_cast<int>(patch.size()); ++t)
+    if (label[t] >= 0) given.push_back(t);
+  for (std::vector<int> front = unlabelledBeside(given); !front.empty(); front = unlabelledBeside(given)) {
     std::vector<std::pair<int, int>> row;  // triangle, its new patch
-    for (int t = 0; t < static_cast<int>(patch.size()); ++t) {
-      if (label[t] >= 0) continue;
+    for (int t : front) {
       int best = -1;
       for (int u : across[t])
         if (u >= 0 && label[u] >= 0 && (best < 0 || normal[t].dot(normal[u]) > normal[t].dot(normal[best]))) best = u;
-      if (best >= 0) row.emplace_back(t, label[best]);
+      row.emplace_back(t, label[best]);
     }
-    for (const auto& [t, l] : row) label[t] = l, changed = true;
+    given.clear();
+    for (const auto& [t, l] : row) label[t] = l, given.push_back(t);
   }
   for (std::size_t t = 0; t < patch.size(); ++t)
     if (label[t] >= 0) patch[t] = label[t];

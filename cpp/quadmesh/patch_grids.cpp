@@ -22,30 +22,29 @@ struct Curve {
   std::array<int, 2> patches;
 };
 
-// Arc length along a chain from its first vertex: up to vertex i at [i].
-std::vector<double> lengthAlong(const std::vector<int>& chain, const std::vector<Vec3>& x) {
-  std::vector<double> length(chain.size(), 0.0);
-  for (std::size_t i = 1; i < chain.size(); ++i) length[i] = length[i - 1] + (x[chain[i]] - x[chain[i - 1]]).norm();
+// A chain's points.
+std::vector<Vec3> pointsOf(const std::vector<int>& chain, const std::vector<Vec3>& x) {
+  std::vector<Vec3> points;
+  points.reserve(chain.size());
+  for (int v : chain) points.push_back(x[v]);
+  return points;
+}
+
+// Arc length along a path from its first point: up to point i at [i].
+std::vector<double> lengthAlong(const std::vector<Vec3>& path) {
+  std::vector<double> length(path.size(), 0.0);
+  for (std::size_t i = 1; i < path.size(); ++i) length[i] = length[i - 1] + (path[i] - path[i - 1]).norm();
   return length;
 }
 
-// The point at arc length s along a chain (clamped to its ends). [in] length: lengthAlong's.
-Vec3 pointAt(const std::vector<int>& chain, const std::vector<double>& length, const std::vector<Vec3>& x, double s) {
-  if (s <= 0) return x[chain.front()];
-  for (std::size_t i = 1; i < chain.size(); ++i)
-    if (s <= length[i]) {
-      const double step = length[i] - length[i - 1];
-      const double t = step > 0 ? (s - length[i - 1]) / step : 0.0;
-      return (1 - t) * x[chain[i - 1]] + t * x[chain[i]];
-    }
-  return x[chain.back()];
-}
-
-// 0 .. n - 1: a path's own points as a chain.
-std::vector<int> indices(std::size_t n) {
-  std::vector<int> ids(n);
-  for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<int>(i);
-  return ids;
+// The point at arc length s along a path (clamped to its ends). [in] length: lengthAlong's.
+Vec3 pointAt(const std::vector<Vec3>& path, const std::vector<double>& length, double s) {
+  if (s <= 0) return path.front();
+  const std::size_t i = static_cast<std::size_t>(std::lower_bound(length.begin(), length.end(), s) - length.begin());
+  if (i >= path.size()) return path.back();
+  const double step = length[i] - length[i - 1];
+  const double t = step > 0 ? (s - length[i - 1]) / step : 0.0;
+  return (1 - t) * path[i - 1] + t * path[i];
 }
 
 // The angle between two directions (0 if either is zero).
@@ -54,29 +53,27 @@ double angleBetween(const Vec3& a, const Vec3& b) {
   return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
 }
 
-// How much a chain turns at its vertex i: the angle from its direction over `window` behind to over `window` ahead.
-double turnAt(const std::vector<int>& chain, const std::vector<double>& length, const std::vector<Vec3>& x,
-              std::size_t i, double window) {
-  const Vec3 back = pointAt(chain, length, x, length[i] - window);
-  const Vec3 ahead = pointAt(chain, length, x, length[i] + window);
-  return angleBetween(x[chain[i]] - back, ahead - x[chain[i]]);
+// How much a path turns at its point i: the angle from its direction over `window` behind to over `window` ahead.
+double turnAt(const std::vector<Vec3>& path, const std::vector<double>& length, std::size_t i, double window) {
+  const Vec3 back = pointAt(path, length, length[i] - window), ahead = pointAt(path, length, length[i] + window);
+  return angleBetween(path[i] - back, ahead - path[i]);
 }
 
-// The positions in a chain (inside it, from `first` to `last`) where it turns more than kSideTurn, the most within a
-// quad either side. [in] chain, x; [in] size: a quad's length; [in] first, last: the range of positions looked at.
-std::vector<std::size_t> sharpTurns(const std::vector<int>& chain, const std::vector<Vec3>& x, double size,
-                                    std::size_t first, std::size_t last) {
-  const std::vector<double> length = lengthAlong(chain, x);
-  std::vector<double> turn(chain.size(), 0.0), window(chain.size(), 0.0);
-  for (std::size_t i = 1; i + 1 < chain.size(); ++i) window[i] = size, turn[i] = turnAt(chain, length, x, i, window[i]);
+// The positions in a path (inside it, from `first` to `last`) where it turns more than kSideTurn, the most within a
+// quad either side. [in] path; [in] size: a quad's length; [in] first, last: the range of positions looked at.
+std::vector<std::size_t> sharpTurns(const std::vector<Vec3>& path, double size, std::size_t first, std::size_t last) {
+  const std::vector<double> length = lengthAlong(path);
+  std::vector<double> turn(path.size(), 0.0);
+  for (std::size_t i = 1; i + 1 < path.size(); ++i) turn[i] = turnAt(path, length, i, size);
   std::vector<std::size_t> peaks;
   for (std::size_t i = first; i <= last; ++i) {
     // a turn within half a quad of an end is the curve's end turning (the rim's chord across a corner whose crease
     // ends there)
-    if (turn[i] <= kSideTurn || std::min(length[i], length.back() - length[i]) < 0.5 * window[i]) continue;
-    bool peak = true;
-    for (std::size_t j = 1; j + 1 < chain.size() && peak; ++j)
-      if (j != i && std::abs(length[j] - length[i]) < window[i]) peak = j < i ? turn[j] < turn[i] : turn[j] <= turn[i];
+    if (turn[i] <= kSideTurn || std::min(length[i], length.back() - length[i]) < 0.5 * size) continue;
+    bool peak = true;  // the most within a quad before (strictly) and after
+    for (std::size_t j = i; peak && j-- > 1 && length[i] - length[j] < size;) peak = turn[j] < turn[i];
+    for (std::size_t j = i + 1; peak && j + 1 < path.size() && length[j] - length[i] < size; ++j)
+      peak = turn[j] <= turn[i];
     if (peak) peaks.push_back(i);
   }
   return peaks;
@@ -99,7 +96,7 @@ std::vector<Curve> cutAtSharpTurns(const PatchTopology& topology, const std::vec
       std::vector<int> thrice;
       for (int round = 0; round < 3; ++round) thrice.insert(thrice.end(), chain.begin(), chain.end() - 1);
       thrice.push_back(chain.front());
-      const std::vector<std::size_t> peaks = sharpTurns(thrice, x, size, n, 2 * n - 1);
+      const std::vector<std::size_t> peaks = sharpTurns(pointsOf(thrice, x), size, n, 2 * n - 1);
       if (peaks.empty()) {
         cut.push_back({chain, c.patches});
         continue;
@@ -108,7 +105,7 @@ std::vector<Curve> cutAtSharpTurns(const PatchTopology& topology, const std::vec
       first = 1, last = n - 1;
     }
     std::size_t from = 0;
-    for (std::size_t at : sharpTurns(chain, x, size, first, last)) {
+    for (std::size_t at : sharpTurns(pointsOf(chain, x), size, first, last)) {
       cut.push_back({std::vector<int>(chain.begin() + from, chain.begin() + at + 1), c.patches});
       from = at;
     }
@@ -125,7 +122,7 @@ constexpr double kShortRim = 1.0;
 // Rim curves shorter than kShortRim quads joined to the rim curve of the same patch they meet, until none is.
 // [in,out] curves; [in] x; [in] size: a quad's length.
 void joinShortRimCurves(std::vector<Curve>& curves, const std::vector<Vec3>& x, double size) {
-  auto length = [&](const Curve& c) { return lengthAlong(c.vertices, x).back(); };
+  auto length = [&](const Curve& c) { return lengthAlong(pointsOf(c.vertices, x)).back(); };
   for (bool joined = true; joined;) {
     joined = false;
     for (std::size_t c = 0; c < curves.size() && !joined; ++c) {
@@ -195,13 +192,12 @@ bool squareCorners(const std::vector<std::vector<Vec3>>& paths, const std::array
                    const SizeField& size) {
   for (int k = 0; k < 4; ++k) {
     const std::vector<Vec3> in = sidePath(paths, sides[k]), out = sidePath(paths, sides[(k + 1) % 4]);
-    const std::vector<double> inLength = lengthAlong(indices(in.size()), in);
-    const std::vector<double> outLength = lengthAlong(indices(out.size()), out);
+    const std::vector<double> inLength = lengthAlong(in), outLength = lengthAlong(out);
     const Vec3& corner = out.front();
     // over a few quads (a quarter of the shorter side at most): the creases' ends wander by a facet
     const double window = std::min(kCornerWindow * size(corner), 0.25 * std::min(inLength.back(), outLength.back()));
-    const double turn = angleBetween(corner - pointAt(indices(in.size()), inLength, in, inLength.back() - window),
-                                     pointAt(indices(out.size()), outLength, out, window) - corner);
+    const double turn = angleBetween(corner - pointAt(in, inLength, inLength.back() - window),
+                                     pointAt(out, outLength, window) - corner);
     if (turn < kSideTurn || turn > kMaxCorner) return false;
   }
   return true;
@@ -245,12 +241,11 @@ struct CurveMeasure {
 
 CurveMeasure curveMeasure(const std::vector<Vec3>& path, const std::array<bool, 2>& ends, const SizeField& size,
                           double window, bool graded) {
-  const std::vector<int> ids = indices(path.size());
-  const std::vector<double> length = lengthAlong(ids, path);
+  const std::vector<double> length = lengthAlong(path);
   CurveMeasure m;
   m.length = length.back();
   auto density = [&](double s) {
-    const Vec3 p = pointAt(ids, length, path, s);
+    const Vec3 p = pointAt(path, length, s);
     double d = 1;
     if (graded && ends[0]) d += (kCreaseGrading - 1) * std::exp(-s / window);
     if (graded && ends[1]) d += (kCreaseGrading - 1) * std::exp(-(m.length - s) / window);
@@ -288,21 +283,23 @@ struct PatchShape {
   Vec3 normal = Vec3::Zero();
 };
 
-PatchShape patchShape(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& patch, int p,
-                      const std::vector<Vec3>& x) {
-  std::set<int> vertices;
-  std::set<std::pair<int, int>> edges;
-  long faces = 0;
-  PatchShape shape;
+// Every patch's shape, in one pass over the triangles. [in] triangles, patch; [in] patches: their count; [in] x.
+std::vector<PatchShape> patchShapes(const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& patch,
+                                    int patches, const std::vector<Vec3>& x) {
+  std::vector<std::set<int>> vertices(patches);
+  std::vector<std::set<std::pair<int, int>>> edges(patches);
+  std::vector<long> faces(patches, 0);
+  std::vector<PatchShape> shapes(patches);
   for (std::size_t t = 0; t < triangles.size(); ++t) {
-    if (patch[t] != p) continue;
+    const int p = patch[t];
     const auto& c = triangles[t];
-    ++faces;
-    for (int k = 0; k < 3; ++k) vertices.insert(c[k]), edges.emplace(std::minmax(c[k], c[(k + 1) % 3]));
-    shape.normal += (x[c[1]] - x[c[0]]).cross(x[c[2]] - x[c[0]]);
+    ++faces[p];
+    for (int k = 0; k < 3; ++k) vertices[p].insert(c[k]), edges[p].emplace(std::minmax(c[k], c[(k + 1) % 3]));
+    shapes[p].normal += (x[c[1]] - x[c[0]]).cross(x[c[2]] - x[c[0]]);
   }
-  shape.disc = static_cast<long>(vertices.size()) - static_cast<long>(edges.size()) + faces == 1;
-  return shape;
+  for (int p = 0; p < patches; ++p)
+    shapes[p].disc = static_cast<long>(vertices[p].size()) - static_cast<long>(edges[p].size()) + faces[p] == 1;
+  return shapes;
 }
 
 constexpr int kAveraged = 4;         // points each side of a crease's point in its moving average ...
@@ -312,17 +309,14 @@ constexpr int kAveragingPasses = 2;  // ... made this many times
 // moving average over a quad's length either side (shorter near its ends, which stay) runs along the middle of the
 // bend. [in] chain, x; [in] window: the quad's length.
 std::vector<Vec3> creasePath(const std::vector<int>& chain, const std::vector<Vec3>& x, double window) {
-  std::vector<Vec3> path;
-  for (int v : chain) path.push_back(x[v]);
-  const std::vector<int> ids = indices(path.size());
+  std::vector<Vec3> path = pointsOf(chain, x);
   for (int pass = 0; pass < kAveragingPasses; ++pass) {
-    const std::vector<double> length = lengthAlong(ids, path);
+    const std::vector<double> length = lengthAlong(path);
     std::vector<Vec3> averaged = path;
     for (std::size_t i = 1; i + 1 < path.size(); ++i) {
       const double reach = std::min({window, length[i], length.back() - length[i]});
       Vec3 sum = Vec3::Zero();
-      for (int k = -kAveraged; k <= kAveraged; ++k)
-        sum += pointAt(ids, length, path, length[i] + reach * k / kAveraged);
+      for (int k = -kAveraged; k <= kAveraged; ++k) sum += pointAt(path, length, length[i] + reach * k / kAveraged);
       averaged[i] = sum / (2 * kAveraged + 1);
     }
     path = std::move(averaged);
@@ -333,14 +327,8 @@ std::vector<Vec3> creasePath(const std::vector<int>& chain, const std::vector<Ve
 // Each curve's path: along its vertices on the rim, a crease's creasePath. [in] curves, x; [in] window: a quad.
 std::vector<std::vector<Vec3>> curvePaths(const std::vector<Curve>& curves, const std::vector<Vec3>& x, double window) {
   std::vector<std::vector<Vec3>> paths;
-  for (const Curve& c : curves) {
-    if (c.patches[0] >= 0) {
-      paths.push_back(creasePath(c.vertices, x, window));
-      continue;
-    }
-    paths.emplace_back();
-    for (int v : c.vertices) paths.back().push_back(x[v]);
-  }
+  for (const Curve& c : curves)
+    paths.push_back(c.patches[0] >= 0 ? creasePath(c.vertices, x, window) : pointsOf(c.vertices, x));
   return paths;
 }
 
@@ -358,13 +346,12 @@ std::vector<std::vector<int>> curveNodes(const std::vector<Curve>& curves, const
   };
   std::vector<std::vector<int>> nodes(curves.size());
   for (std::size_t c = 0; c < curves.size(); ++c) {
-    const std::vector<int> ids = indices(paths[c].size());
-    const std::vector<double> length = lengthAlong(ids, paths[c]);
+    const std::vector<double> length = lengthAlong(paths[c]);
     const int n = segments[c];
     nodes[c].push_back(corner(curves[c].vertices.front()));
     for (int k = 1; k < n; ++k) {
       nodes[c].push_back(static_cast<int>(grid.nodes.size()));
-      grid.nodes.push_back(pointAt(ids, length, paths[c], arcAtShare(measures[c], static_cast<double>(k) / n)));
+      grid.nodes.push_back(pointAt(paths[c], length, arcAtShare(measures[c], static_cast<double>(k) / n)));
     }
     nodes[c].push_back(corner(curves[c].vertices.back()));
   }
@@ -463,7 +450,7 @@ std::size_t gridOf(const PatchLayout& layout, const std::vector<Vec3>& x, const 
 
 }  // namespace
 
-BlockGrid patchGrid(const ChordalSurface& chordal, const SizeField& size, double featureAngle, bool graded) {
+PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle) {
   const std::vector<Vec3>& x = chordal.vertices;
   const std::vector<std::array<int, 3>> triangles = chordalTriangles(chordal);
   PatchLayout layout;
@@ -484,15 +471,14 @@ BlockGrid patchGrid(const ChordalSurface& chordal, const SizeField& size, double
     if (!four || !squareCorners(layout.paths, *four, size)) return {};
     opposite.unite((*four)[0].curve, (*four)[2].curve), opposite.unite((*four)[1].curve, (*four)[3].curve);
     layout.sides.push_back(*four);
-    layout.shapes.push_back(patchShape(triangles, patch, p, x));
-    if (!layout.shapes.back().disc) return {};
   }
+  layout.shapes = patchShapes(triangles, patch, patches, x);
+  if (std::any_of(layout.shapes.begin(), layout.shapes.end(), [](const PatchShape& p) { return !p.disc; })) return {};
   for (std::size_t c = 0; c < layout.curves.size(); ++c) layout.chain.push_back(opposite.find(static_cast<int>(c)));
-  BlockGrid grid;
-  if (gridOf(layout, x, size, graded, grid) == 0 || !graded) return grid;
-  grid = {};  // graded, a quad folds: even rows
-  gridOf(layout, x, size, false, grid);
-  return grid;
+  PatchGrids grids;
+  gridOf(layout, x, size, false, grids.even);
+  if (gridOf(layout, x, size, true, grids.graded) > 0) grids.graded = {};  // a quad folds: even rows only
+  return grids;
 }
 
 }  // namespace hexlayer

@@ -13,7 +13,7 @@ namespace hexlayer {
 
 // [in] chordal: the chordal surface (its facets turn counter-clockwise seen from the top); [in] size: the target
 // quad size; [in] featureAngle: degrees, where the surface is cut (facePatches: a bend's strips narrower than a quad
-// go to the faces beside it); [in] graded: rows denser towards the creases.
+// go to the faces beside it).
 // The rim's curves are cut where they turn more than 45 degrees within a quad (a corner of the outline; a rim curve
 // shorter than a quad joins its neighbour: the chordal rim's chord across a wall's corner). Every face must then be
 // a disc bounded by four curves turning into one another by 45 to 135 degrees (over up to three quads), no curve
@@ -21,10 +21,13 @@ namespace hexlayer {
 // segments, the most any curve of their chain of faces needs (interval assignment: a union-find of opposite curves),
 // placed at even shares of the curve's measure (the target size along it; if graded, twice as dense next to a crease
 // ending on it away from the rim, fading over a quad): both faces of a curve take the same nodes. A face's nodes
-// inside are a Coons patch of its four sides (bilinearly blended), put on the chordal surface by the caller. Graded
-// rows that fold a quad against its face's normal are made even.
-// Returns the grid (blocks: one per face; quads counter-clockwise seen from the top); empty if the surface has
-// fewer than two faces or a face is not four-sided.
-BlockGrid patchGrid(const ChordalSurface& chordal, const SizeField& size, double featureAngle, bool graded);
+// inside are a Coons patch of its four sides (bilinearly blended), put on the chordal surface by the caller.
+// Returns the grids of one layout (blocks: one per face; quads counter-clockwise seen from the top): with even rows,
+// and graded unless that folds a quad against its face's normal; both empty if the surface has fewer than two faces
+// or a face is not four-sided.
+struct PatchGrids {
+  BlockGrid graded, even;
+};
+PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle);
 
 }  // namespace hexlayer

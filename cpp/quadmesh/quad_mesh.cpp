@@ -544,8 +544,7 @@ SizeField creaseSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
 
 // The structured block grids of the chordal surface (block_grids.hpp): a grid with a pocket round each hole (where
 // the pockets would meet or reach the rim, the shared grid round all the holes), and if its rim has no four sharp
-// corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring); and a grid per face
-// between its creases (patch_grids.hpp) where every face is four-sided.
+// corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring).
 // [in] chordal; [in] square: its map onto the square; [in] o. Returns the tries.
 std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const SurfaceMap& square,
                                      const QuadMeshOptions& o) {
@@ -559,7 +558,6 @@ std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const Surfac
     addBlockGrid(tries, oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
   if (!square.empty() && square.holes.size() == 1)
     addBlockGrid(tries, ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size), QuadLayout::Ring);
-  addBlockGrid(tries, patchGrid(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, true), QuadLayout::PatchGrid);
   return tries;
 }
 
@@ -623,24 +621,24 @@ bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal
   return holedRefused;
 }
 
-// Structured block grids first: where one has square enough quads, Gmsh is not needed. Where the holed grid is
-// refused, the shared grid round all the holes is tried in its place; where the patch grid graded towards its creases
-// is refused or outranked, the patch grid with even rows.
+// Structured block grids first, the patch grid (patch_grids.hpp) after them: where one has square enough quads, Gmsh
+// is not needed. Where the holed grid is refused, the shared grid round all the holes is tried in its place; where
+// the patch grid graded towards its creases is refused or outranked, the patch grid with even rows.
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
   const SurfaceMap square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
   std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o);
-  const bool patchGrid =
-      std::any_of(blocks.begin(), blocks.end(), [](const QuadMesh& q) { return q.layout == QuadLayout::PatchGrid; });
+  PatchGrids patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle);
+  const bool graded = !patch.graded.empty();
+  addBlockGrid(blocks, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);
   if (rankBlockGrids(blocks, chordal, o, chordalEuler, ranked)) {
     std::vector<QuadMesh> shared;
     addBlockGrid(shared, sharedGrid(square, targetSize(chordal, o)), QuadLayout::SharedGrid);
     rankBlockGrids(shared, chordal, o, chordalEuler, ranked);
   }
-  if (patchGrid && ranked.best.layout != QuadLayout::PatchGrid) {  // its rows even, if graded it lost or was refused
+  if (graded && ranked.best.layout != QuadLayout::PatchGrid) {  // the graded one lost or was refused
     std::vector<QuadMesh> even;
-    addBlockGrid(even, hexlayer::patchGrid(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, false),
-                 QuadLayout::PatchGrid);
+    addBlockGrid(even, std::move(patch.even), QuadLayout::PatchGrid);
     rankBlockGrids(even, chordal, o, chordalEuler, ranked);
   }
   return ranked;

@@ -77,7 +77,8 @@ TEST(PatchGrids, AnOpenBoxIsOneGridPerFaceRegularButAtItsBottomCorners) {
         SCOPED_TRACE(testing::Message() << "jitter " << jitter << " scale " << scale << " graded " << graded);
         const ChordalSurface box = openBox(L, W, H, jitter, scale);
         const SizeField unit = [&](const Vec3&) { return scale; };
-        const BlockGrid g = patchGrid(box, unit, 40, graded);
+        const PatchGrids grids = patchGrids(box, unit, 40);
+        const BlockGrid& g = graded ? grids.graded : grids.even;
         ASSERT_FALSE(g.empty());
         EXPECT_EQ(g.blocks, 5u);
         if (graded) {  // denser rows towards the creases: a row or two more across every face
@@ -113,7 +114,8 @@ TEST(PatchGrids, AnOpenBoxIsOneGridPerFaceRegularButAtItsBottomCorners) {
 
 TEST(PatchGrids, NoGridWhereAFaceIsNotFourSidedOrThereIsOneFace) {
   const SizeField unit = [](const Vec3&) { return 1.0; };
-  EXPECT_TRUE(patchGrid(test_flat_surfaces::rectangle(6, 4), unit, 40, true).empty());
+  const PatchGrids flat = patchGrids(test_flat_surfaces::rectangle(6, 4), unit, 40);
+  EXPECT_TRUE(flat.graded.empty() && flat.even.empty());
   ChordalSurface holed = openBox(12, 8, 5, 0, 1);  // a hole of 2 x 2 cells in the floor
   holed.facets.erase(std::remove_if(holed.facets.begin(), holed.facets.end(),
                                     [&](const auto& f) {
@@ -123,7 +125,8 @@ TEST(PatchGrids, NoGridWhereAFaceIsNotFourSidedOrThereIsOneFace) {
                                     }),
                      holed.facets.end());
   EXPECT_EQ(holed.facets.size(), 12u * 8 + 2 * 20 * 5 - 4);
-  EXPECT_TRUE(patchGrid(holed, unit, 40, true).empty());
+  const PatchGrids grids = patchGrids(holed, unit, 40);
+  EXPECT_TRUE(grids.graded.empty() && grids.even.empty());
 }
 
 }  // namespace
