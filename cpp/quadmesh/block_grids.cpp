@@ -166,8 +166,9 @@ int count(double quads) { return std::max(1, static_cast<int>(std::round(quads))
 constexpr int kMinAround = 8;  // quads round a ring grid, at the least
 
 // The pocket of grid cells around a hole: its box of cells one cell beyond the hole's extent in the
-// plane; false if that leaves the grid.
-bool pocketBox(const SurfaceMap& map, const std::vector<int>& hole, const GridLines& lines, Box& box) {
+// plane; false if that leaves the grid, unless `toRim`: then a box side that would is on the rim (the hole lies in
+// the rim's row of cells: a bend relief at a face's corner, whose sides are fixed).
+bool pocketBox(const SurfaceMap& map, const std::vector<int>& hole, const GridLines& lines, bool toRim, Box& box) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = -lo;
   for (int p : hole) lo = lo.cwiseMin(map.uv[p]), hi = hi.cwiseMax(map.uv[p]);
   const int n0 = static_cast<int>(lines.x.size()) - 1, n1 = static_cast<int>(lines.y.size()) - 1;
@@ -178,6 +179,10 @@ bool pocketBox(const SurfaceMap& map, const std::vector<int>& hole, const GridLi
   while (k0 + 1 <= n1 && lines.y[k0 + 1] >= hi.y() - tolerance) ++k0;
   while (k1 - 1 >= 0 && lines.y[k1 - 1] <= lo.y() + tolerance) --k1;
   box = {i0 - 1, k0 - 1, i1 - i0 + 2, k1 - k0 + 2};
+  if (toRim) {
+    const int from0 = std::max(box.i0, 0), from1 = std::max(box.k0, 0);
+    box = {from0, from1, std::min(box.i0 + box.n0, n0) - from0, std::min(box.k0 + box.n1, n1) - from1};
+  }
   return box.i0 >= 0 && box.k0 >= 0 && box.i0 + box.n0 <= n0 && box.k0 + box.n1 <= n1;
 }
 
@@ -690,6 +695,71 @@ void snapSides(BlockGrid& grid, const SurfaceMap& map, const GridHole& hole, con
   }
 }
 
+// Grid lines where sides 0 and 2 (for x) and 1 and 3 (for y) of a box's walk round the rim put their nodes, averaged;
+// the outermost on the square's sides. [in] all: the box of all cells; [in] rim: its walk's points.
+GridLines rimLines(const Box& all, const std::vector<LoopPoint>& rim) {
+  GridLines lines;
+  for (int i = 0; i <= all.n0; ++i)
+    lines.x.push_back(i == all.n0 ? -1.0
+                                  : 0.5 * (rim[i].uv.x() + rim[(2 * all.n0 + all.n1 - i) % all.around()].uv.x()));
+  for (int k = 0; k <= all.n1; ++k)
+    lines.y.push_back(k == all.n1 ? -1.0
+                                  : 0.5 * (rim[all.n0 + k].uv.y() + rim[(all.around() - k) % all.around()].uv.y()));
+  lines.x[0] = 1, lines.y[0] = 1;
+  return lines;
+}
+
+// The tensor grid of the lines with a pocket of four blocks round each hole (holedGrid's; `toRim`: pocketBox's),
+// the nodes inside the pockets kept (unused). Empty if a pocket leaves the grid, two meet or a hole has no four corners
+// in turn.
+BlockGrid gridWithPockets(const SurfaceMap& map, const MapLocator& locate, const GridLines& lines, bool toRim,
+                          const SizeField& size) {
+  const int n0 = static_cast<int>(lines.x.size()) - 1, n1 = static_cast<int>(lines.y.size()) - 1;
+  std::vector<char> inPocket(n0 * n1, 0);
+  std::vector<std::pair<Box, std::size_t>> pockets;
+  for (std::size_t h = 0; h < map.holes.size(); ++h) {
+    Box box;
+    if (!pocketBox(map, map.holes[h], lines, toRim, box)) return {};
+    for (int i = box.i0; i < box.i0 + box.n0; ++i)
+      for (int k = box.k0; k < box.k0 + box.n1; ++k)
+        if (inPocket[i * n1 + k]++) return {};  // two pockets meet
+    pockets.emplace_back(box, h);
+  }
+  BlockGrid grid;
+  addCells(grid, locate, lines, inPocket);
+  grid.blocks = 1;
+  // The pockets' rings laid out side by side (each on its own), added in the holes' order.
+  std::vector<std::optional<Ring>> rings(pockets.size());
+  ParallelErrors errors;
+#pragma omp parallel for schedule(dynamic)
+  for (long p = 0; p < static_cast<long>(pockets.size()); ++p)
+    errors.run([&] {
+      const auto& [box, h] = pockets[p];
+      std::vector<int> hole = map.holes[h];
+      std::array<int, 4> corners;
+      if (holeCorners(map, hole, corners))
+        rings[p] = layRing(locate, lines, box, loopPoints(map, hole, corners, box.sides(), size), size);
+    });
+  errors.rethrow();
+  for (std::size_t p = 0; p < pockets.size(); ++p) {
+    if (!rings[p]) return {};
+    appendRing(grid, lines, pockets[p].first, *rings[p], false);
+  }
+  return grid;
+}
+
+// The grid's nodes renumbered: `first` in their order, then the others in theirs. [in,out] grid; [in] first.
+void numberFirst(BlockGrid& grid, const std::vector<int>& first) {
+  std::vector<int> index(grid.nodes.size(), -1);
+  std::vector<Vec3> nodes;
+  for (int v : first) index[v] = static_cast<int>(nodes.size()), nodes.push_back(grid.nodes[v]);
+  for (std::size_t v = 0; v < grid.nodes.size(); ++v)
+    if (index[v] < 0) index[v] = static_cast<int>(nodes.size()), nodes.push_back(grid.nodes[v]);
+  for (auto& quad : grid.quads)
+    for (int& v : quad) v = index[v];
+  grid.nodes = std::move(nodes);
+}
+
 }  // namespace
 
 BlockGrid oGrid(const SurfaceMap& map, const SizeField& size) {
@@ -713,47 +783,28 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
   const std::vector<double> quads = quadsAlongLoop(map, map.rim, size);
   auto side = [&](int k) { return (k == 3 ? quads.back() : quads[map.corners[k + 1]]) - quads[map.corners[k]]; };
   const Box all{0, 0, count(std::max(side(0), side(2))), count(std::max(side(1), side(3)))};
-  // Grid lines where sides 0 and 2 (for x) and 1 and 3 (for y) put their nodes, averaged.
-  const std::vector<LoopPoint> rim = loopPoints(map, map.rim, map.corners, all.sides(), size);
-  GridLines lines;
-  for (int i = 0; i <= all.n0; ++i)
-    lines.x.push_back(i == all.n0 ? -1.0
-                                  : 0.5 * (rim[i].uv.x() + rim[(2 * all.n0 + all.n1 - i) % all.around()].uv.x()));
-  for (int k = 0; k <= all.n1; ++k)
-    lines.y.push_back(k == all.n1 ? -1.0
-                                  : 0.5 * (rim[all.n0 + k].uv.y() + rim[(all.around() - k) % all.around()].uv.y()));
-  lines.x[0] = 1, lines.y[0] = 1;
-  std::vector<char> inPocket(all.n0 * all.n1, 0);
-  std::vector<std::pair<Box, std::size_t>> pockets;
-  for (std::size_t h = 0; h < map.holes.size(); ++h) {
-    Box box;
-    if (!pocketBox(map, map.holes[h], lines, box)) return {};
-    for (int i = box.i0; i < box.i0 + box.n0; ++i)
-      for (int k = box.k0; k < box.k0 + box.n1; ++k)
-        if (inPocket[i * all.n1 + k]++) return {};  // two pockets meet
-    pockets.emplace_back(box, h);
-  }
-  BlockGrid grid;
-  addCells(grid, locate, lines, inPocket);
-  grid.blocks = 1;
-  // The pockets' rings laid out side by side (each on its own), added in the holes' order.
-  std::vector<std::optional<Ring>> rings(pockets.size());
-  ParallelErrors errors;
-#pragma omp parallel for schedule(dynamic)
-  for (long p = 0; p < static_cast<long>(pockets.size()); ++p)
-    errors.run([&] {
-      const auto& [box, h] = pockets[p];
-      std::vector<int> hole = map.holes[h];
-      std::array<int, 4> corners;
-      if (holeCorners(map, hole, corners))
-        rings[p] = layRing(locate, lines, box, loopPoints(map, hole, corners, box.sides(), size), size);
-    });
-  errors.rethrow();
-  for (std::size_t p = 0; p < pockets.size(); ++p) {
-    if (!rings[p]) return {};
-    appendRing(grid, lines, pockets[p].first, *rings[p], false);
-  }
+  BlockGrid grid = gridWithPockets(map, locate, rimLines(all, loopPoints(map, map.rim, map.corners, all.sides(), size)),
+                                   false, size);
   dropUnusedNodes(grid.nodes, grid.quads);  // those inside the pockets
+  return grid;
+}
+
+BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size, const SquareRim& rim) {
+  const Box all{0, 0, rim.n0, rim.n1};
+  if (map.empty() || map.boundary != MapBoundary::Square || rim.n0 < 1 || rim.n1 < 1 ||
+      static_cast<int>(rim.points.size()) != all.around())
+    return {};
+  const GridLines lines = rimLines(all, rim.points);
+  BlockGrid grid = gridWithPockets(map, MapLocator(map), lines, true, size);
+  if (grid.empty()) return {};
+  std::vector<int> walk;
+  for (int t = 0; t < all.around(); ++t) {
+    const auto [i, k] = all.walk(t);
+    walk.push_back(lines.node(i, k));
+    grid.nodes[walk.back()] = rim.points[t].x;
+  }
+  numberFirst(grid, walk);
+  dropUnusedNodes(grid.nodes, grid.quads);  // those inside the pockets (the rim's are used: they stay first)
   return grid;
 }
 

@@ -28,6 +28,21 @@ BlockGrid oGrid(const SurfaceMap& map, const SizeField& size);
 // map, or if two pockets meet or one reaches the rim.
 BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size);
 
+// A square map's rim as given nodes: n0 x n1 cells, and the rim's points along its walk from corner 0 (n0 from
+// corner 0 to corner 1, n1 on to corner 2, n0, n1 back to corner 0).
+struct SquareRim {
+  int n0 = 1, n1 = 1;
+  std::vector<LoopPoint> points;
+};
+
+// holedGrid with its rim's nodes given (a face of the patch grid, sharing its sides' nodes with the faces beside it):
+// the grid's lines where the given points put them, its rim nodes at the points, first in its nodes in their order;
+// a pocket that would leave the grid has its box's side on the rim instead (a hole within a cell of the rim: a bend
+// relief at the face's corner). [in] map: the square map; [in] size: the target size; [in] rim: 2 (n0 + n1) points.
+// Empty if two pockets meet or a hole has no four corners in turn, or the points are not as many as the rim's
+// cells.
+BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size, const SquareRim& rim);
+
 // Grid of a surface mapped onto the square with holes whose pockets would meet or reach the rim (issue 19): one
 // tensor grid over the square, its lines through every hole's sides and spaced by the quads the target size needs
 // between them, averaged over the rim's two sides along each axis (one cell at the least). A rectilinear hole

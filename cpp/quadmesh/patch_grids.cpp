@@ -8,6 +8,7 @@
 
 #include "core/union_find.hpp"
 #include "quadmesh/chordal_patches.hpp"
+#include "quadmesh/quad_smoothing.hpp"
 
 namespace hexlayer {
 namespace {
@@ -59,20 +60,21 @@ double turnAt(const std::vector<Vec3>& path, const std::vector<double>& length, 
   return angleBetween(path[i] - back, ahead - path[i]);
 }
 
-// The positions in a path (inside it, from `first` to `last`) where it turns more than kSideTurn, the most within a
-// quad either side. [in] path; [in] size: a quad's length; [in] first, last: the range of positions looked at.
-std::vector<std::size_t> sharpTurns(const std::vector<Vec3>& path, double size, std::size_t first, std::size_t last) {
+// The positions in a path (inside it, from `first` to `last`) where it turns more than kSideTurn over `window`
+// either side, the most within the window either side, at least `endGap` from its ends (a turn nearer an end is
+// the curve's end turning: the rim's chord across a corner whose crease ends there). [in] path; [in] window, endGap:
+// lengths; [in] first, last: the range of positions looked at.
+std::vector<std::size_t> sharpTurns(const std::vector<Vec3>& path, double window, double endGap, std::size_t first,
+                                    std::size_t last) {
   const std::vector<double> length = lengthAlong(path);
   std::vector<double> turn(path.size(), 0.0);
-  for (std::size_t i = 1; i + 1 < path.size(); ++i) turn[i] = turnAt(path, length, i, size);
+  for (std::size_t i = 1; i + 1 < path.size(); ++i) turn[i] = turnAt(path, length, i, window);
   std::vector<std::size_t> peaks;
   for (std::size_t i = first; i <= last; ++i) {
-    // a turn within half a quad of an end is the curve's end turning (the rim's chord across a corner whose crease
-    // ends there)
-    if (turn[i] <= kSideTurn || std::min(length[i], length.back() - length[i]) < 0.5 * size) continue;
-    bool peak = true;  // the most within a quad before (strictly) and after
-    for (std::size_t j = i; peak && j-- > 1 && length[i] - length[j] < size;) peak = turn[j] < turn[i];
-    for (std::size_t j = i + 1; peak && j + 1 < path.size() && length[j] - length[i] < size; ++j)
+    if (turn[i] <= kSideTurn || std::min(length[i], length.back() - length[i]) < endGap) continue;
+    bool peak = true;  // the most within the window before (strictly) and after
+    for (std::size_t j = i; peak && j-- > 1 && length[i] - length[j] < window;) peak = turn[j] < turn[i];
+    for (std::size_t j = i + 1; peak && j + 1 < path.size() && length[j] - length[i] < window; ++j)
       peak = turn[j] <= turn[i];
     if (peak) peaks.push_back(i);
   }
@@ -96,7 +98,7 @@ std::vector<Curve> cutAtSharpTurns(const PatchTopology& topology, const std::vec
       std::vector<int> thrice;
       for (int round = 0; round < 3; ++round) thrice.insert(thrice.end(), chain.begin(), chain.end() - 1);
       thrice.push_back(chain.front());
-      const std::vector<std::size_t> peaks = sharpTurns(pointsOf(thrice, x), size, n, 2 * n - 1);
+      const std::vector<std::size_t> peaks = sharpTurns(pointsOf(thrice, x), size, 0.5 * size, n, 2 * n - 1);
       if (peaks.empty()) {
         cut.push_back({chain, c.patches});
         continue;
@@ -105,11 +107,46 @@ std::vector<Curve> cutAtSharpTurns(const PatchTopology& topology, const std::vec
       first = 1, last = n - 1;
     }
     std::size_t from = 0;
-    for (std::size_t at : sharpTurns(pointsOf(chain, x), size, first, last)) {
+    for (std::size_t at : sharpTurns(pointsOf(chain, x), size, 0.5 * size, first, last)) {
       cut.push_back({std::vector<int>(chain.begin() + from, chain.begin() + at + 1), c.patches});
       from = at;
     }
     cut.push_back({std::vector<int>(chain.begin() + from, chain.end()), c.patches});
+  }
+  return cut;
+}
+
+// A face whose loop does not turn at four corners may have rounded ones along the rim (a foot's corners rounded by
+// more than a quad): its rim curves are cut where they turn by more than kSideTurn over this many quads either side.
+constexpr double kRoundCorner = 3;
+
+// The rim curves of a patch cut at their rounded corners (kRoundCorner; not within a quad of their ends, not the
+// holes' loops), the pieces after the first added at the end. [in,out] curves, paths, ofPatch: the patch's curves;
+// [in] size: a quad's length. Returns whether any was cut.
+bool cutAtRoundCorners(std::vector<Curve>& curves, std::vector<std::vector<Vec3>>& paths, std::vector<int>& ofPatch,
+                       double size) {
+  bool cut = false;
+  for (const int c : std::vector<int>(ofPatch)) {
+    if (curves[c].patches[0] >= 0 || curves[c].vertices.front() == curves[c].vertices.back()) continue;
+    const std::vector<int> chain = curves[c].vertices;
+    const std::vector<Vec3> path = paths[c];
+    if (chain.size() < 3) continue;
+    std::size_t from = 0;
+    for (std::size_t at : sharpTurns(path, kRoundCorner * size, size, 1, chain.size() - 2)) {
+      Curve piece{std::vector<int>(chain.begin() + from, chain.begin() + at + 1), curves[c].patches};
+      std::vector<Vec3> piecePath(path.begin() + from, path.begin() + at + 1);
+      if (from == 0) {
+        curves[c] = std::move(piece), paths[c] = std::move(piecePath);
+      } else {
+        ofPatch.push_back(static_cast<int>(curves.size()));
+        curves.push_back(std::move(piece)), paths.push_back(std::move(piecePath));
+      }
+      from = at, cut = true;
+    }
+    if (from == 0) continue;
+    ofPatch.push_back(static_cast<int>(curves.size()));
+    curves.push_back({std::vector<int>(chain.begin() + from, chain.end()), curves[c].patches});
+    paths.emplace_back(path.begin() + from, path.end());
   }
   return cut;
 }
@@ -146,25 +183,35 @@ void joinShortRimCurves(std::vector<Curve>& curves, const std::vector<Vec3>& x, 
   }
 }
 
-// A curve as one side of a patch, in the patch's loop: forward (from its first vertex) or backward.
+// A curve as a piece of a patch's loop: forward (from its first vertex) or backward.
 struct SideOf {
   int curve;
   bool forward;
 };
 
-// A patch's four sides in order round it, if its curves make one loop of four. [in] curves; [in] ofPatch: the
-// patch's curves, ascending.
-std::optional<std::array<SideOf, 4>> fourSides(const std::vector<Curve>& curves, const std::vector<int>& ofPatch) {
-  if (ofPatch.size() != 4) return std::nullopt;
-  std::array<SideOf, 4> sides{SideOf{ofPatch[0], true}, {}, {}, {}};
-  std::set<int> used{ofPatch[0]};
+// A face's side: the curves along it from a corner to the next, in order (more than one where a curve ends on it
+// flat: a flange's bend ending on the side of a foot that runs on past it).
+using Side = std::vector<SideOf>;
+
+// A face of the patch grid: the four sides of its outer loop, and its holes' loops of vertices (rim curves only:
+// windows in a wall, holes in a flange).
+struct Face {
+  std::array<Side, 4> sides;
+  std::vector<std::vector<int>> holes;
+};
+
+// A group's curves in order round their loop, from its first curve forward; nothing if they do not make one loop
+// (or it touches itself at a vertex). [in] curves; [in] group: the loop's curves, ascending.
+std::optional<Side> loopOf(const std::vector<Curve>& curves, const std::vector<int>& group) {
+  Side loop{{group[0], true}};
+  std::set<int> used{group[0]};
   auto endOf = [&](const SideOf& s) {
     return s.forward ? curves[s.curve].vertices.back() : curves[s.curve].vertices.front();
   };
-  for (int k = 1; k < 4; ++k) {
-    const int at = endOf(sides[k - 1]);
+  while (loop.size() < group.size()) {
+    const int at = endOf(loop.back());
     std::optional<SideOf> next;
-    for (int c : ofPatch) {
+    for (int c : group) {
       if (used.count(c)) continue;
       for (const bool forward : {true, false}) {
         const int start = forward ? curves[c].vertices.front() : curves[c].vertices.back();
@@ -174,33 +221,118 @@ std::optional<std::array<SideOf, 4>> fourSides(const std::vector<Curve>& curves,
       }
     }
     if (!next) return std::nullopt;
-    sides[k] = *next, used.insert(next->curve);
+    loop.push_back(*next), used.insert(next->curve);
   }
-  if (endOf(sides[3]) != curves[sides[0].curve].vertices.front()) return std::nullopt;
-  return sides;
+  if (endOf(loop.back()) != curves[loop.front().curve].vertices.front()) return std::nullopt;
+  return loop;
+}
+
+// What a side's curves have along them (their paths, nodes, vertices: perCurve[curve]) end to end in the side's
+// order, each junction once.
+template <typename T>
+std::vector<T> endToEnd(const Side& side, const std::vector<std::vector<T>>& perCurve) {
+  std::vector<T> along;
+  for (const SideOf& s : side) {
+    std::vector<T> piece = perCurve[s.curve];
+    if (!s.forward) std::reverse(piece.begin(), piece.end());
+    along.insert(along.end(), piece.begin() + (along.empty() ? 0 : 1), piece.end());
+  }
+  return along;
 }
 
 // A side's path in the patch's order round it.
-std::vector<Vec3> sidePath(const std::vector<std::vector<Vec3>>& paths, const SideOf& s) {
-  std::vector<Vec3> path = paths[s.curve];
-  if (!s.forward) std::reverse(path.begin(), path.end());
-  return path;
+std::vector<Vec3> sidePath(const std::vector<std::vector<Vec3>>& paths, const Side& side) {
+  return endToEnd(side, paths);
 }
 
-// Whether the sides' paths turn into one another by kSideTurn to kMaxCorner at each corner (over a quad's length).
-bool squareCorners(const std::vector<std::vector<Vec3>>& paths, const std::array<SideOf, 4>& sides,
+// How much a path turns into the next where they meet, over a few quads (half the shorter path at most): the
+// creases' ends wander by a facet. [in] in, out: the paths, out starting where in ends; [in] size.
+double turnInto(const std::vector<Vec3>& in, const std::vector<Vec3>& out, const SizeField& size) {
+  const std::vector<double> inLength = lengthAlong(in), outLength = lengthAlong(out);
+  const Vec3& corner = out.front();
+  const double window = std::min(kCornerWindow * size(corner), 0.5 * std::min(inLength.back(), outLength.back()));
+  return angleBetween(corner - pointAt(in, inLength, inLength.back() - window),
+                      pointAt(out, outLength, window) - corner);
+}
+
+// Whether the sides' paths turn into one another by kSideTurn to kMaxCorner at each corner.
+bool squareCorners(const std::vector<std::vector<Vec3>>& paths, const std::array<Side, 4>& sides,
                    const SizeField& size) {
   for (int k = 0; k < 4; ++k) {
-    const std::vector<Vec3> in = sidePath(paths, sides[k]), out = sidePath(paths, sides[(k + 1) % 4]);
-    const std::vector<double> inLength = lengthAlong(in), outLength = lengthAlong(out);
-    const Vec3& corner = out.front();
-    // over a few quads (a quarter of the shorter side at most): the creases' ends wander by a facet
-    const double window = std::min(kCornerWindow * size(corner), 0.25 * std::min(inLength.back(), outLength.back()));
-    const double turn = angleBetween(corner - pointAt(in, inLength, inLength.back() - window),
-                                     pointAt(out, outLength, window) - corner);
+    const double turn = turnInto(sidePath(paths, sides[k]), sidePath(paths, sides[(k + 1) % 4]), size);
     if (turn < kSideTurn || turn > kMaxCorner) return false;
   }
   return true;
+}
+
+// A loop of curves cut into four sides at its corners: a loop of four curves at their ends; a longer loop where its
+// curves turn into one another by kSideTurn or more, the others going on flat along a side. [in] loop, paths, size.
+// Nothing if that does not give four corners.
+std::optional<std::array<Side, 4>> sidesOf(const Side& loop, const std::vector<std::vector<Vec3>>& paths,
+                                           const SizeField& size) {
+  std::vector<std::size_t> corners;  // the loop's pieces that start a side
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    if (loop.size() == 4 || turnInto(sidePath(paths, {loop[(i + loop.size() - 1) % loop.size()]}),
+                                     sidePath(paths, {loop[i]}), size) >= kSideTurn)
+      corners.push_back(i);
+  if (corners.size() != 4) return std::nullopt;
+  std::array<Side, 4> sides;
+  for (int k = 0; k < 4; ++k)
+    for (std::size_t i = corners[k]; i != (k == 3 ? corners[0] + loop.size() : corners[k + 1]); ++i)
+      sides[k].push_back(loop[i % loop.size()]);
+  return sides;
+}
+
+// The curves of a group (that follow one another round a loop) joined into their loop of vertices, the first not
+// repeated at the end; empty if they do not make one loop. [in] curves; [in] group: curves of the loop.
+std::vector<int> joinedLoop(const std::vector<Curve>& curves, const std::vector<int>& group) {
+  const std::optional<Side> pieces = loopOf(curves, group);
+  if (!pieces) return {};
+  std::vector<int> loop;
+  for (const SideOf& s : *pieces) {
+    std::vector<int> v = curves[s.curve].vertices;
+    if (!s.forward) std::reverse(v.begin(), v.end());
+    loop.insert(loop.end(), v.begin() + (loop.empty() ? 0 : 1), v.end());
+  }
+  if (loop.size() < 4 || loop.front() != loop.back()) return {};
+  loop.pop_back();
+  return loop;
+}
+
+// A patch as a face: its curves grouped into loops by their ends, the loop with creases (or its only loop) four
+// sides round it, the other loops holes along the rim. [in] curves, paths; [in] ofPatch: the patch's curves,
+// ascending; [in] size. Nothing if the patch has two loops with creases (a crease round a hole: a boss's foot) or
+// its outer loop is not four-sided with square corners.
+std::optional<Face> faceOf(const std::vector<Curve>& curves, const std::vector<std::vector<Vec3>>& paths,
+                           const std::vector<int>& ofPatch, const SizeField& size) {
+  UnionFind together(static_cast<int>(ofPatch.size()));
+  std::map<int, int> atEnd;  // vertex -> a curve (its place in ofPatch) ending there
+  for (std::size_t i = 0; i < ofPatch.size(); ++i)
+    for (int v : {curves[ofPatch[i]].vertices.front(), curves[ofPatch[i]].vertices.back()}) {
+      const auto [it, added] = atEnd.emplace(v, static_cast<int>(i));
+      if (!added) together.unite(it->second, static_cast<int>(i));
+    }
+  std::map<int, std::vector<int>> groups;  // by their root
+  for (std::size_t i = 0; i < ofPatch.size(); ++i) groups[together.find(static_cast<int>(i))].push_back(ofPatch[i]);
+  std::vector<int> outer;
+  std::vector<std::vector<int>> holes;
+  for (const auto& [root, group] : groups) {
+    const bool crease = std::any_of(group.begin(), group.end(), [&](int c) { return curves[c].patches[0] >= 0; });
+    if (crease && !outer.empty()) return std::nullopt;
+    if (crease || groups.size() == 1)
+      outer = group;
+    else
+      holes.push_back(group);
+  }
+  const std::optional<Side> loop = outer.empty() ? std::nullopt : loopOf(curves, outer);
+  const std::optional<std::array<Side, 4>> sides = loop ? sidesOf(*loop, paths, size) : std::nullopt;
+  if (!sides || !squareCorners(paths, *sides, size)) return std::nullopt;
+  Face face{*sides, {}};
+  for (const std::vector<int>& hole : holes) {
+    face.holes.push_back(joinedLoop(curves, hole));
+    if (face.holes.back().empty()) return std::nullopt;
+  }
+  return face;
 }
 
 // Next to a crease the rows of quads along it are this much denser (fading over a quad's length away from it), so
@@ -277,9 +409,10 @@ double arcAtShare(const CurveMeasure& m, double t) {
   return (static_cast<double>(i - 1) + f) * m.length / kMeasureSamples;
 }
 
-// Whether a patch's triangles make a disc (V - E + F = 1), and their summed normal (twice their vector area).
+// A patch's triangles' Euler characteristic V - E + F (a disc: 1, with h holes 1 - h), and their summed normal
+// (twice their vector area).
 struct PatchShape {
-  bool disc = false;
+  long euler = 0;
   Vec3 normal = Vec3::Zero();
 };
 
@@ -298,7 +431,7 @@ std::vector<PatchShape> patchShapes(const std::vector<std::array<int, 3>>& trian
     shapes[p].normal += (x[c[1]] - x[c[0]]).cross(x[c[2]] - x[c[0]]);
   }
   for (int p = 0; p < patches; ++p)
-    shapes[p].disc = static_cast<long>(vertices[p].size()) - static_cast<long>(edges[p].size()) + faces[p] == 1;
+    shapes[p].euler = static_cast<long>(vertices[p].size()) - static_cast<long>(edges[p].size()) + faces[p];
   return shapes;
 }
 
@@ -333,44 +466,55 @@ std::vector<std::vector<Vec3>> curvePaths(const std::vector<Curve>& curves, cons
 }
 
 // The nodes of each curve: its end vertices' nodes (shared by the curves meeting there) and segments[curve] - 1
-// between them along its path, at even shares of its measure. [in] curves, paths, measures, segments, x; [in,out]
-// grid: nodes added.
-std::vector<std::vector<int>> curveNodes(const std::vector<Curve>& curves, const std::vector<std::vector<Vec3>>& paths,
-                                         const std::vector<CurveMeasure>& measures, const std::vector<int>& segments,
-                                         const std::vector<Vec3>& x, BlockGrid& grid) {
+// between them along its path, at even shares of its measure, and where each lies along it (its share of the path's
+// length). [in] curves, paths, measures, segments, x; [in,out] grid: nodes added.
+struct CurveNodes {
+  std::vector<std::vector<int>> nodes;
+  std::vector<std::vector<double>> along;
+};
+
+CurveNodes curveNodes(const std::vector<Curve>& curves, const std::vector<std::vector<Vec3>>& paths,
+                      const std::vector<CurveMeasure>& measures, const std::vector<int>& segments,
+                      const std::vector<Vec3>& x, BlockGrid& grid) {
   std::map<int, int> cornerNode;
   auto corner = [&](int v) {
     const auto [it, added] = cornerNode.emplace(v, static_cast<int>(grid.nodes.size()));
     if (added) grid.nodes.push_back(x[v]);
     return it->second;
   };
-  std::vector<std::vector<int>> nodes(curves.size());
+  CurveNodes made{std::vector<std::vector<int>>(curves.size()), std::vector<std::vector<double>>(curves.size())};
   for (std::size_t c = 0; c < curves.size(); ++c) {
     const std::vector<double> length = lengthAlong(paths[c]);
     const int n = segments[c];
-    nodes[c].push_back(corner(curves[c].vertices.front()));
+    std::vector<int>& nodes = made.nodes[c];
+    nodes.push_back(corner(curves[c].vertices.front()));
+    made.along[c].push_back(0);
     for (int k = 1; k < n; ++k) {
-      nodes[c].push_back(static_cast<int>(grid.nodes.size()));
-      grid.nodes.push_back(pointAt(paths[c], length, arcAtShare(measures[c], static_cast<double>(k) / n)));
+      const double s = arcAtShare(measures[c], static_cast<double>(k) / n);
+      nodes.push_back(static_cast<int>(grid.nodes.size()));
+      grid.nodes.push_back(pointAt(paths[c], length, s));
+      made.along[c].push_back(length.back() > 0 ? s / length.back() : 0.0);
     }
-    nodes[c].push_back(corner(curves[c].vertices.back()));
+    nodes.push_back(corner(curves[c].vertices.back()));
+    made.along[c].push_back(1);
   }
-  return nodes;
+  return made;
+}
+
+// A side's nodes in its order. [in] side; [in] nodes: per curve.
+std::vector<int> sideNodes(const Side& side, const std::vector<std::vector<int>>& nodes) {
+  return endToEnd(side, nodes);
 }
 
 // One patch's grid: its sides' nodes on its rim, the nodes inside by transfinite interpolation between them (a
 // bilinearly blended Coons patch: a plane's grid exactly, a cylinder's between its arcs), put on the chordal surface
-// with the others when the grid is ranked. [in] sides, nodes: the patch's sides and the curves' nodes; [in] normal:
+// with the others when the grid is ranked. [in] sides: the nodes of the patch's sides (sideNodes); [in] normal:
 // the patch's (its quads turn counter-clockwise round it). [in,out] grid: nodes and quads added. Returns the quads
 // whose normal points against the patch's (folded: a graded grid on a patch whose sides are graded unlike).
-std::size_t addPatchGrid(const std::array<SideOf, 4>& sides, const std::vector<std::vector<int>>& nodes,
-                         const Vec3& normal, BlockGrid& grid) {
-  auto sideNode = [&](int k, int i) {
-    const std::vector<int>& n = nodes[sides[k].curve];
-    return sides[k].forward ? n[i] : n[n.size() - 1 - i];
-  };
-  const int n0 = static_cast<int>(nodes[sides[0].curve].size()) - 1;
-  const int n1 = static_cast<int>(nodes[sides[1].curve].size()) - 1;
+std::size_t addPatchGrid(const std::array<std::vector<int>, 4>& sides, const Vec3& normal, BlockGrid& grid) {
+  auto sideNode = [&](int k, int i) { return sides[k][i]; };
+  const int n0 = static_cast<int>(sides[0].size()) - 1;
+  const int n1 = static_cast<int>(sides[1].size()) - 1;
   std::vector<int> node((n0 + 1) * (n1 + 1));
   auto at = [&](int i, int j) -> int& { return node[j * (n0 + 1) + i]; };
   for (int i = 0; i <= n0; ++i) at(i, 0) = sideNode(0, i), at(i, n1) = sideNode(2, n0 - i);
@@ -401,6 +545,95 @@ std::size_t addPatchGrid(const std::array<SideOf, 4>& sides, const std::vector<s
   return folded;
 }
 
+// The quads of a face's grid added with its nodes inside (its rim nodes given), turned counter-clockwise round its
+// normal. [in] local: the face's grid, its first `rim` nodes those of `rimNodes`; [in] normal: the face's; [in,out]
+// grid. Returns the quads whose normal points against the face's.
+std::size_t addFaceQuads(const BlockGrid& local, const std::vector<int>& rimNodes, const Vec3& normal,
+                         BlockGrid& grid) {
+  std::vector<int> node = rimNodes;
+  for (std::size_t v = rimNodes.size(); v < local.nodes.size(); ++v)
+    node.push_back(static_cast<int>(grid.nodes.size())), grid.nodes.push_back(local.nodes[v]);
+  auto quadNormal = [&](const std::array<int, 4>& q) {
+    return (grid.nodes[q[2]] - grid.nodes[q[0]]).cross(grid.nodes[q[3]] - grid.nodes[q[1]]);
+  };
+  std::vector<std::array<int, 4>> quads;
+  Vec3 turn = Vec3::Zero();
+  for (const auto& q : local.quads) {
+    quads.push_back({node[q[0]], node[q[1]], node[q[2]], node[q[3]]});
+    turn += quadNormal(quads.back());
+  }
+  std::size_t folded = 0;
+  for (auto& q : quads) {
+    if (turn.dot(normal) < 0) std::swap(q[1], q[3]);
+    folded += quadNormal(q).dot(normal) <= 0;
+    grid.quads.push_back(q);
+  }
+  grid.blocks += local.blocks;
+  return folded;
+}
+
+// A face with holes: its triangles mapped onto the square at its four corners (mapOntoSquare), holedGrid's pocket of
+// four blocks round each hole, its rim nodes its sides' (where they lie along the sides, placed on the square's
+// sides as the map places the rim). [in] face, made: the curves' nodes; [in] facets: the face's triangles; [in] x,
+// size, normal; [in,out] grid. Returns the quads folded against the face (addPatchGrid's), nothing if holedGrid
+// gives none (a pocket reaches past the rim or meets another).
+std::optional<std::size_t> addHoledFace(const Face& face, const std::vector<Curve>& curves, const CurveNodes& made,
+                                        const std::vector<std::array<int, 3>>& facets, const std::vector<Vec3>& x,
+                                        const SizeField& size, const Vec3& normal, BlockGrid& grid) {
+  std::map<int, int> local;  // chordal vertex -> the face's point
+  std::vector<Vec3> points;
+  auto pointOf = [&](int v) {
+    const auto [it, added] = local.emplace(v, static_cast<int>(points.size()));
+    if (added) points.push_back(x[v]);
+    return it->second;
+  };
+  std::vector<std::array<int, 3>> triangles;
+  for (const auto& t : facets) triangles.push_back({pointOf(t[0]), pointOf(t[1]), pointOf(t[2])});
+  std::vector<int> rim;
+  std::array<int, 4> corners{};
+  std::vector<std::vector<std::size_t>> starts(4);  // per side, where each of its curves starts in rim
+  for (int k = 0; k < 4; ++k) {
+    corners[k] = static_cast<int>(rim.size());
+    for (const SideOf& piece : face.sides[k]) {
+      std::vector<int> v = curves[piece.curve].vertices;
+      if (!piece.forward) std::reverse(v.begin(), v.end());
+      starts[k].push_back(rim.size());
+      for (std::size_t i = 0; i + 1 < v.size(); ++i) rim.push_back(pointOf(v[i]));
+    }
+  }
+  std::vector<std::vector<int>> holes;
+  for (const std::vector<int>& hole : face.holes) {
+    holes.emplace_back();
+    for (int v : hole) holes.back().push_back(pointOf(v));
+  }
+  const SurfaceMap map = mapOntoSquare(points, triangles, rim, corners, holes);
+  if (map.empty()) return std::nullopt;
+  const std::vector<double> length = arcLength(map.rim, map.points);
+  SquareRim given;
+  given.n0 = static_cast<int>(sideNodes(face.sides[0], made.nodes).size()) - 1;
+  given.n1 = static_cast<int>(sideNodes(face.sides[1], made.nodes).size()) - 1;
+  std::vector<int> rimNodes;
+  for (int k = 0; k < 4; ++k)
+    for (std::size_t j = 0; j < face.sides[k].size(); ++j) {
+      const SideOf& piece = face.sides[k][j];
+      const std::vector<int>& nodes = made.nodes[piece.curve];
+      const std::vector<double>& along = made.along[piece.curve];
+      const std::size_t end = j + 1 < starts[k].size() ? starts[k][j + 1] : k == 3 ? map.rim.size() : corners[k + 1];
+      const double from = length[starts[k][j]], to = length[end];
+      const std::size_t n = nodes.size() - 1;
+      for (std::size_t i = 0; i < n; ++i) {  // the piece's nodes but its last (the next piece's first)
+        const std::size_t at = piece.forward ? i : n - i;
+        const double f = piece.forward ? along[at] : 1 - along[at];
+        LoopPoint p = loopPoint(map, map.rim, length, from + f * (to - from));
+        p.x = grid.nodes[nodes[at]];
+        given.points.push_back(p), rimNodes.push_back(nodes[at]);
+      }
+    }
+  const BlockGrid holed = holedGrid(map, size, given);
+  if (holed.empty()) return std::nullopt;
+  return addFaceQuads(holed, rimNodes, normal, grid);
+}
+
 // The median target size at the triangles' centres (at most kSizeSamples of them, evenly taken).
 constexpr std::size_t kSizeSamples = 201;
 
@@ -415,36 +648,78 @@ double typicalSize(const std::vector<Vec3>& x, const std::vector<std::array<int,
   return sizes[sizes.size() / 2];
 }
 
-// The patch grid's layout: the faces' curves (their paths), each face's four sides, its shape, the chains of
-// opposite curves (per curve, its chain's root).
+// The patch grid's layout: the faces' curves (their paths), each face (its four sides, its holes) and its triangles
+// and shape.
 struct PatchLayout {
   std::vector<Curve> curves;
   std::vector<std::vector<Vec3>> paths;
-  std::vector<std::array<SideOf, 4>> sides;
+  std::vector<Face> faces;
+  std::vector<std::vector<std::array<int, 3>>> facets;
   std::vector<PatchShape> shapes;
-  std::vector<int> chain;
   double typical = 0;  // a quad's length
 };
 
+// Interval assignment: each curve's segments, as many as its measure needs or more, so that each face's opposite
+// sides have as many. Where they do not, the side with fewer takes one more on its curve with the most measure per
+// segment, face after face, round after round, until none needs more (on faces whose sides are single curves, each
+// chain of opposite curves gets the most any of them needs). [in] faces, measures. Nothing if that does not settle
+// within kMaxRounds rounds (sides that cannot match: a curve on one side of a face and on both of another).
+constexpr int kMaxRounds = 64;
+
+std::optional<std::vector<int>> assignSegments(const std::vector<Face>& faces,
+                                               const std::vector<CurveMeasure>& measures) {
+  std::vector<int> n;
+  for (const CurveMeasure& m : measures) n.push_back(segmentsNeeded(m));
+  auto sum = [&](const Side& side) {
+    int total = 0;
+    for (const SideOf& s : side) total += n[s.curve];
+    return total;
+  };
+  for (int round = 0; round < kMaxRounds; ++round) {
+    bool changed = false;
+    for (const Face& face : faces)
+      for (int k = 0; k < 2; ++k)
+        for (int a = sum(face.sides[k]), b = sum(face.sides[k + 2]); a != b;
+             a = sum(face.sides[k]), b = sum(face.sides[k + 2])) {
+          const Side& fewer = a < b ? face.sides[k] : face.sides[k + 2];
+          const SideOf* most = &fewer.front();
+          for (const SideOf& s : fewer)
+            if (measures[s.curve].at.back() / n[s.curve] > measures[most->curve].at.back() / n[most->curve]) most = &s;
+          ++n[most->curve], changed = true;
+        }
+    if (!changed) return n;
+  }
+  return std::nullopt;
+}
+
 // The grid of a layout, graded towards the creases or not. [in] layout, x, size, graded; [out] grid. Returns the
-// quads folded against their faces (addPatchGrid).
-std::size_t gridOf(const PatchLayout& layout, const std::vector<Vec3>& x, const SizeField& size, bool graded,
-                   BlockGrid& grid) {
+// quads folded against their faces (addPatchGrid), nothing if the sides' segments cannot match or a face with holes
+// has no grid.
+std::optional<std::size_t> gridOf(const PatchLayout& layout, const std::vector<Vec3>& x, const SizeField& size,
+                                  bool graded, BlockGrid& grid) {
   const std::vector<std::array<bool, 2>> ends = endsOnCreases(layout.curves);
   std::vector<CurveMeasure> measures;
   for (std::size_t c = 0; c < layout.curves.size(); ++c)
     measures.push_back(curveMeasure(layout.paths[c], ends[c], size, layout.typical, graded));
-  std::map<int, int> chainSegments;  // per chain of opposite curves, the most its curves need
-  for (std::size_t c = 0; c < layout.curves.size(); ++c) {
-    int& s = chainSegments[layout.chain[c]];
-    s = std::max(s, segmentsNeeded(measures[c]));
-  }
-  std::vector<int> segments;
-  for (std::size_t c = 0; c < layout.curves.size(); ++c) segments.push_back(chainSegments[layout.chain[c]]);
-  const std::vector<std::vector<int>> nodes = curveNodes(layout.curves, layout.paths, measures, segments, x, grid);
+  const std::optional<std::vector<int>> segments = assignSegments(layout.faces, measures);
+  if (!segments) return std::nullopt;
+  const CurveNodes made = curveNodes(layout.curves, layout.paths, measures, *segments, x, grid);
   std::size_t folded = 0;
-  for (std::size_t p = 0; p < layout.sides.size(); ++p)
-    folded += addPatchGrid(layout.sides[p], nodes, layout.shapes[p].normal, grid);
+  for (std::size_t p = 0; p < layout.faces.size(); ++p) {
+    const Face& face = layout.faces[p];
+    const Vec3& normal = layout.shapes[p].normal;
+    if (face.holes.empty()) {
+      std::array<std::vector<int>, 4> sides;
+      for (int k = 0; k < 4; ++k) sides[k] = sideNodes(face.sides[k], made.nodes);
+      folded += addPatchGrid(sides, normal, grid);
+      continue;
+    }
+    const std::optional<std::size_t> holed =
+        addHoledFace(face, layout.curves, made, layout.facets[p], x, size, normal, grid);
+    if (!holed) return std::nullopt;
+    folded += *holed;
+  }
+  dropUnusedNodes(grid.nodes, grid.quads);  // the holes' curves' (the pockets' rings have their own on the holes)
   return folded;
 }
 
@@ -465,19 +740,23 @@ PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, doub
     for (int p : layout.curves[c].patches)
       if (p >= 0) ofPatch[p].push_back(static_cast<int>(c));
   layout.paths = curvePaths(layout.curves, x, layout.typical);
-  UnionFind opposite(layout.curves.size());
   for (int p = 0; p < patches; ++p) {
-    const std::optional<std::array<SideOf, 4>> four = fourSides(layout.curves, ofPatch[p]);
-    if (!four || !squareCorners(layout.paths, *four, size)) return {};
-    opposite.unite((*four)[0].curve, (*four)[2].curve), opposite.unite((*four)[1].curve, (*four)[3].curve);
-    layout.sides.push_back(*four);
+    std::optional<Face> face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
+    if (!face && cutAtRoundCorners(layout.curves, layout.paths, ofPatch[p], layout.typical))
+      face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
+    if (!face) return {};
+    layout.faces.push_back(*face);
   }
   layout.shapes = patchShapes(triangles, patch, patches, x);
-  if (std::any_of(layout.shapes.begin(), layout.shapes.end(), [](const PatchShape& p) { return !p.disc; })) return {};
-  for (std::size_t c = 0; c < layout.curves.size(); ++c) layout.chain.push_back(opposite.find(static_cast<int>(c)));
+  for (int p = 0; p < patches; ++p)
+    if (layout.shapes[p].euler != 1 - static_cast<long>(layout.faces[p].holes.size())) return {};
+  layout.facets.resize(patches);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    if (!layout.faces[patch[t]].holes.empty()) layout.facets[patch[t]].push_back(triangles[t]);
   PatchGrids grids;
-  gridOf(layout, x, size, false, grids.even);
-  if (gridOf(layout, x, size, true, grids.graded) > 0) grids.graded = {};  // a quad folds: even rows only
+  if (!gridOf(layout, x, size, false, grids.even)) return {};
+  const std::optional<std::size_t> folded = gridOf(layout, x, size, true, grids.graded);
+  if (!folded || *folded > 0) grids.graded = {};  // a quad folds: even rows only
   return grids;
 }
 

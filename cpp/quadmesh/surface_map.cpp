@@ -14,6 +14,7 @@
 
 #include "chordal/chordal_locator.hpp"
 #include "core/groups.hpp"
+#include "core/polygon.hpp"
 #include "core/union_find.hpp"
 
 namespace hexlayer {
@@ -216,6 +217,38 @@ bool solveInside(const Eigen::SparseMatrix<double>& a, std::vector<Eigen::Vector
   const Eigen::MatrixX2d solution = p.transpose() * lu.solve(p * rhs);
   if (lu.info() != Eigen::Success || !solution.allFinite()) return false;
   for (std::size_t i = 0; i < uv.size(); ++i) uv[i] = solution.row(i).transpose();
+  return true;
+}
+
+// The map's holes filled, each by a fan of triangles round its centroid, the outer rim (map.rim from its corner 0)
+// placed on the boundary by arc length between its corners, the points inside by the mean value weights; the holes
+// then walked counter-clockwise in the plane. [in,out] map: points, triangles, rim, corners, boundary set; uv, holes
+// and the fans added. [in] holes: the rim loops of the holes, either way round. False if the solve fails.
+bool placeInPlane(SurfaceMap& map, const std::vector<std::vector<int>>& holes) {
+  for (const std::vector<int>& hole : holes) {
+    Vec3 centre = Vec3::Zero();
+    for (int p : hole) centre += map.points[p] / hole.size();
+    const int c = static_cast<int>(map.points.size());
+    map.points.push_back(centre);
+    for (std::size_t i = 0; i < hole.size(); ++i) map.triangles.push_back({hole[(i + 1) % hole.size()], hole[i], c});
+  }
+  const std::vector<int>& outer = map.rim;
+  const std::vector<double> length = arcLength(outer, map.points);
+  map.uv.assign(map.points.size(), Eigen::Vector2d::Zero());
+  std::vector<char> onRim(map.points.size(), 0);
+  for (int k = 0; k < 4; ++k) {
+    const std::size_t end = k == 3 ? outer.size() : map.corners[k + 1];
+    const double from = length[map.corners[k]], to = length[end];
+    for (std::size_t i = map.corners[k]; i < end; ++i)
+      map.uv[outer[i]] = boundaryPoint(map.boundary, k, (length[i] - from) / (to - from)), onRim[outer[i]] = 1;
+  }
+  if (!solveInside(meanValueSystem(map.triangles, map.points, onRim), map.uv)) return false;
+  for (std::vector<int> hole : holes) {
+    std::vector<Eigen::Vector2d> uv;
+    for (int p : hole) uv.push_back(map.uv[p]);
+    if (polygonArea(uv) < 0) std::reverse(hole.begin(), hole.end());
+    map.holes.push_back(std::move(hole));
+  }
   return true;
 }
 
@@ -485,34 +518,28 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary 
   auto lengthOf = [&](const std::vector<int>& loop) { return arcLength(loop, map.points).back(); };
   std::stable_sort(loops.begin(), loops.end(), [&](const auto& a, const auto& b) { return lengthOf(a) > lengthOf(b); });
   if (boundary == MapBoundary::Annulus) return mapAnnulus(std::move(map), std::move(loops));
-  for (std::size_t h = 1; h < loops.size(); ++h) {  // fill each hole, then walk it counter-clockwise
-    Vec3 centre = Vec3::Zero();
-    for (int p : loops[h]) centre += map.points[p] / loops[h].size();
-    const int c = static_cast<int>(map.points.size());
-    map.points.push_back(centre);
-    for (std::size_t i = 0; i < loops[h].size(); ++i)
-      map.triangles.push_back({loops[h][(i + 1) % loops[h].size()], loops[h][i], c});
-    std::reverse(loops[h].begin(), loops[h].end());
-    map.holes.push_back(loops[h]);
-  }
   std::vector<int> outer = loops[0];
   if (outer.size() < 8) return {};
   const std::array<int, 4> at = rimCorners(chordal, outer, arcLength(outer, map.points), window, map.sharpCorners);
-  map.boundary = boundary;
   if (std::adjacent_find(at.begin(), at.end()) != at.end()) return {};
   std::rotate(outer.begin(), outer.begin() + at[0], outer.end());  // the rim starts at a corner
   map.rim = outer;
-  const std::vector<double> length = arcLength(outer, map.points);
   for (int k = 0; k < 4; ++k) map.corners[k] = at[k] - at[0];
-  map.uv.assign(map.points.size(), Eigen::Vector2d::Zero());
-  std::vector<char> onRim(map.points.size(), 0);
-  for (int k = 0; k < 4; ++k) {
-    const std::size_t end = k == 3 ? outer.size() : map.corners[k + 1];
-    const double from = length[map.corners[k]], to = length[end];
-    for (std::size_t i = map.corners[k]; i < end; ++i)
-      map.uv[outer[i]] = boundaryPoint(map.boundary, k, (length[i] - from) / (to - from)), onRim[outer[i]] = 1;
-  }
-  if (!solveInside(meanValueSystem(map.triangles, map.points, onRim), map.uv)) return {};
+  map.boundary = boundary;
+  loops.erase(loops.begin());
+  if (!placeInPlane(map, loops)) return {};
+  return map;
+}
+
+SurfaceMap mapOntoSquare(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles, std::vector<int> rim,
+                         const std::array<int, 4>& corners, const std::vector<std::vector<int>>& holes) {
+  SurfaceMap map;
+  map.points = std::move(points), map.triangles = std::move(triangles), map.rim = std::move(rim);
+  map.corners = corners, map.boundary = MapBoundary::Square;
+  if (corners[0] != 0 || !std::is_sorted(corners.begin(), corners.end()) ||
+      std::adjacent_find(corners.begin(), corners.end()) != corners.end() ||
+      corners[3] >= static_cast<int>(map.rim.size()) || !placeInPlane(map, holes))
+    return {};
   return map;
 }
 

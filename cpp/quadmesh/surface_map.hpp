@@ -47,6 +47,15 @@ struct SurfaceMap {
 // along the diagonals of its principal axes; the rim's turning is measured over `window` (about a quad) on either side.
 SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary boundary);
 
+// A patch of triangles mapped onto the square as mapToPlane maps the chordal surface, its rim and corners given (a
+// face of the patch grid, whose sides are the creases and rim curves round it). [in] points; [in] triangles: a disc
+// with holes, any orientation; [in] rim: the outer rim's points in order round it, from corner 0; [in] corners: the
+// positions in rim of the four corners, ascending from 0; [in] holes: the holes' rim loops, either way round.
+// Returns the map (corners[k] at the square's corner k, the holes filled and walked counter-clockwise in the
+// plane); empty if the corners are not four ascending positions or the solve fails.
+SurfaceMap mapOntoSquare(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles, std::vector<int> rim,
+                         const std::array<int, 4>& corners, const std::vector<std::vector<int>>& holes);
+
 // The triangles unfolded onto the plane by the least-squares conformal map (LSCM, Lévy, Petitjean, Ray and Maillot
 // 2002, Eq. 5): the boundary free, every triangle's angles kept as far as the surface allows (a strip across a bend,
 // a piece of a cylinder unfold exactly), two points pinned, then scaled to the triangles' area. [in] points;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <tuple>
 
 #include "core/union_find.hpp"
 #include "quadmesh/block_grids.hpp"
@@ -70,6 +71,43 @@ TEST(BlockGrids, GridWithAPocketRoundTheHole) {
   EXPECT_GT(q.mean, 0.95);
   EXPECT_NEAR(q.area, 200 - 16, 1e-9);
   EXPECT_NEAR(static_cast<double>(g.quads.size()), 184, 30);  // unit quads
+}
+
+// The rim's nodes given (a face of the patch grid): 10 x 5 cells, the given points evenly along the rim's sides,
+// moved a little off it (as a crease's averaged path runs): they are the grid's first nodes, in order; the grid has
+// its pocket and the same area; a hole in a corner cell of the rim (a bend relief) gets a pocket on the rim; a wrong
+// number of points is refused.
+TEST(BlockGrids, GridWithAPocketOnTheRimNodesItIsGiven) {
+  for (const auto& [hole, n0, n1] :
+       {std::tuple{std::array<int, 4>{8, 12, 3, 7}, 10, 5}, std::tuple{std::array<int, 4>{18, 19, 8, 9}, 10, 5}}) {
+    const SurfaceMap map = mapToPlane(rectangle(20, 10, {hole}), 1.0, MapBoundary::Square);
+    ASSERT_FALSE(map.empty());
+    const std::vector<double> length = arcLength(map.rim, map.points);
+    SquareRim rim{n0, n1, {}};
+    for (int k = 0; k < 4; ++k) {
+      const double from = length[map.corners[k]], to = length[k == 3 ? map.rim.size() : map.corners[k + 1]];
+      const int n = k % 2 == 0 ? n0 : n1;
+      for (int i = 0; i < n; ++i) {
+        LoopPoint p = loopPoint(map, map.rim, length, from + (to - from) * i / n);
+        p.x += Vec3(0, 0, 1e-3);
+        rim.points.push_back(p);
+      }
+    }
+    const BlockGrid g = holedGrid(map, unit, rim);
+    ASSERT_FALSE(g.empty());
+    for (std::size_t t = 0; t < rim.points.size(); ++t) EXPECT_EQ(g.nodes[t], rim.points[t].x);
+    EXPECT_EQ(g.blocks, 5u);
+    EXPECT_EQ(euler(g), 0);
+    const Quality q = quality(g);
+    EXPECT_GT(q.worst, 0.2);
+    EXPECT_NEAR(q.area, 200 - (hole[1] - hole[0]) * (hole[3] - hole[2]), 0.05);
+    SquareRim fewer = rim;
+    fewer.points.pop_back();
+    EXPECT_TRUE(holedGrid(map, unit, fewer).empty());
+  }
+  // without the rim's nodes given, the hole in the corner cell (quads of 2) has no pocket
+  const SizeField two = [](const Vec3&) { return 2.0; };
+  EXPECT_TRUE(holedGrid(mapToPlane(rectangle(20, 10, {{18, 19, 8, 9}}), 1.0, MapBoundary::Square), two).empty());
 }
 
 TEST(BlockGrids, OGridOfADisc) {

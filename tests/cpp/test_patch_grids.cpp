@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -68,6 +69,27 @@ GridShape shapeOf(const BlockGrid& g) {
   return shape;
 }
 
+// The nodes off the rim that are not regular: each must have three quads round it, at the bottom (a box's corner).
+int bottomCorners(const BlockGrid& g, const GridShape& shape, double scale) {
+  int irregular = 0;
+  for (const auto& [node, quads] : shape.quadsAt)
+    if (!shape.rim.count(node) && quads != 4) {
+      EXPECT_EQ(quads, 3) << "at " << g.nodes[node].transpose();
+      EXPECT_NEAR(g.nodes[node].z(), 0, 0.5 * scale);
+      ++irregular;
+    }
+  return irregular;
+}
+
+// Every edge between lo and hi quads long.
+void expectEdgesBetween(const BlockGrid& g, const GridShape& shape, double scale, double lo, double hi) {
+  for (const auto& [edge, uses] : shape.edgeUses) {
+    const double length = (g.nodes[edge.first] - g.nodes[edge.second]).norm() / scale;
+    EXPECT_GT(length, lo);
+    EXPECT_LT(length, hi);
+  }
+}
+
 TEST(PatchGrids, AnOpenBoxIsOneGridPerFaceRegularButAtItsBottomCorners) {
   const int L = 12, W = 8, H = 5;
   const std::size_t even = L * W + 2 * (L + W) * H;  // the quads of unit size
@@ -96,37 +118,99 @@ TEST(PatchGrids, AnOpenBoxIsOneGridPerFaceRegularButAtItsBottomCorners) {
         EXPECT_EQ(static_cast<long>(g.nodes.size()) - static_cast<long>(shape.edgeUses.size()) +
                       static_cast<long>(g.quads.size()),
                   1);  // a disc, as the surface
-        int irregular = 0;
-        for (const auto& [node, quads] : shape.quadsAt)
-          if (!shape.rim.count(node) && quads != 4) {
-            EXPECT_EQ(quads, 3) << "at " << g.nodes[node].transpose();
-            EXPECT_NEAR(g.nodes[node].z(), 0, 0.5 * scale);  // a bottom corner
-            ++irregular;
-          }
-        EXPECT_EQ(irregular, 4);
-        for (const auto& [edge, uses] : shape.edgeUses) {
-          const double length = (g.nodes[edge.first] - g.nodes[edge.second]).norm() / scale;
-          EXPECT_GT(length, 0.3);
-          EXPECT_LT(length, 1.5);
-        }
+        EXPECT_EQ(bottomCorners(g, shape, scale), 4);
+        expectEdgesBetween(g, shape, scale, 0.3, 1.5);
       }
+}
+
+// The box without the facets `drop` says (their unused vertices removed).
+template <typename Drop>
+ChordalSurface without(const ChordalSurface& box, Drop drop) {
+  ChordalSurface cut = box;
+  cut.facets.erase(std::remove_if(cut.facets.begin(), cut.facets.end(), drop), cut.facets.end());
+  return test_flat_surfaces::withoutUnusedVertices(cut);
+}
+
+// Every edge in at most two quads, run opposite ways, and the grid's Euler characteristic V - E + F.
+long conformalEuler(const BlockGrid& g) {
+  const GridShape shape = shapeOf(g);
+  for (const auto& [edge, uses] : shape.edgeUses) {
+    EXPECT_LE(uses.size(), 2u);
+    if (uses.size() == 2) EXPECT_EQ(uses[0].first, uses[1].second);
+  }
+  return static_cast<long>(g.nodes.size()) - static_cast<long>(shape.edgeUses.size()) +
+         static_cast<long>(g.quads.size());
 }
 
 TEST(PatchGrids, NoGridWhereAFaceIsNotFourSidedOrThereIsOneFace) {
   const SizeField unit = [](const Vec3&) { return 1.0; };
   const PatchGrids flat = patchGrids(test_flat_surfaces::rectangle(6, 4), unit, 40);
   EXPECT_TRUE(flat.graded.empty() && flat.even.empty());
-  ChordalSurface holed = openBox(12, 8, 5, 0, 1);  // a hole of 2 x 2 cells in the floor
-  holed.facets.erase(std::remove_if(holed.facets.begin(), holed.facets.end(),
-                                    [&](const auto& f) {
-                                      const Vec3& p = holed.vertices[f[0]];
-                                      return p.z() == 0 && p.x() >= 5 && p.x() < 7 && p.y() >= 3 && p.y() < 5 &&
-                                             holed.vertices[f[2]].z() == 0;
-                                    }),
-                     holed.facets.end());
-  EXPECT_EQ(holed.facets.size(), 12u * 8 + 2 * 20 * 5 - 4);
-  const PatchGrids grids = patchGrids(holed, unit, 40);
+  // the wall at y = 8 two cells lower for x < 6: its top steps down, six corners
+  const ChordalSurface box = openBox(12, 8, 5, 0, 1);
+  const ChordalSurface stepped = without(box, [&](const auto& f) {
+    const Vec3 a = box.vertices[f[0]], c = box.vertices[f[2]];
+    return a.y() == 8 && c.y() == 8 && std::max(a.z(), c.z()) > 3 && std::max(a.x(), c.x()) <= 6;
+  });
+  EXPECT_EQ(stepped.facets.size(), 12u * 8 + 2 * 20 * 5 - 12);
+  const PatchGrids grids = patchGrids(stepped, unit, 40);
   EXPECT_TRUE(grids.graded.empty() && grids.even.empty());
+}
+
+// A hole of 2 x 2 cells in the box's floor: the floor is one grid with a pocket of four blocks round the hole (its
+// map onto the square, holedGrid with its sides' nodes), the walls one grid each, all conformal; a disc with a hole.
+TEST(PatchGrids, AHoleInAFaceGetsAPocketOfFourBlocks) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE(testing::Message() << "scale " << scale);
+    const ChordalSurface box = openBox(12, 8, 5, 0, scale);
+    const ChordalSurface holed = without(box, [&](const auto& f) {
+      const Vec3 a = box.vertices[f[0]] / scale, c = box.vertices[f[2]] / scale;
+      return a.z() == 0 && c.z() == 0 && std::min(a.x(), c.x()) >= 5 && std::max(a.x(), c.x()) <= 7 &&
+             std::min(a.y(), c.y()) >= 3 && std::max(a.y(), c.y()) <= 5;
+    });
+    EXPECT_EQ(holed.facets.size(), 12u * 8 + 2 * 20 * 5 - 4);
+    const SizeField unit = [&](const Vec3&) { return scale; };
+    const BlockGrid g = patchGrids(holed, unit, 40).even;
+    ASSERT_FALSE(g.empty());
+    EXPECT_EQ(g.blocks, 4u + 1 + 4);  // four walls; the floor and its pocket
+    EXPECT_EQ(conformalEuler(g), 0);  // a disc with a hole
+    std::size_t onHole = 0;           // nodes on the hole's square
+    for (const Vec3& x : g.nodes) {
+      const Vec3 p = x / scale;
+      onHole += std::abs(p.z()) < 1e-9 && p.x() > 4.99 && p.x() < 7.01 && p.y() > 2.99 && p.y() < 5.01 &&
+                (std::abs(p.x() - 5) < 1e-9 || std::abs(p.x() - 7) < 1e-9 || std::abs(p.y() - 3) < 1e-9 ||
+                 std::abs(p.y() - 5) < 1e-9);
+    }
+    EXPECT_GE(onHole, 8u);
+    expectEdgesBetween(g, shapeOf(g), scale, 0.2, 1.6);
+  }
+}
+
+// The wall at y = 0 stands on the floor's edge for x < 6 only: the floor's side along it is the bend and then the
+// rim, going on flat (a side of two curves). Still one grid per face, unit quads, conformal; the bend's nodes and
+// the rim's make one row along the floor's side, three bottom corners with three quads round them.
+TEST(PatchGrids, AWallStandingOnPartOfAnEdgeEndsOnTheSideOfTheFloor) {
+  const int L = 12, W = 8, H = 5;
+  for (const double jitter : {0.0, 0.3})
+    for (const double scale : {1.0, 1e-3, 1e3}) {
+      SCOPED_TRACE(testing::Message() << "jitter " << jitter << " scale " << scale);
+      const ChordalSurface box = openBox(L, W, H, jitter, scale);
+      const ChordalSurface part = without(box, [&](const auto& f) {  // by the cell's centre
+        const Vec3 c = (box.vertices[f[0]] + box.vertices[f[1]] + box.vertices[f[2]] + box.vertices[f[3]]) / 4 / scale;
+        return c.y() < 0.45 && c.z() > 0.3 && c.x() > 6;
+      });
+      const std::size_t cells = L * W + 2 * (L + W) * H - (L - 6) * H;
+      EXPECT_EQ(part.facets.size(), cells);
+      const SizeField unit = [&](const Vec3&) { return scale; };
+      const BlockGrid g = patchGrids(part, unit, 40).even;
+      ASSERT_FALSE(g.empty());
+      EXPECT_EQ(g.blocks, 5u);
+      EXPECT_EQ(g.quads.size(), cells);
+      EXPECT_EQ(conformalEuler(g), 1);
+      const GridShape shape = shapeOf(g);
+      EXPECT_EQ(bottomCorners(g, shape, scale), 3);
+      expectEdgesBetween(g, shape, scale, 0.3, 1.5);
+    }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // tubes: conformal, against the analytic map of a flat ring (log-polar coordinates).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -93,6 +94,49 @@ TEST(SurfaceMap, RectangleWithAHoleMapsOntoTheSquareWithoutFolds) {
   for (int c : map.corners) corners.insert({map.points[map.rim[c]].x(), map.points[map.rim[c]].y()});
   EXPECT_EQ(corners, (std::set<std::pair<double, double>>{{0, 0}, {20, 0}, {0, 10}, {20, 10}}));
   for (const auto& uv : map.uv) EXPECT_LE(uv.cwiseAbs().maxCoeff(), 1 + 1e-12);
+}
+
+// A patch mapped onto the square at the corners it is given (a face of the patch grid): the rectangle's rim walked
+// clockwise from (20, 10) with its corners there, its hole either way round: the corners on the square's, no
+// triangle folded (all turned one way), the hole walked counter-clockwise in the plane; corners not ascending from
+// 0 are refused.
+TEST(SurfaceMap, APatchMapsOntoTheSquareAtTheCornersItIsGiven) {
+  const ChordalSurface r = rectangle(20, 10, {{8, 12, 3, 7}});
+  auto at = [&](int x, int y) {
+    for (std::size_t v = 0; v < r.vertices.size(); ++v)
+      if (r.vertices[v] == Vec3(x, y, 0)) return static_cast<int>(v);
+    return -1;
+  };
+  std::vector<int> rim, hole;
+  for (int y = 10; y > 0; --y) rim.push_back(at(20, y));
+  for (int x = 20; x > 0; --x) rim.push_back(at(x, 0));
+  for (int y = 0; y < 10; ++y) rim.push_back(at(0, y));
+  for (int x = 0; x < 20; ++x) rim.push_back(at(x, 10));
+  for (int x = 8; x < 12; ++x) hole.push_back(at(x, 3));
+  for (int y = 3; y < 7; ++y) hole.push_back(at(12, y));
+  for (int x = 12; x > 8; --x) hole.push_back(at(x, 7));
+  for (int y = 7; y > 3; --y) hole.push_back(at(8, y));
+  for (const bool reversed : {false, true}) {
+    std::vector<int> h = hole;
+    if (reversed) std::reverse(h.begin(), h.end());
+    const SurfaceMap map = mapOntoSquare(r.vertices, chordalTriangles(r), rim, {0, 10, 30, 40}, {h});
+    ASSERT_FALSE(map.empty());
+    const std::array<Eigen::Vector2d, 4> square{{{1, 1}, {-1, 1}, {-1, -1}, {1, -1}}};
+    for (int k = 0; k < 4; ++k) EXPECT_LT((map.uv[rim[map.corners[k]]] - square[k]).norm(), 1e-12);
+    const std::vector<std::array<int, 3>> own = chordalTriangles(r);  // the map's first triangles (then the fan's)
+    const double first = signedArea(map, map.triangles.front());
+    for (std::size_t t = 0; t < own.size(); ++t) EXPECT_GT(signedArea(map, map.triangles[t]) * first, 0);
+    ASSERT_EQ(map.holes.size(), 1u);
+    double twice = 0;
+    for (std::size_t i = 0; i < map.holes[0].size(); ++i) {
+      const Eigen::Vector2d& a = map.uv[map.holes[0][i]];
+      const Eigen::Vector2d& b = map.uv[map.holes[0][(i + 1) % map.holes[0].size()]];
+      twice += a.x() * b.y() - b.x() * a.y();
+    }
+    EXPECT_GT(twice, 0);
+  }
+  EXPECT_TRUE(mapOntoSquare(r.vertices, chordalTriangles(r), rim, {0, 30, 10, 40}, {hole}).empty());
+  EXPECT_TRUE(mapOntoSquare(r.vertices, chordalTriangles(r), rim, {1, 10, 30, 40}, {hole}).empty());
 }
 
 TEST(SurfaceMap, RefusesWhatIsNotASphereWithHoles) {
