@@ -537,6 +537,48 @@ def box_sharp_inside_split():
                                            "the long walls' and the bottom rounds' faces split at x = 24"), wall="2")
 
 
+def box_sharp_holes():
+    """box_sharp_inside_r025 with a hole in each long wall and in the floor: a
+    round hole D10 through the wall y = 0 (centre x = 30, z = 10), a window
+    16 x 8 through the wall y = 40 (x 22..38, z 6..14), a hole D8 through the
+    floor at (20, 20): faces with holes for the patch grid."""
+    vol, volume = sharp_inside_box(0.5)
+    t = SHARP_BOX[3]
+    tools = [(3, occ.addCylinder(30, -1, 10, 0, t + 2, 0, 5)), (3, occ.addBox(22, 37, 6, 16, t + 2, 8)),
+             (3, occ.addCylinder(20, 20, -1, 0, 0, t + 2, 4))]
+    one_volume(occ.cut([(3, vol)], tools)[0])
+    volume -= (math.pi * 25 + 16 * 8 + math.pi * 16) * t
+    return volume, dict(dims=box_dims(0.5, "; holes through the walls and the floor: D10 in the wall y = 0 at "
+                                           "x = 30, z = 10; a window 16 × 8 in the wall y = 40 (x 22..38, z 6..14); "
+                                           "D8 in the floor at (20, 20)"), wall="2")
+
+
+def box_foot():
+    """The foot of a U-channel (the Ender-3 support frame's, simplified): a
+    foot plate 40 x 30 x 2 and a web 2 thick standing on its edge x = 0 over
+    its whole width (one sheet bent sharp), two flanges 2 thick on its edges
+    y = 0 and y = 30 for x < 20 only, all 30 high: walls standing on the foot
+    that runs on past them (T junctions). Every edge sharp but the foot's two
+    far corners (vertical edges at x = 40, rounded R3); two holes D5 in the
+    foot at (30, 8) and (30, 22), a hole D10 through the web at
+    (y, z) = (15, 18)."""
+    pieces = [occ.addBox(0, 0, 0, 40, 30, 2), occ.addBox(0, 0, 0, 2, 30, 30), occ.addBox(0, 0, 0, 20, 2, 30),
+              occ.addBox(0, 28, 0, 20, 2, 30)]
+    vol = fuse_volumes(pieces)
+    occ.synchronize()
+    corners = [c for y in (0, 30) for _, c in gmsh.model.getEntitiesInBoundingBox(39.9, y - 0.1, -0.1, 40.1, y + 0.1,
+                                                                                  2.1, 1)]
+    assert len(corners) == 2, corners
+    vol = one_volume(occ.fillet([vol], corners, [3.0]))
+    vol = drill(vol, [(30, 8, 0, 2, 5), (30, 22, 0, 2, 5)])
+    one_volume(occ.cut([(3, vol)], [(3, occ.addCylinder(-1, 15, 18, 4, 0, 0, 5))])[0])
+    volume = 40 * 30 * 2 + 2 * 30 * 28 + 2 * 18 * 2 * 28 - 2 * (1 - math.pi / 4) * 9 * 2
+    volume -= 2 * math.pi * 2.5 ** 2 * 2 + math.pi * 25 * 2
+    return volume, dict(dims="foot 40 × 30 × 2, a web (x 0..2) over its width and flanges (y 0..2, 28..30) for "
+                             "x < 20, all 30 high; sharp edges but the foot's far corners R3; holes D5 in the foot, "
+                             "D10 in the web", wall="2")
+
+
 # Written to OUTPUT_DIR after the rim and junction parts (their STEP files stay byte-identical: OpenCASCADE
 # numbers the PRODUCT name by the count of files written in the session) and listed in its README.
 BENT_BOX_PARTS = [
@@ -545,6 +587,8 @@ BENT_BOX_PARTS = [
     ("box_sharp_inside_r025", box_sharp_inside_r025),
     ("box_sharp_inside_metres", box_sharp_inside_metres),
     ("box_sharp_inside_split", box_sharp_inside_split),
+    ("box_sharp_holes", box_sharp_holes),
+    ("box_foot", box_foot),
 ]
 
 # ---------------------------------------------------------------------------

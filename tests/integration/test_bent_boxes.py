@@ -36,7 +36,8 @@ from test_junction_samples import readme_table
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
 from hex_geometry import boundary_euler_characteristic, boundary_quads, hex_scaled_jacobians, hex_volumes  # noqa: E402
 
-PARTS = ["box_sharp_inside", "box_sharp", "box_sharp_inside_metres", "box_sharp_inside_split", "box_sharp_inside_r025"]
+PARTS = ["box_sharp_inside", "box_sharp", "box_sharp_inside_metres", "box_sharp_inside_split", "box_sharp_inside_r025",
+         "box_sharp_holes"]
 MIN_SJ, MEAN_SJ, VOLUME_TOL = 0.2, 0.93, 0.02
 EULER_TRIANGLE_SIZE = 5.0  # mm; x 1e-3 for the part in metres
 
@@ -121,6 +122,23 @@ class BentBoxes(unittest.TestCase):
             with self.subTest(layers=layers):
                 report = self.check_box("junctions/box_end_wall_low", layers, volume, ["T"])
                 self.assertGreaterEqual(report["junctions"][0]["scaled_jacobian"]["avg"], 0.8)
+
+    def test_faces_with_holes_get_pockets_in_the_patch_grid(self):
+        """box_sharp_holes (box_sharp_inside_r025 with a round hole and a window in its long walls and a hole in its
+        floor): each face with a hole is one grid with a pocket of four blocks round it on the face's map onto the
+        square, its sides' nodes those of the faces beside it. Gmsh's quads before (the patch grid needed four-sided
+        faces without holes). Measured 2026-12-04: 2 layers 4 148 hexes, min 0.582 avg 0.938, volume -0.91 %."""
+        _, report = self.mesh("box_sharp_holes", 2)
+        self.assertEqual(report["quad_mesh"]["layout"], "patch-grid")
+
+    def test_a_foot_with_flanges_standing_on_it(self):
+        """box_foot (a U-channel's foot: flanges standing on a foot that runs on past them, holes in the foot and the
+        web, the foot's far corners rounded R3): two T junctions; the main sheet (foot and web bent sharp, holes in
+        both) meshed with its footprints. Measured 2026-12-04: 2 layers 1 822 hexes, min 0.590 avg 0.964, volume
+        -0.07 % (before the patch grid took faces with holes: 1 972, 0.449 / 0.967)."""
+        report = self.check_box("box_foot", 2, self.volumes["box_foot"], ["T", "T"])
+        for junction in report["junctions"]:
+            self.assertGreaterEqual(junction["scaled_jacobian"]["avg"], 0.8)
 
     def test_quarter_wall_rounds_fill_the_tears_of_the_sharp_inside_corners(self):
         """R0.5 outside rounds (0.25 x the wall): tets spanning a sharp inside corner dropped as outside left a tear in
