@@ -603,8 +603,22 @@ std::optional<std::size_t> addHoledFace(const Face& face, const std::vector<Curv
   }
   std::vector<std::vector<int>> holes;
   for (const std::vector<int>& hole : face.holes) {
-    holes.emplace_back();
-    for (int v : hole) holes.back().push_back(pointOf(v));
+    std::vector<int> loop;
+    Vec3 centre = Vec3::Zero();
+    double length = 0;
+    for (std::size_t i = 0; i < hole.size(); ++i) {
+      loop.push_back(pointOf(hole[i])), centre += x[hole[i]] / hole.size();
+      length += (x[hole[(i + 1) % hole.size()]] - x[hole[i]]).norm();
+    }
+    if (length >= size(centre)) {
+      holes.push_back(std::move(loop));
+      continue;
+    }
+    // a pinhole (shorter than a quad's edge: a bend relief where sheets meet at a corner) the quads close, as they
+    // do elsewhere (the quad mesh's Euler characteristic is the chordal surface's with its pinholes closed)
+    const int c = static_cast<int>(points.size());
+    points.push_back(centre);
+    for (std::size_t i = 0; i < loop.size(); ++i) triangles.push_back({loop[i], loop[(i + 1) % loop.size()], c});
   }
   const SurfaceMap map = mapOntoSquare(points, triangles, rim, corners, holes);
   if (map.empty()) return std::nullopt;
