@@ -21,6 +21,10 @@ constexpr double kCornerWindow = 3;          // quads: a corner's turn is measur
 struct Curve {
   std::vector<int> vertices;
   std::array<int, 2> patches;
+  // [0] and [1]: how many vertices after its first and before its last its path cuts across (a rim piece shorter
+  // than a quad joined to it there: the rim's step round the end of a bend, which a path along the vertices would
+  // walk back and forth)
+  std::array<std::size_t, 2> across{0, 0};
 };
 
 // A chain's points.
@@ -128,25 +132,27 @@ bool cutAtRoundCorners(std::vector<Curve>& curves, std::vector<std::vector<Vec3>
   bool cut = false;
   for (const int c : std::vector<int>(ofPatch)) {
     if (curves[c].patches[0] >= 0 || curves[c].vertices.front() == curves[c].vertices.back()) continue;
-    const std::vector<int> chain = curves[c].vertices;
-    const std::vector<Vec3> path = paths[c];
-    if (chain.size() < 3) continue;
-    std::size_t from = 0;
-    for (std::size_t at : sharpTurns(path, kRoundCorner * size, size, 1, chain.size() - 2)) {
-      Curve piece{std::vector<int>(chain.begin() + from, chain.begin() + at + 1), curves[c].patches};
-      std::vector<Vec3> piecePath(path.begin() + from, path.begin() + at + 1);
+    const Curve whole = curves[c];
+    const std::vector<Vec3> path = paths[c];  // its point i is vertex i + across[0] inside it
+    if (path.size() < 3) continue;
+    std::size_t from = 0;  // in path
+    auto vertexAt = [&](std::size_t i) { return i == 0 ? 0 : i + whole.across[0]; };
+    auto add = [&](std::size_t to, bool last) {
+      Curve piece{std::vector<int>(whole.vertices.begin() + vertexAt(from),
+                                   last ? whole.vertices.end() : whole.vertices.begin() + vertexAt(to) + 1),
+                  whole.patches,
+                  {from == 0 ? whole.across[0] : 0, last ? whole.across[1] : 0}};
+      std::vector<Vec3> piecePath(path.begin() + from, last ? path.end() : path.begin() + to + 1);
       if (from == 0) {
         curves[c] = std::move(piece), paths[c] = std::move(piecePath);
       } else {
         ofPatch.push_back(static_cast<int>(curves.size()));
         curves.push_back(std::move(piece)), paths.push_back(std::move(piecePath));
       }
-      from = at, cut = true;
-    }
-    if (from == 0) continue;
-    ofPatch.push_back(static_cast<int>(curves.size()));
-    curves.push_back({std::vector<int>(chain.begin() + from, chain.end()), curves[c].patches});
-    paths.emplace_back(path.begin() + from, path.end());
+      from = to;
+    };
+    for (std::size_t at : sharpTurns(path, kRoundCorner * size, size, 1, path.size() - 2)) add(at, false), cut = true;
+    if (from > 0) add(path.size() - 1, true);
   }
   return cut;
 }
@@ -171,9 +177,9 @@ void joinShortRimCurves(std::vector<Curve>& curves, const std::vector<Vec3>& x, 
         if (a.front() == a.back() || b.front() == b.back()) continue;
         if (a.back() == b.back() || a.front() == b.front()) std::reverse(b.begin(), b.end());
         if (a.back() == b.front())
-          a.insert(a.end(), b.begin() + 1, b.end());
+          a.insert(a.end(), b.begin() + 1, b.end()), curves[d].across[1] = b.size() - 1;
         else if (a.front() == b.back())
-          a.insert(a.begin(), b.begin(), b.end() - 1);
+          a.insert(a.begin(), b.begin(), b.end() - 1), curves[d].across[0] = b.size() - 1;
         else
           continue;
         curves.erase(curves.begin() + c);
@@ -460,8 +466,17 @@ std::vector<Vec3> creasePath(const std::vector<int>& chain, const std::vector<Ve
 // Each curve's path: along its vertices on the rim, a crease's creasePath. [in] curves, x; [in] window: a quad.
 std::vector<std::vector<Vec3>> curvePaths(const std::vector<Curve>& curves, const std::vector<Vec3>& x, double window) {
   std::vector<std::vector<Vec3>> paths;
-  for (const Curve& c : curves)
-    paths.push_back(c.patches[0] >= 0 ? creasePath(c.vertices, x, window) : pointsOf(c.vertices, x));
+  for (const Curve& c : curves) {
+    if (c.patches[0] >= 0) {
+      paths.push_back(creasePath(c.vertices, x, window));
+      continue;
+    }
+    std::vector<int> chain{c.vertices.front()};  // along the rim, across its steps at its ends
+    const std::size_t n = c.vertices.size();
+    for (std::size_t i = 1 + c.across[0]; i + 1 + c.across[1] < n; ++i) chain.push_back(c.vertices[i]);
+    chain.push_back(c.vertices.back());
+    paths.push_back(pointsOf(chain, x));
+  }
   return paths;
 }
 
