@@ -186,6 +186,26 @@ TEST(PatchGrids, AHoleInAFaceGetsAPocketOfFourBlocks) {
   }
 }
 
+// Quads of 5 on a box 30 x 20 x 10: a hole of one cell in the floor (its loop 4 long, shorter than a quad's edge: a
+// pinhole, as a bend relief) is closed by the floor's grid, as the quad mesh's topology has it (a disc, no pocket);
+// a hole of 2 x 2 cells (its loop 8 long) keeps its pocket (a disc with a hole).
+TEST(PatchGrids, APinholeInAFaceIsClosedAndAHoleIsNot) {
+  const SizeField five = [](const Vec3&) { return 5.0; };
+  for (const int cells : {1, 2}) {
+    SCOPED_TRACE(testing::Message() << "hole of " << cells << " x " << cells << " cells");
+    const ChordalSurface box = openBox(30, 20, 10, 0, 1);
+    const ChordalSurface holed = without(box, [&](const auto& f) {
+      const Vec3 c = (box.vertices[f[0]] + box.vertices[f[1]] + box.vertices[f[2]] + box.vertices[f[3]]) / 4;
+      return c.z() == 0 && c.x() > 14 && c.x() < 14 + cells && c.y() > 9 && c.y() < 9 + cells;
+    });
+    EXPECT_EQ(holed.facets.size(), 30u * 20 + 2 * 50 * 10 - cells * cells);
+    const BlockGrid g = patchGrids(holed, five, 40).even;
+    ASSERT_FALSE(g.empty());
+    EXPECT_EQ(conformalEuler(g), cells == 1 ? 1 : 0);
+    EXPECT_EQ(g.blocks, cells == 1 ? 4u + 1 : 4u + 1 + 4);
+  }
+}
+
 // The wall at y = 0 stands on the floor's edge for x < 6 only: the floor's side along it is the bend and then the
 // rim, going on flat (a side of two curves). Still one grid per face, unit quads, conformal; the bend's nodes and
 // the rim's make one row along the floor's side, three bottom corners with three quads round them.
