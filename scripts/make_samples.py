@@ -579,6 +579,17 @@ def box_foot():
                              "D10 in the web", wall="2")
 
 
+def box_l_shape():
+    """An open box on an L-shaped floor (60 x 40 and 30 x 30 on its side), wall 2, 20 high, every edge sharp: its
+    floor has six corners, which the patch grid does not take yet (Gmsh's quads)."""
+    outer = fuse_volumes([occ.addBox(0, 0, 0, 60, 40, 20), occ.addBox(0, 40, 0, 30, 30, 20)])
+    inner = fuse_volumes([occ.addBox(2, 2, 2, 56, 36, 20), occ.addBox(2, 2, 2, 26, 66, 20)])
+    one_volume(occ.cut([(3, outer)], [(3, inner)])[0])
+    volume = (60 * 40 + 30 * 30) * 20 - (56 * 36 + 26 * 30) * 18
+    return volume, dict(dims="open box on an L-shaped floor (60 × 40 with 30 × 30 on its side at x 0..30), 20 high, "
+                             "every edge sharp, top open (a flat rim)", wall="2")
+
+
 # Written to OUTPUT_DIR after the rim and junction parts (their STEP files stay byte-identical: OpenCASCADE
 # numbers the PRODUCT name by the count of files written in the session) and listed in its README.
 BENT_BOX_PARTS = [
@@ -589,6 +600,7 @@ BENT_BOX_PARTS = [
     ("box_sharp_inside_split", box_sharp_inside_split),
     ("box_sharp_holes", box_sharp_holes),
     ("box_foot", box_foot),
+    ("box_l_shape", box_l_shape),
 ]
 
 # ---------------------------------------------------------------------------
