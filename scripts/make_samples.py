@@ -581,13 +581,23 @@ def box_foot():
 
 def box_l_shape():
     """An open box on an L-shaped floor (60 x 40 and 30 x 30 on its side), wall 2, 20 high, every edge sharp: its
-    floor has six corners, which the patch grid does not take yet (Gmsh's quads)."""
+    floor has six corners, one reflex (the patch grid cuts it there in two)."""
     outer = fuse_volumes([occ.addBox(0, 0, 0, 60, 40, 20), occ.addBox(0, 40, 0, 30, 30, 20)])
     inner = fuse_volumes([occ.addBox(2, 2, 2, 56, 36, 20), occ.addBox(2, 2, 2, 26, 66, 20)])
     one_volume(occ.cut([(3, outer)], [(3, inner)])[0])
     volume = (60 * 40 + 30 * 30) * 20 - (56 * 36 + 26 * 30) * 18
     return volume, dict(dims="open box on an L-shaped floor (60 × 40 with 30 × 30 on its side at x 0..30), 20 high, "
                              "every edge sharp, top open (a flat rim)", wall="2")
+
+
+def box_close_holes():
+    """box_sharp with two holes D6 through its floor 8 apart (centres (26, 20) and (34, 20)): a wall of 2 between
+    them, less than their pockets need (a quad beyond each hole), so no structured grid takes the floor (Gmsh's
+    quads)."""
+    vol, volume = sharp_inside_box(0.0)
+    drill(vol, [(26, 20, 0, SHARP_BOX[3], 6), (34, 20, 0, SHARP_BOX[3], 6)])
+    volume -= 2 * math.pi * 9 * SHARP_BOX[3]
+    return volume, dict(dims=box_dims(0.0, "; two holes D6 through the floor at (26, 20) and (34, 20)"), wall="2")
 
 
 # Written to OUTPUT_DIR after the rim and junction parts (their STEP files stay byte-identical: OpenCASCADE
@@ -601,6 +611,7 @@ BENT_BOX_PARTS = [
     ("box_sharp_holes", box_sharp_holes),
     ("box_foot", box_foot),
     ("box_l_shape", box_l_shape),
+    ("box_close_holes", box_close_holes),
 ]
 
 # ---------------------------------------------------------------------------

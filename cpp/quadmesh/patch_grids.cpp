@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -251,14 +252,19 @@ std::vector<Vec3> sidePath(const std::vector<std::vector<Vec3>>& paths, const Si
   return endToEnd(side, paths);
 }
 
-// How much a path turns into the next where they meet, over a few quads (half the shorter path at most): the
+// The directions of a path and the next where they meet, over a few quads (half the shorter path at most): the
 // creases' ends wander by a facet. [in] in, out: the paths, out starting where in ends; [in] size.
-double turnInto(const std::vector<Vec3>& in, const std::vector<Vec3>& out, const SizeField& size) {
+std::pair<Vec3, Vec3> directionsInto(const std::vector<Vec3>& in, const std::vector<Vec3>& out, const SizeField& size) {
   const std::vector<double> inLength = lengthAlong(in), outLength = lengthAlong(out);
   const Vec3& corner = out.front();
   const double window = std::min(kCornerWindow * size(corner), 0.5 * std::min(inLength.back(), outLength.back()));
-  return angleBetween(corner - pointAt(in, inLength, inLength.back() - window),
-                      pointAt(out, outLength, window) - corner);
+  return {corner - pointAt(in, inLength, inLength.back() - window), pointAt(out, outLength, window) - corner};
+}
+
+// How much a path turns into the next where they meet (directionsInto). [in] in, out; [in] size.
+double turnInto(const std::vector<Vec3>& in, const std::vector<Vec3>& out, const SizeField& size) {
+  const auto [before, after] = directionsInto(in, out, size);
+  return angleBetween(before, after);
 }
 
 // Whether the sides' paths turn into one another by kSideTurn to kMaxCorner at each corner.
@@ -305,12 +311,14 @@ std::vector<int> joinedLoop(const std::vector<Curve>& curves, const std::vector<
   return loop;
 }
 
-// A patch as a face: its curves grouped into loops by their ends, the loop with creases (or its only loop) four
-// sides round it, the other loops holes along the rim. [in] curves, paths; [in] ofPatch: the patch's curves,
-// ascending; [in] size. Nothing if the patch has two loops with creases (a crease round a hole: a boss's foot) or
-// its outer loop is not four-sided with square corners.
-std::optional<Face> faceOf(const std::vector<Curve>& curves, const std::vector<std::vector<Vec3>>& paths,
-                           const std::vector<int>& ofPatch, const SizeField& size) {
+// A patch's curves grouped into loops by their ends: the loop with creases (or its only loop) outside, the others
+// holes along the rim. Nothing if two loops have creases (a crease round a hole: a boss's foot).
+struct PatchLoops {
+  std::vector<int> outer;
+  std::vector<std::vector<int>> holes;
+};
+
+std::optional<PatchLoops> loopsOf(const std::vector<Curve>& curves, const std::vector<int>& ofPatch) {
   UnionFind together(static_cast<int>(ofPatch.size()));
   std::map<int, int> atEnd;  // vertex -> a curve (its place in ofPatch) ending there
   for (std::size_t i = 0; i < ofPatch.size(); ++i)
@@ -320,21 +328,30 @@ std::optional<Face> faceOf(const std::vector<Curve>& curves, const std::vector<s
     }
   std::map<int, std::vector<int>> groups;  // by their root
   for (std::size_t i = 0; i < ofPatch.size(); ++i) groups[together.find(static_cast<int>(i))].push_back(ofPatch[i]);
-  std::vector<int> outer;
-  std::vector<std::vector<int>> holes;
+  PatchLoops loops;
   for (const auto& [root, group] : groups) {
     const bool crease = std::any_of(group.begin(), group.end(), [&](int c) { return curves[c].patches[0] >= 0; });
-    if (crease && !outer.empty()) return std::nullopt;
+    if (crease && !loops.outer.empty()) return std::nullopt;
     if (crease || groups.size() == 1)
-      outer = group;
+      loops.outer = group;
     else
-      holes.push_back(group);
+      loops.holes.push_back(group);
   }
-  const std::optional<Side> loop = outer.empty() ? std::nullopt : loopOf(curves, outer);
+  if (loops.outer.empty()) return std::nullopt;
+  return loops;
+}
+
+// A patch as a face: its outer loop four sides round it, its other loops holes (loopsOf). [in] curves, paths;
+// [in] ofPatch: the patch's curves, ascending; [in] size. Nothing if loopsOf gives nothing or the outer loop is not
+// four-sided with square corners.
+std::optional<Face> faceOf(const std::vector<Curve>& curves, const std::vector<std::vector<Vec3>>& paths,
+                           const std::vector<int>& ofPatch, const SizeField& size) {
+  const std::optional<PatchLoops> loops = loopsOf(curves, ofPatch);
+  const std::optional<Side> loop = loops ? loopOf(curves, loops->outer) : std::nullopt;
   const std::optional<std::array<Side, 4>> sides = loop ? sidesOf(*loop, paths, size) : std::nullopt;
   if (!sides || !squareCorners(paths, *sides, size)) return std::nullopt;
   Face face{*sides, {}};
-  for (const std::vector<int>& hole : holes) {
+  for (const std::vector<int>& hole : loops->holes) {
     face.holes.push_back(joinedLoop(curves, hole));
     if (face.holes.back().empty()) return std::nullopt;
   }
@@ -752,6 +769,159 @@ std::optional<std::size_t> gridOf(const PatchLayout& layout, const std::vector<V
   return folded;
 }
 
+// ---------------------------------------------------------------------------------------------------------------
+// A face with a reflex corner (an L-shaped floor: five corners turning one way round it, one the other) is cut in
+// two from that corner straight on into the face (continuing the side coming into the corner) to its rim, along the
+// facets' edges: two four-sided faces, the cut a curve between them like a crease (the curve it lands on split
+// there, the face beyond it then has a side of two curves).
+// ---------------------------------------------------------------------------------------------------------------
+
+constexpr int kMaxCuts = 16;  // cuts at reflex corners in one surface, at the most
+
+// The surface cut into patches: per triangle its patch, and their count.
+struct Patches {
+  std::vector<int> of;
+  int count = 0;
+};
+
+// Per patch, its curves, ascending.
+std::vector<std::vector<int>> curvesOfPatches(const std::vector<Curve>& curves, int patches) {
+  std::vector<std::vector<int>> ofPatch(patches);
+  for (std::size_t c = 0; c < curves.size(); ++c)
+    for (int p : curves[c].patches)
+      if (p >= 0) ofPatch[p].push_back(static_cast<int>(c));
+  return ofPatch;
+}
+
+// The first reflex corner of a loop: where it turns by kSideTurn or more against the way it turns round `normal`
+// over all (a simple loop turns a full turn round its face), with the direction coming into it. [in] loop, paths,
+// normal, size. Nothing if it has none.
+std::optional<std::pair<std::size_t, Vec3>> reflexCorner(const Side& loop, const std::vector<std::vector<Vec3>>& paths,
+                                                         const Vec3& normal, const SizeField& size) {
+  std::vector<double> turn;
+  std::vector<Vec3> in;
+  double total = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const auto [before, after] =
+        directionsInto(sidePath(paths, {loop[(i + loop.size() - 1) % loop.size()]}), sidePath(paths, {loop[i]}), size);
+    const double angle = angleBetween(before, after);
+    turn.push_back(before.cross(after).dot(normal) < 0 ? -angle : angle), in.push_back(before.normalized());
+    total += turn.back();
+  }
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    if ((total < 0 ? -turn[i] : turn[i]) <= -kSideTurn) return std::make_pair(i, in[i]);
+  return std::nullopt;
+}
+
+// A chain of the patch's edges from `from` along `direction` to a vertex of its outer loop at least half a quad
+// on: at each step the neighbour ahead nearest the line. [in] around: per vertex its neighbours in the patch;
+// [in] onOuter, onHole: the loops' vertices; [in] x; [in] reach: half a quad. Empty if it gets stuck or reaches a
+// hole.
+std::vector<int> straightCut(int from, const Vec3& direction, const std::map<int, std::vector<int>>& around,
+                             const std::set<int>& onOuter, const std::set<int>& onHole, const std::vector<Vec3>& x,
+                             double reach) {
+  std::vector<int> cut{from};
+  std::set<int> visited{from};
+  for (std::size_t step = 0; step < around.size(); ++step) {
+    const auto it = around.find(cut.back());
+    if (it == around.end()) return {};
+    int best = -1;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int v : it->second) {
+      const Vec3 d = x[v] - x[from];
+      const double ahead = d.dot(direction);
+      if (visited.count(v) || (x[v] - x[cut.back()]).dot(direction) <= 0) continue;
+      if (onOuter.count(v) && ahead < reach) continue;  // the loop beside the corner
+      const double off = (d - ahead * direction).norm();
+      if (off < nearest) nearest = off, best = v;
+    }
+    if (best < 0 || onHole.count(best)) return {};
+    cut.push_back(best), visited.insert(best);
+    if (onOuter.count(best)) return cut;
+  }
+  return {};
+}
+
+// Patch p cut in two at its first reflex corner (straightCut), the part on one side of the cut a new patch: its
+// triangles moved to it, its curves' patch changed, the curve the cut lands on split there, the cut a curve of both.
+// [in,out] layout (curves and paths), patches; [in] triangles, x, size; [in] p. False if p has no reflex corner or
+// the cut does not part it.
+bool cutAtReflexCorner(PatchLayout& layout, Patches& patches, const std::vector<std::array<int, 3>>& triangles,
+                       const std::vector<Vec3>& x, const SizeField& size, int p) {
+  std::vector<Curve>& curves = layout.curves;
+  const std::vector<int> ofPatch = curvesOfPatches(curves, patches.count)[p];
+  const std::optional<PatchLoops> loops = loopsOf(curves, ofPatch);
+  const std::optional<Side> loop = loops ? loopOf(curves, loops->outer) : std::nullopt;
+  if (!loop) return false;
+  Vec3 normal = Vec3::Zero();
+  std::map<int, std::vector<int>> around;
+  std::map<std::pair<int, int>, std::vector<int>> edgeTriangles;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    if (patches.of[t] != p) continue;
+    const auto& c = triangles[t];
+    normal += (x[c[1]] - x[c[0]]).cross(x[c[2]] - x[c[0]]);
+    for (int k = 0; k < 3; ++k) {
+      around[c[k]].push_back(c[(k + 1) % 3]), around[c[k]].push_back(c[(k + 2) % 3]);
+      edgeTriangles[std::minmax(c[k], c[(k + 1) % 3])].push_back(static_cast<int>(t));
+    }
+  }
+  const std::optional<std::pair<std::size_t, Vec3>> reflex = reflexCorner(*loop, layout.paths, normal, size);
+  if (!reflex) return false;
+  std::set<int> onOuter, onHole;
+  for (int c : loops->outer) onOuter.insert(curves[c].vertices.begin(), curves[c].vertices.end());
+  for (const auto& hole : loops->holes)
+    for (int c : hole) onHole.insert(curves[c].vertices.begin(), curves[c].vertices.end());
+  const SideOf& at = (*loop)[reflex->first];
+  const int corner = at.forward ? curves[at.curve].vertices.front() : curves[at.curve].vertices.back();
+  const std::vector<int> cut =
+      straightCut(corner, reflex->second, around, onOuter, onHole, x, 0.5 * layout.typical);
+  if (cut.size() < 2) return false;
+  // the triangles on one side of the cut: those reached from one of its first edge's without crossing it
+  std::set<std::pair<int, int>> across;
+  for (std::size_t i = 0; i + 1 < cut.size(); ++i) across.insert(std::minmax(cut[i], cut[i + 1]));
+  std::vector<int> todo{edgeTriangles[std::minmax(cut[0], cut[1])].front()};
+  std::set<int> side{todo.front()};
+  while (!todo.empty()) {
+    const auto& c = triangles[todo.back()];
+    todo.pop_back();
+    for (int k = 0; k < 3; ++k) {
+      const std::pair<int, int> e = std::minmax(c[k], c[(k + 1) % 3]);
+      if (across.count(e)) continue;
+      for (int t : edgeTriangles[e])
+        if (side.insert(t).second) todo.push_back(t);
+    }
+  }
+  long inPatch = 0;
+  for (int t : patches.of) inPatch += t == p;
+  if (static_cast<long>(side.size()) == inPatch) return false;  // the cut does not part the patch
+  const int q = patches.count++;
+  for (int t : side) patches.of[t] = q;
+  // the curve the cut lands on split there
+  const int landing = cut.back();
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    std::vector<int>& v = curves[c].vertices;
+    const auto it = std::find(v.begin() + 1, v.end() - 1, landing);
+    if (std::find(ofPatch.begin(), ofPatch.end(), static_cast<int>(c)) == ofPatch.end() || v.size() < 3 ||
+        it == v.end() - 1)
+      continue;
+    Curve beyond{std::vector<int>(it, v.end()), curves[c].patches, {0, curves[c].across[1]}};
+    v.erase(it + 1, v.end()), curves[c].across[1] = 0;
+    curves.push_back(std::move(beyond));
+    break;
+  }
+  // the patch's curves along the new patch's triangles are the new patch's
+  for (Curve& c : curves) {
+    if (c.patches[0] != p && c.patches[1] != p) continue;
+    const std::vector<int>& tri = edgeTriangles[std::minmax(c.vertices[0], c.vertices[1])];
+    if (std::any_of(tri.begin(), tri.end(), [&](int t) { return patches.of[t] == q; }))
+      for (int& patchOf : c.patches) patchOf = patchOf == p ? q : patchOf;
+    std::sort(c.patches.begin(), c.patches.end());
+  }
+  curves.push_back({cut, {p, q}});
+  layout.paths = curvePaths(curves, x, layout.typical);
+  return true;
+}
+
 }  // namespace
 
 PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle) {
@@ -759,29 +929,32 @@ PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, doub
   const std::vector<std::array<int, 3>> triangles = chordalTriangles(chordal);
   PatchLayout layout;
   layout.typical = typicalSize(x, triangles, size);
-  const std::vector<int> patch = facePatches(x, triangles, featureAngle, layout.typical);
-  const int patches = patch.empty() ? 0 : 1 + *std::max_element(patch.begin(), patch.end());
-  if (patches < 2) return {};
-  layout.curves = cutAtSharpTurns(patchTopology(triangles, patch), x, layout.typical);
+  Patches patch{facePatches(x, triangles, featureAngle, layout.typical), 0};
+  patch.count = patch.of.empty() ? 0 : 1 + *std::max_element(patch.of.begin(), patch.of.end());
+  if (patch.count < 2) return {};
+  layout.curves = cutAtSharpTurns(patchTopology(triangles, patch.of), x, layout.typical);
   joinShortRimCurves(layout.curves, x, layout.typical);
-  std::vector<std::vector<int>> ofPatch(patches);
-  for (std::size_t c = 0; c < layout.curves.size(); ++c)
-    for (int p : layout.curves[c].patches)
-      if (p >= 0) ofPatch[p].push_back(static_cast<int>(c));
   layout.paths = curvePaths(layout.curves, x, layout.typical);
-  for (int p = 0; p < patches; ++p) {
+  std::vector<std::vector<int>> ofPatch = curvesOfPatches(layout.curves, patch.count);
+  for (int p = 0, cuts = 0; p < patch.count; ++p) {
     std::optional<Face> face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
     if (!face && cutAtRoundCorners(layout.curves, layout.paths, ofPatch[p], layout.typical))
       face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
+    if (!face && cuts < kMaxCuts && cutAtReflexCorner(layout, patch, triangles, x, size, p)) {
+      ++cuts, p = -1;  // the faces again: the cut may have split a curve of one made already
+      layout.faces.clear(), ofPatch = curvesOfPatches(layout.curves, patch.count);
+      continue;
+    }
     if (!face) return {};
     layout.faces.push_back(*face);
   }
-  layout.shapes = patchShapes(triangles, patch, patches, x);
+  const int patches = patch.count;
+  layout.shapes = patchShapes(triangles, patch.of, patches, x);
   for (int p = 0; p < patches; ++p)
     if (layout.shapes[p].euler != 1 - static_cast<long>(layout.faces[p].holes.size())) return {};
   layout.facets.resize(patches);
   for (std::size_t t = 0; t < triangles.size(); ++t)
-    if (!layout.faces[patch[t]].holes.empty()) layout.facets[patch[t]].push_back(triangles[t]);
+    if (!layout.faces[patch.of[t]].holes.empty()) layout.facets[patch.of[t]].push_back(triangles[t]);
   PatchGrids grids;
   if (!gridOf(layout, x, size, false, grids.even)) return {};
   const std::optional<std::size_t> folded = gridOf(layout, x, size, true, grids.graded);

@@ -142,18 +142,93 @@ long conformalEuler(const BlockGrid& g) {
          static_cast<long>(g.quads.size());
 }
 
-TEST(PatchGrids, NoGridWhereAFaceIsNotFourSidedOrThereIsOneFace) {
+// The chordal surface of an open box on a floor of unit cells (i, j) in `cells`, H high: the floor at z = 0, a wall
+// of H rows on every edge of its outline, all times `scale`.
+ChordalSurface openBoxOn(const std::set<std::pair<int, int>>& cells, int H, double scale) {
+  std::map<std::array<int, 3>, int> index;
+  ChordalSurface s;
+  auto vertex = [&](int i, int j, int k) {
+    const auto [it, added] = index.emplace(std::array<int, 3>{i, j, k}, static_cast<int>(s.vertices.size()));
+    if (added) s.vertices.push_back(scale * Vec3(i, j, k)), s.normals.push_back(Vec3::UnitZ());
+    return it->second;
+  };
+  for (const auto& [i, j] : cells) {
+    s.facets.push_back({vertex(i, j, 0), vertex(i + 1, j, 0), vertex(i + 1, j + 1, 0), vertex(i, j + 1, 0)});
+    // the cell's edges counter-clockwise, each with the cell across it: a wall where there is none
+    const std::array<std::array<int, 6>, 4> edges{{{i, j, i + 1, j, i, j - 1},
+                                                   {i + 1, j, i + 1, j + 1, i + 1, j},
+                                                   {i + 1, j + 1, i, j + 1, i, j + 1},
+                                                   {i, j + 1, i, j, i - 1, j}}};
+    for (const auto& [ai, aj, bi, bj, ci, cj] : edges)
+      if (!cells.count({ci, cj}))
+        for (int k = 0; k < H; ++k)
+          s.facets.push_back({vertex(bi, bj, k), vertex(ai, aj, k), vertex(ai, aj, k + 1), vertex(bi, bj, k + 1)});
+  }
+  return s;
+}
+
+// An open box on an L-shaped floor (12 x 8 and 6 x 6 on its side): the floor has six corners, one of them reflex. It
+// is cut in two from that corner straight on to the wall across (the wall's bend there split in two, a side of two
+// curves); every face then one grid, conformal, unit quads: three quads round each of the five convex bottom
+// corners, five round the reflex one (three of the floor's, two of the walls'), every other node inside regular.
+TEST(PatchGrids, AnLShapedFloorIsCutInTwoAtItsReflexCorner) {
+  std::set<std::pair<int, int>> cells;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 14; ++j)
+      if (j < 8 || i < 6) cells.insert({i, j});
+  const int H = 5;
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE(testing::Message() << "scale " << scale);
+    const ChordalSurface box = openBoxOn(cells, H, scale);
+    const std::size_t quads = cells.size() + (2 * 12 + 2 * 14) * H;
+    EXPECT_EQ(box.facets.size(), quads);
+    const SizeField unit = [&](const Vec3&) { return scale; };
+    const BlockGrid g = patchGrids(box, unit, 40).even;
+    ASSERT_FALSE(g.empty());
+    EXPECT_EQ(g.blocks, 6u + 2);
+    EXPECT_EQ(g.quads.size(), quads);
+    EXPECT_EQ(conformalEuler(g), 1);
+    const GridShape shape = shapeOf(g);
+    std::map<int, int> valence;  // quads round a node off the rim -> nodes
+    for (const auto& [node, n] : shape.quadsAt)
+      if (!shape.rim.count(node)) ++valence[n];
+    EXPECT_EQ(valence[3], 5);
+    EXPECT_EQ(valence[5], 1);
+    EXPECT_EQ(valence.size(), 3u);  // and 4
+    expectEdgesBetween(g, shape, scale, 0.3, 1.5);
+  }
+}
+
+// The wall at y = 8 two cells lower for x < 6: its top steps down, six corners, one reflex (at (6, 8, 3)): cut from
+// there down to the floor, two four-sided faces, the floor's bend there split in two.
+TEST(PatchGrids, AWallWhoseTopStepsDownIsCutAtTheStep) {
   const SizeField unit = [](const Vec3&) { return 1.0; };
-  const PatchGrids flat = patchGrids(test_flat_surfaces::rectangle(6, 4), unit, 40);
-  EXPECT_TRUE(flat.graded.empty() && flat.even.empty());
-  // the wall at y = 8 two cells lower for x < 6: its top steps down, six corners
   const ChordalSurface box = openBox(12, 8, 5, 0, 1);
   const ChordalSurface stepped = without(box, [&](const auto& f) {
     const Vec3 a = box.vertices[f[0]], c = box.vertices[f[2]];
     return a.y() == 8 && c.y() == 8 && std::max(a.z(), c.z()) > 3 && std::max(a.x(), c.x()) <= 6;
   });
   EXPECT_EQ(stepped.facets.size(), 12u * 8 + 2 * 20 * 5 - 12);
-  const PatchGrids grids = patchGrids(stepped, unit, 40);
+  const BlockGrid g = patchGrids(stepped, unit, 40).even;
+  ASSERT_FALSE(g.empty());
+  EXPECT_EQ(g.blocks, 5u + 1);
+  EXPECT_EQ(g.quads.size(), stepped.facets.size());
+  EXPECT_EQ(conformalEuler(g), 1);
+}
+
+// No grid on a surface of one face, or where two holes in a face are so close that their pockets meet (a cell apart:
+// each pocket reaches a cell beyond its hole).
+TEST(PatchGrids, NoGridOnOneFaceOrWherePocketsMeet) {
+  const SizeField unit = [](const Vec3&) { return 1.0; };
+  const PatchGrids flat = patchGrids(test_flat_surfaces::rectangle(6, 4), unit, 40);
+  EXPECT_TRUE(flat.graded.empty() && flat.even.empty());
+  const ChordalSurface box = openBox(12, 8, 5, 0, 1);
+  const ChordalSurface holes = without(box, [&](const auto& f) {
+    const Vec3 c = (box.vertices[f[0]] + box.vertices[f[1]] + box.vertices[f[2]] + box.vertices[f[3]]) / 4;
+    return c.z() == 0 && c.y() > 3 && c.y() < 5 && ((c.x() > 3 && c.x() < 5) || (c.x() > 6 && c.x() < 8));
+  });
+  EXPECT_EQ(holes.facets.size(), 12u * 8 + 2 * 20 * 5 - 8);
+  const PatchGrids grids = patchGrids(holes, unit, 40);
   EXPECT_TRUE(grids.graded.empty() && grids.even.empty());
 }
 

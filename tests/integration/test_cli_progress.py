@@ -105,13 +105,13 @@ class Progress(unittest.TestCase):
 
 
 class QuadBudget(unittest.TestCase):
-    """box_l_shape's quads come from Gmsh (an open box on an L-shaped floor: the patch grid does not take its
-    six-cornered floor, the single grids cut its bends): with a millisecond per Gmsh try every try runs out of it and
-    fails, and the part is refused (exit 4) saying so; with a spent stage budget no try starts. (The real U-channel
-    was the part here until its quads became the patch grid, which needs no Gmsh try.)"""
+    """box_close_holes's quads come from Gmsh (an open box bent sharp with two holes in its floor too close for their
+    pockets: no patch grid, and the single grids cut its bends): with a millisecond per Gmsh try every try runs out of
+    it and fails, and the part is refused (exit 4) saying so; with a spent stage budget no try starts. (The real
+    U-channel was the part here until its quads became the patch grid, which needs no Gmsh try.)"""
 
     def run_with(self, *options):
-        part = os.path.join(harness.args.source, "Resources", "samples", "box_l_shape.step")
+        part = os.path.join(harness.args.source, "Resources", "samples", "box_close_holes.step")
         with tempfile.TemporaryDirectory() as tmp:
             return subprocess.run([harness.args.hexlayer, "mesh", part, "-o", os.path.join(tmp, "m.inp"), "--quiet",
                                    *options], capture_output=True, text=True, timeout=600)
