@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <type_traits>
 
 #include "core/union_find.hpp"
 #include "quadmesh/chordal_patches.hpp"
@@ -34,6 +35,32 @@ std::vector<Vec3> pointsOf(const std::vector<int>& chain, const std::vector<Vec3
   points.reserve(chain.size());
   for (int v : chain) points.push_back(x[v]);
   return points;
+}
+
+// A curve cut at its vertices `at` (positions inside it, ascending): the pieces in order, each sharing its end
+// vertex with the next; the first and last keep the curve's steps cut across at its ends.
+std::vector<Curve> piecesAt(const Curve& whole, const std::vector<std::size_t>& at) {
+  std::vector<Curve> pieces;
+  std::size_t from = 0;
+  for (std::size_t to : at) {
+    pieces.push_back({std::vector<int>(whole.vertices.begin() + from, whole.vertices.begin() + to + 1),
+                      whole.patches,
+                      {from == 0 ? whole.across[0] : 0, 0}});
+    from = to;
+  }
+  pieces.push_back({std::vector<int>(whole.vertices.begin() + from, whole.vertices.end()),
+                    whole.patches,
+                    {from == 0 ? whole.across[0] : 0, whole.across[1]}});
+  return pieces;
+}
+
+// A rim curve's path: along its vertices, across the steps at its ends (Curve::across).
+std::vector<Vec3> rimPath(const Curve& c, const std::vector<Vec3>& x) {
+  std::vector<int> chain{c.vertices.front()};
+  const std::size_t n = c.vertices.size();
+  for (std::size_t i = 1 + c.across[0]; i + 1 + c.across[1] < n; ++i) chain.push_back(c.vertices[i]);
+  chain.push_back(c.vertices.back());
+  return pointsOf(chain, x);
 }
 
 // Arc length along a path from its first point: up to point i at [i].
@@ -111,12 +138,8 @@ std::vector<Curve> cutAtSharpTurns(const PatchTopology& topology, const std::vec
       chain.assign(thrice.begin() + peaks.front(), thrice.begin() + peaks.front() + n + 1);  // from its first turn
       first = 1, last = n - 1;
     }
-    std::size_t from = 0;
-    for (std::size_t at : sharpTurns(pointsOf(chain, x), size, 0.5 * size, first, last)) {
-      cut.push_back({std::vector<int>(chain.begin() + from, chain.begin() + at + 1), c.patches});
-      from = at;
-    }
-    cut.push_back({std::vector<int>(chain.begin() + from, chain.end()), c.patches});
+    for (Curve& piece : piecesAt({chain, c.patches}, sharpTurns(pointsOf(chain, x), size, 0.5 * size, first, last)))
+      cut.push_back(std::move(piece));
   }
   return cut;
 }
@@ -127,33 +150,24 @@ constexpr double kRoundCorner = 3;
 
 // The rim curves of a patch cut at their rounded corners (kRoundCorner; not within a quad of their ends, not the
 // holes' loops), the pieces after the first added at the end. [in,out] curves, paths, ofPatch: the patch's curves;
-// [in] size: a quad's length. Returns whether any was cut.
+// [in] x; [in] size: a quad's length. Returns whether any was cut.
 bool cutAtRoundCorners(std::vector<Curve>& curves, std::vector<std::vector<Vec3>>& paths, std::vector<int>& ofPatch,
-                       double size) {
+                       const std::vector<Vec3>& x, double size) {
   bool cut = false;
   for (const int c : std::vector<int>(ofPatch)) {
     if (curves[c].patches[0] >= 0 || curves[c].vertices.front() == curves[c].vertices.back()) continue;
-    const Curve whole = curves[c];
-    const std::vector<Vec3> path = paths[c];  // its point i is vertex i + across[0] inside it
+    const std::vector<Vec3>& path = paths[c];  // its point i is vertex i + across[0] inside it
     if (path.size() < 3) continue;
-    std::size_t from = 0;  // in path
-    auto vertexAt = [&](std::size_t i) { return i == 0 ? 0 : i + whole.across[0]; };
-    auto add = [&](std::size_t to, bool last) {
-      Curve piece{std::vector<int>(whole.vertices.begin() + vertexAt(from),
-                                   last ? whole.vertices.end() : whole.vertices.begin() + vertexAt(to) + 1),
-                  whole.patches,
-                  {from == 0 ? whole.across[0] : 0, last ? whole.across[1] : 0}};
-      std::vector<Vec3> piecePath(path.begin() + from, last ? path.end() : path.begin() + to + 1);
-      if (from == 0) {
-        curves[c] = std::move(piece), paths[c] = std::move(piecePath);
-      } else {
-        ofPatch.push_back(static_cast<int>(curves.size()));
-        curves.push_back(std::move(piece)), paths.push_back(std::move(piecePath));
-      }
-      from = to;
-    };
-    for (std::size_t at : sharpTurns(path, kRoundCorner * size, size, 1, path.size() - 2)) add(at, false), cut = true;
-    if (from > 0) add(path.size() - 1, true);
+    std::vector<std::size_t> at = sharpTurns(path, kRoundCorner * size, size, 1, path.size() - 2);
+    if (at.empty()) continue;
+    for (std::size_t& i : at) i += curves[c].across[0];
+    std::vector<Curve> pieces = piecesAt(curves[c], at);
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      const int to = k == 0 ? c : static_cast<int>(curves.size());
+      if (k > 0) ofPatch.push_back(to), curves.emplace_back(), paths.emplace_back();
+      paths[to] = rimPath(pieces[k], x), curves[to] = std::move(pieces[k]);
+    }
+    cut = true;
   }
   return cut;
 }
@@ -234,13 +248,13 @@ std::optional<Side> loopOf(const std::vector<Curve>& curves, const std::vector<i
   return loop;
 }
 
-// What a side's curves have along them (their paths, nodes, vertices: perCurve[curve]) end to end in the side's
+// What a side's curves have along them (their paths, nodes, vertices: perCurve(curve)) end to end in the side's
 // order, each junction once.
-template <typename T>
-std::vector<T> endToEnd(const Side& side, const std::vector<std::vector<T>>& perCurve) {
-  std::vector<T> along;
+template <typename PerCurve>
+auto endToEnd(const Side& side, PerCurve perCurve) {
+  std::decay_t<decltype(perCurve(0))> along;
   for (const SideOf& s : side) {
-    std::vector<T> piece = perCurve[s.curve];
+    auto piece = perCurve(s.curve);
     if (!s.forward) std::reverse(piece.begin(), piece.end());
     along.insert(along.end(), piece.begin() + (along.empty() ? 0 : 1), piece.end());
   }
@@ -249,7 +263,7 @@ std::vector<T> endToEnd(const Side& side, const std::vector<std::vector<T>>& per
 
 // A side's path in the patch's order round it.
 std::vector<Vec3> sidePath(const std::vector<std::vector<Vec3>>& paths, const Side& side) {
-  return endToEnd(side, paths);
+  return endToEnd(side, [&](int c) -> const std::vector<Vec3>& { return paths[c]; });
 }
 
 // The directions of a path and the next where they meet, over a few quads (half the shorter path at most): the
@@ -300,12 +314,7 @@ std::optional<std::array<Side, 4>> sidesOf(const Side& loop, const std::vector<s
 std::vector<int> joinedLoop(const std::vector<Curve>& curves, const std::vector<int>& group) {
   const std::optional<Side> pieces = loopOf(curves, group);
   if (!pieces) return {};
-  std::vector<int> loop;
-  for (const SideOf& s : *pieces) {
-    std::vector<int> v = curves[s.curve].vertices;
-    if (!s.forward) std::reverse(v.begin(), v.end());
-    loop.insert(loop.end(), v.begin() + (loop.empty() ? 0 : 1), v.end());
-  }
+  std::vector<int> loop = endToEnd(*pieces, [&](int c) -> const std::vector<int>& { return curves[c].vertices; });
   if (loop.size() < 4 || loop.front() != loop.back()) return {};
   loop.pop_back();
   return loop;
@@ -488,11 +497,7 @@ std::vector<std::vector<Vec3>> curvePaths(const std::vector<Curve>& curves, cons
       paths.push_back(creasePath(c.vertices, x, window));
       continue;
     }
-    std::vector<int> chain{c.vertices.front()};  // along the rim, across its steps at its ends
-    const std::size_t n = c.vertices.size();
-    for (std::size_t i = 1 + c.across[0]; i + 1 + c.across[1] < n; ++i) chain.push_back(c.vertices[i]);
-    chain.push_back(c.vertices.back());
-    paths.push_back(pointsOf(chain, x));
+    paths.push_back(rimPath(c, x));
   }
   return paths;
 }
@@ -535,7 +540,7 @@ CurveNodes curveNodes(const std::vector<Curve>& curves, const std::vector<std::v
 
 // A side's nodes in its order. [in] side; [in] nodes: per curve.
 std::vector<int> sideNodes(const Side& side, const std::vector<std::vector<int>>& nodes) {
-  return endToEnd(side, nodes);
+  return endToEnd(side, [&](int c) -> const std::vector<int>& { return nodes[c]; });
 }
 
 // One patch's grid: its sides' nodes on its rim, the nodes inside by transfinite interpolation between them (a
@@ -544,13 +549,12 @@ std::vector<int> sideNodes(const Side& side, const std::vector<std::vector<int>>
 // the patch's (its quads turn counter-clockwise round it). [in,out] grid: nodes and quads added. Returns the quads
 // whose normal points against the patch's (folded: a graded grid on a patch whose sides are graded unlike).
 std::size_t addPatchGrid(const std::array<std::vector<int>, 4>& sides, const Vec3& normal, BlockGrid& grid) {
-  auto sideNode = [&](int k, int i) { return sides[k][i]; };
   const int n0 = static_cast<int>(sides[0].size()) - 1;
   const int n1 = static_cast<int>(sides[1].size()) - 1;
   std::vector<int> node((n0 + 1) * (n1 + 1));
   auto at = [&](int i, int j) -> int& { return node[j * (n0 + 1) + i]; };
-  for (int i = 0; i <= n0; ++i) at(i, 0) = sideNode(0, i), at(i, n1) = sideNode(2, n0 - i);
-  for (int j = 0; j <= n1; ++j) at(n0, j) = sideNode(1, j), at(0, j) = sideNode(3, n1 - j);
+  for (int i = 0; i <= n0; ++i) at(i, 0) = sides[0][i], at(i, n1) = sides[2][n0 - i];
+  for (int j = 0; j <= n1; ++j) at(n0, j) = sides[1][j], at(0, j) = sides[3][n1 - j];
   auto p = [&](int i, int j) { return grid.nodes[at(i, j)]; };
   for (int j = 1; j < n1; ++j)
     for (int i = 1; i < n0; ++i) {
@@ -637,12 +641,8 @@ std::optional<std::size_t> addHoledFace(const Face& face, const std::vector<Curv
   for (const std::vector<int>& hole : face.holes) {
     std::vector<int> loop;
     Vec3 centre = Vec3::Zero();
-    double length = 0;
-    for (std::size_t i = 0; i < hole.size(); ++i) {
-      loop.push_back(pointOf(hole[i])), centre += x[hole[i]] / hole.size();
-      length += (x[hole[(i + 1) % hole.size()]] - x[hole[i]]).norm();
-    }
-    if (length >= size(centre)) {
+    for (int v : hole) loop.push_back(pointOf(v)), centre += x[v] / hole.size();
+    if (arcLength(hole, x).back() >= size(centre)) {
       holes.push_back(std::move(loop));
       continue;
     }
@@ -844,21 +844,22 @@ std::vector<int> straightCut(int from, const Vec3& direction, const std::map<int
 
 // Patch p cut in two at its first reflex corner (straightCut), the part on one side of the cut a new patch: its
 // triangles moved to it, its curves' patch changed, the curve the cut lands on split there, the cut a curve of both.
-// [in,out] layout (curves and paths), patches; [in] triangles, x, size; [in] p. False if p has no reflex corner or
-// the cut does not part it.
+// [in,out] layout (curves and paths), patches; [in] triangles, x, size; [in] p, ofPatch: the patch and its curves.
+// False if p has no reflex corner or the cut does not part it.
 bool cutAtReflexCorner(PatchLayout& layout, Patches& patches, const std::vector<std::array<int, 3>>& triangles,
-                       const std::vector<Vec3>& x, const SizeField& size, int p) {
+                       const std::vector<Vec3>& x, const SizeField& size, int p, const std::vector<int>& ofPatch) {
   std::vector<Curve>& curves = layout.curves;
-  const std::vector<int> ofPatch = curvesOfPatches(curves, patches.count)[p];
   const std::optional<PatchLoops> loops = loopsOf(curves, ofPatch);
   const std::optional<Side> loop = loops ? loopOf(curves, loops->outer) : std::nullopt;
   if (!loop) return false;
   Vec3 normal = Vec3::Zero();
   std::map<int, std::vector<int>> around;
   std::map<std::pair<int, int>, std::vector<int>> edgeTriangles;
+  std::size_t inPatch = 0;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     if (patches.of[t] != p) continue;
     const auto& c = triangles[t];
+    ++inPatch;
     normal += (x[c[1]] - x[c[0]]).cross(x[c[2]] - x[c[0]]);
     for (int k = 0; k < 3; ++k) {
       around[c[k]].push_back(c[(k + 1) % 3]), around[c[k]].push_back(c[(k + 2) % 3]);
@@ -873,8 +874,7 @@ bool cutAtReflexCorner(PatchLayout& layout, Patches& patches, const std::vector<
     for (int c : hole) onHole.insert(curves[c].vertices.begin(), curves[c].vertices.end());
   const SideOf& at = (*loop)[reflex->first];
   const int corner = at.forward ? curves[at.curve].vertices.front() : curves[at.curve].vertices.back();
-  const std::vector<int> cut =
-      straightCut(corner, reflex->second, around, onOuter, onHole, x, 0.5 * layout.typical);
+  const std::vector<int> cut = straightCut(corner, reflex->second, around, onOuter, onHole, x, 0.5 * layout.typical);
   if (cut.size() < 2) return false;
   // the triangles on one side of the cut: those reached from one of its first edge's without crossing it
   std::set<std::pair<int, int>> across;
@@ -891,22 +891,16 @@ bool cutAtReflexCorner(PatchLayout& layout, Patches& patches, const std::vector<
         if (side.insert(t).second) todo.push_back(t);
     }
   }
-  long inPatch = 0;
-  for (int t : patches.of) inPatch += t == p;
-  if (static_cast<long>(side.size()) == inPatch) return false;  // the cut does not part the patch
+  if (side.size() == inPatch) return false;  // the cut does not part the patch
   const int q = patches.count++;
   for (int t : side) patches.of[t] = q;
   // the curve the cut lands on split there
-  const int landing = cut.back();
-  for (std::size_t c = 0; c < curves.size(); ++c) {
-    std::vector<int>& v = curves[c].vertices;
-    const auto it = std::find(v.begin() + 1, v.end() - 1, landing);
-    if (std::find(ofPatch.begin(), ofPatch.end(), static_cast<int>(c)) == ofPatch.end() || v.size() < 3 ||
-        it == v.end() - 1)
-      continue;
-    Curve beyond{std::vector<int>(it, v.end()), curves[c].patches, {0, curves[c].across[1]}};
-    v.erase(it + 1, v.end()), curves[c].across[1] = 0;
-    curves.push_back(std::move(beyond));
+  for (int c : loops->outer) {
+    const std::vector<int>& v = curves[c].vertices;
+    const auto it = std::find(v.begin() + 1, v.end() - 1, cut.back());
+    if (it == v.end() - 1) continue;
+    std::vector<Curve> pieces = piecesAt(curves[c], {static_cast<std::size_t>(it - v.begin())});
+    curves[c] = std::move(pieces[0]), curves.push_back(std::move(pieces[1]));
     break;
   }
   // the patch's curves along the new patch's triangles are the new patch's
@@ -938,9 +932,9 @@ PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, doub
   std::vector<std::vector<int>> ofPatch = curvesOfPatches(layout.curves, patch.count);
   for (int p = 0, cuts = 0; p < patch.count; ++p) {
     std::optional<Face> face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
-    if (!face && cutAtRoundCorners(layout.curves, layout.paths, ofPatch[p], layout.typical))
+    if (!face && cutAtRoundCorners(layout.curves, layout.paths, ofPatch[p], x, layout.typical))
       face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
-    if (!face && cuts < kMaxCuts && cutAtReflexCorner(layout, patch, triangles, x, size, p)) {
+    if (!face && cuts < kMaxCuts && cutAtReflexCorner(layout, patch, triangles, x, size, p, ofPatch[p])) {
       ++cuts, p = -1;  // the faces again: the cut may have split a curve of one made already
       layout.faces.clear(), ofPatch = curvesOfPatches(layout.curves, patch.count);
       continue;
