@@ -309,12 +309,20 @@ QuadMesh collectQuads() {
   }
   QuadMesh q;
   std::map<std::size_t, int> index;  // Gmsh node tag -> our node id, in order of first use
+  // Gmsh's nodes at one place are one node: its full-quad subdivision can give a curve's midpoint twice where two
+  // patches meet at a rounded corner (a slit in the quads, another topology).
+  std::map<std::array<double, 3>, int> at;
   auto node = [&](std::size_t tag) {
     const auto [it, added] = index.emplace(tag, static_cast<int>(q.nodes.size()));
     if (added) {
       const auto p = position.find(tag);
       if (p == position.end()) throw internalError("Gmsh gave no coordinates for node " + std::to_string(tag));
-      q.nodes.push_back(p->second);
+      const auto [same, isNew] = at.emplace(std::array<double, 3>{p->second.x(), p->second.y(), p->second.z()},
+                                            static_cast<int>(q.nodes.size()));
+      if (isNew)
+        q.nodes.push_back(p->second);
+      else
+        it->second = same->second;
     }
     return it->second;
   };

@@ -27,6 +27,7 @@ struct Freedom {
   bool moves = false;
   std::optional<Side> on;      // the side whose faces (or rim edges) it stays on; none: free
   bool alongRimEdges = false;  // on the rim edges of `on`
+  std::optional<Side> orOn;    // the other side whose faces it may go onto, the nearer
 };
 
 // [in] rimEdges: whether the nodes on the CAD edges where the walls meet the rim may slide along them.
@@ -36,6 +37,10 @@ Freedom freedomOf(const HexMesh& mesh, const WallSides& sides, int v, bool rimEd
     return {true, mesh.nodeLayer[v] == 0 ? Side::Bottom : Side::Top, true};
   if (mesh.nodeOnRim[v] == kRimCap || (mesh.nodeOnRim[v] == kRimSwept && wallLayer))
     return {};  // on a CAD edge or a cap
+  if (mesh.nodeFace[v] >= 0 && wallLayer && !mesh.nodeOnRim[v] && sides.faces[mesh.nodeFace[v]].side == Side::Lateral)
+    // A wall's node on a rim face, off the rim: the middle of the rounds of a step where the wall's thickness
+    // changes faces along the wall. It may go back onto the wall's faces.
+    return {true, mesh.nodeLayer[v] == 0 ? Side::Bottom : Side::Top, false, Side::Lateral};
   if (mesh.nodeFace[v] >= 0) return {true, sides.faces[mesh.nodeFace[v]].side};
   if (!wallLayer && !mesh.nodeOnRim[v]) return {true, std::nullopt};
   return {};  // a boundary node not put on the CAD
@@ -57,7 +62,12 @@ std::vector<std::vector<int>> edgeNeighbours(const HexMesh& mesh) {
 // [in] walls, f: v's freedom, to.
 std::optional<FacePoint> placeAt(const WallProjector& walls, const Freedom& f, const Vec3& to) {
   if (!f.on) return FacePoint{to, -1};
-  return f.alongRimEdges ? walls.projectOntoRimEdges(*f.on, to) : walls.project(*f.on, to);
+  if (f.alongRimEdges) return walls.projectOntoRimEdges(*f.on, to);
+  std::optional<FacePoint> at = walls.project(*f.on, to);
+  if (!f.orOn) return at;
+  std::optional<FacePoint> other = walls.project(*f.orOn, to);
+  if (!at || (other && (other->point - to).norm() < (at->point - to).norm())) return other;
+  return at;
 }
 
 // measure(v) were node v at `at` (it stays where it is). [in,out] mesh: v moved and back.

@@ -1,8 +1,10 @@
 // Smoothing of the poor hexes the rim leaves (after §7's sweep, the rim projection and the rim caps): where a
 // rim is oblique, overhangs the wall or turns a corner, the hexes beside it are sheared more than the rim's
 // own angle asks. Each node of a hex below kPoorHex is moved towards the mean of its neighbours along the
-// hex edges, kept on its CAD face: a wall node slides on the walls of its side, a rim node on the lateral
-// faces, an inner node is free; the nodes on the CAD edges where walls meet the rim, and the caps' nodes, stay.
+// hex edges, kept on its CAD face: a wall node slides on the walls of its side (one that lies on a lateral face off
+// the rim, in the middle of the rounds of a step where the wall's thickness changes, on those walls and the lateral
+// faces, the nearer), a rim node on the lateral faces, an inner node is free; the nodes on the CAD edges where walls
+// meet the rim, and the caps' nodes, stay.
 // A move is kept only if it raises the scaled Jacobian of the worst hex around the node, so no hex gets worse
 // than the worst it was beside. The nodes of hexes still below kBadHex, and of the hexes around them, then take
 // pattern-search steps (towards or away from each neighbour, the one that most lowers their hexes' squared shortfall

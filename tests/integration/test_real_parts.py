@@ -217,43 +217,29 @@ class RealParts(unittest.TestCase):
         """The Ender-3 power-holder box (open box 115 x 54 x 70, 2 mm walls meeting the floor and each other in sharp
         inside edges and 0.5 mm outside rounds: cylinders, tori, spheres at the corners) is one bent sheet (its rounds
         are bends, bend_rounds.hpp), not four walls standing on each other (it was refused as T-junctions, exit 4).
-        Its lower end wall (x = -57.5...-55.5, 29 high) ends part way up the side walls, which run on to 60 flush with
-        its outer face: mitred there, no sweep column served the mitre below and the side wall above, and its top
-        corners kept 4 to 27 inverted hexes whatever the quads (17 936 hexes, average 0.900, 4 inverted on
-        2026-12-04). Since butt joints (butt_joints.hpp) the end wall stands on the side walls and the floor, its foot
-        a U along their rim: one T junction, meshed (measured: 18 144 hexes, average 0.903, junction hexes 284, min
-        0.56, average 0.95), no hex inverted at the end wall's top. Still refused by validation: the side wall's
-        quads differ, and one hex at the window's corner on the pad (-32.4, -26.7, 43.5) is flat, and at the +x end
-        the mitre under the top rim, where the +y wall's inside round ends on the end wall's face, has hexes on its
-        two sides that do not meet (the boundary's Euler characteristic -12 against -10). Checked with --force: the
-        stage it reaches, its quality and junction, and that nothing inverts at the end wall's top any more."""
-        part = real_part("ender3_power_holder_box.step")
-        with tempfile.TemporaryDirectory() as tmp:
-            report = os.path.join(tmp, "r.json")
-            done = subprocess.run([harness.args.hexlayer, "mesh", part, "-o", os.path.join(tmp, "m.inp"), "--quiet",
-                                   "--force", "--report", report], capture_output=True, text=True, timeout=900)
-            self.assertEqual(done.returncode, 0, done.stderr)
-            with open(report) as f:
-                r = json.load(f)
-            nodes, elements, _ = read_inp(os.path.join(tmp, "m.inp"))
-        x, hexes, _ = hex_arrays(nodes, elements)
-        sj = hex_scaled_jacobians(x, hexes)
-        centres = x[hexes].mean(axis=1)
-        print(f"power-holder box: {r['hexes']} hexes, {r['inverted_hexes']} inverted, SJ avg "
-              f"{r['scaled_jacobian']['avg']:.3f}, worst at {r['worst_hex_at']}, quads {r['quad_mesh']['layout']}, "
-              f"junctions {r['junctions']}")
-        self.assertEqual(r["quad_mesh"]["layout"], "gmsh")
-        self.assertGreater(r["hexes"], 10000)
-        self.assertGreaterEqual(r["scaled_jacobian"]["avg"], 0.9)
-        self.assertLess(abs(r["volume"]["relative_error"]), 0.015)
+        Its lower end wall (x = -57.5...-55.5, 29 high) ends part way up the side walls, which run on to 70 flush with
+        its outer face: since butt joints (butt_joints.hpp) it stands on the side walls and the floor, its foot a U
+        along their rim: one T junction, meshed. The front wall has a window in a pad 2 mm proud (4 mm thick) whose
+        edge, two R1 rounds, passes 0.7 mm from the window's corner; the rounds' middles face along the wall and are
+        rim faces (mixed_faces), a wall node on one may go back onto the wall (smoothing.hpp): one hex there stayed flat
+        (2026-12-04). Gmsh gave a node of a rounded top corner twice (a slit in the quads: the boundary's Euler
+        characteristic -12 against -10); one node at one place since. Measured 2026-12-05: 18 144 hexes, SJ min 0.296,
+        average 0.903, volume -0.75 %, junction hexes 284 (min 0.56, average 0.95); valid, the part's topology."""
+        r, (sj, volume, euler) = self.mesh("ender3_power_holder_box.step", 2)
+        print(f"power-holder box: {r['hexes']} hexes, SJ min {sj.min():.3f} avg {sj.mean():.3f}, worst at "
+              f"{r['worst_hex_at']}, quads {r['quad_mesh']['layout']}, junctions {r['junctions']}")
+        self.assertTrue(r["validation"]["passed"], r["validation"])
+        self.assertGreater(len(sj), 10000)
+        self.assertGreaterEqual(sj.min(), 0.2)
+        self.assertGreaterEqual(sj.mean(), 0.9)
+        cad = cad_volume(real_part("ender3_power_holder_box.step"))
+        self.assertLess(abs(volume / cad - 1), 0.015)
+        self.assertEqual(euler, surface_euler_characteristic(real_part("ender3_power_holder_box.step"),
+                                                             EULER_TRIANGLE_SIZE))
         self.assertEqual([(j["kind"], j["meshed"]) for j in r["junctions"]], [("T", True)])
         self.assertIn("Face26", r["junctions"][0]["faces"])  # the end wall's inside
         self.assertGreaterEqual(r["junctions"][0]["scaled_jacobian"]["avg"], 0.8)
         self.assertGreaterEqual(r["junctions"][0]["scaled_jacobian"]["min"], 0.3)
-        self.assertFalse(r["validation"]["passed"])
-        self.assertLessEqual(r["inverted_hexes"], 8)
-        top = (centres[:, 0] < -54) & (np.abs(centres[:, 2] - 29) < 3)  # the end wall's top corners
-        self.assertGreater(sj[top].min(), 0.2, "no hex folds where the end wall's top meets the side walls")
 
     def test_sheet_metal_flanges_with_rounded_corners(self):
         # Measured 2026-11-23 (2 layers): 4768 hexes, 0 inverted, SJ min 0.726 avg 0.930, volume -0.21 %.
