@@ -18,7 +18,7 @@ With --repeat N each part is meshed N times by HexLayer and by Gmsh, alternately
 Suite `many` (issue 19): parts with many features, at HexLayer's default size (the wall thickness): the keyboard
 plate, the plate with 200 holes and the perforated tube of `scripts/make_samples.py --only many` (written into
 OUT/many), and every
-part of ../shared/parts/real (with --drop-junctions). Per part it prints the CAD faces too, and its --plot is
+part of ../shared/parts/real, as a user meshes it (junctions meshed, the default since issue 18). Per part it prints the CAD faces too, and its --plot is
 time against the number of CAD faces.
 """
 import argparse
@@ -145,8 +145,7 @@ def cases(suite, parts):
                for s, size in (("plate_holes", 2.0), ("lbracket", 3.0), ("uchannel", 2.0), ("hat_holes", 1.5))]
     many = [dict(name=n, step=parts[n], size=None, layers=2, hexes=0) for n in MANY]
     if os.path.isdir(REAL):
-        many += [dict(name=os.path.splitext(f)[0], step=os.path.join(REAL, f), size=None, layers=2, hexes=0,
-                      options=["--drop-junctions"])
+        many += [dict(name=os.path.splitext(f)[0], step=os.path.join(REAL, f), size=None, layers=2, hexes=0)
                  for f in sorted(os.listdir(REAL)) if f.lower().endswith((".step", ".stp", ".brep"))]
     junctions = [dict(name=s, step=os.path.join(ROOT, "Resources", "samples", "junctions", s + ".step"), size=None,
                       layers=2, hexes=0) for s in JUNCTIONS]
