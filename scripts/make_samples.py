@@ -592,12 +592,22 @@ def box_l_shape():
 
 def box_close_holes():
     """box_sharp with two holes D6 through its floor 8 apart (centres (26, 20) and (34, 20)): a wall of 2 between
-    them, less than their pockets need (a quad beyond each hole), so no structured grid takes the floor (Gmsh's
-    quads)."""
+    them, less than their pockets need (a quad beyond each hole): the floor is the shared grid's, its lines between
+    the holes."""
     vol, volume = sharp_inside_box(0.0)
     drill(vol, [(26, 20, 0, SHARP_BOX[3], 6), (34, 20, 0, SHARP_BOX[3], 6)])
     volume -= 2 * math.pi * 9 * SHARP_BOX[3]
     return volume, dict(dims=box_dims(0.0, "; two holes D6 through the floor at (26, 20) and (34, 20)"), wall="2")
+
+
+def box_diagonal_holes():
+    """box_sharp with two holes D6 through its floor on a diagonal, centres (25, 16) and (31, 22): 2.5 apart, their
+    extents overlapping along both axes, so that neither the pockets nor the shared grid's lines can part them (Gmsh's
+    quads; test_cli_progress's quad budgets)."""
+    vol, volume = sharp_inside_box(0.0)
+    drill(vol, [(25, 16, 0, SHARP_BOX[3], 6), (31, 22, 0, SHARP_BOX[3], 6)])
+    volume -= 2 * math.pi * 9 * SHARP_BOX[3]
+    return volume, dict(dims=box_dims(0.0, "; two holes D6 through the floor at (25, 16) and (31, 22)"), wall="2")
 
 
 # Written to OUTPUT_DIR after the rim and junction parts (their STEP files stay byte-identical: OpenCASCADE
@@ -612,6 +622,7 @@ BENT_BOX_PARTS = [
     ("box_foot", box_foot),
     ("box_l_shape", box_l_shape),
     ("box_close_holes", box_close_holes),
+    ("box_diagonal_holes", box_diagonal_holes),
 ]
 
 # ---------------------------------------------------------------------------

@@ -547,14 +547,30 @@ struct AxisLines {
   int cells() const { return static_cast<int>(at.size()) - 1; }
 };
 
-// [in] stations: one axis's; [in] total: the quads across the square. Returns its lines.
-AxisLines axisLines(const std::vector<Station>& stations, double total) {
+// The stations' places along one axis and the rim's (0 and total), ascending, those within kSame of the one before
+// taken as it. [in] stations, total.
+std::vector<double> stationPlaces(const std::vector<Station>& stations, double total) {
   std::vector<double> all{0, total}, places;
   for (const Station& s : stations) all.push_back(s.at);
   std::sort(all.begin(), all.end());
   for (double at : all)
     if (places.empty() || at - places.back() > kSame) places.push_back(at);
   places.back() = total;
+  return places;
+}
+
+// Per station, the line of its place (the place at or just below it). [in] stations, places; [in] lineOf: per place.
+std::vector<int> stationLines(const std::vector<Station>& stations, const std::vector<double>& places,
+                              const std::vector<int>& lineOf) {
+  std::vector<int> line;
+  for (const Station& s : stations)
+    line.push_back(lineOf[std::upper_bound(places.begin(), places.end(), s.at + kSame) - places.begin() - 1]);
+  return line;
+}
+
+// [in] stations: one axis's; [in] total: the quads across the square. Returns its lines.
+AxisLines axisLines(const std::vector<Station>& stations, double total) {
+  const std::vector<double> places = stationPlaces(stations, total);
   AxisLines lines;
   std::vector<int> lineOf;  // per place
   for (std::size_t p = 0; p < places.size(); ++p) {
@@ -566,8 +582,37 @@ AxisLines axisLines(const std::vector<Station>& stations, double total) {
     const int cells = count(places[p + 1] - places[p] - kSame);  // a half quad rounded down, whatever the rounding
     for (int c = 0; c < cells; ++c) lines.at.push_back(places[p] + (places[p + 1] - places[p]) * c / cells);
   }
-  for (const Station& s : stations)  // the place at or just below it
-    lines.station.push_back(lineOf[std::upper_bound(places.begin(), places.end(), s.at + kSame) - places.begin() - 1]);
+  lines.station = stationLines(stations, places, lineOf);
+  return lines;
+}
+
+// The lines of one axis through its stations, as many as a given rim's (sharedGrid with its rim given): each
+// station's place on the nearest of the rim's lines after the last one taken (the rim's places on the rim), keeping
+// one for every place still to come; the lines between two so moved moved with them, their shares of the gap kept.
+// [in] stations: one axis's; [in] rim: the rim's lines in quads, ascending, 0 to the quads across. Nothing if the
+// places are more than the lines.
+std::optional<AxisLines> rimAxisLines(const std::vector<Station>& stations, const std::vector<double>& rim) {
+  const std::vector<double> places = stationPlaces(stations, rim.back());
+  const int n = static_cast<int>(rim.size()) - 1, inner = static_cast<int>(places.size()) - 2;
+  if (inner > n - 1) return std::nullopt;
+  std::vector<int> lineOf{0};  // per place
+  for (int p = 1; p <= inner; ++p) {
+    int best = lineOf.back() + 1;
+    for (int j = best; j <= n - 1 - (inner - p); ++j)
+      if (std::abs(rim[j] - places[p]) < std::abs(rim[best] - places[p])) best = j;
+    lineOf.push_back(best);
+  }
+  lineOf.push_back(n);
+  AxisLines lines;
+  lines.at.resize(n + 1);
+  for (std::size_t p = 0; p + 1 < places.size(); ++p) {
+    const int a = lineOf[p], b = lineOf[p + 1];
+    for (int j = a; j <= b; ++j) {
+      const double share = rim[b] > rim[a] ? (rim[j] - rim[a]) / (rim[b] - rim[a]) : double(j - a) / (b - a);
+      lines.at[j] = places[p] + (places[p + 1] - places[p]) * share;
+    }
+  }
+  lines.station = stationLines(stations, places, lineOf);
   return lines;
 }
 
@@ -808,7 +853,10 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size, const SquareRi
   return grid;
 }
 
-BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size) {
+namespace {
+
+// sharedGrid, its rim's nodes given or not (rim: nothing).
+BlockGrid sharedGridOn(const SurfaceMap& map, const SizeField& size, const SquareRim* rim) {
   if (map.empty() || map.boundary != MapBoundary::Square || map.holes.empty()) return {};
   const MapLocator locate(map);
   const std::array<AxisMeasure, 2> measure{AxisMeasure(locate, 0, size), AxisMeasure(locate, 1, size)};
@@ -816,11 +864,24 @@ BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size) {
   std::vector<GridHole> holes = gridHoles(map, measure, stations);
   if (!separatePockets(holes)) return {};
   addPocketStations(holes, stations, {measure[0].total(), measure[1].total()});
+  const Box all{0, 0, rim ? rim->n0 : 0, rim ? rim->n1 : 0};
+  if (rim && (all.n0 < 1 || all.n1 < 1 || static_cast<int>(rim->points.size()) != all.around())) return {};
+  const GridLines given = rim ? rimLines(all, rim->points) : GridLines{};
   std::array<AxisLines, 2> axis;
   for (int a = 0; a < 2; ++a) {
     mergeSides(stations[a]);
     snapPockets(stations, holes, a);
-    axis[a] = axisLines(stations[a], measure[a].total());
+    if (!rim) {
+      axis[a] = axisLines(stations[a], measure[a].total());
+      continue;
+    }
+    const std::vector<double>& plane = a == 0 ? given.x : given.y;  // falling with the index
+    std::vector<double> quads;
+    for (std::size_t j = plane.size(); j-- > 0;) quads.push_back(measure[a].quads(plane[j]));
+    quads.front() = 0, quads.back() = measure[a].total();
+    std::optional<AxisLines> lines = rimAxisLines(stations[a], quads);
+    if (!lines) return {};
+    axis[a] = std::move(*lines);
   }
   std::vector<char> skip;
   if (!leaveOutHoles(holes, axis, skip)) return {};
@@ -840,8 +901,25 @@ BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size) {
     if (ring.empty()) ring = loopPoints(map, hole.loop, corners, box.sides(), size);  // by arc length, as holedGrid
     addRing(grid, locate, lines, box, ring, false, size);
   }
-  dropUnusedNodes(grid.nodes, grid.quads);  // those inside the holes and pockets
+  if (rim) {
+    std::vector<int> walk;
+    for (int t = 0; t < all.around(); ++t) {
+      const auto [i, k] = all.walk(t);
+      walk.push_back(lines.node(i, k));
+      grid.nodes[walk.back()] = rim->points[t].x;
+    }
+    numberFirst(grid, walk);
+  }
+  dropUnusedNodes(grid.nodes, grid.quads);  // those inside the holes and pockets (the rim's are used: they stay first)
   return grid;
+}
+
+}  // namespace
+
+BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size) { return sharedGridOn(map, size, nullptr); }
+
+BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size, const SquareRim& rim) {
+  return sharedGridOn(map, size, &rim);
 }
 
 // A rim loop's angles in the map, from its first point on, ascending: 0 at its first point, 2 pi at the end.

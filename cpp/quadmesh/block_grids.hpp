@@ -58,6 +58,13 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size, const SquareRi
 // any other map, a surface without holes, or where two holes' extents overlap along both axes.
 BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size);
 
+// sharedGrid with its rim's nodes given (a face of the patch grid whose holes' pockets meet, sharing its sides' nodes
+// with the faces beside it): as many lines as the rim's cells, the rim's lines (holedGrid's with a given rim) moved
+// onto the holes' sides and the pockets' boxes, each onto the nearest line not yet taken, the lines between moved with
+// them; its rim nodes at the points, first in its nodes in their order. [in] map, size; [in] rim: 2 (n0 + n1) points.
+// Empty where sharedGrid is, or if the holes' sides and boxes need more lines than the rim has.
+BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size, const SquareRim& rim);
+
 // Ring grid of a surface mapped onto the annulus's rectangle (a tube, a ring): `around` x `across`
 // quads evenly spaced in it (square where the map is conformal), the rim rows on the rims by arc
 // length, periodic round the ring: every node is regular. Empty for any other map.

@@ -27,6 +27,9 @@ struct Curve {
   // than a quad joined to it there: the rim's step round the end of a bend, which a path along the vertices would
   // walk back and forth)
   std::array<std::size_t, 2> across{0, 0};
+  // At its first and last vertex, the quads over which the turn into the curve before and after it is measured where
+  // that is more than kCornerWindow: a rounded corner of a larger radius cut there (cutAtRoundCorners); else 0.
+  std::array<double, 2> cornerWindow{0, 0};
 };
 
 // A chain's points.
@@ -45,12 +48,14 @@ std::vector<Curve> piecesAt(const Curve& whole, const std::vector<std::size_t>& 
   for (std::size_t to : at) {
     pieces.push_back({std::vector<int>(whole.vertices.begin() + from, whole.vertices.begin() + to + 1),
                       whole.patches,
-                      {from == 0 ? whole.across[0] : 0, 0}});
+                      {from == 0 ? whole.across[0] : 0, 0},
+                      {from == 0 ? whole.cornerWindow[0] : 0, 0}});
     from = to;
   }
   pieces.push_back({std::vector<int>(whole.vertices.begin() + from, whole.vertices.end()),
                     whole.patches,
-                    {from == 0 ? whole.across[0] : 0, whole.across[1]}});
+                    {from == 0 ? whole.across[0] : 0, whole.across[1]},
+                    {from == 0 ? whole.cornerWindow[0] : 0, whole.cornerWindow[1]}});
   return pieces;
 }
 
@@ -145,24 +150,28 @@ std::vector<Curve> cutAtSharpTurns(const PatchTopology& topology, const std::vec
 }
 
 // A face whose loop does not turn at four corners may have rounded ones along the rim (a foot's corners rounded by
-// more than a quad): its rim curves are cut where they turn by more than kSideTurn over this many quads either side.
-constexpr double kRoundCorner = 3;
+// more than a quad, a wall's top corner rounded R10 at 2 mm quads): its rim curves are cut where they turn by more
+// than kSideTurn over this many quads either side, the first that gives the face four corners (the turn at a corner
+// so cut is measured over as many quads: Curve::cornerWindow).
+constexpr double kRoundCorners[] = {kCornerWindow, 2 * kCornerWindow};
 
-// The rim curves of a patch cut at their rounded corners (kRoundCorner; not within a quad of their ends, not the
-// holes' loops), the pieces after the first added at the end. [in,out] curves, paths, ofPatch: the patch's curves;
-// [in] x; [in] size: a quad's length. Returns whether any was cut.
+// The rim curves of a patch cut at their rounded corners (over `window` quads; not within a quad of their ends, not
+// the holes' loops), the pieces after the first added at the end. [in,out] curves, paths, ofPatch: the patch's
+// curves; [in] x; [in] size: a quad's length; [in] window. Returns whether any was cut.
 bool cutAtRoundCorners(std::vector<Curve>& curves, std::vector<std::vector<Vec3>>& paths, std::vector<int>& ofPatch,
-                       const std::vector<Vec3>& x, double size) {
+                       const std::vector<Vec3>& x, double size, double window) {
   bool cut = false;
   for (const int c : std::vector<int>(ofPatch)) {
     if (curves[c].patches[0] >= 0 || curves[c].vertices.front() == curves[c].vertices.back()) continue;
     const std::vector<Vec3>& path = paths[c];  // its point i is vertex i + across[0] inside it
     if (path.size() < 3) continue;
-    std::vector<std::size_t> at = sharpTurns(path, kRoundCorner * size, size, 1, path.size() - 2);
+    std::vector<std::size_t> at = sharpTurns(path, window * size, size, 1, path.size() - 2);
     if (at.empty()) continue;
     for (std::size_t& i : at) i += curves[c].across[0];
     std::vector<Curve> pieces = piecesAt(curves[c], at);
     for (std::size_t k = 0; k < pieces.size(); ++k) {
+      if (window > kCornerWindow && k > 0) pieces[k].cornerWindow[0] = window;
+      if (window > kCornerWindow && k + 1 < pieces.size()) pieces[k].cornerWindow[1] = window;
       const int to = k == 0 ? c : static_cast<int>(curves.size());
       if (k > 0) ofPatch.push_back(to), curves.emplace_back(), paths.emplace_back();
       paths[to] = rimPath(pieces[k], x), curves[to] = std::move(pieces[k]);
@@ -267,25 +276,33 @@ std::vector<Vec3> sidePath(const std::vector<std::vector<Vec3>>& paths, const Si
 }
 
 // The directions of a path and the next where they meet, over a few quads (half the shorter path at most): the
-// creases' ends wander by a facet. [in] in, out: the paths, out starting where in ends; [in] size.
-std::pair<Vec3, Vec3> directionsInto(const std::vector<Vec3>& in, const std::vector<Vec3>& out, const SizeField& size) {
+// creases' ends wander by a facet. [in] in, out: the paths, out starting where in ends; [in] size; [in] quads: how
+// many.
+std::pair<Vec3, Vec3> directionsInto(const std::vector<Vec3>& in, const std::vector<Vec3>& out, const SizeField& size,
+                                     double quads = kCornerWindow) {
   const std::vector<double> inLength = lengthAlong(in), outLength = lengthAlong(out);
   const Vec3& corner = out.front();
-  const double window = std::min(kCornerWindow * size(corner), 0.5 * std::min(inLength.back(), outLength.back()));
+  const double window = std::min(quads * size(corner), 0.5 * std::min(inLength.back(), outLength.back()));
   return {corner - pointAt(in, inLength, inLength.back() - window), pointAt(out, outLength, window) - corner};
 }
 
-// How much a path turns into the next where they meet (directionsInto). [in] in, out; [in] size.
-double turnInto(const std::vector<Vec3>& in, const std::vector<Vec3>& out, const SizeField& size) {
-  const auto [before, after] = directionsInto(in, out, size);
+// How many quads the turn into a curve at its start in the patch's order is measured over (Curve::cornerWindow).
+double cornerWindow(const std::vector<Curve>& curves, const SideOf& piece) {
+  return std::max(kCornerWindow, curves[piece.curve].cornerWindow[piece.forward ? 0 : 1]);
+}
+
+// How much a path turns into the next where they meet (directionsInto). [in] in, out; [in] size, quads.
+double turnInto(const std::vector<Vec3>& in, const std::vector<Vec3>& out, const SizeField& size, double quads) {
+  const auto [before, after] = directionsInto(in, out, size, quads);
   return angleBetween(before, after);
 }
 
 // Whether the sides' paths turn into one another by kSideTurn to kMaxCorner at each corner.
-bool squareCorners(const std::vector<std::vector<Vec3>>& paths, const std::array<Side, 4>& sides,
-                   const SizeField& size) {
+bool squareCorners(const std::vector<Curve>& curves, const std::vector<std::vector<Vec3>>& paths,
+                   const std::array<Side, 4>& sides, const SizeField& size) {
   for (int k = 0; k < 4; ++k) {
-    const double turn = turnInto(sidePath(paths, sides[k]), sidePath(paths, sides[(k + 1) % 4]), size);
+    const Side& next = sides[(k + 1) % 4];
+    const double turn = turnInto(sidePath(paths, sides[k]), sidePath(paths, next), size, cornerWindow(curves, next[0]));
     if (turn < kSideTurn || turn > kMaxCorner) return false;
   }
   return true;
@@ -294,12 +311,13 @@ bool squareCorners(const std::vector<std::vector<Vec3>>& paths, const std::array
 // A loop of curves cut into four sides at its corners: a loop of four curves at their ends; a longer loop where its
 // curves turn into one another by kSideTurn or more, the others going on flat along a side. [in] loop, paths, size.
 // Nothing if that does not give four corners.
-std::optional<std::array<Side, 4>> sidesOf(const Side& loop, const std::vector<std::vector<Vec3>>& paths,
-                                           const SizeField& size) {
-  std::vector<std::size_t> corners;  // the loop's pieces that start a side
+std::optional<std::array<Side, 4>> sidesOf(const Side& loop, const std::vector<Curve>& curves,
+                                           const std::vector<std::vector<Vec3>>& paths, const SizeField& size) {
+  std::vector<std::size_t> corners;  // the loop's pieces that start a side (a rounded corner's cut does)
   for (std::size_t i = 0; i < loop.size(); ++i)
-    if (loop.size() == 4 || turnInto(sidePath(paths, {loop[(i + loop.size() - 1) % loop.size()]}),
-                                     sidePath(paths, {loop[i]}), size) >= kSideTurn)
+    if (loop.size() == 4 || cornerWindow(curves, loop[i]) > kCornerWindow ||
+        turnInto(sidePath(paths, {loop[(i + loop.size() - 1) % loop.size()]}), sidePath(paths, {loop[i]}), size,
+                 kCornerWindow) >= kSideTurn)
       corners.push_back(i);
   if (corners.size() != 4) return std::nullopt;
   std::array<Side, 4> sides;
@@ -357,8 +375,8 @@ std::optional<Face> faceOf(const std::vector<Curve>& curves, const std::vector<s
                            const std::vector<int>& ofPatch, const SizeField& size) {
   const std::optional<PatchLoops> loops = loopsOf(curves, ofPatch);
   const std::optional<Side> loop = loops ? loopOf(curves, loops->outer) : std::nullopt;
-  const std::optional<std::array<Side, 4>> sides = loop ? sidesOf(*loop, paths, size) : std::nullopt;
-  if (!sides || !squareCorners(paths, *sides, size)) return std::nullopt;
+  const std::optional<std::array<Side, 4>> sides = loop ? sidesOf(*loop, curves, paths, size) : std::nullopt;
+  if (!sides || !squareCorners(curves, paths, *sides, size)) return std::nullopt;
   Face face{*sides, {}};
   for (const std::vector<int>& hole : loops->holes) {
     face.holes.push_back(joinedLoop(curves, hole));
@@ -675,7 +693,8 @@ std::optional<std::size_t> addHoledFace(const Face& face, const std::vector<Curv
         given.points.push_back(p), rimNodes.push_back(nodes[at]);
       }
     }
-  const BlockGrid holed = holedGrid(map, size, given);
+  BlockGrid holed = holedGrid(map, size, given);
+  if (holed.empty()) holed = sharedGrid(map, size, given);  // the holes' pockets meet
   if (holed.empty()) return std::nullopt;
   return addFaceQuads(holed, rimNodes, normal, grid);
 }
@@ -932,8 +951,9 @@ PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, doub
   std::vector<std::vector<int>> ofPatch = curvesOfPatches(layout.curves, patch.count);
   for (int p = 0, cuts = 0; p < patch.count; ++p) {
     std::optional<Face> face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
-    if (!face && cutAtRoundCorners(layout.curves, layout.paths, ofPatch[p], x, layout.typical))
-      face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
+    for (const double window : kRoundCorners)
+      if (!face && cutAtRoundCorners(layout.curves, layout.paths, ofPatch[p], x, layout.typical, window))
+        face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
     if (!face && cuts < kMaxCuts && cutAtReflexCorner(layout, patch, triangles, x, size, p, ofPatch[p])) {
       ++cuts, p = -1;  // the faces again: the cut may have split a curve of one made already
       layout.faces.clear(), ofPatch = curvesOfPatches(layout.curves, patch.count);

@@ -19,19 +19,22 @@ namespace hexlayer {
 // corner, its step round a bend's end). A face's loops: the one with creases outside, the others holes along the rim.
 // The outside loop has its corners where its curves turn into one another by 45 degrees or more (the others run on
 // flat along a side: a side may be several curves); a face with fewer than four has its rim cut at rounded corners
-// (45 degrees over three quads), one with a reflex corner is cut in two from it straight on into the face along the
-// facets' edges (the curve it lands on split there). Every face must then have four corners turning 45 to 135
-// degrees (over up to three quads). A crease's path is its zigzag of facet edges averaged along it over a quad.
+// (45 degrees over three quads, else over six: a corner rounded R10 at 2 mm quads, its turn then measured over six
+// quads too), one with a reflex corner is cut in two from it straight on into the face along the facets' edges (the
+// curve it lands on split there). Every face must then have four corners turning 45 to 135 degrees (over three quads,
+// or a round's six). A crease's path is its zigzag of facet edges averaged along it over a quad.
 // Interval assignment: opposite sides of every face get as many segments, each curve at least what its measure needs
 // (the side with fewer takes one more on its curve with the most measure per segment, round after round), placed at
 // even shares of the curve's measure (the target size along it; if graded, twice as dense next to a crease ending on
 // it away from the rim, fading over a quad): both faces of a curve take the same nodes. A face's nodes inside are a
 // Coons patch of its four sides (bilinearly blended); a face with holes is mapped onto the square at its corners
-// (mapOntoSquare) and gets holedGrid's pocket of four blocks round each hole on its sides' nodes (a pinhole, shorter
-// than a quad's edge, closed). The nodes are put on the chordal surface by the caller.
+// (mapOntoSquare) and gets holedGrid's pocket of four blocks round each hole on its sides' nodes (where two pockets
+// would meet, sharedGrid's lines on its sides' nodes; a pinhole, shorter than a quad's edge, closed). The nodes are
+// put on the chordal surface by the caller.
 // Returns the grids of one layout (blocks: one per face and four per pocket; quads counter-clockwise seen from the
 // top): with even rows, and graded unless that folds a quad against its face's normal; both empty if the surface has
-// fewer than two faces, a face has no four corners, its holes' pockets meet, or the sides' segments cannot match.
+// fewer than two faces, a face has no four corners, its holes have neither pockets nor a shared grid, or the sides'
+// segments cannot match.
 struct PatchGrids {
   BlockGrid graded, even;
 };

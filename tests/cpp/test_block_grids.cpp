@@ -58,6 +58,23 @@ Quality quality(const BlockGrid& g) {
 
 const SizeField unit = [](const Vec3&) { return 1.0; };
 
+// A square map's rim as given nodes (a face of the patch grid): n0 x n1 cells, the points evenly along the rim's
+// sides, moved a little off it (as a crease's averaged path runs).
+SquareRim evenRim(const SurfaceMap& map, int n0, int n1) {
+  const std::vector<double> length = arcLength(map.rim, map.points);
+  SquareRim rim{n0, n1, {}};
+  for (int k = 0; k < 4; ++k) {
+    const double from = length[map.corners[k]], to = length[k == 3 ? map.rim.size() : map.corners[k + 1]];
+    const int n = k % 2 == 0 ? n0 : n1;
+    for (int i = 0; i < n; ++i) {
+      LoopPoint p = loopPoint(map, map.rim, length, from + (to - from) * i / n);
+      p.x += Vec3(0, 0, 1e-3);
+      rim.points.push_back(p);
+    }
+  }
+  return rim;
+}
+
 }  // namespace
 
 TEST(BlockGrids, GridWithAPocketRoundTheHole) {
@@ -82,17 +99,7 @@ TEST(BlockGrids, GridWithAPocketOnTheRimNodesItIsGiven) {
        {std::tuple{std::array<int, 4>{8, 12, 3, 7}, 10, 5}, std::tuple{std::array<int, 4>{18, 19, 8, 9}, 10, 5}}) {
     const SurfaceMap map = mapToPlane(rectangle(20, 10, {hole}), 1.0, MapBoundary::Square);
     ASSERT_FALSE(map.empty());
-    const std::vector<double> length = arcLength(map.rim, map.points);
-    SquareRim rim{n0, n1, {}};
-    for (int k = 0; k < 4; ++k) {
-      const double from = length[map.corners[k]], to = length[k == 3 ? map.rim.size() : map.corners[k + 1]];
-      const int n = k % 2 == 0 ? n0 : n1;
-      for (int i = 0; i < n; ++i) {
-        LoopPoint p = loopPoint(map, map.rim, length, from + (to - from) * i / n);
-        p.x += Vec3(0, 0, 1e-3);
-        rim.points.push_back(p);
-      }
-    }
+    const SquareRim rim = evenRim(map, n0, n1);
     const BlockGrid g = holedGrid(map, unit, rim);
     ASSERT_FALSE(g.empty());
     for (std::size_t t = 0; t < rim.points.size(); ++t) EXPECT_EQ(g.nodes[t], rim.points[t].x);
@@ -215,6 +222,29 @@ TEST(BlockGrids, SharedGridRoundAGridOfCutouts) {
   EXPECT_EQ(g.quads, 37u * 27 - 12 * 42);  // unit squares
   EXPECT_EQ(g.nodes, s.vertices.size());   // on the surface's own vertices
   EXPECT_GT(g.quality.worst, 0.999);
+}
+
+// The rim's nodes given (a face of the patch grid whose holes' pockets would meet): 4 x 3 cutouts of 7 x 6 cells, 1
+// apart, in a plate of 37 x 27. With 37 x 27 cells on the rim the lines run on the cutouts' sides (unit squares); with
+// 45 x 31 the rim's lines are moved onto them, the rest spread between (all quads square enough); the grid's first
+// nodes are the rim's points in order, its area the plate's less the cutouts'. Fewer cells than the cutouts' sides
+// need lines (8 along the plate: 9 of them inside) give no grid.
+TEST(BlockGrids, SharedGridOnTheRimNodesItIsGiven) {
+  const SurfaceMap map = mapToPlane(rectangle(37, 27, holeRows(4, 3, 7, 6, 1, 1, 3, 3)), 1.0, MapBoundary::Square);
+  ASSERT_FALSE(map.empty());
+  for (const auto& [n0, n1, worst] : {std::tuple{37, 27, 0.999}, std::tuple{45, 31, 0.6}}) {
+    const SquareRim rim = evenRim(map, n0, n1);
+    EXPECT_TRUE(holedGrid(map, unit, rim).empty()) << "the pockets meet";
+    const BlockGrid g = sharedGrid(map, unit, rim);
+    ASSERT_FALSE(g.empty()) << n0 << " x " << n1;
+    for (std::size_t t = 0; t < rim.points.size(); ++t) EXPECT_EQ(g.nodes[t], rim.points[t].x);
+    EXPECT_EQ(euler(g), 1 - 12);
+    const Quality q = quality(g);
+    EXPECT_GT(q.worst, worst) << n0 << " x " << n1;
+    EXPECT_NEAR(q.area, 37 * 27 - 12 * 42, 0.1);
+    if (n0 == 37) EXPECT_EQ(g.quads.size(), 37u * 27 - 12 * 42);
+  }
+  EXPECT_TRUE(sharedGrid(map, unit, evenRim(map, 8, 27)).empty());
 }
 
 namespace {

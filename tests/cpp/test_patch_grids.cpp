@@ -216,20 +216,62 @@ TEST(PatchGrids, AWallWhoseTopStepsDownIsCutAtTheStep) {
   EXPECT_EQ(conformalEuler(g), 1);
 }
 
-// No grid on a surface of one face, or where two holes in a face are so close that their pockets meet (a cell apart:
-// each pocket reaches a cell beyond its hole).
-TEST(PatchGrids, NoGridOnOneFaceOrWherePocketsMeet) {
+// A box 20 x 12 x 10 whose end wall x = 0 is 4 high: the front wall's corner above it is rounded, R6 (the square
+// x < 6, z > 4 of its cells mapped onto the quarter disc round (6, 0, 4), as a wall's top corner rounded R12 at 2 mm
+// quads). Over three quads that round turns 29 degrees, too little for a corner; over six, 57: the front wall is cut
+// in the middle of its round, its turn there measured over six quads too, and the box is one grid per face, every
+// quad square enough; at three scales.
+TEST(PatchGrids, AWallsTopCornerRoundedOverMoreThanThreeQuadsIsCutInItsMiddle) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE(testing::Message() << "scale " << scale);
+    const SizeField unit = [&](const Vec3&) { return scale; };
+    const ChordalSurface box = openBox(20, 12, 10, 0, 1);
+    ChordalSurface rounded = without(box, [&](const auto& f) {
+      const Vec3 a = box.vertices[f[0]], c = box.vertices[f[2]];
+      return a.x() == 0 && c.x() == 0 && std::max(a.z(), c.z()) > 4;
+    });
+    for (Vec3& p : rounded.vertices) {
+      const double dx = 6 - p.x(), dz = p.z() - 4;
+      if (p.y() == 0 && dx > 0 && dz > 0) {
+        const double r = std::max(dx, dz) / std::hypot(dx, dz);
+        p.x() = 6 - r * dx, p.z() = 4 + r * dz;
+      }
+      p *= scale;
+    }
+    const BlockGrid g = patchGrids(rounded, unit, 40).even;
+    ASSERT_FALSE(g.empty());
+    EXPECT_EQ(g.blocks, 5u);
+    EXPECT_EQ(conformalEuler(g), 1);
+    expectEdgesBetween(g, shapeOf(g), scale, 0.25, 1.8);
+  }
+}
+
+// No grid on a surface of one face.
+TEST(PatchGrids, NoGridOnOneFace) {
   const SizeField unit = [](const Vec3&) { return 1.0; };
   const PatchGrids flat = patchGrids(test_flat_surfaces::rectangle(6, 4), unit, 40);
   EXPECT_TRUE(flat.graded.empty() && flat.even.empty());
-  const ChordalSurface box = openBox(12, 8, 5, 0, 1);
-  const ChordalSurface holes = without(box, [&](const auto& f) {
-    const Vec3 c = (box.vertices[f[0]] + box.vertices[f[1]] + box.vertices[f[2]] + box.vertices[f[3]]) / 4;
-    return c.z() == 0 && c.y() > 3 && c.y() < 5 && ((c.x() > 3 && c.x() < 5) || (c.x() > 6 && c.x() < 8));
-  });
-  EXPECT_EQ(holes.facets.size(), 12u * 8 + 2 * 20 * 5 - 8);
-  const PatchGrids grids = patchGrids(holes, unit, 40);
-  EXPECT_TRUE(grids.graded.empty() && grids.even.empty());
+}
+
+// Two holes of 2 x 2 cells in the box's floor a cell apart: their pockets (a cell beyond each hole) would meet, so the
+// floor is sharedGrid's with its sides' nodes given, the grid's lines on the holes' sides: every quad a unit square
+// (as many as the facets), conformal with the walls, a disc with two holes; at three scales.
+TEST(PatchGrids, HolesWhosePocketsMeetShareTheFacesGrid) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE(testing::Message() << "scale " << scale);
+    const SizeField unit = [&](const Vec3&) { return scale; };
+    const ChordalSurface box = openBox(12, 8, 5, 0, scale);
+    const ChordalSurface holes = without(box, [&](const auto& f) {
+      const Vec3 c = (box.vertices[f[0]] + box.vertices[f[1]] + box.vertices[f[2]] + box.vertices[f[3]]) / 4 / scale;
+      return c.z() == 0 && c.y() > 3 && c.y() < 5 && ((c.x() > 3 && c.x() < 5) || (c.x() > 6 && c.x() < 8));
+    });
+    EXPECT_EQ(holes.facets.size(), 12u * 8 + 2 * 20 * 5 - 8);
+    const BlockGrid g = patchGrids(holes, unit, 40).even;
+    ASSERT_FALSE(g.empty());
+    EXPECT_EQ(g.quads.size(), holes.facets.size());
+    EXPECT_EQ(conformalEuler(g), -1);  // a disc with two holes
+    expectEdgesBetween(g, shapeOf(g), scale, 0.99, 1.01);
+  }
 }
 
 // A hole of 2 x 2 cells in the box's floor: the floor is one grid with a pocket of four blocks round the hole (its
