@@ -1,6 +1,8 @@
 #include "pipeline/pipeline.hpp"
 
+#include <Bnd_Box.hxx>
 #include <Standard_Failure.hxx>
+#include <gp_Pnt.hxx>
 
 #include <chrono>
 #include <cmath>
@@ -501,15 +503,25 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   return t;
 }
 
-// The foot's nodes (no CAD face: the foot is none) on the CAD face nearest to each, so that those on the boundary
-// (the foot's edges) are grouped with the faces they lie on. [in,out] mesh; [in] cad; [in] foot: node ids.
+// The foot's nodes (no CAD face: the foot is none) on the CAD face nearest to each (the first of the nearest), so
+// that those on the boundary (the foot's edges) are grouped with the faces they lie on. A face whose box is farther
+// than the face nearest to its box is not measured (it cannot be nearer). [in,out] mesh; [in] cad; [in] foot: nodes.
 void placeFootNodes(HexMesh& mesh, const CadSolid& cad, const std::vector<int>& foot) {
   const CadFaces faces(cad);
   CadFaceProbe probe(faces);
+  std::vector<double> boxDistance(faces.count());
   for (int n : foot) {
+    const Vec3& p = mesh.nodes[n];
+    Bnd_Box at;
+    at.Add(gp_Pnt(p.x(), p.y(), p.z()));
+    for (int f = 0; f < faces.count(); ++f) boxDistance[f] = faces.face(f).box.Distance(at);
+    const int boxNearest =
+        static_cast<int>(std::min_element(boxDistance.begin(), boxDistance.end()) - boxDistance.begin());
+    const double bound = probe.distance(boxNearest, p);  // the nearest face is no farther
     double best = std::numeric_limits<double>::infinity();
     for (int f = 0; f < faces.count(); ++f)
-      if (const double d = probe.distance(f, mesh.nodes[n]); d < best) best = d, mesh.nodeFace[n] = f;
+      if (boxDistance[f] <= bound)
+        if (const double d = f == boxNearest ? bound : probe.distance(f, p); d < best) best = d, mesh.nodeFace[n] = f;
   }
 }
 
