@@ -552,10 +552,12 @@ SizeField creaseSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
 
 // The structured block grids of the chordal surface (block_grids.hpp): a grid with a pocket round each hole (where
 // the pockets would meet or reach the rim, the shared grid round all the holes), and if its rim has no four sharp
-// corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring).
-// [in] chordal; [in] square: its map onto the square; [in] o. Returns the tries.
-std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const SurfaceMap& square,
-                                     const QuadMeshOptions& o) {
+// corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring). Each is a disc with
+// the map's holes: none is made where that is not the topology the quads must have (a pinhole the quads close).
+// [in] chordal; [in] square: its map onto the square; [in] o; [in] chordalEuler. Returns the tries.
+std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const SurfaceMap& square, const QuadMeshOptions& o,
+                                     long chordalEuler) {
+  if (1 - static_cast<long>(square.holes.size()) != chordalEuler) return {};
   const SizeField size = targetSize(chordal, o);
   std::vector<QuadMesh> tries;
   if (BlockGrid holed = holedGrid(square, size); !holed.empty())
@@ -635,7 +637,7 @@ bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
   const SurfaceMap square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
-  std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o);
+  std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o, chordalEuler);
   PatchGrids patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle);
   const bool graded = !patch.graded.empty();
   addBlockGrid(blocks, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);

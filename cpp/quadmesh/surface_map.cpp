@@ -567,6 +567,7 @@ MapLocator::MapLocator(const SurfaceMap& map) : map_(map), triangles_(mapCell(ma
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for (int p : map.triangles[t]) lo = lo.cwiseMin(at(p)), hi = hi.cwiseMax(at(p));
     triangles_.insert(static_cast<int>(t), lo, hi);
+    box_.push_back({lo.head<2>(), hi.head<2>()});
   }
 }
 
@@ -581,7 +582,12 @@ MapLocator::Found MapLocator::find(const Eigen::Vector2d& uv) const {
     const auto& tri = map_.triangles[t];
     return (w[0] * at(tri[0]) + w[1] * at(tri[1]) + w[2] * at(tri[2]) - p).squaredNorm();
   };
-  const int t = triangles_.nearest(p, [&](int id, double) { return miss(id); });
+  // A triangle whose box lies farther than the nearest so far cannot be nearer (its point is in its box).
+  auto boxMiss = [&](int t) { return (uv - uv.cwiseMax(box_[t][0]).cwiseMin(box_[t][1])).squaredNorm(); };
+  const int t = triangles_.nearest(p, [&](int id, double best) {
+    const double outside = boxMiss(id);
+    return outside > best ? outside : miss(id);
+  });
   const Eigen::Vector3d w = weights(t);
   const auto& tri = map_.triangles[t];
   return {w[0] * map_.points[tri[0]] + w[1] * map_.points[tri[1]] + w[2] * map_.points[tri[2]], miss(t)};

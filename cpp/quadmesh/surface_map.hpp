@@ -95,7 +95,8 @@ class MapLocator {
   Found find(const Eigen::Vector2d& uv) const;
   Vec3 at(int point) const { return Vec3(map_.uv[point].x(), map_.uv[point].y(), 0); }
   const SurfaceMap& map_;
-  BoxGrid triangles_;  // by their bounding boxes in the plane
+  BoxGrid triangles_;                                // by their bounding boxes in the plane
+  std::vector<std::array<Eigen::Vector2d, 2>> box_;  // per triangle, its box's corners (lo, hi)
 };
 
 }  // namespace hexlayer
