@@ -129,6 +129,24 @@ hexlayer::MeshResult meshWithProgress(MeshCommand& c) {
   return result;
 }
 
+// Why the mesh's boundary has another Euler characteristic than the part's: each hole of a sheet filled raises it by
+// 2 (one narrower than about a quad or the wall: a bend relief; the quads' share: QuadMeshCounts::pinholesClosed),
+// each hole more lowers it by 2. [in] m: the mesh's measures; [in] quads: the quad stage's counts.
+std::string topologyMessage(const hexlayer::MeshMeasures& m, const hexlayer::QuadMeshCounts& quads) {
+  const long apart = m.boundary.eulerCharacteristic - m.cadEuler;
+  std::ostringstream msg;
+  msg << "the mesh boundary has Euler characteristic " << m.boundary.eulerCharacteristic << " but the part "
+      << m.cadEuler << ": ";
+  if (apart > 0 && apart % 2 == 0)
+    msg << "the mesh fills " << apart / 2 << " hole(s) of the part (narrower than about a quad or the wall: a bend "
+        << "relief where walls meet at a corner; the quads closed " << quads.pinholesClosed << " of them)";
+  else if (apart < 0 && apart % 2 == 0)
+    msg << "the mesh has " << -apart / 2 << " hole(s) the part does not have";
+  else
+    msg << "the mesh has a hole the part does not have, or fills one it has";
+  return msg.str();
+}
+
 int runMesh(MeshCommand& c) {
   hexlayer::MeshResult result = meshWithProgress(c);
   if (!c.result.empty()) hexlayer::writeResult(c.result, result);
@@ -146,9 +164,7 @@ int runMesh(MeshCommand& c) {
   for (const hexlayer::ValidationFailure& f : m.failures)  // only with --force: else meshFile threw
     std::cerr << "hexlayer: warning: validation failed (written because of --force): " << f.message << std::endl;
   if (!m.sameTopologyAsCad())
-    std::cerr << "hexlayer: warning: the mesh boundary has Euler characteristic " << m.boundary.eulerCharacteristic
-              << " but the part " << m.cadEuler << ": the mesh has a hole the part does not have, or fills one it has"
-              << std::endl;
+    std::cerr << "hexlayer: warning: " << topologyMessage(m, result.report.quadMesh) << std::endl;
   return 0;
 }
 

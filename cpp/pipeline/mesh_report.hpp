@@ -67,6 +67,7 @@ struct QuadMeshCounts {
   std::size_t pairedTriangles = 0, splitTriangles = 0, holes = 0;
   int doubletsRemoved = 0;
   std::size_t structuredPatches = 0;
+  long pinholesClosed = 0;   // the chordal surface's rim loops the quads close (holesClosed)
   std::string layout;        // layoutName
   QuadTries tries;           // the Gmsh tries of every fairing level ("gmsh_tries")
   double budgetSeconds = 0;  // the quad stage's time budget ("time_budget_s", QuadStage::budgetSeconds)

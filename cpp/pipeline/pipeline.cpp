@@ -541,6 +541,7 @@ void reportPieces(MeshReport& r, JunctionPieces& t, const CadSolid& cad, const W
     const MeshReport& p = t.reports[w];
     r.bubbles += p.bubbles, r.tetsKept += p.tetsKept;
     r.quadMesh.quads += p.quadMesh.quads, r.quadMesh.nodes += p.quadMesh.nodes;
+    r.quadMesh.pinholesClosed += p.quadMesh.pinholesClosed;
   }
   r.stages = std::move(stages), r.facesSplit = facesSplit, r.thickness = sides.thickness, r.faces = countFaces(sides);
   r.smallFeatures = findSmallFeatures(cad, sides, r.size);  // the part's faces, not the pieces' (a foot is none)
@@ -769,6 +770,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   r.chordal.sliverEdges = stage.sliverEdges;
   r.quadMesh = countQuadMesh(quads);
   r.quadMesh.budgetSeconds = stage.budgetSeconds;
+  r.quadMesh.pinholesClosed = holesClosed(quads, stage.chordal);
   const ChordalLocator locator(stage.chordal);
   SweepResult swept = clock.run("sweep", [&] { return sweepToWalls(quads, locator, cad, sides, o.layers); });
   result.mesh = std::move(swept.mesh);

@@ -54,6 +54,7 @@ nlohmann::json quadMesh(const QuadMeshCounts& q) {
           {"unpaired_triangles", q.holes},
           {"doublets_removed", q.doubletsRemoved},
           {"structured_patches", q.structuredPatches},
+          {"pinholes_closed", q.pinholesClosed},
           {"layout", q.layout},
           {"gmsh_tries",
            {{"run", q.tries.run},

@@ -747,6 +747,10 @@ QuadTries gmshTries(const ChordalLocator& chordal, const QuadMeshOptions& o, lon
 
 }  // namespace
 
+long holesClosed(const QuadMesh& quads, const ChordalSurface& chordal) {
+  return eulerCharacteristic(quads, quadEdgeUses(quads)) - eulerCharacteristic(chordal);
+}
+
 std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
   std::unordered_map<std::uint64_t, int> use;
   for (const auto& quad : q.quads)

@@ -117,6 +117,11 @@ double gmshTryBudget(double quads);
 // For every node, the nodes it shares a rim edge with (an edge of a single quad); empty inside.
 std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& quads);
 
+// How many of the chordal surface's rim loops the quads close: their Euler characteristic less the surface's (a
+// pinhole, a loop shorter than the smallest quad: a bend relief where sheets meet at a corner). [in] quads; [in]
+// chordal: the surface they mesh.
+long holesClosed(const QuadMesh& quads, const ChordalSurface& chordal);
+
 // Meshes the chordal surface with quads only, doublets removed and smoothed. Holes and the outer
 // rim are the boundary curves of the discrete surface, so they are kept. Of the tries (one per
 // patch split) whose nodes all lie on the chordal surface, the best (QuadMeshOptions) is kept.

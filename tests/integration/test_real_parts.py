@@ -55,6 +55,7 @@ class RealParts(unittest.TestCase):
                                    str(layers), "--report", report, "--quiet", *extra],
                                   capture_output=True, text=True, timeout=600)
             self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+            self.stderr = done.stderr
             with open(report) as f:
                 r = json.load(f)
             for failure in r["validation"]["failures"]:  # --force writes the mesh and warns of each failure
@@ -201,6 +202,11 @@ class RealParts(unittest.TestCase):
                 cad_euler = surface_euler_characteristic(real_part(name), EULER_TRIANGLE_SIZE)
                 self.assertEqual(euler, cad_euler + 2 * tunnels_closed)
                 self.assertEqual(r["boundary"]["euler_characteristic"], euler, "the report agrees")
+                # the bend reliefs: one closed by the quads (a rim loop narrower than a quad), one already by the
+                # chordal surface; the CLI says how many the mesh fills
+                self.assertEqual(r["quad_mesh"]["pinholes_closed"], min(tunnels_closed, 1))
+                if tunnels_closed:
+                    self.assertIn(f"the mesh fills {tunnels_closed} hole(s) of the part", self.stderr)
                 self.assertEqual(r["quad_mesh"]["unpaired_triangles"], 0)
                 tries = r["quad_mesh"]["gmsh_tries"]
                 self.assertGreaterEqual(tries["same_patches_not_run"] + tries["given_up_on_faired_surfaces"], not_run)
