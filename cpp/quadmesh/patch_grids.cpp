@@ -309,8 +309,8 @@ bool squareCorners(const std::vector<Curve>& curves, const std::vector<std::vect
 }
 
 // A loop of curves cut into four sides at its corners: a loop of four curves at their ends; a longer loop where its
-// curves turn into one another by kSideTurn or more, the others going on flat along a side. [in] loop, paths, size.
-// Nothing if that does not give four corners.
+// curves turn into one another by kSideTurn or more, or where a rounded corner was cut (Curve::cornerWindow), the
+// others going on flat along a side. [in] loop, curves, paths, size. Nothing if that does not give four corners.
 std::optional<std::array<Side, 4>> sidesOf(const Side& loop, const std::vector<Curve>& curves,
                                            const std::vector<std::vector<Vec3>>& paths, const SizeField& size) {
   std::vector<std::size_t> corners;  // the loop's pieces that start a side (a rounded corner's cut does)
