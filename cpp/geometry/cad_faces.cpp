@@ -170,19 +170,22 @@ std::optional<double> CadFaceProbe::faceDistance(int face, const gp_Pnt& p) {
   if (s.adaptor.GetType() == GeomAbs_OtherSurface) return std::nullopt;
   s.extrema.Perform(p);
   if (!s.extrema.IsDone()) return std::nullopt;
-  std::vector<std::pair<double, TopAbs_State>> onFace;  // square distance, state
-  for (int i = 1; i <= s.extrema.NbExt(); ++i) {
+  // The extrema nearest first: those farther than kEps beyond the nearest on the face need no classifying.
+  std::vector<std::pair<double, int>> byDistance;  // square distance, extremum
+  for (int i = 1; i <= s.extrema.NbExt(); ++i) byDistance.emplace_back(s.extrema.SquareDistance(i), i);
+  std::sort(byDistance.begin(), byDistance.end());
+  std::optional<double> nearest;  // of the extrema on the face (IN or ON)
+  bool inside = false;            // one within kEps of it is IN
+  for (const auto& [square, i] : byDistance) {
+    if (nearest && !(std::sqrt(square) - *nearest < kEps)) break;
     double u = 0, v = 0;
     s.extrema.Point(i).Parameter(u, v);
     const TopAbs_State state = classify(face, u, v);
-    if (state == TopAbs_IN || state == TopAbs_ON) onFace.emplace_back(s.extrema.SquareDistance(i), state);
+    if (state != TopAbs_IN && state != TopAbs_ON) continue;
+    if (!nearest) nearest = std::sqrt(square);
+    inside |= state == TopAbs_IN;
   }
-  if (onFace.empty()) return std::nullopt;
-  double nearest = onFace[0].first;
-  for (const auto& e : onFace) nearest = std::min(nearest, e.first);
-  nearest = std::sqrt(nearest);
-  for (const auto& [square, state] : onFace)
-    if (std::fabs(nearest - std::sqrt(square)) < kEps && state == TopAbs_IN) return nearest;
+  if (nearest && inside) return nearest;
   return std::nullopt;
 }
 
