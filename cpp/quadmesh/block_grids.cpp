@@ -793,6 +793,11 @@ BlockGrid gridWithPockets(const SurfaceMap& map, const MapLocator& locate, const
   return grid;
 }
 
+// Whether a given rim has its cells (at least one along each side) and a point per cell round them.
+bool fitsItsCells(const SquareRim& rim) {
+  return rim.n0 >= 1 && rim.n1 >= 1 && static_cast<int>(rim.points.size()) == 2 * (rim.n0 + rim.n1);
+}
+
 // The grid's nodes renumbered: `first` in their order, then the others in theirs. [in,out] grid; [in] first.
 void numberFirst(BlockGrid& grid, const std::vector<int>& first) {
   std::vector<int> index(grid.nodes.size(), -1);
@@ -836,9 +841,7 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size) {
 
 BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size, const SquareRim& rim) {
   const Box all{0, 0, rim.n0, rim.n1};
-  if (map.empty() || map.boundary != MapBoundary::Square || rim.n0 < 1 || rim.n1 < 1 ||
-      static_cast<int>(rim.points.size()) != all.around())
-    return {};
+  if (map.empty() || map.boundary != MapBoundary::Square || !fitsItsCells(rim)) return {};
   const GridLines lines = rimLines(all, rim.points);
   BlockGrid grid = gridWithPockets(map, MapLocator(map), lines, true, size);
   if (grid.empty()) return {};
@@ -857,7 +860,8 @@ namespace {
 
 // sharedGrid, its rim's nodes given or not (rim: nothing).
 BlockGrid sharedGridOn(const SurfaceMap& map, const SizeField& size, const SquareRim* rim) {
-  if (map.empty() || map.boundary != MapBoundary::Square || map.holes.empty()) return {};
+  if (map.empty() || map.boundary != MapBoundary::Square || map.holes.empty() || (rim && !fitsItsCells(*rim)))
+    return {};
   const MapLocator locate(map);
   const std::array<AxisMeasure, 2> measure{AxisMeasure(locate, 0, size), AxisMeasure(locate, 1, size)};
   std::array<std::vector<Station>, 2> stations;
@@ -865,7 +869,6 @@ BlockGrid sharedGridOn(const SurfaceMap& map, const SizeField& size, const Squar
   if (!separatePockets(holes)) return {};
   addPocketStations(holes, stations, {measure[0].total(), measure[1].total()});
   const Box all{0, 0, rim ? rim->n0 : 0, rim ? rim->n1 : 0};
-  if (rim && (all.n0 < 1 || all.n1 < 1 || static_cast<int>(rim->points.size()) != all.around())) return {};
   const GridLines given = rim ? rimLines(all, rim->points) : GridLines{};
   std::array<AxisLines, 2> axis;
   for (int a = 0; a < 2; ++a) {

@@ -629,8 +629,8 @@ std::size_t addFaceQuads(const BlockGrid& local, const std::vector<int>& rimNode
 // A face with holes: its triangles mapped onto the square at its four corners (mapOntoSquare), holedGrid's pocket of
 // four blocks round each hole, its rim nodes its sides' (where they lie along the sides, placed on the square's
 // sides as the map places the rim). [in] face, made: the curves' nodes; [in] facets: the face's triangles; [in] x,
-// size, normal; [in,out] grid. Returns the quads folded against the face (addPatchGrid's), nothing if holedGrid
-// gives none (a pocket reaches past the rim or meets another).
+// size, normal; [in,out] grid. Returns the quads folded against the face (addPatchGrid's), nothing if neither
+// holedGrid nor, where the pockets meet, sharedGrid gives a grid.
 std::optional<std::size_t> addHoledFace(const Face& face, const std::vector<Curve>& curves, const CurveNodes& made,
                                         const std::vector<std::array<int, 3>>& facets, const std::vector<Vec3>& x,
                                         const SizeField& size, const Vec3& normal, BlockGrid& grid) {
@@ -666,9 +666,7 @@ std::optional<std::size_t> addHoledFace(const Face& face, const std::vector<Curv
     }
     // a pinhole (shorter than a quad's edge: a bend relief where sheets meet at a corner) the quads close, as they
     // do elsewhere (the quad mesh's Euler characteristic is the chordal surface's with its pinholes closed)
-    const int c = static_cast<int>(points.size());
-    points.push_back(centre);
-    for (std::size_t i = 0; i < loop.size(); ++i) triangles.push_back({loop[i], loop[(i + 1) % loop.size()], c});
+    closeByFan(points, triangles, loop, false);
   }
   const SurfaceMap map = mapOntoSquare(points, triangles, rim, corners, holes);
   if (map.empty()) return std::nullopt;

@@ -313,16 +313,14 @@ QuadMesh collectQuads() {
   // patches meet at a rounded corner (a slit in the quads, another topology).
   std::map<std::array<double, 3>, int> at;
   auto node = [&](std::size_t tag) {
-    const auto [it, added] = index.emplace(tag, static_cast<int>(q.nodes.size()));
+    const auto [it, added] = index.emplace(tag, -1);
     if (added) {
       const auto p = position.find(tag);
       if (p == position.end()) throw internalError("Gmsh gave no coordinates for node " + std::to_string(tag));
       const auto [same, isNew] = at.emplace(std::array<double, 3>{p->second.x(), p->second.y(), p->second.z()},
                                             static_cast<int>(q.nodes.size()));
-      if (isNew)
-        q.nodes.push_back(p->second);
-      else
-        it->second = same->second;
+      if (isNew) q.nodes.push_back(p->second);
+      it->second = same->second;
     }
     return it->second;
   };

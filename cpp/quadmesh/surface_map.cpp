@@ -220,18 +220,28 @@ bool solveInside(const Eigen::SparseMatrix<double>& a, std::vector<Eigen::Vector
   return true;
 }
 
+}  // namespace
+
+void closeByFan(std::vector<Vec3>& points, std::vector<std::array<int, 3>>& triangles, const std::vector<int>& loop,
+                bool reverse) {
+  Vec3 centre = Vec3::Zero();
+  for (int p : loop) centre += points[p] / loop.size();
+  const int c = static_cast<int>(points.size());
+  points.push_back(centre);
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const int a = loop[i], b = loop[(i + 1) % loop.size()];
+    triangles.push_back(reverse ? std::array<int, 3>{b, a, c} : std::array<int, 3>{a, b, c});
+  }
+}
+
+namespace {
+
 // The map's holes filled, each by a fan of triangles round its centroid, the outer rim (map.rim from its corner 0)
 // placed on the boundary by arc length between its corners, the points inside by the mean value weights; the holes
 // then walked counter-clockwise in the plane. [in,out] map: points, triangles, rim, corners, boundary set; uv, holes
 // and the fans added. [in] holes: the rim loops of the holes, either way round. False if the solve fails.
 bool placeInPlane(SurfaceMap& map, const std::vector<std::vector<int>>& holes) {
-  for (const std::vector<int>& hole : holes) {
-    Vec3 centre = Vec3::Zero();
-    for (int p : hole) centre += map.points[p] / hole.size();
-    const int c = static_cast<int>(map.points.size());
-    map.points.push_back(centre);
-    for (std::size_t i = 0; i < hole.size(); ++i) map.triangles.push_back({hole[(i + 1) % hole.size()], hole[i], c});
-  }
+  for (const std::vector<int>& hole : holes) closeByFan(map.points, map.triangles, hole, true);
   const std::vector<int>& outer = map.rim;
   const std::vector<double> length = arcLength(outer, map.points);
   map.uv.assign(map.points.size(), Eigen::Vector2d::Zero());

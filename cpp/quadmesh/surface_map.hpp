@@ -56,6 +56,12 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary 
 SurfaceMap mapOntoSquare(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles, std::vector<int> rim,
                          const std::array<int, 4>& corners, const std::vector<std::vector<int>>& holes);
 
+// A loop of points closed by a fan of triangles round its centroid (a hole filled for the map, a pinhole the quads
+// close). [in,out] points: the centroid added; [in,out] triangles: the fan added, each turning as the loop runs
+// (reverse: against it); [in] loop: indices into points.
+void closeByFan(std::vector<Vec3>& points, std::vector<std::array<int, 3>>& triangles, const std::vector<int>& loop,
+                bool reverse);
+
 // The triangles unfolded onto the plane by the least-squares conformal map (LSCM, Lévy, Petitjean, Ray and Maillot
 // 2002, Eq. 5): the boundary free, every triangle's angles kept as far as the surface allows (a strip across a bend,
 // a piece of a cylinder unfold exactly), two points pinned, then scaled to the triangles' area. [in] points;
