@@ -610,6 +610,68 @@ def box_diagonal_holes():
     return volume, dict(dims=box_dims(0.0, "; two holes D6 through the floor at (25, 16) and (31, 22)"), wall="2")
 
 
+def vertical_curves(vol):
+    """Edges of `vol` parallel to z (bounding boxes are padded by the tolerance: compare with 1e-3)."""
+    out = []
+    for c in solid_curves(vol):
+        xmin, ymin, _, xmax, ymax, _ = gmsh.model.getBoundingBox(1, c)
+        if xmax - xmin < 1e-3 and ymax - ymin < 1e-3:
+            out.append(c)
+    return out
+
+
+def chamfer_curves(vol, curves, d):
+    """`vol` with the given edges chamfered d x d (45 degrees), each measured on a face next to it."""
+    occ.synchronize()
+    faces = [gmsh.model.getAdjacencies(1, c)[0][0] for c in curves]
+    return one_volume(occ.chamfer([vol], curves, faces, [d] * len(curves)))
+
+
+def box_chamfered():
+    """box_sharp with its 4 vertical and 4 bottom outside edges chamfered 1.5 x 1.5 (45 degrees; a triangle where
+    three meet at a bottom corner), every inside edge sharp: the chamfers are the outsides of bends (bend_rounds.hpp).
+    The outer box loses c^2 / 2 along each chamfered edge, less 8 c^3 / 3 over the four bottom corners (the prisms'
+    overlaps and the corner triangle's tetrahedron)."""
+    L, W, H, t = SHARP_BOX
+    c = 1.5
+    outer = occ.addBox(0, 0, 0, L, W, H)
+    outer = chamfer_curves(outer, vertical_curves(outer) + horizontal_curves(outer, 0.0), c)
+    inner = occ.addBox(t, t, t, L - 2 * t, W - 2 * t, H)
+    one_volume(occ.cut([(3, outer)], [(3, inner)])[0])
+    volume = L * W * H - (c * c / 2 * (2 * L + 2 * W + 4 * H) - 8 * c ** 3 / 3) - (L - 2 * t) * (W - 2 * t) * (H - t)
+    return volume, dict(dims=box_dims(0.0).replace("outside edges sharp", "outside vertical and bottom edges "
+                                                   "chamfered 1.5 × 1.5 (45°)"), wall="2")
+
+
+def rounded_rectangle_area(a, b, r):
+    return a * b - (4 - PI) * r * r
+
+
+def tray_chamfered():
+    """A molded cover's edge (the Framework top cover's, simplified): a tray 80 x 50 x 8, floor 2 (z 0..2), walls 3
+    thick, vertical corners rounded R6 outside (R3 inside); the floor's outside edge chamfered 3 x 3 (45 degrees: a
+    cone round each corner), its inside edge chamfered 1 x 1. Volume: the rounded prisms less each chamfer's triangle
+    swept along the straight edges and, by Pappus, round the corners (its centroid c / 3 in from the edge)."""
+    L, W, H, floor, wall, R, c_out, c_in = 80.0, 50.0, 8.0, 2.0, 3.0, 6.0, 3.0, 1.0
+    outer = occ.addBox(0, 0, 0, L, W, H)
+    outer = one_volume(occ.fillet([outer], vertical_curves(outer), [R]))
+    outer = chamfer_curves(outer, horizontal_curves(outer, 0.0), c_out)
+    inner = occ.addBox(wall, wall, floor, L - 2 * wall, W - 2 * wall, H)
+    inner = one_volume(occ.fillet([inner], vertical_curves(inner), [R - wall]))
+    inner = chamfer_curves(inner, horizontal_curves(inner, floor), c_in)
+    one_volume(occ.cut([(3, outer)], [(3, inner)])[0])
+    straight = 2 * (L - 2 * R) + 2 * (W - 2 * R)
+
+    def chamfer(c, r):
+        return c * c / 2 * (straight + 2 * PI * (r - c / 3))
+
+    volume = (rounded_rectangle_area(L, W, R) * H - chamfer(c_out, R)
+              - (rounded_rectangle_area(L - 2 * wall, W - 2 * wall, R - wall) * (H - floor) - chamfer(c_in, R - wall)))
+    return volume, dict(dims="tray 80 × 50 × 8, floor 2, walls 3, vertical corners R6 outside (R3 inside), the floor's "
+                             "outside edge chamfered 3 × 3 (45°), its inside edge 1 × 1, top open (a flat rim)",
+                        wall="2 (floor), 3 (walls)", max_bytes=128 * 1024)
+
+
 # Written to OUTPUT_DIR after the rim and junction parts (their STEP files stay byte-identical: OpenCASCADE
 # numbers the PRODUCT name by the count of files written in the session) and listed in its README.
 BENT_BOX_PARTS = [
@@ -623,6 +685,8 @@ BENT_BOX_PARTS = [
     ("box_l_shape", box_l_shape),
     ("box_close_holes", box_close_holes),
     ("box_diagonal_holes", box_diagonal_holes),
+    ("box_chamfered", box_chamfered),
+    ("tray_chamfered", tray_chamfered),
 ]
 
 # ---------------------------------------------------------------------------

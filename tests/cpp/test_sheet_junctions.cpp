@@ -7,6 +7,7 @@
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -88,25 +89,33 @@ TEST(SheetJunctions, RibOnAPlateIsASecondSheet) {
 
 namespace {
 
-// The shape with the edges whose bounding box's z range (z0, z1) `which` takes rounded r.
-template <class Which>
-TopoDS_Shape rounded(const TopoDS_Shape& shape, double r, Which which) {
-  BRepFilletAPI_MakeFillet fillet(shape);
+// The shape with the edges whose bounding box's z range (z0, z1) `which` takes rounded r (BRepFilletAPI_MakeFillet)
+// or chamfered r x r (BRepFilletAPI_MakeChamfer).
+template <class Maker, class Which>
+TopoDS_Shape cutEdges(const TopoDS_Shape& shape, double r, Which which) {
+  Maker maker(shape);
   for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) {
     Bnd_Box b;
     BRepBndLib::Add(e.Current(), b);
     double x0, y0, z0, x1, y1, z1;
     b.Get(x0, y0, z0, x1, y1, z1);
-    if (which(z0, z1)) fillet.Add(r, TopoDS::Edge(e.Current()));
+    if (which(z0, z1)) maker.Add(r, TopoDS::Edge(e.Current()));
   }
-  return fillet.Shape();
+  return maker.Shape();
+}
+
+template <class Which>
+TopoDS_Shape rounded(const TopoDS_Shape& shape, double r, Which which) {
+  return cutEdges<BRepFilletAPI_MakeFillet>(shape, r, which);
 }
 
 // The open box 60 x 40 x 20 (wall 2, open at z = 20) with sharp inside edges and corners, its vertical and bottom
-// outside edges rounded r (0: sharp), scaled by `scale`.
-CadSolid sharpInsideBox(double r, double scale = 1) {
+// outside edges rounded r (0: sharp), or chamfered r x r if `chamfer`, scaled by `scale`.
+CadSolid sharpInsideBox(double r, double scale = 1, bool chamfer = false) {
   TopoDS_Shape outer = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60, 40, 20).Shape();
-  if (r > 0) outer = rounded(outer, r, [](double z0, double z1) { return z1 - z0 > 1 || z1 < 1; });  // vertical, bottom
+  auto verticalOrBottom = [](double z0, double z1) { return z1 - z0 > 1 || z1 < 1; };
+  if (r > 0 && chamfer) outer = cutEdges<BRepFilletAPI_MakeChamfer>(outer, r, verticalOrBottom);
+  if (r > 0 && !chamfer) outer = rounded(outer, r, verticalOrBottom);
   const TopoDS_Shape inner = BRepPrimAPI_MakeBox(gp_Pnt(2, 2, 2), 56, 36, 20).Shape();
   gp_Trsf scaling;
   scaling.SetScale(gp_Pnt(0, 0, 0), scale);
@@ -137,6 +146,24 @@ TEST(SheetJunctions, OpenBoxWithSharpInsideEdgesAndSmallOutsideRoundsIsOneSheet)
     const std::vector<Sheet> sheets = findSheets(cad, sides);
     ASSERT_EQ(sheets.size(), 1u);
     EXPECT_EQ(sheets[0].faces.size(), 22u);
+  }
+}
+
+// The outside edges chamfered (1.5 and 2 x 2 on a wall of 2, in mm and in metres): each chamfer meets two walls in
+// convex sharp edges and its rays land on the bend's inside edge, so the 4 vertical and 4 bottom chamfers are walls
+// (bend_rounds.hpp) and the box one sheet; the triangles where three chamfers meet at a bottom corner, narrower than a
+// quarter of the wall, stay lateral, as the flat rim at the top does.
+TEST(SheetJunctions, OpenBoxWithSharpInsideEdgesAndChamferedOutsideIsOneSheet) {
+  for (const auto& [c, scale] : {std::pair{1.5, 1.0}, {2.0, 1.0}, {1.5, 1e-3}}) {
+    SCOPED_TRACE("chamfer " + std::to_string(c) + ", scale " + std::to_string(scale));
+    const CadSolid cad = sharpInsideBox(c, scale, true);
+    ASSERT_EQ(cad.faces.Extent(), 23);
+    const WallSides sides = classifyWallSides(cad);
+    EXPECT_EQ(sides.bendRounds.size(), 8u);
+    EXPECT_EQ(walls(sides), 18);
+    const std::vector<Sheet> sheets = findSheets(cad, sides);
+    ASSERT_EQ(sheets.size(), 1u);
+    EXPECT_EQ(sheets[0].faces.size(), 18u);
   }
 }
 
