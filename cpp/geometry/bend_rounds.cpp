@@ -127,7 +127,7 @@ std::vector<int> findBendRounds(const CadSolid& cad, const WallSides& w,
   if (!candidates) return {};
   std::set<std::pair<int, int>> concave;
   std::vector<std::set<int>> concaveNext(n);
-  for (const ConcaveEdge& e : concaveEdges(cad))
+  for (const FacePairEdge& e : concaveEdges(cad))
     concave.insert({e.a, e.b}), concaveNext[e.a].insert(e.b), concaveNext[e.b].insert(e.a);
   const BendInside inside{concave, concaveNext, w};
   for (int f = 0; f < n; ++f) round[f] = candidate(f) && joinsBend(w, f, joined[f], wall, across, inside);

@@ -70,9 +70,9 @@ bool runsOnPast(const CadSolid& cad, int edge, int c, int b, double thickness) {
 }  // namespace
 
 std::vector<ButtJoint> findButtJoints(const CadSolid& cad, const WallSides& sides) {
-  const std::vector<ConcaveEdge> concave = concaveEdges(cad);
+  const std::vector<FacePairEdge> concave = concaveEdges(cad);
   std::set<std::pair<int, int>> inside;  // face pairs sharing a sharp inside edge, both ways
-  for (const ConcaveEdge& c : concave) inside.emplace(c.a, c.b), inside.emplace(c.b, c.a);
+  for (const FacePairEdge& c : concave) inside.emplace(c.a, c.b), inside.emplace(c.b, c.a);
   const std::vector<int> sheet = wallSheetOfFaces(findSheets(cad, sides), sides.faces.size());
   const std::vector<std::set<int>> beside = faceNeighbours(cad);
   const double tolerance = kPlanar * cad.diagonal;
@@ -87,7 +87,7 @@ std::vector<ButtJoint> findButtJoints(const CadSolid& cad, const WallSides& side
                        [&](const std::pair<int, int>& ab) { return onPlaneOf(ab.second, b); });
   };
   std::set<int> walls;  // A: a rim face C beside it meets B of its sheet in an inside edge, and A meets B in one too
-  for (const ConcaveEdge& e : concave)
+  for (const FacePairEdge& e : concave)
     for (const auto& [c, b] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}})
       if (sheet[c] < 0 && sheet[b] >= 0 && runsOnPast(cad, e.edge, c, b, sides.thickness))
         for (int a : beside[c])

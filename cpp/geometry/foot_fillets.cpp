@@ -77,8 +77,8 @@ std::optional<double> chamferWidth(const CadSolid& cad, const WallSides& sides,
 
 // Whether sheet s meets a wall of an earlier sheet in a concave edge (the edge of a foot). [in] sheetOf: per face,
 // its sheet or -1.
-bool standsOnEdges(const std::vector<ConcaveEdge>& concave, const std::vector<int>& sheetOf, int s) {
-  return std::any_of(concave.begin(), concave.end(), [&](const ConcaveEdge& c) {
+bool standsOnEdges(const std::vector<FacePairEdge>& concave, const std::vector<int>& sheetOf, int s) {
+  return std::any_of(concave.begin(), concave.end(), [&](const FacePairEdge& c) {
     const int a = sheetOf[c.a], b = sheetOf[c.b];
     return (a == s && b >= 0 && b < s) || (b == s && a >= 0 && a < s);
   });
@@ -158,9 +158,9 @@ std::optional<CadSolid> withoutFaces(const CadSolid& cad, const std::set<int>& f
 std::optional<FootFillets> removeFootFillets(const CadSolid& cad, const WallSides& sides,
                                              const std::vector<Sheet>& sheets) {
   FilletSearch search{cad, wallSheetOfFaces(sheets, cad.faces.Extent()), faceNeighbours(cad), {}, sides.thickness};
-  const std::vector<ConcaveEdge> concave = concaveEdges(cad);
+  const std::vector<FacePairEdge> concave = concaveEdges(cad);
   std::set<std::pair<int, int>> concavePairs;
-  for (const ConcaveEdge& c : concave) concavePairs.insert(std::minmax(c.a, c.b));
+  for (const FacePairEdge& c : concave) concavePairs.insert(std::minmax(c.a, c.b));
   for (int f = 1; f <= cad.faces.Extent(); ++f) {  // a fillet's radius, or a chamfer's width
     std::optional<double> size = filletRadius(cad.faces(f));
     if (!size) size = chamferWidth(cad, sides, concavePairs, f - 1, search.next[f - 1]);
@@ -188,7 +188,7 @@ std::optional<FootFillets> removeRootFillets(const CadSolid& cad, const WallSide
   for (const SheetJoin& j : sides.sheetJoins)
     if (j.smooth) smoothly[j.a].insert(j.b), smoothly[j.b].insert(j.a);
   std::vector<char> concave(radius.size(), 0);  // meets a face in a concave sharp edge (a bore at a plate's top)
-  for (const ConcaveEdge& c : concaveEdges(cad)) concave[c.a] = concave[c.b] = 1;
+  for (const FacePairEdge& c : concaveEdges(cad)) concave[c.a] = concave[c.b] = 1;
   std::set<int> fillets;  // rounding a corner between two faces it meets tangentially, no sharp concave edge
   double largest = 0;
   for (std::size_t f = 0; f < radius.size(); ++f) {

@@ -91,7 +91,7 @@ struct Junctions {
   const WallSides& sides;
   const std::vector<Sheet>& sheets;
   std::vector<int> sheetOf;                             // sheetOfFaces
-  std::vector<ConcaveEdge> concave;                     // concaveEdges
+  std::vector<FacePairEdge> concave;                    // concaveEdges
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;  // facesOfEdges
 };
 
@@ -136,7 +136,7 @@ std::vector<TopoDS_Edge> flushFootEdges(const Junctions& j, int s, int base) {
 // a partition's on a wall), so that the sheets stand on each other in a tree.
 std::map<int, std::vector<TopoDS_Edge>> footEdges(const Junctions& j, int s) {
   std::map<int, std::vector<TopoDS_Edge>> edges;
-  for (const ConcaveEdge& c : j.concave)
+  for (const FacePairEdge& c : j.concave)
     for (const auto& [base, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
       if (j.sheetOf[base] >= 0 && j.sheetOf[base] < s && j.sides.faces[base].side != Side::Lateral &&
           j.sheetOf[other] == s)
@@ -366,7 +366,7 @@ std::optional<TopoDS_Face> faceOn(const SurfaceEdges& on, const TopoDS_Wire& wir
 
 // Whether sheet s meets rim (lateral) faces in concave edges (a post standing on the edge of a wall) but no wall.
 bool standsOnRimFace(const Junctions& j, int s) {
-  return std::any_of(j.concave.begin(), j.concave.end(), [&](const ConcaveEdge& c) {
+  return std::any_of(j.concave.begin(), j.concave.end(), [&](const FacePairEdge& c) {
     const bool aIn = std::count(j.sheets[s].faces.begin(), j.sheets[s].faces.end(), c.a) > 0;
     const bool bIn = std::count(j.sheets[s].faces.begin(), j.sheets[s].faces.end(), c.b) > 0;
     const int other = aIn ? c.b : c.a;
@@ -487,11 +487,11 @@ bool bothWallsOn(const std::map<std::pair<int, int>, std::vector<Vec3>>& normals
 // The sheets reordered so that each standing sheet comes after the standing sheets it stands on (bothWallsOn one
 // way only), else in the order given: the first sheet stays first. [in] cad, sides; [in] concave: concaveEdges(cad);
 // [in] sheets: by decreasing area.
-std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, const std::vector<ConcaveEdge>& concave,
+std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, const std::vector<FacePairEdge>& concave,
                                  std::vector<Sheet> sheets) {
   const std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets);
   std::map<std::pair<int, int>, std::vector<Vec3>> normals;  // (own sheet, other sheet) -> own walls' normals there
-  for (const ConcaveEdge& c : concave)
+  for (const FacePairEdge& c : concave)
     for (const auto& [own, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
       if (sheetOf[own] > 0 && sheetOf[other] > 0 && sheetOf[own] != sheetOf[other] &&
           sides.faces[own].side != Side::Lateral && sides.faces[other].side != Side::Lateral)
@@ -522,8 +522,8 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
   const int n = static_cast<int>(sheets.size());
   const std::vector<int> faceSheet = sheetOfFaces(cad, sides, sheets);
   std::vector<std::set<int>> meets(n);  // the standing sheets each meets in a concave edge
-  const std::vector<ConcaveEdge> concave = concaveEdges(cad);
-  for (const ConcaveEdge& c : concave)
+  const std::vector<FacePairEdge> concave = concaveEdges(cad);
+  for (const FacePairEdge& c : concave)
     if (const int a = faceSheet[c.a], b = faceSheet[c.b]; a > 0 && b > 0 && a != b)
       meets[a].insert(b), meets[b].insert(a);
   std::vector<std::vector<std::pair<Vec3, double>>> planes(n);

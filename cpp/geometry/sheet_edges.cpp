@@ -52,12 +52,20 @@ std::vector<SheetJoin> sheetJoins(const CadSolid& cad) {
   return joins;
 }
 
-std::vector<ConcaveEdge> concaveEdges(const CadSolid& cad) {
-  std::vector<ConcaveEdge> concave;
+std::vector<FacePairEdge> concaveEdges(const CadSolid& cad) {
+  std::vector<FacePairEdge> concave;
   forEachFacePairEdge(cad, [&](int edge, int a, int b, auto has) {
     if (has(ChFiDS_Concave)) concave.push_back({edge, a, b});
   });
   return concave;
+}
+
+std::vector<FacePairEdge> sharpEdges(const CadSolid& cad) {
+  std::vector<FacePairEdge> sharp;
+  forEachFacePairEdge(cad, [&](int edge, int a, int b, auto has) {
+    if (has(ChFiDS_Concave) || has(ChFiDS_Convex)) sharp.push_back({edge, a, b});
+  });
+  return sharp;
 }
 
 std::vector<std::set<int>> faceNeighbours(const CadSolid& cad) {

@@ -18,14 +18,17 @@ struct SheetJoin {
 // [in] cad: the solid. Returns the pairs of distinct faces sharing an edge that is smooth or convex.
 std::vector<SheetJoin> sheetJoins(const CadSolid& cad);
 
-// An edge along which a rib, boss or flange may stand on a sheet: concave and sharp.
-struct ConcaveEdge {
+// A CAD edge between two faces (concave and sharp: where a rib, boss or flange may stand on a sheet).
+struct FacePairEdge {
   int edge = -1;       // 0-based in CadSolid::edges
   int a = -1, b = -1;  // its two distinct faces, 0-based, a < b
 };
 
 // [in] cad: the solid. Returns its concave sharp edges between two distinct faces.
-std::vector<ConcaveEdge> concaveEdges(const CadSolid& cad);
+std::vector<FacePairEdge> concaveEdges(const CadSolid& cad);
+
+// [in] cad: the solid. Returns its sharp edges, concave or convex, between two distinct faces.
+std::vector<FacePairEdge> sharpEdges(const CadSolid& cad);
 
 // [in] cad: the solid. Per face (0-based), the faces it shares an edge with.
 std::vector<std::set<int>> faceNeighbours(const CadSolid& cad);

@@ -20,6 +20,7 @@
 #include "sweep/quadratic.hpp"
 #include "sweep/rim_cap.hpp"
 #include "sweep/rim_projection.hpp"
+#include "sweep/sharp_edges.hpp"
 #include "sweep/smoothing.hpp"
 #include "sweep/untangle.hpp"
 #include "tets/tet_mesh.hpp"
@@ -112,6 +113,7 @@ struct MeshReport {
   RimProjectionStats rimProjection;
   RimCapStats rimCap;
   SmoothingStats smoothing;
+  SharpEdgeStats sharpEdges;
   std::optional<QuadraticStats> quadratic;  // order 2 only
   SurfaceGroupStats surfaceGroups;
   BoundaryDeviation boundaryDeviation;

@@ -40,6 +40,7 @@
 #include "sweep/quadratic.hpp"
 #include "sweep/rim_cap.hpp"
 #include "sweep/rim_projection.hpp"
+#include "sweep/sharp_edges.hpp"
 #include "sweep/smoothing.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep/sweep_to_walls.hpp"
@@ -779,6 +780,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
       clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, kRimReach * sides.thickness); });
   r.rimCap = clock.run("rim_cap", [&] { return capRims(result.mesh, cad, sides, walls); });
   r.smoothing = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
+  r.sharpEdges = clock.run("sharp_edges", [&] { return captureSharpEdges(result.mesh, cad, sides); });
   if (o.order == 2) r.quadratic = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   if (o.shell)

@@ -87,6 +87,10 @@ nlohmann::json smoothing(const SmoothingStats& s) {
           {"worst_after", s.worstAfter}};
 }
 
+nlohmann::json sharpEdges(const SharpEdgeStats& s) {
+  return {{"edges", s.edges}, {"nodes_moved", s.nodesMoved}, {"nodes_kept", s.nodesKept}};
+}
+
 nlohmann::json quadratic(const QuadraticStats& s) {
   return {{"mid_edge_nodes", s.midNodes},
           {"wall_mid_edge_nodes", s.wallNodes},
@@ -209,6 +213,7 @@ void stages(const MeshReport& s, nlohmann::json& r) {
   r["sweep"] = sweep(s.untangled, s.rimProjection);
   r["rim_cap"] = rimCap(s.rimCap);
   r["smoothing"] = smoothing(s.smoothing);
+  r["sharp_edges"] = sharpEdges(s.sharpEdges);
   if (s.quadratic) r["quadratic"] = quadratic(*s.quadratic);
   r["surface_groups"] = surfaceGroups(s.surfaceGroups);
   r["boundary_deviation"] = deviation(s.boundaryDeviation);

@@ -34,6 +34,7 @@ MeshReport solidReport() {
   r.quadratic = QuadraticStats{};
   r.quadratic->maxProjectionMove = 6;
   r.smoothing.worstBefore = 0.3;
+  r.sharpEdges.edges = 4, r.sharpEdges.nodesMoved = 5, r.sharpEdges.nodesKept = 6;
   r.memory.bytes = 1e6;
   r.mesh.hexes = 100, r.mesh.nodes = 242, r.mesh.layers = 2;
   r.mesh.quality.volume = 102, r.mesh.cadVolume = 100;
@@ -74,13 +75,40 @@ TEST(Report, OneSolidHasEveryKeyWithItsValue) {
   MeshReport r = solidReport();
   toInputUnits(r, 10);
   const nlohmann::json j = toJson(r);
-  const std::set<std::string> expected = {
-      "aspect_ratio",    "boundary", "boundary_deviation", "bubbles",   "chordal_surface", "faces",
-      "faces_split",     "hexes",    "inverted_hexes",     "junctions", "layers",          "memory_estimate",
-      "nodes",           "order",    "peak_memory_mib",    "quad_mesh", "quadratic",       "rim_cap",
-      "scaled_jacobian", "size",     "size_source",        "sizing",    "small_features",  "smoothing",
-      "surface_groups",  "sweep",    "tet_classes",        "tets",      "thickness",       "timings_s",
-      "validation",      "volume",   "worst_hex_at"};
+  const std::set<std::string> expected = {"aspect_ratio",
+                                          "boundary",
+                                          "boundary_deviation",
+                                          "bubbles",
+                                          "chordal_surface",
+                                          "faces",
+                                          "faces_split",
+                                          "hexes",
+                                          "inverted_hexes",
+                                          "junctions",
+                                          "layers",
+                                          "memory_estimate",
+                                          "nodes",
+                                          "order",
+                                          "peak_memory_mib",
+                                          "quad_mesh",
+                                          "quadratic",
+                                          "rim_cap",
+                                          "scaled_jacobian",
+                                          "sharp_edges",
+                                          "size",
+                                          "size_source",
+                                          "sizing",
+                                          "small_features",
+                                          "smoothing",
+                                          "surface_groups",
+                                          "sweep",
+                                          "tet_classes",
+                                          "tets",
+                                          "thickness",
+                                          "timings_s",
+                                          "validation",
+                                          "volume",
+                                          "worst_hex_at"};
   EXPECT_EQ(keysOf(j), expected);
   EXPECT_DOUBLE_EQ(j["thickness"].get<double>(), 2);
   EXPECT_DOUBLE_EQ(j["size"].get<double>(), 3);
@@ -94,6 +122,7 @@ TEST(Report, OneSolidHasEveryKeyWithItsValue) {
   EXPECT_DOUBLE_EQ(j["boundary_deviation"]["worst_at"][1].get<double>(), 8);
   EXPECT_EQ(j["boundary_deviation"]["worst_face"], "Face2");
   EXPECT_DOUBLE_EQ(j["quadratic"]["max_projection_move"].get<double>(), 0.6);
+  EXPECT_EQ(j["sharp_edges"], nlohmann::json({{"edges", 4}, {"nodes_moved", 5}, {"nodes_kept", 6}}));
   EXPECT_EQ(j["volume"],
             nlohmann::json({{"cad", 100.0}, {"mesh", 102.0}, {"relative_error", 0.02}, {"junctions_left_out", 7.0}}));
   EXPECT_EQ(j["timings_s"], nlohmann::json({{"geometry", 0.5}, {"quality", 0.25}}));

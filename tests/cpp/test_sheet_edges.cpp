@@ -57,9 +57,9 @@ TEST(SheetEdges, ConcaveEdgesWhereARibStandsJoinNothing) {
   EXPECT_EQ(joins.size(), 22u);
   EXPECT_EQ(count(joins, true), 0);
   // The other two are concave: where the rib's walls meet the plate's top.
-  const std::vector<ConcaveEdge> concave = concaveEdges(cad);
+  const std::vector<FacePairEdge> concave = concaveEdges(cad);
   ASSERT_EQ(concave.size(), 2u);
-  for (const ConcaveEdge& c : concave) {
+  for (const FacePairEdge& c : concave) {
     EXPECT_LT(c.a, c.b);
     for (const SheetJoin& j : joins) EXPECT_FALSE(j.a == c.a && j.b == c.b) << "an edge is concave or joins";
   }

@@ -1,0 +1,140 @@
+#include "sweep/sharp_edges.hpp"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <Extrema_ExtPC.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "geometry/sheet_edges.hpp"
+#include "quality/quality.hpp"
+
+namespace hexlayer {
+namespace {
+
+constexpr double kMaxReach = 0.6;  // of the quad edge crossing the CAD edge: how far its nearer end may be moved
+constexpr double kFloor = 0.5;     // no hex round a moved column below this, or below the worst it had
+constexpr double kOnEdge = 1e-6;   // of the quad edge: an end this near is on the CAD edge already
+
+// The point of a CAD edge nearest to p (its ends included).
+Vec3 nearestOnEdge(const BRepAdaptor_Curve& curve, const Vec3& p) {
+  const gp_Pnt q(p.x(), p.y(), p.z());
+  gp_Pnt best = curve.Value(curve.FirstParameter());
+  if (curve.Value(curve.LastParameter()).SquareDistance(q) < best.SquareDistance(q))
+    best = curve.Value(curve.LastParameter());
+  Extrema_ExtPC extrema(q, curve);
+  if (extrema.IsDone())
+    for (int i = 1; i <= extrema.NbExt(); ++i)
+      if (extrema.IsMin(i) && extrema.Point(i).Value().SquareDistance(q) < best.SquareDistance(q))
+        best = extrema.Point(i).Value();
+  return {best.X(), best.Y(), best.Z()};
+}
+
+// A wall node to put on a CAD edge: the nearer end of a quad edge crossing it.
+struct Capture {
+  double distance;
+  int node, other, edge;  // the end moved, the other end; edge: index into the sharp edges
+  Vec3 onEdge;
+  bool operator<(const Capture& o) const {
+    return std::tie(distance, node, edge) < std::tie(o.distance, o.node, o.edge);
+  }
+};
+
+// Per node, the node below (towards layer 0) and above it in its column, -1 at the walls.
+struct Columns {
+  std::vector<int> below, above;
+};
+
+Columns columnsOf(const HexMesh& mesh) {
+  Columns c{std::vector<int>(mesh.nodes.size(), -1), std::vector<int>(mesh.nodes.size(), -1)};
+  for (const auto& h : mesh.hexes)
+    for (int i = 0; i < 4; ++i) c.below[h[i + 4]] = h[i], c.above[h[i]] = h[i + 4];
+  return c;
+}
+
+// The nodes of wall node n's column from n to the other wall, each with its share of n's move (1 at n, 0 at the
+// other wall).
+std::vector<std::pair<int, double>> columnShares(const HexMesh& mesh, const Columns& c, int n) {
+  const std::vector<int>& next = mesh.nodeLayer[n] == 0 ? c.above : c.below;
+  std::vector<std::pair<int, double>> column;
+  for (int v = n, k = 0; v >= 0 && k <= mesh.layers; v = next[v], ++k)
+    column.push_back({v, 1.0 - static_cast<double>(k) / mesh.layers});
+  return column;
+}
+
+// The worst scaled Jacobian of the given hexes.
+double worstOf(const HexMesh& mesh, const std::vector<int>& hexes) {
+  double worst = 1;
+  for (int h : hexes) worst = std::min(worst, hexScaledJacobian(hexCorners(mesh, h)));
+  return worst;
+}
+
+// The captures: per quad edge of a wall (a hex's bottom face at layer 0, its top face at the top layer) whose ends lie
+// on the two faces of a sharp edge, its nearer end if near enough and not on it already; nearest first.
+std::vector<Capture> captures(const HexMesh& mesh, const std::vector<FacePairEdge>& edges,
+                              const std::vector<BRepAdaptor_Curve>& curves) {
+  std::multimap<std::pair<int, int>, int> byFaces;
+  for (std::size_t e = 0; e < edges.size(); ++e) byFaces.emplace(std::make_pair(edges[e].a, edges[e].b), e);
+  std::vector<Capture> found;
+  auto consider = [&](int u, int v) {
+    if (mesh.nodeOnRim[u] || mesh.nodeOnRim[v] || mesh.nodeFace[u] < 0 || mesh.nodeFace[v] < 0) return;
+    const auto [lo, hi] = byFaces.equal_range(std::minmax(mesh.nodeFace[u], mesh.nodeFace[v]));
+    const double length = (mesh.nodes[u] - mesh.nodes[v]).norm();
+    for (auto it = lo; it != hi; ++it) {
+      const Vec3 pu = nearestOnEdge(curves[it->second], mesh.nodes[u]);
+      const Vec3 pv = nearestOnEdge(curves[it->second], mesh.nodes[v]);
+      const double du = (pu - mesh.nodes[u]).norm(), dv = (pv - mesh.nodes[v]).norm();
+      if (std::min(du, dv) <= kOnEdge * length || std::min(du, dv) > kMaxReach * length) continue;
+      found.push_back(du <= dv ? Capture{du, u, v, it->second, pu} : Capture{dv, v, u, it->second, pv});
+    }
+  };
+  for (const auto& h : mesh.hexes)
+    for (int base : {0, 4})
+      if (mesh.nodeLayer[h[base]] == (base == 0 ? 0 : mesh.layers))
+        for (int i = 0; i < 4; ++i) consider(h[base + i], h[base + (i + 1) % 4]);
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+}  // namespace
+
+SharpEdgeStats captureSharpEdges(HexMesh& mesh, const CadSolid& cad, const WallSides& sides) {
+  SharpEdgeStats stats;
+  std::vector<FacePairEdge> edges;
+  for (const FacePairEdge& e : sharpEdges(cad))
+    if (sides.faces[e.a].side != Side::Lateral && sides.faces[e.a].side == sides.faces[e.b].side) edges.push_back(e);
+  stats.edges = edges.size();
+  if (edges.empty() || mesh.quadratic()) return stats;
+  std::vector<BRepAdaptor_Curve> curves;
+  for (const FacePairEdge& e : edges) curves.emplace_back(TopoDS::Edge(cad.edges(e.edge + 1)));
+  const Columns columns = columnsOf(mesh);
+  std::vector<std::vector<int>> hexesOf(mesh.nodes.size());
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+    for (int n : mesh.hexes[h]) hexesOf[n].push_back(static_cast<int>(h));
+  std::vector<char> moved(mesh.nodes.size(), 0);
+  for (const Capture& c : captures(mesh, edges, curves)) {
+    if (moved[c.node] || moved[c.other]) continue;  // the other end on an edge already: this one crosses it no more
+    const Vec3 move = c.onEdge - mesh.nodes[c.node];
+    const std::vector<std::pair<int, double>> column = columnShares(mesh, columns, c.node);
+    std::vector<int> around;
+    for (const auto& [v, share] : column) around.insert(around.end(), hexesOf[v].begin(), hexesOf[v].end());
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    const double before = worstOf(mesh, around);
+    for (const auto& [v, share] : column) mesh.nodes[v] += share * move;
+    if (worstOf(mesh, around) < std::min(before, kFloor)) {
+      for (const auto& [v, share] : column) mesh.nodes[v] -= share * move;
+      ++stats.nodesKept;
+      continue;
+    }
+    moved[c.node] = 1, mesh.nodeFace[c.node] = edges[c.edge].a, ++stats.nodesMoved;
+  }
+  return stats;
+}
+
+}  // namespace hexlayer
