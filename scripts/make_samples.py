@@ -672,6 +672,21 @@ def tray_chamfered():
                         wall="2 (floor), 3 (walls)", max_bytes=128 * 1024)
 
 
+def box_rounded_low():
+    """A low open box (a tray or a cover's rim) 80 x 50 x 8, wall 2, its vertical corners rounded R6 outside (R4
+    inside), the floor's edges sharp inside and out: walls only three times as high as they are thick, whose tears
+    (tets across the floor's sharp inside edge dropped as outside) lie near the rim (chordal_rim.hpp's fillTears)."""
+    L, W, H, t, R = 80.0, 50.0, 8.0, 2.0, 6.0
+    outer = occ.addBox(0, 0, 0, L, W, H)
+    outer = one_volume(occ.fillet([outer], vertical_curves(outer), [R]))
+    inner = occ.addBox(t, t, t, L - 2 * t, W - 2 * t, H)
+    inner = one_volume(occ.fillet([inner], vertical_curves(inner), [R - t]))
+    one_volume(occ.cut([(3, outer)], [(3, inner)])[0])
+    volume = rounded_rectangle_area(L, W, R) * H - rounded_rectangle_area(L - 2 * t, W - 2 * t, R - t) * (H - t)
+    return volume, dict(dims="open box 80 × 50 × 8, vertical corners R6 outside (R4 inside), floor edges sharp, top "
+                             "open (a flat rim)", wall="2")
+
+
 # Written to OUTPUT_DIR after the rim and junction parts (their STEP files stay byte-identical: OpenCASCADE
 # numbers the PRODUCT name by the count of files written in the session) and listed in its README.
 BENT_BOX_PARTS = [
@@ -687,6 +702,7 @@ BENT_BOX_PARTS = [
     ("box_diagonal_holes", box_diagonal_holes),
     ("box_chamfered", box_chamfered),
     ("tray_chamfered", tray_chamfered),
+    ("box_rounded_low", box_rounded_low),
 ]
 
 # ---------------------------------------------------------------------------

@@ -140,9 +140,10 @@ std::size_t fillTears(ChordalSurface& s, const NearRim& nearRim, double maxLengt
   for (std::size_t loop = 0; loop < members.size(); ++loop) {
     const std::vector<int>& ring = members[loop];
     if (loops.length[loop] > maxLength || ring.size() < 3) continue;
-    if (std::any_of(ring.begin(), ring.end(), [&](int v) { return walk.next[v] < 0 || nearRim(s.vertices[v]); }))
-      continue;                       // the part's own rim, or a loop that passes a vertex twice
-    std::vector<int> cycle{ring[0]};  // in the facets' direction along the rim
+    if (std::any_of(ring.begin(), ring.end(), [&](int v) { return walk.next[v] < 0; })) continue;  // a vertex twice
+    const auto near = std::count_if(ring.begin(), ring.end(), [&](int v) { return nearRim(s.vertices[v]); });
+    if (2 * near >= static_cast<long>(ring.size())) continue;  // the part's own rim or hole, along its lateral faces
+    std::vector<int> cycle{ring[0]};                           // in the facets' direction along the rim
     while (cycle.size() <= ring.size() && walk.next[cycle.back()] != ring[0]) cycle.push_back(walk.next[cycle.back()]);
     if (cycle.size() != ring.size()) continue;
     for (std::size_t i = 1; i + 1 < cycle.size(); ++i)  // the rim edges taken the other way: facing as the rest

@@ -32,10 +32,11 @@ struct RimSnapStats {
 // Whether a point lies near the lateral faces ω_l (the part's rims, holes' walls included).
 using NearRim = std::function<bool(const Vec3& p)>;
 
-// Fills the tears of the chordal surface: rim loops no longer than maxLength none of whose vertices is near a
-// lateral face. A hole or rim of the part runs along its lateral faces; a small loop in the middle of a wall is where
-// tets spanning a sharp inside corner were dropped as outside (their centre in the corner's empty side), and the
-// quads would carry it into the mesh as a hole the part does not have. Each is closed by a fan of triangles from
+// Fills the tears of the chordal surface: rim loops no longer than maxLength fewer than half of whose vertices are near
+// a lateral face. A hole or rim of the part runs along its lateral faces; a small loop in a wall is where tets spanning
+// a sharp inside corner were dropped as outside (their centre in the corner's empty side), and the quads would carry it
+// into the mesh as a hole the part does not have (on a wall lower than a few thicknesses some of its vertices are
+// near the wall's rim: the spike drops then opened it into a notch). Each is closed by a fan of triangles from
 // one of its vertices, turned as its neighbours. [in,out] chordal: before its normals and radius are computed;
 // [in] nearRim, maxLength. Returns the number of loops filled.
 std::size_t fillTears(ChordalSurface& chordal, const NearRim& nearRim, double maxLength);

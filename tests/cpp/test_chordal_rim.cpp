@@ -111,3 +111,20 @@ TEST(ChordalRim, ATearAwayFromTheLateralFacesIsFilled) {
     EXPECT_GT(n.z(), 0) << "facing +z as the quads";
   }
 }
+
+// The same tear one of whose four vertices is near a lateral face (a tear in a wall three walls high reaches within
+// a wall of its rim): still a tear, filled; the hole beside the rim (two of four near) stays.
+TEST(ChordalRim, ATearWithAVertexNearTheRimIsFilled) {
+  ChordalSurface s = strip(std::vector<double>(9, 0.0), 6);
+  s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(),
+                                [&](const std::array<int, 4>& f) {
+                                  const Vec3& corner = s.vertices[f[0]];
+                                  return corner == Vec3(3, 3, 0) || corner == Vec3(6, 1, 0);
+                                }),
+                 s.facets.end());
+  const auto nearRim = [](const Vec3& p) { return p.y() < 1.5 || (p - Vec3(3, 3, 0)).norm() < 0.1; };
+  const std::size_t facets = s.facets.size();
+  EXPECT_EQ(fillTears(s, nearRim, 5), 1u);
+  EXPECT_EQ(s.facets.size(), facets + 2);
+  EXPECT_EQ(rimLoops(s).length.size(), 2u) << "the outer rim and the hole beside it";
+}
