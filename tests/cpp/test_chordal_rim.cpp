@@ -36,6 +36,18 @@ std::optional<Vec3> onLine(const Vec3& p) {
   return Vec3(p.x(), 0, p.z());
 }
 
+// A strip 8 x 6 (rim y = 0) without the quads at (3, 3) (a tear) and (6, 1) (a hole beside the rim).
+ChordalSurface stripWithTearAndHole() {
+  ChordalSurface s = strip(std::vector<double>(9, 0.0), 6);
+  s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(),
+                                [&](const std::array<int, 4>& f) {
+                                  const Vec3& corner = s.vertices[f[0]];
+                                  return corner == Vec3(3, 3, 0) || corner == Vec3(6, 1, 0);
+                                }),
+                 s.facets.end());
+  return s;
+}
+
 }  // namespace
 
 // A strip 6 x 2 whose rim zigzags by +-0.3 about y = 0 (a concave rim's tet cuts): the 5 vertices of that rim
@@ -88,13 +100,7 @@ TEST(ChordalRim, ANarrowSpikeIsDropped) {
 // the hole beside the rim stays (a hole of the part runs along its lateral faces), and so does everything with a
 // bound shorter than the tear.
 TEST(ChordalRim, ATearAwayFromTheLateralFacesIsFilled) {
-  ChordalSurface s = strip(std::vector<double>(9, 0.0), 6);
-  s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(),
-                                [&](const std::array<int, 4>& f) {
-                                  const Vec3& corner = s.vertices[f[0]];
-                                  return corner == Vec3(3, 3, 0) || corner == Vec3(6, 1, 0);
-                                }),
-                 s.facets.end());
+  ChordalSurface s = stripWithTearAndHole();
   const auto nearRim = [](const Vec3& p) { return p.y() < 1.5; };
   ChordalSurface unchanged = s;
   EXPECT_EQ(fillTears(unchanged, nearRim, 3.9), 0u) << "the tear is 4 long";
@@ -115,13 +121,7 @@ TEST(ChordalRim, ATearAwayFromTheLateralFacesIsFilled) {
 // The same tear one of whose four vertices is near a lateral face (a tear in a wall three walls high reaches within
 // a wall of its rim): still a tear, filled; the hole beside the rim (two of four near) stays.
 TEST(ChordalRim, ATearWithAVertexNearTheRimIsFilled) {
-  ChordalSurface s = strip(std::vector<double>(9, 0.0), 6);
-  s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(),
-                                [&](const std::array<int, 4>& f) {
-                                  const Vec3& corner = s.vertices[f[0]];
-                                  return corner == Vec3(3, 3, 0) || corner == Vec3(6, 1, 0);
-                                }),
-                 s.facets.end());
+  ChordalSurface s = stripWithTearAndHole();
   const auto nearRim = [](const Vec3& p) { return p.y() < 1.5 || (p - Vec3(3, 3, 0)).norm() < 0.1; };
   const std::size_t facets = s.facets.size();
   EXPECT_EQ(fillTears(s, nearRim, 5), 1u);
