@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <numeric>
 #include <unordered_map>
 
 #include "core/union_find.hpp"
@@ -14,6 +15,7 @@ namespace {
 
 constexpr int kSmallPatch = 12;  // triangles: a patch with fewer joins a neighbour (Gmsh would mesh it with slivers)
 constexpr int kCleaningRounds = 20;
+constexpr double kFlatSeed = 5;  // degrees: a triangle turning less than this to every neighbour seeds patches first
 
 // Triangle adjacency: across side j (corners j, j+1) the other triangle, or -1 on the rim.
 using Neighbours = std::vector<std::array<int, 3>>;
@@ -155,9 +157,10 @@ std::vector<Vec3> triangleNormals(const std::vector<Vec3>& points, const std::ve
   return normal;
 }
 
-// Patches grown across edges turning less than the feature angle, normals within it of the patch's first.
+// Patches grown across edges turning less than the feature angle, normals within it of the patch's first, from the
+// triangles in the order given (all of them). Numbered in that order.
 std::vector<int> grownPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                              const Neighbours& across, double featureAngle) {
+                              const Neighbours& across, double featureAngle, const std::vector<int>& seeds) {
   const std::vector<Vec3> normal = triangleNormals(points, triangles);
   const double within = std::cos(featureAngle * M_PI / 180);
   auto near = [&](int a, int b) {
@@ -165,7 +168,7 @@ std::vector<int> grownPatches(const std::vector<Vec3>& points, const std::vector
   };
   std::vector<int> patch(triangles.size(), -1);
   int count = 0;
-  for (int seed = 0; seed < static_cast<int>(triangles.size()); ++seed) {
+  for (const int seed : seeds) {
     if (patch[seed] >= 0) continue;
     std::deque<int> front{seed};
     patch[seed] = count;
@@ -178,6 +181,34 @@ std::vector<int> grownPatches(const std::vector<Vec3>& points, const std::vector
     ++count;
   }
   return patch;
+}
+
+// The triangles in index order.
+std::vector<int> inOrder(std::size_t triangles) {
+  std::vector<int> order(triangles);
+  std::iota(order.begin(), order.end(), 0);
+  return order;
+}
+
+// The triangles lying flat among their neighbours (none turning more than kFlatSeed from them) first, then the others,
+// each in index order (PatchSeeds::FlatFirst).
+std::vector<int> flatFirst(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                           const Neighbours& across) {
+  const std::vector<Vec3> normal = triangleNormals(points, triangles);
+  const double flat = std::cos(kFlatSeed * M_PI / 180);
+  std::vector<int> order(triangles.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_partition(order.begin(), order.end(), [&](int t) {
+    return std::all_of(across[t].begin(), across[t].end(),
+                       [&](int u) { return u < 0 || normal[t].dot(normal[u]) >= flat; });
+  });
+  return order;
+}
+
+// Patches renumbered in order of their lowest triangle. [in,out] patch.
+void numberByFirstTriangle(std::vector<int>& patch) {
+  std::map<int, int> number;
+  for (int& p : patch) p = number.emplace(p, static_cast<int>(number.size())).first->second;
 }
 
 // The triangles of patches narrower than minWidth (twice their area over their perimeter: a strip's width) go, a row at
@@ -245,9 +276,12 @@ void cleanPatches(const std::vector<std::array<int, 3>>& triangles, const Neighb
 }  // namespace
 
 std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                             double featureAngle, double minWidth) {
+                             double featureAngle, double minWidth, PatchSeeds seeds) {
   const Neighbours across = triangleNeighbours(triangles);
-  std::vector<int> patch = grownPatches(points, triangles, across, featureAngle);
+  std::vector<int> patch =
+      grownPatches(points, triangles, across, featureAngle,
+                   seeds == PatchSeeds::FlatFirst ? flatFirst(points, triangles, across) : inOrder(triangles.size()));
+  numberByFirstTriangle(patch);
   splitIntoPieces(across, patch);
   dissolveNarrowPatches(points, triangles, across, patch, minWidth);
   cleanPatches(triangles, across, vertexTriangles(triangles, points.size()), patch);
@@ -257,7 +291,7 @@ std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<
 std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
                                 double featureAngle) {
   const Neighbours across = triangleNeighbours(triangles);
-  std::vector<int> patch = grownPatches(points, triangles, across, featureAngle);
+  std::vector<int> patch = grownPatches(points, triangles, across, featureAngle, inOrder(triangles.size()));
   cleanPatches(triangles, across, vertexTriangles(triangles, points.size()), patch);
   return patch;
 }

@@ -27,9 +27,13 @@ std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vect
 // than minWidth (twice their area over their perimeter: a bend's strips of facets turning between its faces) given
 // away a row of triangles at a time, each to the neighbour whose normal is nearest its own, then cleaned as
 // chordalPatches' (small pieces joined, pinches undone). [in] points, triangles, featureAngle: as chordalPatches';
-// [in] minWidth. Returns each triangle's patch.
+// [in] minWidth; [in] seeds: where patches grow from first: the triangles in index order, or those lying flat among
+// their neighbours (within 5 degrees) first, so that a rounded corner between two faces is shared out between them by
+// its normals instead of claimed by a patch grown from within it, whose normal cone ends anywhere on the faces
+// beside (a cut across a wall). Returns each triangle's patch.
+enum class PatchSeeds { InOrder, FlatFirst };
 std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                             double featureAngle, double minWidth);
+                             double featureAngle, double minWidth, PatchSeeds seeds = PatchSeeds::InOrder);
 
 // The curves between the patches and along the rim, for Gmsh's discrete model (made here, not by Gmsh's
 // createTopology, whose order depends on where its objects lie in memory: its meshes changed from run to run).

@@ -9,7 +9,6 @@
 #include <type_traits>
 
 #include "core/union_find.hpp"
-#include "quadmesh/chordal_patches.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
 namespace hexlayer {
@@ -935,12 +934,12 @@ bool cutAtReflexCorner(PatchLayout& layout, Patches& patches, const std::vector<
 
 }  // namespace
 
-PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle) {
+PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle, PatchSeeds seeds) {
   const std::vector<Vec3>& x = chordal.vertices;
   const std::vector<std::array<int, 3>> triangles = chordalTriangles(chordal);
   PatchLayout layout;
   layout.typical = typicalSize(x, triangles, size);
-  Patches patch{facePatches(x, triangles, featureAngle, layout.typical), 0};
+  Patches patch{facePatches(x, triangles, featureAngle, layout.typical, seeds), 0};
   patch.count = patch.of.empty() ? 0 : 1 + *std::max_element(patch.of.begin(), patch.of.end());
   if (patch.count < 2) return {};
   layout.curves = cutAtSharpTurns(patchTopology(triangles, patch.of), x, layout.typical);

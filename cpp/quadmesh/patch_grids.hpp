@@ -8,6 +8,7 @@
 #pragma once
 #include "chordal/chordal_surface.hpp"
 #include "quadmesh/block_grids.hpp"
+#include "quadmesh/chordal_patches.hpp"
 
 namespace hexlayer {
 
@@ -38,6 +39,8 @@ namespace hexlayer {
 struct PatchGrids {
   BlockGrid graded, even;
 };
-PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle);
+// [in] seeds: facePatches' (PatchSeeds::FlatFirst where the faces grown in index order give no grid).
+PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle,
+                      PatchSeeds seeds = PatchSeeds::InOrder);
 
 }  // namespace hexlayer

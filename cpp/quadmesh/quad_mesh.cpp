@@ -629,26 +629,43 @@ bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal
   return holedRefused;
 }
 
+// Where the patch grid graded towards its creases lost or was refused, the one with even rows ranked.
+// [in] graded: whether there was a graded one; [in,out] patch: its grids (the even one moved from); [in,out] ranked.
+void rankEvenPatchGrid(bool graded, PatchGrids& patch, const ChordalLocator& chordal, const QuadMeshOptions& o,
+                       long chordalEuler, Ranked& ranked) {
+  if (!graded || ranked.best.layout == QuadLayout::PatchGrid) return;
+  std::vector<QuadMesh> even;
+  addBlockGrid(even, std::move(patch.even), QuadLayout::PatchGrid);
+  rankBlockGrids(even, chordal, o, chordalEuler, ranked);
+}
+
 // Structured block grids first, the patch grid (patch_grids.hpp) after them: where one has square enough quads, Gmsh
 // is not needed. Where the holed grid is refused, the shared grid round all the holes is tried in its place; where
-// the patch grid graded towards its creases is refused or outranked, the patch grid with even rows.
+// the patch grid graded towards its creases is refused or outranked, the patch grid with even rows. Where the faces
+// grown in index order give no patch grid, those grown from their flat middles first (PatchSeeds::FlatFirst) may,
+// ranked after the others: their cuts may lie where the surface only curves (a tube's), so they refuse no grid that
+// crosses them.
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
   const SurfaceMap square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
   std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o, chordalEuler);
   PatchGrids patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle);
-  const bool graded = !patch.graded.empty();
+  bool graded = !patch.graded.empty();
+  const bool none = patch.even.empty();
   addBlockGrid(blocks, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);
   if (rankBlockGrids(blocks, chordal, o, chordalEuler, ranked)) {
     std::vector<QuadMesh> shared;
     addBlockGrid(shared, sharedGrid(square, targetSize(chordal, o)), QuadLayout::SharedGrid);
     rankBlockGrids(shared, chordal, o, chordalEuler, ranked);
   }
-  if (graded && ranked.best.layout != QuadLayout::PatchGrid) {  // the graded one lost or was refused
-    std::vector<QuadMesh> even;
-    addBlockGrid(even, std::move(patch.even), QuadLayout::PatchGrid);
-    rankBlockGrids(even, chordal, o, chordalEuler, ranked);
-  }
+  rankEvenPatchGrid(graded, patch, chordal, o, chordalEuler, ranked);
+  if (!none) return ranked;
+  patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, PatchSeeds::FlatFirst);
+  graded = !patch.graded.empty();
+  std::vector<QuadMesh> flatFirst;
+  addBlockGrid(flatFirst, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);
+  rankBlockGrids(flatFirst, chordal, o, chordalEuler, ranked);
+  rankEvenPatchGrid(graded, patch, chordal, o, chordalEuler, ranked);
   return ranked;
 }
 

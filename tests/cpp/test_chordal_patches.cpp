@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -141,6 +143,48 @@ TEST(ChordalPatches, ABendsNarrowStripsGoToTheFacesBesideThem) {
       EXPECT_EQ(patch[k], patch[face == 0 ? 0 : face == 1 ? 30 : 60]) << "cell at " << degrees << " degrees";
     }
     EXPECT_TRUE(patchesConnected(t, patch));
+  }
+}
+
+TEST(ChordalPatches, FlatFirstSeedsShareARoundBetweenItsFaces) {
+  // An L of two sheets 10 cells wide joined by a round of 8 cells (7 .. 85 degrees), 8 long, its triangles ordered so
+  // that the round's 52-degree cells come first (as a chordal surface's triangles may be). Grown in index order, the
+  // first patch is seeded in the round and takes it (but its 7-degree cells) and the far sheet, all within 40 degrees
+  // of 52: the cut lies where the round starts. Grown from the flat cells first, each sheet takes the round's cells
+  // within 40 degrees of its own normal (7 .. 38 and 52 .. 85): the cut lies in the round's middle, at any scale.
+  const std::vector<double> round = {7, 18, 29, 38, 52, 63, 74, 85};
+  std::vector<double> turn(10, 0.0);
+  turn.insert(turn.end(), round.begin(), round.end());
+  turn.insert(turn.end(), 10, 90.0);
+  std::vector<Vec3> profile{Vec3(0, 0, 0)};
+  for (double degrees : turn) {
+    const double a = degrees * M_PI / 180;
+    profile.push_back(profile.back() + Vec3(std::cos(a), 0, std::sin(a)));
+  }
+  const auto bent = [&](double x, double y) {
+    return Vec3(profile[static_cast<int>(x)].x(), y, profile[static_cast<int>(x)].z());
+  };
+  const int nx = static_cast<int>(turn.size());
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    const Triangles t = grid(nx, 8, bent, scale);
+    std::vector<std::size_t> order(t.triangles.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_partition(order.begin(), order.end(), [&](std::size_t k) { return turn[(k / 2) % nx] == 52; });
+    Triangles reordered{t.points, {}};
+    std::vector<double> at;  // per triangle of `reordered`, its cell's turn
+    for (std::size_t k : order) reordered.triangles.push_back(t.triangles[k]), at.push_back(turn[(k / 2) % nx]);
+    auto faceOf = [&](const std::vector<int>& patch, double degrees) {
+      return patch[std::find(at.begin(), at.end(), degrees) - at.begin()];
+    };
+    const std::vector<int> inOrder = facePatches(reordered.points, reordered.triangles, 40, 0.5 * scale);
+    EXPECT_EQ(faceOf(inOrder, 18), faceOf(inOrder, 90)) << "scale " << scale;
+    EXPECT_EQ(faceOf(inOrder, 7), faceOf(inOrder, 0));
+    EXPECT_NE(faceOf(inOrder, 0), faceOf(inOrder, 90));
+    const std::vector<int> flat =
+        facePatches(reordered.points, reordered.triangles, 40, 0.5 * scale, PatchSeeds::FlatFirst);
+    EXPECT_EQ(std::set<int>(flat.begin(), flat.end()).size(), 2u) << "scale " << scale;
+    for (std::size_t k = 0; k < at.size(); ++k)
+      EXPECT_EQ(flat[k], faceOf(flat, at[k] <= 40 ? 0 : 90)) << "cell at " << at[k] << " degrees";
   }
 }
 
