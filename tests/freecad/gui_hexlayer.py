@@ -236,9 +236,11 @@ class LongRun(GuiTest):
             if task_panel().running() and started > pressed + 0.5:
                 trips.append(trip)
             time.sleep(0.05)
-        # FreeCAD's event loop answered again and again while the child meshed: it was not blocked. The round
-        # trips' length is printed, not asserted (speed belongs to bench/, not to tests).
-        self.assertGreater(len(trips), 10, "events answered while meshing")
+        # FreeCAD's event loop answered again and again while the child meshed: it was not blocked (a blocked loop
+        # answers once, after the run: no sample). How many times depends on the run's length and on the redraws in
+        # software GL (16 samples of up to 0.23 s in one run, 10 in another on a loaded machine), so only a few are
+        # asked for. The round trips' length is printed, not asserted (speed belongs to bench/, not to tests).
+        self.assertGreater(len(trips), 3, "events answered while meshing")
         print("event round trips while meshing: {} samples, longest {:.0f} ms, in ms: {}".format(
             len(trips), 1000 * max(trips), [round(1000 * x) for x in trips]), file=sys.stderr)
         wait_until(lambda: widget("summary", QtGui.QLabel).text(), 60)
