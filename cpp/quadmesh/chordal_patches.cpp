@@ -159,14 +159,14 @@ std::vector<Vec3> triangleNormals(const std::vector<Vec3>& points, const std::ve
 
 // Patches grown across edges turning less than the feature angle, normals within it of the patch's first, from the
 // triangles in the order given (all of them). Numbered in that order.
-std::vector<int> grownPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                              const Neighbours& across, double featureAngle, const std::vector<int>& seeds) {
-  const std::vector<Vec3> normal = triangleNormals(points, triangles);
+// [in] normal: per triangle (triangleNormals).
+std::vector<int> grownPatches(const std::vector<Vec3>& normal, const Neighbours& across, double featureAngle,
+                              const std::vector<int>& seeds) {
   const double within = std::cos(featureAngle * M_PI / 180);
   auto near = [&](int a, int b) {
     return normal[a].isZero() || normal[b].isZero() || normal[a].dot(normal[b]) >= within;
   };
-  std::vector<int> patch(triangles.size(), -1);
+  std::vector<int> patch(normal.size(), -1);
   int count = 0;
   for (const int seed : seeds) {
     if (patch[seed] >= 0) continue;
@@ -192,12 +192,10 @@ std::vector<int> inOrder(std::size_t triangles) {
 
 // The triangles lying flat among their neighbours (none turning more than kFlatSeed from them) first, then the others,
 // each in index order (PatchSeeds::FlatFirst).
-std::vector<int> flatFirst(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                           const Neighbours& across) {
-  const std::vector<Vec3> normal = triangleNormals(points, triangles);
+// [in] normal: per triangle (triangleNormals).
+std::vector<int> flatFirst(const std::vector<Vec3>& normal, const Neighbours& across) {
   const double flat = std::cos(kFlatSeed * M_PI / 180);
-  std::vector<int> order(triangles.size());
-  std::iota(order.begin(), order.end(), 0);
+  std::vector<int> order = inOrder(normal.size());
   std::stable_partition(order.begin(), order.end(), [&](int t) {
     return std::all_of(across[t].begin(), across[t].end(),
                        [&](int u) { return u < 0 || normal[t].dot(normal[u]) >= flat; });
@@ -214,10 +212,10 @@ void numberByFirstTriangle(std::vector<int>& patch) {
 // The triangles of patches narrower than minWidth (twice their area over their perimeter: a strip's width) go, a row at
 // a time from the wider patches' edges, to the patch of the neighbour whose normal is nearest theirs: the facets of a
 // bend split between the faces on either side where the surface turns from the one to the other.
-// [in] points, triangles, across; [in,out] patch; [in] minWidth.
+// [in] points, triangles, across; [in] normal: per triangle (triangleNormals); [in,out] patch; [in] minWidth.
 void dissolveNarrowPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                           const Neighbours& across, std::vector<int>& patch, double minWidth) {
-  const std::vector<Vec3> normal = triangleNormals(points, triangles);
+                           const Neighbours& across, const std::vector<Vec3>& normal, std::vector<int>& patch,
+                           double minWidth) {
   std::map<int, double> area, perimeter;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const auto& c = triangles[t];
@@ -278,12 +276,13 @@ void cleanPatches(const std::vector<std::array<int, 3>>& triangles, const Neighb
 std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
                              double featureAngle, double minWidth, PatchSeeds seeds) {
   const Neighbours across = triangleNeighbours(triangles);
+  const std::vector<Vec3> normal = triangleNormals(points, triangles);
   std::vector<int> patch =
-      grownPatches(points, triangles, across, featureAngle,
-                   seeds == PatchSeeds::FlatFirst ? flatFirst(points, triangles, across) : inOrder(triangles.size()));
+      grownPatches(normal, across, featureAngle,
+                   seeds == PatchSeeds::FlatFirst ? flatFirst(normal, across) : inOrder(normal.size()));
   numberByFirstTriangle(patch);
   splitIntoPieces(across, patch);
-  dissolveNarrowPatches(points, triangles, across, patch, minWidth);
+  dissolveNarrowPatches(points, triangles, across, normal, patch, minWidth);
   cleanPatches(triangles, across, vertexTriangles(triangles, points.size()), patch);
   return patch;
 }
@@ -291,7 +290,8 @@ std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<
 std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
                                 double featureAngle) {
   const Neighbours across = triangleNeighbours(triangles);
-  std::vector<int> patch = grownPatches(points, triangles, across, featureAngle, inOrder(triangles.size()));
+  std::vector<int> patch =
+      grownPatches(triangleNormals(points, triangles), across, featureAngle, inOrder(triangles.size()));
   cleanPatches(triangles, across, vertexTriangles(triangles, points.size()), patch);
   return patch;
 }

@@ -18,6 +18,7 @@
 #include "core/threads.hpp"
 #include "geometry/wall_rays.hpp"
 #include "quality/quality.hpp"
+#include "sweep/sweep.hpp"
 
 namespace hexlayer {
 namespace {
@@ -242,19 +243,6 @@ RimHexes rimHexes(const HexMesh& mesh, const std::vector<std::vector<int>>& colu
     r.ofColumn.push_back(std::move(around));
   }
   return r;
-}
-
-// Every column of the mesh (layer 0 to the top: the nodes above one another in the hexes, corners k, k + 4),
-// indexed by its bottom node (empty for the other nodes).
-std::vector<std::vector<int>> columnsByBottom(const HexMesh& mesh) {
-  std::vector<int> above(mesh.nodes.size(), -1);
-  for (const auto& h : mesh.hexes)
-    for (int k = 0; k < 4; ++k) above[h[k]] = h[k + 4];
-  std::vector<std::vector<int>> columns(mesh.nodes.size());
-  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
-    if (mesh.nodeLayer[i] == 0)
-      for (int v = static_cast<int>(i); v >= 0; v = above[v]) columns[i].push_back(v);
-  return columns;
 }
 
 // The rim columns among them, in the order of their bottom nodes.

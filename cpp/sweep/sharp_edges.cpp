@@ -11,8 +11,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/groups.hpp"
 #include "geometry/sheet_edges.hpp"
 #include "quality/quality.hpp"
+#include "sweep/sweep.hpp"
 
 namespace hexlayer {
 namespace {
@@ -45,26 +47,13 @@ struct Capture {
   }
 };
 
-// Per node, the node below (towards layer 0) and above it in its column, -1 at the walls.
-struct Columns {
-  std::vector<int> below, above;
-};
-
-Columns columnsOf(const HexMesh& mesh) {
-  Columns c{std::vector<int>(mesh.nodes.size(), -1), std::vector<int>(mesh.nodes.size(), -1)};
-  for (const auto& h : mesh.hexes)
-    for (int i = 0; i < 4; ++i) c.below[h[i + 4]] = h[i], c.above[h[i]] = h[i + 4];
-  return c;
-}
-
-// The nodes of wall node n's column from n to the other wall, each with its share of n's move (1 at n, 0 at the
-// other wall).
-std::vector<std::pair<int, double>> columnShares(const HexMesh& mesh, const Columns& c, int n) {
-  const std::vector<int>& next = mesh.nodeLayer[n] == 0 ? c.above : c.below;
-  std::vector<std::pair<int, double>> column;
-  for (int v = n, k = 0; v >= 0 && k <= mesh.layers; v = next[v], ++k)
-    column.push_back({v, 1.0 - static_cast<double>(k) / mesh.layers});
-  return column;
+// Per wall node (layer 0 or the top), its column from it to the other wall (columnsByBottom's, read from the top
+// for a top node); empty for the other nodes.
+std::vector<std::vector<int>> wallColumns(const HexMesh& mesh) {
+  std::vector<std::vector<int>> of = columnsByBottom(mesh);
+  for (std::size_t i = 0; i < of.size(); ++i)
+    if (of[i].size() > 1 && of[of[i].back()].empty()) of[of[i].back()].assign(of[i].rbegin(), of[i].rend());
+  return of;
 }
 
 // The worst scaled Jacobian of the given hexes.
@@ -112,23 +101,31 @@ SharpEdgeStats captureSharpEdges(HexMesh& mesh, const CadSolid& cad, const WallS
   if (edges.empty() || mesh.quadratic()) return stats;
   std::vector<BRepAdaptor_Curve> curves;
   for (const FacePairEdge& e : edges) curves.emplace_back(TopoDS::Edge(cad.edges(e.edge + 1)));
-  const Columns columns = columnsOf(mesh);
-  std::vector<std::vector<int>> hexesOf(mesh.nodes.size());
-  for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-    for (int n : mesh.hexes[h]) hexesOf[n].push_back(static_cast<int>(h));
+  const std::vector<std::vector<int>> columns = wallColumns(mesh);
+  const Groups<int> hexesAt = groupByKey<int>(mesh.nodes.size(), [&](auto emit) {
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+      for (int v : mesh.hexes[h]) emit(v, static_cast<int>(h));
+  });
   std::vector<char> moved(mesh.nodes.size(), 0);
   for (const Capture& c : captures(mesh, edges, curves)) {
     if (moved[c.node] || moved[c.other]) continue;  // the other end on an edge already: this one crosses it no more
+    const std::vector<int>& column = columns[c.node];
+    if (column.empty()) continue;
     const Vec3 move = c.onEdge - mesh.nodes[c.node];
-    const std::vector<std::pair<int, double>> column = columnShares(mesh, columns, c.node);
+    auto moveColumn = [&](double sign) {  // the node by `move`, the others less towards the other wall (0 at it)
+      const double last = static_cast<double>(column.size() - 1);
+      for (std::size_t k = 0; k < column.size(); ++k) mesh.nodes[column[k]] += sign * (1 - k / last) * move;
+    };
     std::vector<int> around;
-    for (const auto& [v, share] : column) around.insert(around.end(), hexesOf[v].begin(), hexesOf[v].end());
+    for (int v : column)
+      around.insert(around.end(), hexesAt.items.begin() + hexesAt.start[v],
+                    hexesAt.items.begin() + hexesAt.start[v + 1]);
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
     const double before = worstOf(mesh, around);
-    for (const auto& [v, share] : column) mesh.nodes[v] += share * move;
+    moveColumn(1);
     if (worstOf(mesh, around) < std::min(before, kFloor)) {
-      for (const auto& [v, share] : column) mesh.nodes[v] -= share * move;
+      moveColumn(-1);
       ++stats.nodesKept;
       continue;
     }

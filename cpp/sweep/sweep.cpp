@@ -111,4 +111,15 @@ SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, 
   return result;
 }
 
+std::vector<std::vector<int>> columnsByBottom(const HexMesh& mesh) {
+  std::vector<int> above(mesh.nodes.size(), -1);
+  for (const auto& h : mesh.hexes)
+    for (int k = 0; k < 4; ++k) above[h[k]] = h[k + 4];
+  std::vector<std::vector<int>> columns(mesh.nodes.size());
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    if (mesh.nodeLayer[i] == 0)
+      for (int v = static_cast<int>(i); v >= 0; v = above[v]) columns[i].push_back(v);
+  return columns;
+}
+
 }  // namespace hexlayer

@@ -56,4 +56,8 @@ struct SweepResult {
 SweepResult sweepQuads(const QuadMesh& quads, const ChordalLocator& chordal, int layers,
                        const WallMap& walls = radiusSweepLine, const WallMap& aimed = {});
 
+// Every column of a layered mesh (layer 0 to the top: the nodes above one another in the hexes, corners k, k + 4),
+// indexed by its bottom node (empty for the other nodes). [in] mesh: nodeLayer sized.
+std::vector<std::vector<int>> columnsByBottom(const HexMesh& mesh);
+
 }  // namespace hexlayer
