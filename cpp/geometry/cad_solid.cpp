@@ -32,6 +32,7 @@
 #include <gp_Trsf.hxx>
 #include <gp_Vec.hxx>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -278,6 +279,56 @@ std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance) {
   GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(TopoDS::Face(face)), tolerance);
   if (!planar.IsPlanar()) return std::nullopt;
   return planar.Plan();
+}
+
+std::optional<gp_Cylinder> cylinderOf(const TopoDS_Shape& face, double tolerance) {
+  constexpr int kSamples = 6;             // intervals per parameter direction of the sampling grid
+  constexpr double kAcrossAxis = 1e-12;   // mean squared normal component along the axis: the normals are across it
+  constexpr double kCurvedAround = 1e-6;  // and that of the next axis: not all parallel (a plane)
+  const BRepAdaptor_Surface surface(TopoDS::Face(face));
+  if (surface.GetType() == GeomAbs_Cylinder) return surface.Cylinder();
+  if (surface.GetType() != GeomAbs_BSplineSurface && surface.GetType() != GeomAbs_BezierSurface) return std::nullopt;
+  std::vector<Vec3> points, normals;
+  for (int i = 0; i <= kSamples; ++i)
+    for (int k = 0; k <= kSamples; ++k) {
+      const double u =
+          surface.FirstUParameter() + (surface.LastUParameter() - surface.FirstUParameter()) * i / kSamples;
+      const double v =
+          surface.FirstVParameter() + (surface.LastVParameter() - surface.FirstVParameter()) * k / kSamples;
+      gp_Pnt p;
+      gp_Vec du, dv;
+      surface.D1(u, v, p, du, dv);
+      const gp_Vec n = du.Crossed(dv);
+      if (n.Magnitude() <= 0) continue;
+      const gp_Vec d = n.Normalized();
+      points.push_back(toVec(p)), normals.emplace_back(d.X(), d.Y(), d.Z());
+    }
+  if (points.size() < 3) return std::nullopt;
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();  // the axis: the direction the normals have no part along
+  for (const Vec3& n : normals) m += n * n.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(m / static_cast<double>(normals.size()));
+  if (eigen.eigenvalues()(0) > kAcrossAxis || eigen.eigenvalues()(1) < kCurvedAround) return std::nullopt;
+  const Vec3 axis = eigen.eigenvectors().col(0), e1 = eigen.eigenvectors().col(1), e2 = eigen.eigenvectors().col(2);
+  // the circle through the points seen along the axis: 2 c . q + (r^2 - |c|^2) = |q|^2, least squares (Kasa)
+  Eigen::MatrixXd a(points.size(), 3);
+  Eigen::VectorXd b(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double x = points[i].dot(e1), y = points[i].dot(e2);
+    a.row(static_cast<Eigen::Index>(i)) << 2 * x, 2 * y, 1;
+    b(static_cast<Eigen::Index>(i)) = x * x + y * y;
+  }
+  const Eigen::Vector3d c = a.colPivHouseholderQr().solve(b);
+  const double r2 = c(2) + c(0) * c(0) + c(1) * c(1);
+  if (!(r2 > 0)) return std::nullopt;
+  const double r = std::sqrt(r2);
+  const Vec3 centre = c(0) * e1 + c(1) * e2;
+  for (const Vec3& p : points) {
+    const Vec3 q = p - centre - axis * (p - centre).dot(axis);
+    if (std::abs(q.norm() - r) > tolerance) return std::nullopt;
+  }
+  return gp_Cylinder(gp_Ax3(gp_Pnt(centre.x(), centre.y(), centre.z()), gp_Dir(axis.x(), axis.y(), axis.z()),
+                            gp_Dir(e1.x(), e1.y(), e1.z())),
+                     r);
 }
 
 Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {

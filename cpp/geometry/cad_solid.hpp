@@ -4,6 +4,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
+#include <gp_Cylinder.hxx>
 #include <gp_Pln.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Pnt2d.hxx>
@@ -80,6 +81,11 @@ Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v);
 // The face's plane: its surface's if a plane, or the plane a B-spline (or other) surface lies on within tolerance
 // (CAD systems and scaling write planes as B-splines); none if it is curved. [in] face, tolerance.
 std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance);
+
+// The face's cylinder: its surface's if a cylinder, or the circular cylinder a B-spline or Bézier surface lies on
+// within tolerance (a boss written as a B-spline, trimmed to the face, has no surface where a rib covers it; its
+// cylinder goes on round). None if it is another shape. [in] face, tolerance: absolute.
+std::optional<gp_Cylinder> cylinderOf(const TopoDS_Shape& face, double tolerance);
 
 // Whether two planes are one: parallel (1e-9 rad) and the one's origin within `tolerance` of the other. [in] a, b.
 inline bool samePlane(const gp_Pln& a, const gp_Pln& b, double tolerance) {

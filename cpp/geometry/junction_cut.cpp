@@ -20,6 +20,7 @@
 #include <GeomLib.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
 #include <Geom_ElementarySurface.hxx>
 #include <Geom_Plane.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
@@ -266,6 +267,17 @@ bool sameSurface(const Handle(Geom_Surface) & surface, const TopoDS_Face& face, 
   return true;
 }
 
+// The surface of a curved wall face that a foot lies on or runs along: the cylinder a B-spline or Bézier face is (a
+// boss written as a B-spline is trimmed to its face: where a rib covers the boss there is no surface, the cylinder
+// goes on round), else the face's own surface. [in] face, tolerance.
+Handle(Geom_Surface) curvedSurface(const TopoDS_Shape& face, double tolerance) {
+  const Handle(Geom_Surface)& own = BRep_Tool::Surface(TopoDS::Face(face));
+  if (!Handle(Geom_ElementarySurface)::DownCast(own).IsNull()) return own;
+  if (const std::optional<gp_Cylinder> cylinder = cylinderOf(face, tolerance))
+    return new Geom_CylindricalSurface(*cylinder);
+  return own;
+}
+
 // A B-spline or Bézier surface extended by `length` past each of its four boundaries (a shell's wall written as
 // B-splines, one patch per face, ends where the wall standing on it begins: its foot lies beyond); any other
 // surface as it is (planes, cylinders and their trimmed pieces reach on).
@@ -327,7 +339,7 @@ std::vector<SurfaceEdges> footEdgesBySurface(const Junctions& j, int s) {
     const TopoDS_Face& face = TopoDS::Face(j.cad.faces(base + 1));
     const std::optional<gp_Pln> plane = planeOf(face, tolerance);
     const Handle(Geom_Surface) surface =
-        plane ? new Geom_Plane(*plane) : extendedSurface(BRep_Tool::Surface(face), reach);
+        plane ? new Geom_Plane(*plane) : extendedSurface(curvedSurface(face, tolerance), reach);
     const int sheet = j.sheetOf[base];
     auto same = [&](const SurfaceEdges& p) {
       if (p.base != sheet) return false;
@@ -381,7 +393,7 @@ std::vector<Foot> footFaces(const Junctions& j, int s) {
   const std::vector<SurfaceEdges> surfaces = footEdgesBySurface(j, s);
   std::vector<Handle(Geom_Surface)> along;  // the curved walls of the sheet and of those it stands on
   for (int f : j.sheets[s].faces)
-    if (!planeOf(j.cad.faces(f + 1), tolerance)) along.push_back(BRep_Tool::Surface(TopoDS::Face(j.cad.faces(f + 1))));
+    if (!planeOf(j.cad.faces(f + 1), tolerance)) along.push_back(curvedSurface(j.cad.faces(f + 1), tolerance));
   for (const SurfaceEdges& on : surfaces)
     if (!on.plane) along.push_back(on.surface);
   for (const SurfaceEdges& on : surfaces)

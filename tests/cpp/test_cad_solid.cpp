@@ -2,7 +2,8 @@
 // on B-spline faces (OpenCASCADE's default rule is 1 % off there), run at scales 1, 1e-3 and 1e3; a file that
 // holds only a closed shell, read as the solid it bounds; and the vertices' parameters on a face, BRep_Tool's to the
 // last bit on a plate with many holes (analytic and B-spline faces, x1, 1e-3, 1e3); the faces' triangulation, each
-// face covered once (Delabella's on a face of more than kManyEdges edges, Watson's on the rest).
+// face covered once (Delabella's on a face of more than kManyEdges edges, Watson's on the rest); the cylinder a
+// B-spline face lies on.
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Surface.hxx>
@@ -11,6 +12,7 @@
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
@@ -20,9 +22,11 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <gp_Lin.hxx>
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -173,4 +177,39 @@ TEST(CadSolid, ClosedShellFileIsReadAsTheSolidItBounds) {
   std::remove(path.c_str());
   ASSERT_EQ(solids.size(), 1u);
   EXPECT_NEAR(prepareSolid(solids[0]).volume, 2400.0, 1e-6);
+}
+
+// The cylinder of a face: a cylinder's own; a boss's side converted to a B-spline trimmed to part of a turn (as
+// OpenCASCADE's NURBS conversion and scaling write it) gives back its axis and radius, at scales 1, 1e-3 and 1e3; a
+// plane, a sphere and a cone converted alike give none.
+TEST(CadSolid, CylinderOfABSplineFaceIsTheCylinderItLiesOn) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const gp_Ax2 axis(gp_Pnt(3 * s, -2 * s, s), gp_Dir(1, 2, 2));
+    const double r = 4 * s, tolerance = 1e-7 * s;
+    const TopoDS_Shape boss = BRepPrimAPI_MakeCylinder(axis, r, 10 * s, 5.5).Shape();  // 5.5 of 2 pi rad
+    int cylinders = 0;
+    for (const bool nurbs : {false, true}) {
+      const TopoDS_Shape shape = nurbs ? BRepBuilderAPI_NurbsConvert(boss, true).Shape() : boss;
+      for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+        const std::optional<gp_Cylinder> c = cylinderOf(f.Current(), tolerance);
+        if (planeOf(f.Current(), tolerance)) {
+          EXPECT_FALSE(c) << "a plane";
+          continue;
+        }
+        EXPECT_EQ(BRepAdaptor_Surface(TopoDS::Face(f.Current())).GetType(),
+                  nurbs ? GeomAbs_BSplineSurface : GeomAbs_Cylinder);
+        ASSERT_TRUE(c);
+        ++cylinders;
+        EXPECT_NEAR(c->Radius() / r, 1, 1e-9);
+        EXPECT_TRUE(c->Axis().Direction().IsParallel(axis.Direction(), 1e-9));
+        EXPECT_LT(gp_Lin(c->Axis()).Distance(axis.Location()), tolerance);
+      }
+    }
+    EXPECT_EQ(cylinders, 2);
+    for (const TopoDS_Shape& other :
+         {BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 0), r).Shape(), BRepPrimAPI_MakeCone(axis, r, 0.5 * r, 10 * s).Shape()})
+      for (TopExp_Explorer f(BRepBuilderAPI_NurbsConvert(other, true).Shape(), TopAbs_FACE); f.More(); f.Next())
+        EXPECT_FALSE(cylinderOf(f.Current(), tolerance)) << "a sphere, a cone or their flat ends";
+  }
 }
