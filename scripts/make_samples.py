@@ -1485,6 +1485,32 @@ def boss_plate(ro, ri, h, rh, dims, junction, wall="plate 2, boss 2"):
     return build
 
 
+def boss_gussets(ro, ri, h, gh, a, length):
+    """A builder for JUNCTION_PARTS: plate_boss's plate and boss (outside radius ro, a blind bore ri down to the
+    plate's top, h high) with four gussets 2a thick along +-X and +-Y, from the boss's axis to `length` beyond its
+    side, gh high above the plate (lower than the boss). A gusset adds gh x its footprint outside the boss's disc:
+    2a (ro + length) less the strip |y| <= a of the half disc, a sqrt(ro^2 - a^2) + ro^2 asin(a / ro)."""
+    def build():
+        L, W, t = PLATE_L, PLATE_W, PLATE_T
+        x, y = L / 2, W / 2
+        reach = ro + length
+        gussets = [occ.addBox(x, y - a, t - 1.0, reach, 2 * a, gh + 1.0),
+                   occ.addBox(x - reach, y - a, t - 1.0, reach, 2 * a, gh + 1.0),
+                   occ.addBox(x - a, y, t - 1.0, 2 * a, reach, gh + 1.0),
+                   occ.addBox(x - a, y - reach, t - 1.0, 2 * a, reach, gh + 1.0)]
+        vol = fuse_volumes([occ.addBox(0.0, 0.0, 0.0, L, W, t),
+                            occ.addCylinder(x, y, t - 1.0, 0.0, 0.0, h + 1.0, ro)] + gussets)
+        one_volume(occ.cut([(3, vol)], [(3, occ.addCylinder(x, y, t, 0.0, 0.0, h + 1.0, ri))])[0])
+        outside = 2 * a * reach - (a * math.sqrt(ro * ro - a * a) + ro * ro * math.asin(a / ro))
+        return L * W * t + PI * (ro * ro - ri * ri) * h + 4 * gh * outside, dict(
+            dims=BOSS_DIMS + "Ø%g outside, %g high, a blind Ø%g bore; four gussets %g thick along ±X and ±Y, "
+            "%g long beyond the boss, %g high" % (2 * ro, h, 2 * ri, 2 * a, length, gh),
+            wall="plate 2, boss %g, gussets %g" % (ro - ri, 2 * a),
+            junction="ring (the boss on the plate) with four T feet on it all round (gussets ending on the boss's "
+                     "side and standing on the plate)")
+    return build
+
+
 def box_partition():
     """The open box (BOX) with a partition wall across it at x = 30, as thick
     as the walls and as high (flush with the rim): a slab of the outer solid,
@@ -1636,6 +1662,7 @@ JUNCTION_PARTS = [
     ("plate_boss_solid", boss_plate(
         1.5, 0.0, 10.0, 0.0, BOSS_DIMS + "a solid pin Ø3 (1.5 × the plate), 10 high, no hole",
         "round foot without a hole (a pin)", wall="plate 2, pin Ø3")),
+    ("plate_boss_gussets", boss_gussets(4.0, 2.0, 10.0, 6.0, 1.0, 8.0)),
     # A wall butting on the walls of its own sheet, its outside flush with their ends.
     ("box_end_wall_low", box_end_wall_low),
 ]
@@ -1663,7 +1690,10 @@ JUNCTION_README_NOTES = [
     "heights (`ribs_volume`). `plate_rib_split` is fused from a plate cut at",
     "x = 25 and a rib cut at x = 35 with OpenCASCADE's face unification off.",
     "Bosses: plate + π (R² − r²) h − π r_h² t (bore r from the plate's top,",
-    "hole r_h through the plate). `box_partition` and `box_rib_fillet` stand",
+    "hole r_h through the plate). `plate_boss_gussets` adds, per gusset (2a",
+    "thick, from the boss's axis to l beyond its side R, h_g high), h_g × its",
+    "footprint outside the boss's disc: 2a (R + l) − a √(R² − a²) − R² asin(a/R).",
+    "`box_partition` and `box_rib_fillet` stand",
     "on the open box of `../housing.step`'s kind (outside 60 × 40 × 20, edges",
     "R6 / R4, wall 2; volume as the housing's: core, slabs, quarter cylinders",
     "and eighth spheres); the partition is the slab x 29…31 of the outer solid,",

@@ -170,7 +170,8 @@ class GapMap {
       triangles.push_back({point(c[0]), point(c[1]), point(c[2])});
       triangles.push_back({point(c[0]), point(c[2]), point(c[3])});
     }
-    map_ = unfoldConformally(std::move(points), std::move(triangles));
+    map_ = unfoldConformally(points, triangles);
+    if (map_.empty()) map_ = unfoldRing(std::move(points), std::move(triangles));  // walls all round a boss
     if (map_.empty()) {
       const Vec3& p = sheet.nodes[sheet.quads[gap.sheetQuads.front()][0]];
       std::ostringstream msg;
@@ -196,6 +197,14 @@ class GapMap {
   Vec3 flat(const Vec3& p) const {
     const Eigen::Vector2d q = at(p);
     return {q.x(), q.y(), 0};
+  }
+  // Lengths in the map near p per length on the sheet: about 1 on a disc's map (scaled to the sheet's area), from
+  // about e^-M to e^M times the mean round a ring's (the annulus of modulus M).
+  double scale(const Vec3& p) const {
+    const auto& t = map_.triangles[nearest(p)];
+    const double onSheet = (map_.points[t[1]] - map_.points[t[0]]).cross(map_.points[t[2]] - map_.points[t[0]]).norm();
+    const Eigen::Vector2d u = map_.uv[t[1]] - map_.uv[t[0]], v = map_.uv[t[2]] - map_.uv[t[0]];
+    return std::sqrt(std::abs(u.x() * v.y() - u.y() * v.x()) / onSheet);
   }
   // The gap's point at q (on the sheet's quads; put it on the chordal surface after).
   Vec3 lift(const Eigen::Vector2d& q) const { return (*locator_)(q); }
@@ -238,23 +247,34 @@ struct GapEdges {
 
 // The rim edges of the taken-out quads, cut where a footprint reaches the rim: its nodes on an edge split it, and
 // the pieces the footprint covers are left out; a rim node where a footprint node is (a sheet's grid line through
-// the foot's corner) is that node. [in] rim: those edges; [in] footNodes: the footprint's boundary nodes; [in]
-// covered: whether a point (a piece's middle) lies under the footprint.
+// the foot's corner) is that node. A node of a foot's edge along the rim splits the rim edge nearest to it also
+// beyond the tolerance (the sheet's rim and the foot's can lie apart by more where the rim turns: round a boss, its
+// chords cut inside the foot's circle). [in] rim: those edges; [in] footNodes: the footprint's boundary nodes; [in]
+// alongRim: those of its edges along the rim; [in] covered: whether a point (a piece's middle) lies under the
+// footprint.
 std::vector<Edge> rimPieces(const Nodes& nodes, const std::vector<Edge>& rim, const std::set<int>& footNodes,
-                            double tolerance, const std::function<bool(const Vec3&)>& covered) {
+                            const std::set<int>& alongRim, double tolerance,
+                            const std::function<bool(const Vec3&)>& covered) {
   const double same = kCoincide * tolerance;
   auto footNodeAt = [&](int n) {
     for (int f : footNodes)
       if ((nodes.at[f] - nodes.at[n]).norm() <= same) return f;
     return n;
   };
+  std::map<int, std::size_t> nearestEdge;  // per node of a foot's edge along the rim, the rim edge nearest to it
+  for (int f : alongRim) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t e = 0; e < rim.size(); ++e)
+      if (const double d = toSegment(nodes.at[f], nodes.at[rim[e].first], nodes.at[rim[e].second]).first; d < best)
+        best = d, nearestEdge[f] = e;
+  }
   std::vector<Edge> pieces;
-  for (const auto& [rimA, rimB] : rim) {
-    const int a = footNodeAt(rimA), b = footNodeAt(rimB);
+  for (std::size_t e = 0; e < rim.size(); ++e) {
+    const int a = footNodeAt(rim[e].first), b = footNodeAt(rim[e].second);
     std::vector<std::pair<double, int>> along{{0.0, a}, {1.0, b}};
     for (int f : footNodes)
       if (const auto [d, t] = toSegment(nodes.at[f], nodes.at[a], nodes.at[b]);
-          d <= tolerance && f != a && f != b && t > 0 && t < 1)
+          (d <= tolerance || (nearestEdge.count(f) && nearestEdge.at(f) == e)) && f != a && f != b && t > 0 && t < 1)
         along.emplace_back(t, f);
     std::sort(along.begin(), along.end());
     for (std::size_t k = 0; k + 1 < along.size(); ++k) {
@@ -303,7 +323,7 @@ GapEdges gapEdges(const Nodes& nodes, const GapMap& map, const QuadMesh& sheet, 
   auto onRim = [&](const Vec3& p) {  // in the map: a foot running along the rim round a bend lies on it there too
     const Vec3 at = map.flat(p);
     for (const auto& [a, b] : rim)
-      if (toSegment(at, map.flat(nodes.at[a]), map.flat(nodes.at[b])).first <= tolerance) return true;
+      if (toSegment(at, map.flat(nodes.at[a]), map.flat(nodes.at[b])).first <= tolerance * map.scale(p)) return true;
     return false;
   };
   std::vector<Edge> footRim;
@@ -325,12 +345,15 @@ GapEdges gapEdges(const Nodes& nodes, const GapMap& map, const QuadMesh& sheet, 
     const Vec3 at = map.flat(p);
     for (const auto& [a, b] : footRim)
       if (const auto [d, t] = toSegment(at, map.flat(nodes.at[a]), map.flat(nodes.at[b]));
-          d <= tolerance && t > 0 && t < 1)
+          d <= tolerance * map.scale(p) && t > 0 && t < 1)
         return true;
     return std::any_of(footInPlane.begin(), footInPlane.end(),
                        [&](const auto& q) { return insidePolygon(q, at.head<2>()); });
   };
-  for (const Edge& e : rimPieces(nodes, rim, footNodes, tolerance, covered)) g.edges.push_back(e), g.free.insert(e);
+  std::set<int> alongRim;
+  for (const auto& [a, b] : footRim) alongRim.insert(a), alongRim.insert(b);
+  for (const Edge& e : rimPieces(nodes, rim, footNodes, alongRim, tolerance, covered))
+    g.edges.push_back(e), g.free.insert(e);
   return g;
 }
 

@@ -669,4 +669,28 @@ SurfaceMap unfoldConformally(std::vector<Vec3> points, std::vector<std::array<in
   return map;
 }
 
+SurfaceMap unfoldRing(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles) {
+  SurfaceMap map;
+  if (triangles.empty() || !orientAlike(triangles)) return map;
+  map.points = std::move(points), map.triangles = std::move(triangles);
+  std::vector<std::vector<int>> loops = rimLoops(map.triangles, map.points.size());
+  if (loops.size() != 2) return {};
+  if (arcLength(loops[1], map.points).back() > arcLength(loops[0], map.points).back()) std::swap(loops[0], loops[1]);
+  map = mapAnnulus(std::move(map), std::move(loops));
+  if (map.empty()) return map;
+  for (Eigen::Vector2d& p : map.uv) p = std::exp(p.y()) * Eigen::Vector2d(std::cos(p.x()), std::sin(p.x()));
+  double area3 = 0, area2 = 0;
+  std::size_t positive = 0;
+  for (const auto& t : map.triangles) {
+    const Vec3 &a = map.points[t[0]], &b = map.points[t[1]], &c = map.points[t[2]];
+    area3 += 0.5 * (b - a).cross(c - a).norm();
+    const double a2 = 0.5 * cross2(map.uv[t[1]] - map.uv[t[0]], map.uv[t[2]] - map.uv[t[0]]);
+    area2 += std::abs(a2), positive += a2 > 0;
+  }
+  if (positive != 0 && positive != map.triangles.size()) return {};  // folded
+  const double scale = std::sqrt(area3 / area2);
+  for (Eigen::Vector2d& p : map.uv) p = scale * Eigen::Vector2d(p.x(), positive ? p.y() : -p.y());
+  return map;
+}
+
 }  // namespace hexlayer

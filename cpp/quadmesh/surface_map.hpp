@@ -69,6 +69,14 @@ void closeByFan(std::vector<Vec3>& points, std::vector<std::array<int, 3>>& tria
 // counter-clockwise in uv; no rim loops); empty if the patch is not connected and orientable, or a triangle folds.
 SurfaceMap unfoldConformally(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles);
 
+// A ring of triangles (two rims: the gap round walls standing all round a boss) unfolded onto a flat annulus: the
+// annulus map's rectangle (mapToPlane's MapBoundary::Annulus: the angle and the log-radius, conformal) taken through
+// the exponential, (angle, s) -> e^s (cos angle, sin angle), which is conformal too, then scaled to the triangles'
+// area. [in] points; [in] triangles: a connected ring, any orientation. Returns the map (the triangles turned
+// counter-clockwise in uv, cut open from rim to rim: the cut's copies at their points' places); empty if the
+// triangles are not a ring the annulus map takes (unfoldConformally takes a disc).
+SurfaceMap unfoldRing(std::vector<Vec3> points, std::vector<std::array<int, 3>> triangles);
+
 // 3D arc length along a loop from its first point: up to point i at [i], the whole loop at [size].
 std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Vec3>& x);
 

@@ -1,7 +1,7 @@
 // A sheet's quads made to carry the footprints of walls standing on it (quadmesh/footprint_insert.hpp): a strip
-// inside the sheet, one running to its rim, two strips, a ring, feet on both sides (ribs crossing: merged), and a
-// foot off the sheet (refused); on a 60 x 40 grid of 2 mm quads in the plane z = 1 and on copies scaled by 1e-3 and
-// 1e3.
+// inside the sheet, one running to its rim, two strips, a ring, feet on both sides (ribs crossing: merged), feet all
+// round a boss's tube (the gap a ring), and a foot off the sheet (refused); on a 60 x 40 grid of 2 mm quads in the
+// plane z = 1 and on copies scaled by 1e-3 and 1e3.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -85,9 +85,22 @@ void addRing(FootprintQuads& f, double cx, double cy, double r0, double r1, int 
                          first + (i + 1) * around + (j + 1) % around, first + (i + 1) * around + j});
 }
 
+// Every footprint node is a node of the quads where it was, and every footprint quad is one of them.
+void expectFootprintIn(const FootprintInsertion& in, const FootprintQuads& f) {
+  ASSERT_EQ(in.node.size(), f.nodes.size());
+  for (std::size_t n = 0; n < f.nodes.size(); ++n) EXPECT_NEAR((in.quads.nodes[in.node[n]] - f.nodes[n]).norm(), 0, 0);
+  std::map<std::array<int, 4>, int> quads;
+  for (auto q : in.quads.quads) std::sort(q.begin(), q.end()), ++quads[q];
+  for (const auto& q : f.quads) {
+    std::array<int, 4> mapped{in.node[q[0]], in.node[q[1]], in.node[q[2]], in.node[q[3]]};
+    std::sort(mapped.begin(), mapped.end());
+    EXPECT_EQ(quads[mapped], 1);
+  }
+}
+
 // The quads tile the sheet's rectangle once, conformal: every edge in one or two quads, the edges in one its
-// perimeter, the quads' area its area, each quad's scaled Jacobian (turned the sheet's way) at least `worst`; every
-// footprint node is a node of the quads where it was, and every footprint quad is one of them.
+// perimeter, the quads' area its area, each quad's scaled Jacobian (turned the sheet's way) at least `worst`; the
+// footprint in them (expectFootprintIn).
 void expectCarried(const FootprintInsertion& in, const FootprintQuads& f, double s, double worst) {
   std::map<std::pair<int, int>, int> uses;
   double area = 0, least = 1;
@@ -107,15 +120,7 @@ void expectCarried(const FootprintInsertion& in, const FootprintQuads& f, double
   EXPECT_NEAR(perimeter, 2 * (kL + kW) * s, 1e-9 * s);
   EXPECT_NEAR(area, kL * kW * s * s, 1e-9 * s * s);
   EXPECT_GE(least, worst);
-  ASSERT_EQ(in.node.size(), f.nodes.size());
-  for (std::size_t n = 0; n < f.nodes.size(); ++n) EXPECT_NEAR((in.quads.nodes[in.node[n]] - f.nodes[n]).norm(), 0, 0);
-  std::map<std::array<int, 4>, int> quads;
-  for (auto q : in.quads.quads) std::sort(q.begin(), q.end()), ++quads[q];
-  for (const auto& q : f.quads) {
-    std::array<int, 4> mapped{in.node[q[0]], in.node[q[1]], in.node[q[2]], in.node[q[3]]};
-    std::sort(mapped.begin(), mapped.end());
-    EXPECT_EQ(quads[mapped], 1);
-  }
+  expectFootprintIn(in, f);
   EXPECT_GT(in.quadsRemoved, 0u);
   EXPECT_GT(in.quadsMeshed, 0u);
 }
@@ -177,6 +182,63 @@ TEST(FootprintInsert, AStripAt45DegreesOnAnother) {
         addObliqueStrip(f, 30, 2, 7, 2, 6, 2.33, 45, s);
       },
       0.3);
+}
+
+// A boss's chordal tube (radius 3, 10 high, 12 quads round, 6 up) with four gussets standing on it all round (feet 2
+// wide in `rows` rows, 4 quads up from its lower rim to 6 high, one every 90 degrees): the gaps round the feet meet
+// into the whole tube, a ring (two rims) that unfolds onto a flat annulus, not a disc. The quads tile the tube once,
+// conformal, with its two rims as boundary (their length as before, give or take the feet's corners on the circle),
+// carry every foot's node and quad, none folded; at scales 1, 1e-3 and 1e3, with 2 and 3 rows.
+TEST(FootprintInsert, FeetAllRoundATube) {
+  constexpr double kR = 3, kH = 10, kFoot = 2, kFootHigh = 6;
+  constexpr int kAround = 12, kUp = 6, kFeet = 4, kFootUp = 4;
+  for (const int rows : {2, 3})
+    for (const double s : {1.0, 1e-3, 1e3}) {
+      SCOPED_TRACE("rows " + std::to_string(rows) + " x " + std::to_string(s));
+      auto onTube = [&](double angle, double z) -> Vec3 {
+        return s * Vec3(kR * std::cos(angle), kR * std::sin(angle), z);
+      };
+      Sheet tube;
+      for (int j = 0; j <= kUp; ++j)
+        for (int i = 0; i < kAround; ++i) tube.quads.nodes.push_back(onTube(2 * M_PI * i / kAround, kH * j / kUp));
+      for (int j = 0; j < kUp; ++j)
+        for (int i = 0; i < kAround; ++i) {
+          const int a = j * kAround + i, b = j * kAround + (i + 1) % kAround;
+          tube.quads.quads.push_back({a, b, b + kAround, a + kAround});
+          tube.chordal.facets.push_back({a, b, b + kAround, -1});
+          tube.chordal.facets.push_back({a, b + kAround, a + kAround, -1});
+        }
+      tube.chordal.vertices = tube.quads.nodes;
+      for (const Vec3& v : tube.chordal.vertices) tube.chordal.normals.push_back(Vec3(v.x(), v.y(), 0).normalized());
+      tube.chordal.radius.assign(tube.chordal.vertices.size(), s);
+      FootprintQuads f;
+      for (int k = 0; k < kFeet; ++k) {
+        const double middle = 2 * M_PI * (k + 0.3) / kFeet, half = 0.5 * kFoot / kR;  // off the tube's grid lines
+        const int first = static_cast<int>(f.nodes.size());
+        for (int j = 0; j <= kFootUp; ++j)
+          for (int i = 0; i <= rows; ++i)
+            f.nodes.push_back(onTube(middle - half + 2 * half * i / rows, kFootHigh * j / kFootUp));
+        for (int j = 0; j < kFootUp; ++j)
+          for (int i = 0; i < rows; ++i) {
+            const int a = first + j * (rows + 1) + i;
+            f.quads.push_back({a, a + 1, a + rows + 2, a + rows + 1});
+          }
+      }
+      const ChordalLocator locator(tube.chordal);
+      const FootprintInsertion in = insertFootprints(tube.quads, f, locator, 1.6 * s);
+      std::map<std::pair<int, int>, int> uses;
+      for (const auto& q : in.quads.quads)
+        for (int k = 0; k < 4; ++k) ++uses[std::minmax(q[k], q[(k + 1) % 4])];
+      double rims = 0;
+      for (const auto& [e, n] : uses) {
+        EXPECT_LE(n, 2);
+        if (n == 1) rims += (in.quads.nodes[e.first] - in.quads.nodes[e.second]).norm();
+      }
+      const double polygon = 2 * kAround * 2 * kR * std::sin(M_PI / kAround) * s;  // both rims, as the tube's quads
+      EXPECT_NEAR(rims / polygon, 1, 0.01);
+      EXPECT_GT(in.worstQuad, 0.2);
+      expectFootprintIn(in, f);
+    }
 }
 
 // A foot that runs off the sheet is refused.

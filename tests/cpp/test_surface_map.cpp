@@ -225,3 +225,53 @@ TEST(SurfaceMap, ConformalMapUnfoldsAStripAcrossABend) {
   two.triangles.erase(two.triangles.begin() + 40, two.triangles.begin() + 48);  // a row of quads taken out
   EXPECT_TRUE(unfoldConformally(two.points, two.triangles).empty());
 }
+
+// A ring of triangles onto a flat annulus (unfoldRing): a flat ring r 5..10 comes back as itself up to a similarity
+// (every point at |uv| proportional to its radius, the annulus's centre at the origin), a tube of radius 3 and height
+// 4 as the annulus of radii ratio exp(-2 pi 4 / its girth) (conformal: the log-polar rectangle taken through exp);
+// every triangle counter-clockwise, the area the triangles'; on copies scaled by 1e-3 and 1e3. A disc (a rectangle)
+// is not a ring (empty).
+TEST(SurfaceMap, RingUnfoldsOntoAFlatAnnulus) {
+  constexpr int kAround = 96, kRings = 12;
+  for (double scale : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE(scale);
+    for (const bool tube : {false, true}) {
+      std::vector<Vec3> points;
+      for (int k = 0; k <= kRings; ++k)
+        for (int j = 0; j < kAround; ++j) {
+          const double a = 2 * M_PI * j / kAround, r = tube ? 3 : 5 * std::pow(2.0, static_cast<double>(k) / kRings);
+          points.push_back(scale * Vec3(r * std::cos(a), r * std::sin(a), tube ? 4.0 * k / kRings : 0));
+        }
+      std::vector<std::array<int, 3>> triangles;
+      auto v = [&](int k, int j) { return k * kAround + j % kAround; };
+      for (int k = 0; k < kRings; ++k)
+        for (int j = 0; j < kAround; ++j) {
+          triangles.push_back({v(k, j), v(k + 1, j), v(k + 1, j + 1)});
+          triangles.push_back({v(k, j), v(k + 1, j + 1), v(k, j + 1)});
+        }
+      const SurfaceMap map = unfoldRing(points, triangles);
+      ASSERT_FALSE(map.empty());
+      double area3 = 0, area2 = 0;
+      for (const auto& t : map.triangles) {
+        area3 += 0.5 * (map.points[t[1]] - map.points[t[0]]).cross(map.points[t[2]] - map.points[t[0]]).norm();
+        area2 += signedArea(map, t);
+        EXPECT_GT(signedArea(map, t), 0);
+      }
+      EXPECT_NEAR(area2 / area3, 1, 1e-9);
+      auto radius = [&](int i) { return map.uv[i].norm(); };
+      if (!tube) {
+        for (std::size_t i = 0; i < points.size(); ++i)
+          EXPECT_NEAR(radius(static_cast<int>(i)) / radius(0) * points[0].norm() / points[i].norm(), 1, 0.01);
+      } else {
+        const double girth = kAround * 2 * 3 * std::sin(M_PI / kAround);  // the polygon's, as the triangles run
+        const double ratio = radius(v(kRings, 0)) / radius(v(0, 0));      // either rim may be the inner one
+        EXPECT_NEAR(std::min(ratio, 1 / ratio), std::exp(-2 * M_PI * 4 / girth), 0.01);
+        for (int j = 0; j < kAround; ++j) EXPECT_NEAR(radius(v(0, j)) / radius(v(0, 0)), 1, 0.01);
+      }
+    }
+  }
+  const ChordalSurface plain = rectangle(10, 6);
+  std::vector<std::array<int, 3>> disc;
+  for (const auto& f : plain.facets) disc.push_back({f[0], f[1], f[2]}), disc.push_back({f[0], f[2], f[3]});
+  EXPECT_TRUE(unfoldRing(plain.vertices, disc).empty());
+}

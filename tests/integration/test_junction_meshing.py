@@ -2,6 +2,7 @@
 junction samples plate_rib (a rib rim to rim: a T), plate_rib_thin (the rib half the plate's thickness),
 plate_rib_thick (1.5 x), plate_rib_split (faces the boolean left split), plate_rib_inside (the rib ending inside the
 plate), plate_boss (a hollow boss: its foot a ring) and plate_boss_hole (the same over a hole through the plate),
+plate_boss_gussets (four gussets all round a boss: the boss's gap a ring),
 plate_ribs_tee (a rib standing on the plate and on another
 rib), shell_rib (a rib along a cylindrical shell), box_partition (a partition across an open box's floor, bends
 and walls), plate_rib_grid (ribs crossing), plate_rib_fillet and box_rib_fillet (filleted feet, the fillets
@@ -61,13 +62,17 @@ PARTS = {"plate_rib": ["T"], "plate_rib_thin": ["T"], "plate_rib_thick": ["T"], 
          "plate_rib_grid": ["X", "X"] + ["T"] * 6,
          # Filleted feet (r = 1 < the quad size): the fillets smoothed over, the rib meshed on the sharp corner, the
          # quads nearest to each fillet grouped with it.
-         "plate_rib_fillet": ["T"], "box_rib_fillet": ["T"]}
+         "plate_rib_fillet": ["T"], "box_rib_fillet": ["T"],
+         # Four gussets all round a boss: the boss's gap a ring (an annulus in the map); refused with 3 layers
+         # (PART_RUNS; test_gussets_all_round_a_boss_twins).
+         "plate_boss_gussets": ["ring", "T", "T", "T", "T"]}
 # Every edge straight, every wall flat.
 STRAIGHT = {part for part, kinds in PARTS.items() if "ring" not in kinds} - {"shell_rib", "box_partition",
                                                                               "box_rib_fillet"}
 FILLETS = {"plate_rib_fillet": 2, "box_rib_fillet": 4}  # the fillet faces at the rib's foot
 FILLET_REACH = 1.5  # x the largest fillet smoothed over: how far its group's nodes may lie from it
 RUNS = ((2, 1), (3, 1), (2, 2))  # (layers, order)
+PART_RUNS = {"plate_boss_gussets": ((2, 1), (2, 2))}  # other runs than RUNS
 MIN_SJ, MEAN_SJ, JUNCTION_MEAN_SJ = 0.2, 0.9, 0.8
 VOLUME_TOL, AREA_TOL = 0.02, 0.01
 DUPLICATE, ON_FACE = 1e-9, 1e-6  # x the part's diagonal
@@ -172,6 +177,27 @@ def write_gusseted_boss(path, height, length, scale, turn):
                                                                                  height + 1)]
         body, _ = occ.fuse([(3, plate)], [(3, boss)] + [(3, g) for g in gussets])
         occ.cut(body, [(3, occ.addCylinder(30, 20, 2, 0, 0, 11, 2))])
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
+def write_gussets_all_round(path, count, height, outside, bore, scale, turn):
+    """Writes test_gussets_all_round_a_boss_twins's part as STEP: a 60 x 40 x 2 plate, a hollow boss at (30, 20)
+    (radius `outside`, a blind bore `bore` from the plate's top, 8 high) and `count` gussets 2 thick, `height` high,
+    from the boss's axis to 8 beyond its side, one every 90 degrees from +X. Scaled and turned (turned_and_scaled);
+    returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        reach = outside + 8
+        corners = ((30, 19, reach, 2), (29, 20, 2, reach), (30 - reach, 19, reach, 2), (29, 20 - reach, 2, reach))
+        gussets = [occ.addBox(x, y, 1, dx, dy, height + 1) for x, y, dx, dy in corners[:count]]
+        body, _ = occ.fuse([(3, occ.addBox(0, 0, 0, 60, 40, 2))],
+                           [(3, occ.addCylinder(30, 20, 1, 0, 0, 9, outside))] + [(3, g) for g in gussets])
+        occ.cut(body, [(3, occ.addCylinder(30, 20, 2, 0, 0, 9, bore))])
         return turned_and_scaled(gmsh, path, scale, turn)
     finally:
         gmsh.finalize()
@@ -449,6 +475,25 @@ class JunctionMeshing(unittest.TestCase):
                 with self.subTest(part=name, layers=layers, order=order):
                     self.check_part(name, step, layers, order, ["ring", "T", "T"])
 
+    def test_gussets_all_round_a_boss_twins(self):
+        """Three or four gussets ending on a hollow boss's side all round it: the gaps round their feet on the boss
+        meet into the whole boss (a ring, unfolded onto a flat annulus). Four 5 high on R4 / bore R1.5, three, four on
+        R6 / bore R3, four as high as the boss (8), in metres (B-spline faces) and turned 30 degrees about a skew axis;
+        2 layers, and 3 at order 2 but in metres. (With 3 layers the one in metres is refused, Gmsh leaving 4
+        triangles in the boss's gap; so is plate_boss_gussets, the boss 10 high on R4 / R2: the annulus of so tall a
+        ring is graded about 28 times from rim to rim, and the gap's quads fold slightly.)"""
+        both, two = ((2, 1), (3, 2)), ((2, 1),)
+        for name, count, height, outside, bore, scale, turn, runs in (
+                ("gussets_4", 4, 5.0, 4.0, 1.5, 1.0, 0.0, both), ("gussets_3", 3, 5.0, 4.0, 1.5, 1.0, 0.0, both),
+                ("gussets_4_r6", 4, 5.0, 6.0, 3.0, 1.0, 0.0, both), ("gussets_4_full", 4, 8.0, 4.0, 1.5, 1.0, 0.0, both),
+                ("gussets_4_metres", 4, 5.0, 4.0, 1.5, 1e-3, 0.0, two),
+                ("gussets_4_turned", 4, 5.0, 4.0, 1.5, 1.0, 30.0, both)):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_gussets_all_round(step, count, height, outside, bore, scale, turn)
+            for layers, order in runs:
+                with self.subTest(part=name, layers=layers, order=order):
+                    self.check_part(name, step, layers, order, ["ring"] + ["T"] * count)
+
     def test_chamfered_feet_twins(self):
         """A rib whose four foot edges are chamfered 0.8 (45 degrees): the chamfers (plane rim faces narrower than the
         wall, meeting the rib and the plate in concave edges) are smoothed over as fillets are, and grouped by
@@ -478,7 +523,7 @@ class JunctionMeshing(unittest.TestCase):
 
     def test_ribs_on_plates(self):
         for part in PARTS:
-            for layers, order in RUNS:
+            for layers, order in PART_RUNS.get(part, RUNS):
                 with self.subTest(part=part, layers=layers, order=order):
                     step = os.path.join(samples_dir(), part + ".step")
                     path, report = self.mesh(part, layers, order)
