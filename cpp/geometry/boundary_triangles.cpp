@@ -157,22 +157,32 @@ TopTools_IndexedMapOfShape triangulatedFaces(const CadSolid& cad) {
 
 BoundaryTriangles::BoundaryTriangles(const CadSolid& cad) {
   const TopTools_IndexedMapOfShape faces = triangulatedFaces(cad);
-  std::vector<Triangle> triangles;
+  std::vector<Triangle> triangles, uncut;
+  bool cut = false;  // some face is cut through the part
   double deviation = 0;
   for (int f = 1; f <= faces.Extent(); ++f) {
     const TopoDS_Face face = TopoDS::Face(faces(f));
     const std::vector<Triangle2d> mesh = faceTriangles(face);
     if (mesh.empty()) return;
     deviation = std::max(deviation, largestDeviation(face, mesh, 2 * kFineDeflection * cad.diagonal));
-    for (const Triangle2d& t : mesh) triangles.push_back(spaceTriangle(t));
+    for (const Triangle2d& t : mesh) {
+      triangles.push_back(spaceTriangle(t));
+      if (isCutFace(cad, f - 1))
+        cut = true;
+      else
+        uncut.push_back(triangles.back());
+    }
   }
   if (triangles.empty() || !closedSurface(triangles)) return;
   // A triangle with two corners at one point (at a pole) is a segment along its neighbours' edges.
-  triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
-                                 [](const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }),
-                  triangles.end());
+  const auto degenerate = [](const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; };
+  triangles.erase(std::remove_if(triangles.begin(), triangles.end(), degenerate), triangles.end());
   margin_ = 2 * deviation + largestTolerance(cad.solid) + 1e-6 * cad.diagonal;
   rays_ = rayDirections(triangles);
+  if (cut) {
+    uncut.erase(std::remove_if(uncut.begin(), uncut.end(), degenerate), uncut.end());
+    uncut_.emplace(std::move(uncut));
+  }
   tree_.emplace(std::move(triangles));
 }
 
@@ -185,6 +195,7 @@ Containment BoundaryTriangles::classify(const Vec3& p) const {
 }
 
 bool BoundaryTriangles::noTriangleWithin(const Vec3& p, double distance) const {
+  if (uncut_) return !uncut_->anyWithin(p, distance);
   return !tree_ || !tree_->anyWithin(p, distance);
 }
 

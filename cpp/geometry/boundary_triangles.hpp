@@ -27,7 +27,7 @@ class BoundaryTriangles {
   bool fartherThan(const Vec3& p, double distance) const;
 
   // Whether no triangle comes within `distance` of p (the exact boundary lies within margin() of the
-  // triangles); true when there are no triangles to ask.
+  // triangles), those of faces cut through the part (isCutFace) aside; true when there are no triangles to ask.
   bool noTriangleWithin(const Vec3& p, double distance) const;
 
   // Twice the largest distance measured between the triangles and the exact faces, plus the
@@ -36,6 +36,7 @@ class BoundaryTriangles {
 
  private:
   std::optional<TriangleTree> tree_;
+  std::optional<TriangleTree> uncut_;  // the triangles of the faces not cut through the part, if some are
   double margin_ = 0;
   std::array<Vec3, 3> rays_;  // directions tried in turn, the first along the solid's thinnest extent
 };

@@ -24,7 +24,16 @@ struct CadSolid {
   double diagonal = 0;  // length of the bounding box diagonal
   double unit = 1;      // lengths of `solid` per length of the input: the input scaled by `unit` (normalizingUnit)
   std::vector<int> inputFace;  // per face (0-based), the input's face it is (a piece of); empty: the same faces
+  // Per input face, whether the pipeline cut it through the part (a junction's foot, junction_cut.hpp): the part goes
+  // on beyond it, it is no boundary a wall's thickness is measured against. Empty: none.
+  std::vector<char> cutInput;
 };
+
+// Whether face f (0-based) of the solid is (a piece of) a cut through the part (CadSolid::cutInput).
+inline bool isCutFace(const CadSolid& cad, int f) {
+  const int input = cad.inputFace.empty() ? f : cad.inputFace[f];
+  return input >= 0 && input < static_cast<int>(cad.cutInput.size()) && cad.cutInput[input] != 0;
+}
 
 // The input's face that face f (0-based) of the solid is, or is a piece of (mixed_faces.hpp splits faces).
 inline int inputFaceOf(const CadSolid& cad, int f) { return cad.inputFace.empty() || f < 0 ? f : cad.inputFace[f]; }

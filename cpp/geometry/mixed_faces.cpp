@@ -415,7 +415,7 @@ CadSolid namedPieces(const CadSolid& cad, BRepBuilderAPI_MakeShape& split) {
   TopExp_Explorer solids(split.Shape(), TopAbs_SOLID);
   if (!solids.More()) return {};
   CadSolid out = prepareSolid(TopoDS::Solid(solids.Current()), 1);
-  out.unit = cad.unit;
+  out.unit = cad.unit, out.cutInput = cad.cutInput;
   out.inputFace.assign(out.faces.Extent(), -1);
   for (int f = 1; f <= cad.faces.Extent(); ++f) {
     const int kept = out.faces.FindIndex(cad.faces(f));

@@ -358,7 +358,7 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
     // Top = "wall" for now; a face narrower than a quarter of the wall (a sliver along a bend) carries no bubble.
     fs.side = fs.wallShare >= kMinWallShare && fs.width >= kMinWallWidth * fs.thickness ? Side::Top : Side::Lateral;
     fs.marks = std::move(hits.marks);
-    totalArea += fs.area;
+    if (!isCutFace(cad, f)) totalArea += fs.area;  // a cut through the part (a piece's foot) is not its surface
   }
   std::vector<Ray> wallThickness, everywhere;
   double wallArea = 0;

@@ -271,21 +271,26 @@ std::vector<SurfaceGroup> groupsOfInputFaces(std::vector<SurfaceGroup> pieces, c
   return merged;
 }
 
-// The mesh's boundary on the CAD faces (FreeCAD's FaceN). [in,out] mesh: every boundary node given a CAD face;
-// [out] r: the surface groups' statistics and the boundary deviation.
-std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, const WallProjector& walls,
-                                         MeshReport& r) {
+// The mesh's boundary on the CAD faces (FreeCAD's FaceN). [in,out] mesh: every boundary node given a CAD face (of
+// the input's faces); [in] group: whether to group the nodes and element faces by CAD face (not for a piece of a
+// part, junction_mesh.hpp: the joined part is grouped); [out] r: the surface groups' statistics and the boundary
+// deviation (if grouped).
+std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, const WallProjector& walls, MeshReport& r,
+                                         bool group = true) {
   const std::vector<BoundaryFace> quads = boundaryFaces(mesh);  // sorted by hex, then local face
   const std::vector<int> boundary = boundaryNodes(mesh, quads);
   const std::size_t unplaced = faceUnplacedNodes(mesh, walls, boundary);
-  SurfaceGroups s = surfaceGroups(mesh, CadFaces(cad), quads, boundary);
-  r.surfaceGroups = s.stats;
+  SurfaceGroups s;
+  if (group) {
+    s = surfaceGroups(mesh, CadFaces(cad), quads, boundary);
+    r.surfaceGroups = s.stats;
+    r.boundaryDeviation = std::move(s.deviation);
+  }
   r.surfaceGroups.nodesNotPutOnCad = unplaced;
-  r.boundaryDeviation = std::move(s.deviation);
   if (cad.inputFace.empty()) return std::move(s.groups);
   // Faces split into pieces (mixed_faces.hpp): the input's faces, as the user's part has them.
   for (int& f : mesh.nodeFace) f = inputFaceOf(cad, f);
-  return groupsOfInputFaces(std::move(s.groups), cad);
+  return group ? groupsOfInputFaces(std::move(s.groups), cad) : std::vector<SurfaceGroup>{};
 }
 
 // The chordal surface and quad mesh of one more solid, their ids after those already there (-1 stays).
@@ -436,34 +441,39 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
   std::vector<FootSurface> ownFeet;  // the piece's feet on the sheets it stands on
   for (const Foot& f : t.cut.feet)
     if (f.sheet == s) ownFeet.emplace_back(f.face, tolerance);
-  MeshResult piece = meshSolid(t.cut.pieces[s], o, [&](const CadSolid& c, QuadStage& stage) {
-    std::vector<char> blocked;  // the footprints' quads
-    if (!footprint.quads.empty()) {
-      const ChordalLocator locator(stage.chordal);
-      FootprintQuads onWall = footprint;
-      for (Vec3& p : onWall.nodes) p *= c.unit;
-      // feet on both sides of the sheet (ribs crossing it) are one
-      merged = mergeFeetOnBothSides(onChordalSurface(onWall, locator), locator);
-      merged.shift /= c.unit;
-      const FootprintInsertion in = insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads));
-      for (int m : merged.node) column.push_back(in.node[m]);
-      t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
-      stage.quads = in.quads;
-      std::vector<char> onFootprint(stage.quads.nodes.size(), 0);
-      for (int n : in.node) onFootprint[n] = 1;
-      blocked.resize(stage.quads.quads.size(), 0);
-      for (std::size_t q = 0; q < stage.quads.quads.size(); ++q)
-        blocked[q] = std::all_of(stage.quads.quads[q].begin(), stage.quads.quads[q].end(),
-                                 [&](int n) { return onFootprint[n] != 0; });
-    }
-    // a rim loop all on a foot (a boss's) becomes a closed loop of fixed nodes in the sheet it stands on: even
-    evenRimLoops(
-        stage.quads,
-        [&](const Vec3& p) {
-          return std::any_of(ownFeet.begin(), ownFeet.end(), [&](FootSurface& f) { return f.holds(p / c.unit); });
-        },
-        blocked);
-  });
+  std::vector<char> cutFaces;  // the piece's feet, on the sheets it stands on or under those standing on it
+  for (int origin : t.cut.faceOrigin[s]) cutFaces.push_back(origin < 0);
+  MeshResult piece = meshSolid(
+      t.cut.pieces[s], o,
+      [&](const CadSolid& c, QuadStage& stage) {
+        std::vector<char> blocked;  // the footprints' quads
+        if (!footprint.quads.empty()) {
+          const ChordalLocator locator(stage.chordal);
+          FootprintQuads onWall = footprint;
+          for (Vec3& p : onWall.nodes) p *= c.unit;
+          // feet on both sides of the sheet (ribs crossing it) are one
+          merged = mergeFeetOnBothSides(onChordalSurface(onWall, locator), locator);
+          merged.shift /= c.unit;
+          const FootprintInsertion in = insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads));
+          for (int m : merged.node) column.push_back(in.node[m]);
+          t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
+          stage.quads = in.quads;
+          std::vector<char> onFootprint(stage.quads.nodes.size(), 0);
+          for (int n : in.node) onFootprint[n] = 1;
+          blocked.resize(stage.quads.quads.size(), 0);
+          for (std::size_t q = 0; q < stage.quads.quads.size(); ++q)
+            blocked[q] = std::all_of(stage.quads.quads[q].begin(), stage.quads.quads[q].end(),
+                                     [&](int n) { return onFootprint[n] != 0; });
+        }
+        // a rim loop all on a foot (a boss's) becomes a closed loop of fixed nodes in the sheet it stands on: even
+        evenRimLoops(
+            stage.quads,
+            [&](const Vec3& p) {
+              return std::any_of(ownFeet.begin(), ownFeet.end(), [&](FootSurface& f) { return f.holds(p / c.unit); });
+            },
+            blocked);
+      },
+      cutFaces);
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty()) {
     const double reach = wallShare * piece.report.thickness + merged.shift;
@@ -705,13 +715,15 @@ void validateOptions(const MeshOptions& o) {
 
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) { return meshSolid(solid, given, {}); }
 
-MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const QuadEdit& edit) {
+MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const QuadEdit& edit,
+                     const std::vector<char>& cutFaces) {
   validateOptions(given);
   MeshResult result;
   MeshReport& r = result.report;
   StageClock clock(r.stages, given);
   // Every stage up to the surface groups works on the part scaled to one size (normalizingUnit).
   CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid, normalizingUnit(solid)); });
+  cad.cutInput = cutFaces;
   const MeshOptions o = inPipelineUnits(given, cad.unit);
   // The boundary's triangles (a finer BRepMesh on freeform faces: seconds on a B-spline shell), made once for the wall
   // sides and the tet filter, again only if faces were split in between.
@@ -782,7 +794,8 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   r.smoothing = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
   r.sharpEdges = clock.run("sharp_edges", [&] { return captureSharpEdges(result.mesh, cad, sides); });
   if (o.order == 2) r.quadratic = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
-  result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
+  result.surfaceGroups =
+      clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r, /*group=*/!edit); });
   if (o.shell)
     result.shell = clock.run("shell", [&] { return midSurfaceShell(result.mesh, quads, result.surfaceGroups); });
   result.chordalSurface = std::move(stage.chordal);

@@ -62,7 +62,11 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options);
 // [in] cad: the solid as the stages see it (scaled by cad.unit); [in,out] stage: its quads replaced.
 using QuadEdit = std::function<void(const CadSolid& cad, QuadStage& stage)>;
 
-// meshSolid with the quad stage's quads replaced by `edit` (none: as made). [in] solid, options, edit.
-MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options, const QuadEdit& edit);
+// meshSolid for a piece of a part (junction_mesh.hpp): the quad stage's quads replaced by `edit` (none: as made, and
+// the boundary grouped as meshSolid's); with an edit, the boundary nodes are given CAD faces but not grouped (the
+// joined part is: MeshResult::surfaceGroups empty). [in] solid, options, edit; [in] cutFaces: per face of the solid
+// (TopExp::MapShapes' order), whether it is a cut through the part (a foot: CadSolid::cutInput); empty: none.
+MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options, const QuadEdit& edit,
+                     const std::vector<char>& cutFaces = {});
 
 }  // namespace hexlayer

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/box_grid.hpp"
 #include "core/child_process.hpp"
 #include "core/error.hpp"
 #include "core/point_grid.hpp"
@@ -33,13 +34,12 @@ constexpr double kOnRim = 0.1;          // of the quad size: a footprint node th
 constexpr double kTinyEdge = 0.3;       // of the quad size: a rim node of the gap this near a footprint's is dropped
 constexpr int kMaxStrip = 20;           // quads between two leftover triangles that are paired (quad_completion)
 constexpr double kGmshSeconds = 120;    // a gap's Gmsh run (it takes milliseconds)
-constexpr int kGapAlgorithms[] = {6, 5, 1};      // Gmsh's 2D algorithms tried: frontal-Delaunay, Delaunay, MeshAdapt
-constexpr double kGapSpacing[] = {1, 0.7, 0.5};  // of the boundary's edge lengths: the gap's mesh sizes tried
-constexpr double kGoodGap = 0.3;                 // scaled Jacobian of the gap's worst quad that needs no finer try
-constexpr int kAlongNormal = 4;                  // steps of a footprint node onto the chordal surface along a normal
-constexpr int kSmoothing = 10;                   // iterations of the gap's quads (as the quad stage's)
-constexpr double kAcute = 70 * M_PI / 180;       // a boundary corner of the gap below this gets a quad of its own
-constexpr int kWedgeSteps = 12;                  // the wedge quad's fourth corner: tried at kWedgeSteps^2 places
+constexpr int kGapAlgorithms[] = {6, 5, 1};  // Gmsh's 2D algorithms tried: frontal-Delaunay, Delaunay, MeshAdapt
+constexpr double kGoodGap = 0.3;             // scaled Jacobian of the gap's worst quad that needs no wider gap
+constexpr int kAlongNormal = 4;              // steps of a footprint node onto the chordal surface along a normal
+constexpr int kSmoothing = 10;               // iterations of the gap's quads (as the quad stage's)
+constexpr double kAcute = 70 * M_PI / 180;   // a boundary corner of the gap below this gets a quad of its own
+constexpr int kWedgeSteps = 12;              // the wedge quad's fourth corner: tried at kWedgeSteps^2 places
 constexpr double kFlat = 0.05;  // scaled Jacobian of a Gmsh quad of the gap taken out with a neighbour and split anew
 
 using Quad = std::array<int, 4>;
@@ -180,6 +180,18 @@ class GapMap {
       throw geometryError(msg.str());
     }
     locator_ = std::make_unique<MapLocator>(map_);
+    std::vector<double> extent;  // the triangles in a grid of cells as large as the median triangle
+    for (const auto& t : map_.triangles)
+      extent.push_back((map_.points[t[0]].cwiseMax(map_.points[t[1]]).cwiseMax(map_.points[t[2]]) -
+                        map_.points[t[0]].cwiseMin(map_.points[t[1]]).cwiseMin(map_.points[t[2]]))
+                           .maxCoeff());
+    std::nth_element(extent.begin(), extent.begin() + static_cast<long>(extent.size() / 2), extent.end());
+    triangles_ = BoxGrid(extent[extent.size() / 2]);
+    for (int t = 0; t < static_cast<int>(map_.triangles.size()); ++t) {
+      const auto& c = map_.triangles[t];
+      triangles_.insert(t, map_.points[c[0]].cwiseMin(map_.points[c[1]]).cwiseMin(map_.points[c[2]]),
+                        map_.points[c[0]].cwiseMax(map_.points[c[1]]).cwiseMax(map_.points[c[2]]));
+    }
   }
   GapMap(const GapMap&) = delete;  // locator_ refers to map_
   GapMap& operator=(const GapMap&) = delete;
@@ -216,18 +228,17 @@ class GapMap {
   }
 
  private:
+  // The triangle nearest to p, the first of those as near (the first triangle if p is not finite).
   int nearest(const Vec3& p) const {
-    int best = 0;
-    double bestD2 = std::numeric_limits<double>::infinity();
-    for (int t = 0; t < static_cast<int>(map_.triangles.size()); ++t) {
-      const auto& c = map_.triangles[t];
-      const double d2 = squaredDistanceToTriangle(p, {map_.points[c[0]], map_.points[c[1]], map_.points[c[2]]});
-      if (d2 < bestD2) bestD2 = d2, best = t;
-    }
-    return best;
+    const int t = triangles_.nearest(p, [&](int id, double) {
+      const auto& c = map_.triangles[id];
+      return squaredDistanceToTriangle(p, {map_.points[c[0]], map_.points[c[1]], map_.points[c[2]]});
+    });
+    return std::max(t, 0);
   }
   SurfaceMap map_;
   std::unique_ptr<MapLocator> locator_;
+  BoxGrid triangles_{1.0};  // map_'s triangles by their boxes
 };
 
 // The quad turned counter-clockwise in the gap's map.
@@ -872,8 +883,8 @@ std::pair<std::vector<Quad>, double> rimRing(Nodes& nodes, const GapMap& map, co
 }
 
 // The gap's quads on the sheet: of Gmsh's algorithms (kGapAlgorithms), on the gap as it is and with its acute
-// corners cut off (cutAcuteCorners), the one whose worst quad, smoothed, is best; finer (kGapSpacing) while none of
-// them gives quads only, all at least kGoodGap.
+// corners cut off (cutAcuteCorners), the one whose worst quad, smoothed, is best. (Finer mesh sizes at the points are
+// not tried: every boundary edge is one segment, and Gmsh 4.8 sizes the inside from those, not from the points'.)
 // [in] at: every node so far; [in] map, chordal, surfaces; [out] worst: its worst quad's scaled Jacobian. Throws
 // geometryError if none gives unfolded quads.
 QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
@@ -887,22 +898,18 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalL
   QuadMesh best;
   double bestWorst = 0;
   std::string failure = "its quads are folded";
-  for (double finer : kGapSpacing) {
-    for (const WedgeCut& way : ways) {
-      std::vector<double> spacing = loopSpacing(at, surfaces);
-      spacing.insert(spacing.end(), way.spacing.begin(), way.spacing.end());
-      for (double& h : spacing) h *= finer;
-      for (int algorithm : kGapAlgorithms) {
-        try {
-          double tried = 0;
-          QuadMesh q = gapTry(at, map, chordal, surfaces, way, spacing, algorithm, tried);
-          if (tried > bestWorst) best = std::move(q), bestWorst = tried;
-        } catch (const Error& e) {
-          failure = e.what();
-        }
+  for (const WedgeCut& way : ways) {
+    std::vector<double> spacing = loopSpacing(at, surfaces);
+    spacing.insert(spacing.end(), way.spacing.begin(), way.spacing.end());
+    for (int algorithm : kGapAlgorithms) {
+      try {
+        double tried = 0;
+        QuadMesh q = gapTry(at, map, chordal, surfaces, way, spacing, algorithm, tried);
+        if (tried > bestWorst) best = std::move(q), bestWorst = tried;
+      } catch (const Error& e) {
+        failure = e.what();
       }
     }
-    if (bestWorst >= kGoodGap) break;
   }
   if (best.quads.empty()) throw geometryError("junction: the gap round a wall's foot was not meshed: " + failure);
   worst = bestWorst;

@@ -1,5 +1,6 @@
 // Top, bottom and lateral faces (geometry/wall_sides.hpp) on rims of every shape: a ray crosses the wall
-// when its middle is as far from the whole boundary as from its ends, decided per sample.
+// when its middle is as far from the whole boundary as from its ends, decided per sample; a cut through the part (a
+// junction piece's foot) is no such boundary.
 #include <gtest/gtest.h>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -210,4 +211,31 @@ TEST(WallSides, CubeIsNotAThinSection) {
     EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
     EXPECT_NE(std::string(e.what()).find("not a thin section"), std::string::npos) << e.what();
   }
+}
+
+// A low rib's piece cut off its plate (junction_cut.hpp): 40 long, 2 thick, 2 or 3 high, its bottom face the foot, a
+// cut through the part (CadSolid::cutInput). The cut is no boundary a wall is measured against: the rib's two sides
+// are its walls, 2 apart, and the foot and the top and ends rims. Taken for the part's boundary, the foot leaves too
+// little of each side crossing the wall (2 high: not a thin section; 3 high: about half). At scales 1, 1e-3, 1e3.
+TEST(WallSides, ALowRibsPieceHasWallsWhenItsFootIsACut) {
+  for (const double high : {2.0, 3.0})
+    for (const double s : {1.0, 1e-3, 1e3}) {
+      SCOPED_TRACE("high " + std::to_string(high) + " x " + std::to_string(s));
+      const TopoDS_Solid rib = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40 * s, 2 * s, high * s).Solid();
+      CadSolid cad = prepareSolid(rib, normalizingUnit(rib));
+      int foot = -1;
+      for (int f = 0; f < cad.faces.Extent(); ++f)
+        if (surfaceOf(cad, f).GetType() == GeomAbs_Plane && std::abs(faceCentre(cad, f).z()) < 1e-9 * cad.diagonal)
+          foot = f;
+      ASSERT_GE(foot, 0);
+      if (high == 2) EXPECT_THROW(classifyWallSides(cad), Error);  // 3 high: about half of each side crosses
+      cad.cutInput.assign(cad.faces.Extent(), 0);
+      cad.cutInput[foot] = 1;
+      const WallSides w = classifyWallSides(cad);
+      EXPECT_NEAR(w.thickness / cad.unit / s, 2, 1e-6);
+      EXPECT_EQ(count(w, Side::Lateral), 4);
+      for (int f = 0; f < cad.faces.Extent(); ++f)
+        if (w.faces[f].side != Side::Lateral) EXPECT_NEAR(std::abs(faceCentre(cad, f).y()) / cad.unit / s, 1, 1);
+      EXPECT_EQ(findSheets(cad, w).size(), 1u);
+    }
 }

@@ -203,6 +203,20 @@ def write_gussets_all_round(path, count, height, outside, bore, scale, turn):
         gmsh.finalize()
 
 
+def write_rib_of_section(path, thick, high, scale, turn):
+    """Writes test_low_and_thick_ribs_twins's part as STEP: a 60 x 40 x 2 plate and a rib `thick` x `high` along X at
+    y = 20, rim to rim. Scaled and turned (turned_and_scaled); returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        occ.fuse([(3, occ.addBox(0, 0, 0, 60, 40, 2))], [(3, occ.addBox(0, 20 - thick / 2, 1, 60, thick, high + 1))])
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
 def write_chamfered_rib(path, chamfer, scale, turn):
     """Writes test_chamfered_feet_twins's part as STEP: a 60 x 40 x 2 plate and a rib 2 thick, 50 long and 10 high
     standing inside it, its four foot edges chamfered `chamfer` x `chamfer` (45 degrees, mitred at its corners).
@@ -493,6 +507,24 @@ class JunctionMeshing(unittest.TestCase):
             for layers, order in runs:
                 with self.subTest(part=name, layers=layers, order=order):
                     self.check_part(name, step, layers, order, ["ring"] + ["T"] * count)
+
+    def test_low_and_thick_ribs_twins(self):
+        """Walls whose piece, cut off the sheet they stand on, is small across: a rib as high as the 2 mm plate is
+        thick, 1.5 x as high, a rib 6 thick (3 x the plate) 12 high, 5 thick 6 high. Their feet are cuts through the
+        part, no boundary their walls are measured against (CadSolid::cutInput); taken for one, they were refused as
+        not thin. In metres (B-spline faces) and turned 30 degrees about a skew axis too; 2 layers, and 3 at order 2.
+        (Two triangular gussets on a boss, the piece beyond the boss a triangle about 6.6 x 4.4 on 2 mm, now mesh too,
+        but not right at their acute tips, as lbracket_gusset's: a node grouped with the sloped face lies 0.15 mm off
+        it; turned 30 degrees, two hexes fold there.)"""
+        ribs = (("rib_2_2", 2.0, 2.0), ("rib_2_3", 2.0, 3.0), ("rib_6_12", 6.0, 12.0), ("rib_5_6", 5.0, 6.0))
+        for name, thick, high in ribs:
+            for suffix, scale, turn in (("", 1.0, 0.0), ("_metres", 1e-3, 0.0), ("_turned", 1.0, 30.0)):
+                part = name + suffix
+                step = os.path.join(self.tmp.name, part + ".step")
+                self.volumes[part] = write_rib_of_section(step, thick, high, scale, turn)
+                for layers, order in ((2, 1), (3, 2)):
+                    with self.subTest(part=part, layers=layers, order=order):
+                        self.check_part(part, step, layers, order, ["T"])
 
     def test_chamfered_feet_twins(self):
         """A rib whose four foot edges are chamfered 0.8 (45 degrees): the chamfers (plane rim faces narrower than the
