@@ -294,3 +294,32 @@ TEST(JunctionCut, GussetsEndingOnABossAcrossItsSeam) {
       EXPECT_NEAR(onPlate / (cad.unit * cad.unit) / (s * s) / plateFeet, 1, 1e-6);
     }
 }
+
+// A rib tying a hollow boss to a box's end wall (a housing's): an open box 80 x 50 x 20, wall 2, sharp edges, a boss
+// on its floor (outside R3.5, bore R1.5 from the floor's top, 12 high) and a rib 2 x 8 from the end wall into the
+// boss. The rib stands on the floor, the wall and the boss; one of the boss's foot wires on the floor was a segment
+// there and back, a face of no area that no piece kept (refused: `the foot ... is not a face of both pieces`). The
+// cut gives three pieces of one sheet each, the volumes adding up, every foot of some area; at scales 1, 1e-3, 1e3.
+TEST(JunctionCut, ARibFromAWallIntoABoss) {
+  TopoDS_Shape part = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 80, 50, 20).Shape(),
+                                      BRepPrimAPI_MakeBox(gp_Pnt(2, 2, 2), 76, 46, 20).Shape())
+                          .Shape();
+  part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 25, 1), gp::DZ()), 3.5, 13).Shape()).Shape();
+  part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(1, 24, 1), 19, 2, 9).Shape()).Shape();
+  part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 25, 2), gp::DZ()), 1.5, 13).Shape()).Shape();
+  ShapeUpgrade_UnifySameDomain unify(part);
+  unify.Build();
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const TopoDS_Solid solid = test_boxes::scaled(unify.Shape(), s);
+    const CadSolid cad = prepareSolid(solid, normalizingUnit(solid));
+    const WallSides sides = classifyWallSides(cad);
+    const std::vector<Sheet> sheets = mergeCrossingRibs(cad, sides, findSheets(cad, sides));
+    ASSERT_EQ(sheets.size(), 3u);
+    const JunctionCut cut = cutAtJunctions(cad, sides, sheets);
+    ASSERT_EQ(cut.pieces.size(), 3u);
+    expectPiecesAddUp({cad, sheets, cut});
+    for (const Foot& f : cut.feet)
+      EXPECT_GT(areaOf(f.face) / (cad.unit * cad.unit) / (s * s), 1.0) << "sheet " << f.sheet;
+  }
+}
