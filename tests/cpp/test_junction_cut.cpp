@@ -164,15 +164,19 @@ struct SampleCut {
   JunctionCut cut;
 };
 
-SampleCut cutSample(const std::string& name, double s) {
-  const TopoDS_Solid read =
-      readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/junctions/" + name + ".step").at(0);
-  const TopoDS_Solid solid = test_boxes::scaled(read, s);
+// The solid cut at its junctions, as the pipeline cuts it (crossing ribs merged first).
+SampleCut cutSolid(const TopoDS_Solid& solid) {
   SampleCut c{prepareSolid(solid, normalizingUnit(solid)), {}, {}};
   const WallSides sides = classifyWallSides(c.cad);
   c.sheets = mergeCrossingRibs(c.cad, sides, findSheets(c.cad, sides));
   c.cut = cutAtJunctions(c.cad, sides, c.sheets);
   return c;
+}
+
+SampleCut cutSample(const std::string& name, double s) {
+  const TopoDS_Solid read =
+      readSolids(std::string(HEXLAYER_SOURCE_DIR) + "/Resources/samples/junctions/" + name + ".step").at(0);
+  return cutSolid(test_boxes::scaled(read, s));
 }
 
 // Every piece is one sheet and the pieces' volumes are the part's.
@@ -275,15 +279,13 @@ TEST(JunctionCut, GussetsEndingOnABossAcrossItsSeam) {
     for (double s : {1.0, 1e-3, 1e3}) {
       SCOPED_TRACE("x " + std::to_string(s) + (nurbs ? " B-spline" : ""));
       const TopoDS_Shape scaled = test_boxes::scaled(unify.Shape(), s);
-      const TopoDS_Solid solid =
-          nurbs ? TopoDS::Solid(BRepBuilderAPI_NurbsConvert(scaled, true).Shape()) : TopoDS::Solid(scaled);
-      const CadSolid cad = prepareSolid(solid, normalizingUnit(solid));
-      const WallSides sides = classifyWallSides(cad);
-      const std::vector<Sheet> sheets = mergeCrossingRibs(cad, sides, findSheets(cad, sides));
-      ASSERT_EQ(sheets.size(), 4u);
-      const JunctionCut cut = cutAtJunctions(cad, sides, sheets);
+      const SampleCut c =
+          cutSolid(nurbs ? TopoDS::Solid(BRepBuilderAPI_NurbsConvert(scaled, true).Shape()) : TopoDS::Solid(scaled));
+      const CadSolid& cad = c.cad;
+      const JunctionCut& cut = c.cut;
+      ASSERT_EQ(c.sheets.size(), 4u);
       ASSERT_EQ(cut.pieces.size(), 4u);
-      expectPiecesAddUp({cad, sheets, cut});
+      expectPiecesAddUp(c);
       double onPlate = 0;
       std::set<int> onBoss;
       for (const Foot& f : cut.feet) {
@@ -311,15 +313,11 @@ TEST(JunctionCut, ARibFromAWallIntoABoss) {
   unify.Build();
   for (double s : {1.0, 1e-3, 1e3}) {
     SCOPED_TRACE("x " + std::to_string(s));
-    const TopoDS_Solid solid = test_boxes::scaled(unify.Shape(), s);
-    const CadSolid cad = prepareSolid(solid, normalizingUnit(solid));
-    const WallSides sides = classifyWallSides(cad);
-    const std::vector<Sheet> sheets = mergeCrossingRibs(cad, sides, findSheets(cad, sides));
-    ASSERT_EQ(sheets.size(), 3u);
-    const JunctionCut cut = cutAtJunctions(cad, sides, sheets);
-    ASSERT_EQ(cut.pieces.size(), 3u);
-    expectPiecesAddUp({cad, sheets, cut});
-    for (const Foot& f : cut.feet)
-      EXPECT_GT(areaOf(f.face) / (cad.unit * cad.unit) / (s * s), 1.0) << "sheet " << f.sheet;
+    const SampleCut c = cutSolid(test_boxes::scaled(unify.Shape(), s));
+    ASSERT_EQ(c.sheets.size(), 3u);
+    ASSERT_EQ(c.cut.pieces.size(), 3u);
+    expectPiecesAddUp(c);
+    for (const Foot& f : c.cut.feet)
+      EXPECT_GT(areaOf(f.face) / (c.cad.unit * c.cad.unit) / (s * s), 1.0) << "sheet " << f.sheet;
   }
 }
