@@ -157,7 +157,7 @@ def cases(suite, parts):
 # feet).
 JUNCTIONS = ("plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside", "plate_boss",
              "plate_ribs_tee", "shell_rib", "box_partition", "lbracket_gusset", "plate_rib_grid", "plate_rib_fillet",
-             "box_rib_fillet")
+             "box_rib_fillet", "plate_boss_gussets")
 # Parts with many features (scripts/make_samples.py --only many) and the real parts.
 MANY = ("keyboard_plate", "plate_200_holes", "perforated_tube")
 REAL = os.path.join(os.path.dirname(ROOT), "shared", "parts", "real")
