@@ -28,10 +28,10 @@ inline double nearestOnSegment(const Vec3& a, const Vec3& b, const Vec3& p) {
   return len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
 }
 
-// The median of the values (the upper one of an even count); 0 for none. [in] values: a copy, reordered.
 // The angle between two vectors, in [0, pi] (atan2 of the cross's norm and the dot: exact near 0 and pi too).
 inline double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
+// The median of the values (the upper one of an even count); 0 for none. [in] values: a copy, reordered.
 inline double median(std::vector<double> values) {
   if (values.empty()) return 0;
   std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());

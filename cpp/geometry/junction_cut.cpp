@@ -398,9 +398,9 @@ std::vector<Foot> footFaces(const Junctions& j, int s) {
     if (!on.plane) along.push_back(on.surface);
   for (const SurfaceEdges& on : surfaces)
     for (const TopoDS_Wire& wire : closedWires(on.edges, on.surface, along, tolerance))
-      if (const std::optional<TopoDS_Face> face = faceOn(on, wire, tolerance);
-          face && areaOf(*face) > tolerance * tolerance)
-        feet.push_back({s, on.base, on.face, *face, areaOf(*face)});  // not a wire of edges back and forth (no area)
+      if (const std::optional<TopoDS_Face> face = faceOn(on, wire, tolerance))
+        if (const double area = areaOf(*face); area > tolerance * tolerance)  // not edges there and back (no area)
+          feet.push_back({s, on.base, on.face, *face, area});
   if (feet.empty() && standsOnRimFace(j, s))
     throw geometryError("T-junction: the sheet at " + sheetPlace(j.cad, j.sheets[s]) +
                         " stands on the edge (a rim face) of another sheet, not on its wall, which is not meshed yet");

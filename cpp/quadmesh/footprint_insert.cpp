@@ -180,18 +180,15 @@ class GapMap {
       throw geometryError(msg.str());
     }
     locator_ = std::make_unique<MapLocator>(map_);
-    std::vector<double> extent;  // the triangles in a grid of cells as large as the median triangle
-    for (const auto& t : map_.triangles)
-      extent.push_back((map_.points[t[0]].cwiseMax(map_.points[t[1]]).cwiseMax(map_.points[t[2]]) -
-                        map_.points[t[0]].cwiseMin(map_.points[t[1]]).cwiseMin(map_.points[t[2]]))
-                           .maxCoeff());
-    std::nth_element(extent.begin(), extent.begin() + static_cast<long>(extent.size() / 2), extent.end());
-    triangles_ = BoxGrid(extent[extent.size() / 2]);
-    for (int t = 0; t < static_cast<int>(map_.triangles.size()); ++t) {
-      const auto& c = map_.triangles[t];
-      triangles_.insert(t, map_.points[c[0]].cwiseMin(map_.points[c[1]]).cwiseMin(map_.points[c[2]]),
-                        map_.points[c[0]].cwiseMax(map_.points[c[1]]).cwiseMax(map_.points[c[2]]));
+    std::vector<Vec3> lo, hi;  // the triangles' boxes, in a grid of cells as large as the median triangle
+    std::vector<double> extent;
+    for (const auto& t : map_.triangles) {
+      const Vec3 &a = map_.points[t[0]], &b = map_.points[t[1]], &c = map_.points[t[2]];
+      lo.push_back(a.cwiseMin(b).cwiseMin(c)), hi.push_back(a.cwiseMax(b).cwiseMax(c));
+      extent.push_back((hi.back() - lo.back()).maxCoeff());
     }
+    triangles_ = BoxGrid(median(extent));
+    for (std::size_t t = 0; t < lo.size(); ++t) triangles_.insert(static_cast<int>(t), lo[t], hi[t]);
   }
   GapMap(const GapMap&) = delete;  // locator_ refers to map_
   GapMap& operator=(const GapMap&) = delete;

@@ -494,6 +494,24 @@ std::array<std::complex<double>, 3> conformalWeights(const std::vector<Vec3>& x,
 // The z component of the cross product of two vectors of the plane (twice their triangle's signed area).
 double cross2(const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); }
 
+// The map's uv scaled to its triangles' area, every triangle counter-clockwise in it; with `mirror`, a map whose
+// triangles are all clockwise is mirrored (y -> -y) first. False if a triangle turns the other way or has no area in
+// uv (folded). [in,out] map: points, triangles and uv set.
+bool counterClockwiseToScale(SurfaceMap& map, bool mirror) {
+  double area3 = 0, area2 = 0;
+  std::size_t positive = 0, negative = 0;
+  for (const auto& t : map.triangles) {
+    area3 += 0.5 * (map.points[t[1]] - map.points[t[0]]).cross(map.points[t[2]] - map.points[t[0]]).norm();
+    const double a2 = 0.5 * cross2(map.uv[t[1]] - map.uv[t[0]], map.uv[t[2]] - map.uv[t[0]]);
+    area2 += std::abs(a2), positive += a2 > 0, negative += a2 < 0;
+  }
+  const bool clockwise = mirror && negative == map.triangles.size();
+  if (positive != map.triangles.size() && !clockwise) return false;
+  const double scale = std::sqrt(area3 / area2);
+  for (Eigen::Vector2d& p : map.uv) p = scale * Eigen::Vector2d(p.x(), clockwise ? -p.y() : p.y());
+  return true;
+}
+
 }  // namespace
 
 std::vector<double> arcLength(const std::vector<int>& loop, const std::vector<Vec3>& x) {
@@ -656,16 +674,8 @@ SurfaceMap unfoldConformally(std::vector<Vec3> points, std::vector<std::array<in
   if (solver.info() != Eigen::Success || !x.allFinite()) return map;
   for (int i = 0; i < n; ++i)
     if (column[i] >= 0) uv[i] = {x[2 * column[i]], x[2 * column[i] + 1]};
-  double area3 = 0, area2 = 0;
-  for (const auto& t : triangles) {
-    area3 += 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
-    const double a2 = 0.5 * cross2(uv[t[1]] - uv[t[0]], uv[t[2]] - uv[t[0]]);
-    if (!(a2 > 0)) return map;  // folded
-    area2 += a2;
-  }
-  const double scale = std::sqrt(area3 / area2);
-  for (Eigen::Vector2d& p : uv) p *= scale;
   map.points = std::move(points), map.triangles = std::move(triangles), map.uv = std::move(uv);
+  if (!counterClockwiseToScale(map, /*mirror=*/false)) return {};
   return map;
 }
 
@@ -679,17 +689,7 @@ SurfaceMap unfoldRing(std::vector<Vec3> points, std::vector<std::array<int, 3>> 
   map = mapAnnulus(std::move(map), std::move(loops));
   if (map.empty()) return map;
   for (Eigen::Vector2d& p : map.uv) p = std::exp(p.y()) * Eigen::Vector2d(std::cos(p.x()), std::sin(p.x()));
-  double area3 = 0, area2 = 0;
-  std::size_t positive = 0;
-  for (const auto& t : map.triangles) {
-    const Vec3 &a = map.points[t[0]], &b = map.points[t[1]], &c = map.points[t[2]];
-    area3 += 0.5 * (b - a).cross(c - a).norm();
-    const double a2 = 0.5 * cross2(map.uv[t[1]] - map.uv[t[0]], map.uv[t[2]] - map.uv[t[0]]);
-    area2 += std::abs(a2), positive += a2 > 0;
-  }
-  if (positive != 0 && positive != map.triangles.size()) return {};  // folded
-  const double scale = std::sqrt(area3 / area2);
-  for (Eigen::Vector2d& p : map.uv) p = scale * Eigen::Vector2d(p.x(), positive ? p.y() : -p.y());
+  if (!counterClockwiseToScale(map, /*mirror=*/true)) return {};
   return map;
 }
 

@@ -236,20 +236,15 @@ TEST(SurfaceMap, RingUnfoldsOntoAFlatAnnulus) {
   for (double scale : {1.0, 1e-3, 1e3}) {
     SCOPED_TRACE(scale);
     for (const bool tube : {false, true}) {
-      std::vector<Vec3> points;
-      for (int k = 0; k <= kRings; ++k)
-        for (int j = 0; j < kAround; ++j) {
-          const double a = 2 * M_PI * j / kAround, r = tube ? 3 : 5 * std::pow(2.0, static_cast<double>(k) / kRings);
-          points.push_back(scale * Vec3(r * std::cos(a), r * std::sin(a), tube ? 4.0 * k / kRings : 0));
-        }
-      std::vector<std::array<int, 3>> triangles;
-      auto v = [&](int k, int j) { return k * kAround + j % kAround; };
-      for (int k = 0; k < kRings; ++k)
-        for (int j = 0; j < kAround; ++j) {
-          triangles.push_back({v(k, j), v(k + 1, j), v(k + 1, j + 1)});
-          triangles.push_back({v(k, j), v(k + 1, j + 1), v(k, j + 1)});
-        }
-      const SurfaceMap map = unfoldRing(points, triangles);
+      const ChordalSurface flat = ring(5, 10, kRings, kAround);
+      std::vector<Vec3> points;  // the flat ring, or its rows stood up as a tube of radius 3 and height 4
+      for (std::size_t i = 0; i < flat.vertices.size(); ++i) {
+        const Vec3& p = flat.vertices[i];
+        const double k = static_cast<double>(i / kAround) / kRings;
+        points.push_back(scale * (tube ? Vec3(3 * p.x() / p.norm(), 3 * p.y() / p.norm(), 4 * k) : p));
+      }
+      auto v = [&](int k, int j) { return k * kAround + j % kAround; };  // ring()'s vertex of row k, column j
+      const SurfaceMap map = unfoldRing(points, chordalTriangles(flat));
       ASSERT_FALSE(map.empty());
       double area3 = 0, area2 = 0;
       for (const auto& t : map.triangles) {
@@ -271,7 +266,5 @@ TEST(SurfaceMap, RingUnfoldsOntoAFlatAnnulus) {
     }
   }
   const ChordalSurface plain = rectangle(10, 6);
-  std::vector<std::array<int, 3>> disc;
-  for (const auto& f : plain.facets) disc.push_back({f[0], f[1], f[2]}), disc.push_back({f[0], f[2], f[3]});
-  EXPECT_TRUE(unfoldRing(plain.vertices, disc).empty());
+  EXPECT_TRUE(unfoldRing(plain.vertices, chordalTriangles(plain)).empty());
 }
