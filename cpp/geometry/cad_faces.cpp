@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/threads.hpp"
 #include "geometry/bnd_box.hpp"
 
 namespace hexlayer {
@@ -76,7 +77,8 @@ CadFaces::Face CadFaces::makeFace(const CadSolid& cad, int index) {
   Face f;
   f.face = TopoDS::Face(cad.faces(index + 1));
   f.tolerance = BRep_Tool::Tolerance(f.face);
-  BRepBndLib::AddOptimal(f.face, f.box, false, false);
+  BRepBndLib::AddOptimal(f.face, f.exactBox, false, false);
+  f.box = f.exactBox;
   f.box.Enlarge(f.tolerance);
   f.extremaBox = extremaBox(f.face);
   TopTools_IndexedMapOfShape vertices, edges;
@@ -95,14 +97,19 @@ CadFaces::CadFaces(const CadSolid& cad) : keepsFirstVertex_(OSD_ThreadPool::Defa
     edges_.push_back({edge, extremaBox(edge), BRep_Tool::Degenerated(edge)});
   }
   std::vector<std::vector<int>> neighbours = vertexNeighbours(cad);
-  for (int i = 0; i < cad.faces.Extent(); ++i) {
-    faces_.push_back(makeFace(cad, i));
-    faces_.back().neighbours = std::move(neighbours[i]);
-    faces_.back().name = inputFaceName(cad, i);
+  const int count = cad.faces.Extent();
+  faces_.resize(count);
+  ParallelErrors errors;  // a face's exact box takes milliseconds (a torus' 20): the faces on every thread
+#pragma omp parallel for schedule(dynamic)
+  for (int i = 0; i < count; ++i) errors.run([&] { faces_[i] = makeFace(cad, i); });
+  errors.rethrow();
+  for (int i = 0; i < count; ++i) {
+    faces_[i].neighbours = std::move(neighbours[i]);
+    faces_[i].name = inputFaceName(cad, i);
     std::vector<Box> boxes;
-    for (int e : faces_.back().edges)
+    for (int e : faces_[i].edges)
       if (!edges_[e].box.IsVoid()) boxes.push_back(boxOf(edges_[e].box));
-    if (boxes.size() == faces_.back().edges.size()) faces_.back().edgeTree = std::make_unique<BoxTree>(boxes);
+    if (boxes.size() == faces_[i].edges.size()) faces_[i].edgeTree = std::make_unique<BoxTree>(boxes);
   }
 }
 

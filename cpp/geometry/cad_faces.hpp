@@ -41,7 +41,8 @@ class CadFaces {
     TopoDS_Face face;
     std::string name;  // FreeCAD's name of the input face it is (a piece of): "Face<N>"
     double tolerance = 0;
-    Bnd_Box box;                        // optimal, enlarged by the tolerance: the quick test of `lies`
+    Bnd_Box exactBox;                   // BRepBndLib::AddOptimal's, of the exact geometry (not the triangulation)
+    Bnd_Box box;                        // exactBox enlarged by the tolerance: the quick test of `lies`
     Bnd_Box extremaBox;                 // BRepBndLib::Add, as BRepExtrema boxes the face
     std::vector<gp_Pnt> vertices;       // TopExp::MapShapes order
     std::vector<int> edges;             // into edges()

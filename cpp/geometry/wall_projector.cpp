@@ -34,12 +34,15 @@ WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides)
     BRepBndLib::AddOptimal(shape, w.box, false, false);  // exact geometry, not the triangulation
     return w;
   };
+  auto facePiece = [&](int f) {  // its box measured once, by CadFaces
+    return Piece{cad.faces(f + 1), f, -1, cadFaces_->face(f).exactBox};
+  };
   std::array<std::vector<int>, 3> faces, rimEdges;
   std::array<std::map<int, std::vector<int>>, 3> rimEdgesOf;
   for (int f = 0; f < cad.faces.Extent(); ++f) {
     pieceOfFace_[f] = static_cast<int>(pieces_.size());
     faces[sideIndex(sides.faces[f].side)].push_back(pieceOfFace_[f]);
-    pieces_.push_back(piece(cad.faces(f + 1), f));
+    pieces_.push_back(facePiece(f));
   }
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);

@@ -57,6 +57,10 @@ class WallProjector {
   // if there are none. The middle line of a flat rim, the axis of a round one, the middle of an oblique cut.
   std::optional<Vec3> rimMiddle(const Vec3& p) const;
 
+  // The solid's faces as the projector measures them (built once: their exact boxes are costly), for other queries
+  // on the same solid.
+  const CadFaces& faces() const { return *cadFaces_; }
+
  private:
   struct Piece {
     TopoDS_Shape shape;  // a face, or an edge of a face

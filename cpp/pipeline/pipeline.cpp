@@ -282,7 +282,7 @@ std::vector<SurfaceGroup> groupByCadFace(HexMesh& mesh, const CadSolid& cad, con
   const std::size_t unplaced = faceUnplacedNodes(mesh, walls, boundary);
   SurfaceGroups s;
   if (group) {
-    s = surfaceGroups(mesh, CadFaces(cad), quads, boundary);
+    s = surfaceGroups(mesh, walls.faces(), quads, boundary);
     r.surfaceGroups = s.stats;
     r.boundaryDeviation = std::move(s.deviation);
   }
@@ -516,9 +516,9 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
 
 // The foot's nodes (no CAD face: the foot is none) on the CAD face nearest to each (the first of the nearest), so
 // that those on the boundary (the foot's edges) are grouped with the faces they lie on. A face whose box is farther
-// than the face nearest to its box is not measured (it cannot be nearer). [in,out] mesh; [in] cad; [in] foot: nodes.
-void placeFootNodes(HexMesh& mesh, const CadSolid& cad, const std::vector<int>& foot) {
-  const CadFaces faces(cad);
+// than the face nearest to its box is not measured (it cannot be nearer). [in,out] mesh; [in] faces: the part's;
+// [in] foot: nodes.
+void placeFootNodes(HexMesh& mesh, const CadFaces& faces, const std::vector<int>& foot) {
   CadFaceProbe probe(faces);
   std::vector<double> boxDistance(faces.count());
   for (int n : foot) {
@@ -578,8 +578,8 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
   MeshReport& r = result.report;
   reportPieces(r, t, cad, sides);
   result.mesh = std::move(t.joined);
-  placeFootNodes(result.mesh, cad, t.onFeet);
   const WallProjector walls(cad, sides);
+  placeFootNodes(result.mesh, walls.faces(), t.onFeet);
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   appendStages(result, t.stages);
   measureSolid(result, cad, sides, o, 0, clock);

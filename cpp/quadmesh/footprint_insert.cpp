@@ -557,12 +557,12 @@ std::vector<double> loopSpacing(const std::vector<Vec3>& at, const std::vector<S
 }
 
 // Gmsh meshes the surfaces with quads, every boundary node fixed: Blossom's recombination of the triangles of 2D
-// algorithm `algorithm`. Runs in a child process. [in] at: 2D points; [in] spacing: the mesh size at each;
-// [in] surfaces: loops of them; [in] algorithm. Returns the quads in the plane, their first at.size() nodes the given
-// points. Throws geometryError if Gmsh fails or leaves triangles.
-QuadMesh gmshGapQuads(const std::vector<Eigen::Vector2d>& at, const std::vector<double>& spacing,
-                      const std::vector<Surface>& surfaces, int algorithm) {
-  const ChildResult run = runInChildProcess(
+// algorithm `algorithm`, in a child process started here (finishGapQuads waits for its quads), so that a gap's tries
+// run side by side. [in] at: 2D points; [in] spacing: the mesh size at each; [in] surfaces: loops of them;
+// [in] algorithm. Returns the running child.
+StartedChild startGapQuads(const std::vector<Eigen::Vector2d>& at, const std::vector<double>& spacing,
+                           const std::vector<Surface>& surfaces, int algorithm) {
+  return startChildProcess(
       [&] {
         return inGmshSession([&] {
           gmsh::model::add("gap");
@@ -577,6 +577,12 @@ QuadMesh gmshGapQuads(const std::vector<Eigen::Vector2d>& at, const std::vector<
         });
       },
       kGmshSeconds);
+}
+
+// [in,out] child: a started startGapQuads, waited for. Returns the quads in the plane, their first at.size() nodes
+// the given points. Throws geometryError if Gmsh failed or left triangles.
+QuadMesh finishGapQuads(StartedChild& child) {
+  const ChildResult run = waitForChild(child);
   if (!run.ok) throw geometryError("junction: the gap round a wall's foot was not meshed (Gmsh: " + run.failure + ")");
   QuadMesh q = fromBytes(run.output);
   if (q.holes > 0)
@@ -798,12 +804,11 @@ void repairPoorQuads(QuadMesh& q) {
 
 // One try at the gap: Gmsh's quads of the surfaces (the wedge quads added), checked to fill the gap, smoothed on the
 // sheet. [in] at: every node so far; [in] map, chordal; [in] surfaces: the gap's; [in] cut: what Gmsh meshes;
-// [in] spacing: the mesh size at each of cut.at; [in] algorithm. Returns the quads; [out] worst: the worst's scaled
-// Jacobian (smoothGap). Throws geometryError if Gmsh fails or its quads do not fill the gap.
+// [in,out] gmsh: its Gmsh run (startGapQuads), waited for. Returns the quads; [out] worst: the worst's scaled Jacobian
+// (smoothGap). Throws geometryError if Gmsh fails or its quads do not fill the gap.
 QuadMesh gapTry(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
-                const std::vector<Surface>& surfaces, const WedgeCut& cut, const std::vector<double>& spacing,
-                int algorithm, double& worst) {
-  QuadMesh q = gmshGapQuads(cut.at, spacing, cut.surfaces, algorithm);
+                const std::vector<Surface>& surfaces, const WedgeCut& cut, StartedChild& gmsh, double& worst) {
+  QuadMesh q = finishGapQuads(gmsh);
   q.quads.insert(q.quads.end(), cut.quads.begin(), cut.quads.end());
   repairPoorQuads(q);
   checkGapQuads(q, surfaces);
@@ -892,20 +897,35 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalL
       for (int n : loop) flat[n] = map.at(at[n]);
   std::vector<WedgeCut> ways{{flat, {}, surfaces, {}}};
   if (WedgeCut cut = cutAcuteCorners(flat, surfaces); !cut.quads.empty()) ways.push_back(std::move(cut));
+  std::vector<std::vector<double>> spacing;  // per way, the mesh size at each of its points
+  for (const WedgeCut& way : ways) {
+    spacing.push_back(loopSpacing(at, surfaces));
+    spacing.back().insert(spacing.back().end(), way.spacing.begin(), way.spacing.end());
+  }
+  struct Try {
+    std::size_t way;
+    StartedChild gmsh;
+  };
+  std::vector<Try> tries;  // every way and algorithm started at once, taken in this order
+  for (std::size_t w = 0; w < ways.size(); ++w)
+    for (int algorithm : kGapAlgorithms)
+      tries.push_back({w, startGapQuads(ways[w].at, spacing[w], ways[w].surfaces, algorithm)});
+  struct StopLeft {  // a child not waited for (an exception) is not left running
+    std::vector<Try>& tries;
+    ~StopLeft() {
+      for (Try& t : tries) stopChild(t.gmsh);
+    }
+  } stopLeft{tries};
   QuadMesh best;
   double bestWorst = 0;
   std::string failure = "its quads are folded";
-  for (const WedgeCut& way : ways) {
-    std::vector<double> spacing = loopSpacing(at, surfaces);
-    spacing.insert(spacing.end(), way.spacing.begin(), way.spacing.end());
-    for (int algorithm : kGapAlgorithms) {
-      try {
-        double tried = 0;
-        QuadMesh q = gapTry(at, map, chordal, surfaces, way, spacing, algorithm, tried);
-        if (tried > bestWorst) best = std::move(q), bestWorst = tried;
-      } catch (const Error& e) {
-        failure = e.what();
-      }
+  for (Try& t : tries) {
+    try {
+      double tried = 0;
+      QuadMesh q = gapTry(at, map, chordal, surfaces, ways[t.way], t.gmsh, tried);
+      if (tried > bestWorst) best = std::move(q), bestWorst = tried;
+    } catch (const Error& e) {
+      failure = e.what();
     }
   }
   if (best.quads.empty()) throw geometryError("junction: the gap round a wall's foot was not meshed: " + failure);
