@@ -73,11 +73,14 @@ double exactDistance(const TopoDS_Face& face, const gp_Pnt& p) {
 }  // namespace
 
 // A face with its boxes, vertices, edges (indices into the solid's), parameter bounds and UvBoundary.
-CadFaces::Face CadFaces::makeFace(const CadSolid& cad, int index) {
+CadFaces::Face CadFaces::makeFace(const CadSolid& cad, int index, const Bnd_Box* known) {
   Face f;
   f.face = TopoDS::Face(cad.faces(index + 1));
   f.tolerance = BRep_Tool::Tolerance(f.face);
-  BRepBndLib::AddOptimal(f.face, f.exactBox, false, false);
+  if (known)
+    f.exactBox = *known;
+  else
+    BRepBndLib::AddOptimal(f.face, f.exactBox, false, false);
   f.box = f.exactBox;
   f.box.Enlarge(f.tolerance);
   f.extremaBox = extremaBox(f.face);
@@ -91,7 +94,8 @@ CadFaces::Face CadFaces::makeFace(const CadSolid& cad, int index) {
   return f;
 }
 
-CadFaces::CadFaces(const CadSolid& cad) : keepsFirstVertex_(OSD_ThreadPool::DefaultPool()->NbThreads() > 1) {
+CadFaces::CadFaces(const CadSolid& cad, FaceBoxes* boxes)
+    : keepsFirstVertex_(OSD_ThreadPool::DefaultPool()->NbThreads() > 1) {
   for (int e = 1; e <= cad.edges.Extent(); ++e) {
     const TopoDS_Edge& edge = TopoDS::Edge(cad.edges(e));
     edges_.push_back({edge, extremaBox(edge), BRep_Tool::Degenerated(edge)});
@@ -99,10 +103,14 @@ CadFaces::CadFaces(const CadSolid& cad) : keepsFirstVertex_(OSD_ThreadPool::Defa
   std::vector<std::vector<int>> neighbours = vertexNeighbours(cad);
   const int count = cad.faces.Extent();
   faces_.resize(count);
+  std::vector<const Bnd_Box*> known(count, nullptr);  // read while the faces are made, kept after
+  for (int i = 0; boxes && i < count; ++i) known[i] = boxes->find(TopoDS::Face(cad.faces(i + 1)));
   ParallelErrors errors;  // a face's exact box takes milliseconds (a torus' 20): the faces on every thread
 #pragma omp parallel for schedule(dynamic)
-  for (int i = 0; i < count; ++i) errors.run([&] { faces_[i] = makeFace(cad, i); });
+  for (int i = 0; i < count; ++i) errors.run([&] { faces_[i] = makeFace(cad, i, known[i]); });
   errors.rethrow();
+  for (int i = 0; boxes && i < count; ++i)
+    if (!known[i]) boxes->keep(faces_[i].face, faces_[i].exactBox);
   for (int i = 0; i < count; ++i) {
     faces_[i].neighbours = std::move(neighbours[i]);
     faces_[i].name = inputFaceName(cad, i);

@@ -6,7 +6,9 @@
 #include <BRepExtrema_ExtPC.hxx>
 #include <Bnd_Box.hxx>
 #include <Extrema_ExtPS.hxx>
+#include <NCollection_DataMap.hxx>
 #include <TopAbs_State.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Vertex.hxx>
@@ -25,6 +27,21 @@
 namespace hexlayer {
 
 class BoxTree;
+
+// Faces' exact boxes (BRepBndLib::AddOptimal of their geometry: a torus face's takes 20 ms), kept for the solids that
+// share faces: the pieces a part is cut into keep most of its faces (junction_cut.hpp), each measured once.
+class FaceBoxes {
+ public:
+  // [in] face. Returns the box kept for it (or for a face IsSame to it: the same surface and place), else null.
+  const Bnd_Box* find(const TopoDS_Face& face) const { return boxes_.Seek(face); }
+  // [in] face, box: kept (a face kept already keeps its box).
+  void keep(const TopoDS_Face& face, const Bnd_Box& box) {
+    if (!boxes_.IsBound(face)) boxes_.Bind(face, box);
+  }
+
+ private:
+  NCollection_DataMap<TopoDS_Shape, Bnd_Box, TopTools_ShapeMapHasher> boxes_;
+};
 
 // A point's faces: the face it was put on (first, whatever its distance) and every face sharing a
 // vertex with that one that the point lies on within the face's tolerance (a CAD edge or vertex).
@@ -58,7 +75,8 @@ class CadFaces {
     bool degenerated = false;
   };
 
-  explicit CadFaces(const CadSolid& cad);
+  // [in] cad; [in,out] boxes: the exact boxes of faces measured before (taken), and of the others (kept); null: none.
+  explicit CadFaces(const CadSolid& cad, FaceBoxes* boxes = nullptr);
   ~CadFaces();  // where BoxTree is complete
   int count() const { return static_cast<int>(faces_.size()); }
   double tolerance(int face) const { return faces_[face].tolerance; }
@@ -70,7 +88,8 @@ class CadFaces {
   bool keepsFirstVertex() const { return keepsFirstVertex_; }
 
  private:
-  static Face makeFace(const CadSolid& cad, int index);
+  // [in] known: the face's exact box, if measured before.
+  static Face makeFace(const CadSolid& cad, int index, const Bnd_Box* known);
 
   std::vector<Face> faces_;
   std::vector<Edge> edges_;

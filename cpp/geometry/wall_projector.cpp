@@ -24,10 +24,10 @@ int sideIndex(Side side) { return static_cast<int>(side) + 1; }
 
 }  // namespace
 
-WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides)
+WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides, FaceBoxes* boxes)
     : pieceOfFace_(cad.faces.Extent(), -1),
       tools_(threadCount()),
-      cadFaces_(std::make_unique<CadFaces>(cad)),
+      cadFaces_(std::make_unique<CadFaces>(cad, boxes)),
       probes_(threadCount()) {
   auto piece = [](const TopoDS_Shape& shape, int face, int lateral = -1) {
     Piece w{shape, face, lateral, {}};

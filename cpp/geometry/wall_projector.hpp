@@ -21,6 +21,7 @@ namespace hexlayer {
 
 class BoxTree;
 class CadFaces;
+class FaceBoxes;
 class CadFaceProbe;
 
 // The queries may run on several OpenMP threads at once: each thread keeps its own OpenCASCADE distance tools
@@ -28,8 +29,9 @@ class CadFaceProbe;
 // well inside a face comes from the face's own extrema tool (CadFaceProbe::foot), BRepExtrema's elsewhere.
 class WallProjector {
  public:
-  // [in] cad, sides: read at construction; cad's shapes are kept (by handle), not the objects.
-  WallProjector(const CadSolid& cad, const WallSides& sides);
+  // [in] cad, sides: read at construction; cad's shapes are kept (by handle), not the objects; [in,out] boxes: the
+  // faces' exact boxes measured for other solids sharing faces with cad (CadFaces); null: none.
+  WallProjector(const CadSolid& cad, const WallSides& sides, FaceBoxes* boxes = nullptr);
   ~WallProjector();
   // The point nearest to p on the faces of the `side` wall (inside a face, on its edges or
   // vertices: trimmed faces, not their underlying surfaces), with the face it was found on (on a CAD

@@ -16,10 +16,12 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "geometry/bend_rounds.hpp"
 #include "geometry/boundary_triangles.hpp"
 #include "geometry/face_sampling.hpp"
@@ -338,14 +340,26 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
   const int n = cad.faces.Extent();
   WallSides w;
   w.faces.resize(n);
-  RayCaster rays(cad, 1e-7 * cad.diagonal);
+  std::vector<FaceRays> faceRays(n);
+  ParallelErrors errors;
+#pragma omp parallel
+  {
+    std::optional<RayCaster> rays;  // per thread (its intersectors keep state), built at its first face
+#pragma omp for schedule(dynamic)
+    for (int f = 0; f < n; ++f)
+      errors.run([&] {
+        if (!rays) rays.emplace(cad, 1e-7 * cad.diagonal);
+        faceRays[f] = castInwardRays(cad, boundary, *rays, f);
+      });
+  }
+  errors.rethrow();
   std::vector<Vec3> meanNormal(n);
   std::vector<std::map<int, double>> across(n);  // per face: ray area crossing the wall to each face
   std::vector<int> landing(n, -1);               // per face: where most of its rays land
   double totalArea = 0;
   for (int f = 0; f < n; ++f) {
     FaceSide& fs = w.faces[f];
-    FaceRays hits = castInwardRays(cad, boundary, rays, f);
+    FaceRays& hits = faceRays[f];
     landing[f] = dominantHit(hits.all);
     meanNormal[f] = hits.meanNormal;
     fs.area = triangulatedArea(cad.faces(f + 1));

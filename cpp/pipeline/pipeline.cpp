@@ -430,8 +430,9 @@ FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& no
 
 // Meshes piece s with its quads carrying the footprints on it, joins its hexes to t.joined and keeps its own feet
 // (in joined's nodes). [in] o: in the pipeline's units; [in] tolerance: how near a node lies to its foot's plane;
-// [in] wallShare: of the wall's thickness, how far a column's end may be from its foot node. [in,out] t.
-void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance, double wallShare) {
+// [in] wallShare: of the wall's thickness, how far a column's end may be from its foot node. [in,out] t; [in,out]
+// boxes: the faces' exact boxes, shared with the part and the other pieces.
+void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance, double wallShare, FaceBoxes& boxes) {
   const int pieces = static_cast<int>(t.cut.pieces.size());
   reportProgress(o.progress, progressNote("", "piece " + std::to_string(pieces - s) + " of " + std::to_string(pieces)));
   std::vector<int> footNode;
@@ -473,7 +474,7 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
             },
             blocked);
       },
-      cutFaces);
+      cutFaces, &boxes);
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty()) {
     const double reach = wallShare * piece.report.thickness + merged.shift;
@@ -497,10 +498,10 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
   t.reports[s] = std::move(piece.report);
 }
 
-// [in] cad, sides, sheets (the sheet stood on, then the standing ones); [in] o: in the pipeline's units. Throws the
-// pieces' errors.
+// [in] cad, sides, sheets (the sheet stood on, then the standing ones); [in] o: in the pipeline's units; [in,out]
+// clock; [in,out] boxes: the faces' exact boxes (meshPiece). Throws the pieces' errors.
 JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
-                                  const MeshOptions& o, StageClock& clock) {
+                                  const MeshOptions& o, StageClock& clock, FaceBoxes& boxes) {
   JunctionPieces t;
   t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });  // sheets: crossings merged
   t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size()), t.crossed.assign(t.cut.pieces.size(), 0);
@@ -510,7 +511,7 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   MeshOptions piece = o;
   piece.force = true;
   for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s)
-    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.5);
+    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.5, boxes);
   return t;
 }
 
@@ -567,8 +568,9 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
                          const MeshOptions& o, MeshResult& result, StageClock& clock) {
   if (o.shell) throw junctionRefusal(cad, sheets, "the shell is not made at junctions yet");
   JunctionPieces t;
+  FaceBoxes boxes;  // most of the part's faces are its pieces' too: each face's exact box measured once
   try {
-    t = meshJunctionPieces(cad, sides, sheets, o, clock);
+    t = meshJunctionPieces(cad, sides, sheets, o, clock, boxes);
   } catch (const Error& e) {
     if (e.code() == ExitCode::BadUsage) throw;
     throw junctionRefusal(cad, sheets, e.what());
@@ -578,7 +580,7 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
   MeshReport& r = result.report;
   reportPieces(r, t, cad, sides);
   result.mesh = std::move(t.joined);
-  const WallProjector walls(cad, sides);
+  const WallProjector walls(cad, sides, &boxes);
   placeFootNodes(result.mesh, walls.faces(), t.onFeet);
   result.surfaceGroups = clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r); });
   appendStages(result, t.stages);
@@ -716,7 +718,7 @@ void validateOptions(const MeshOptions& o) {
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) { return meshSolid(solid, given, {}); }
 
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const QuadEdit& edit,
-                     const std::vector<char>& cutFaces) {
+                     const std::vector<char>& cutFaces, FaceBoxes* boxes) {
   validateOptions(given);
   MeshResult result;
   MeshReport& r = result.report;
@@ -757,7 +759,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets, cad.unit); });
   r.tetClasses = classifyTets(tets);
   r.chordal = countChordal(cut);
-  const WallProjector walls(cad, sides);
+  const WallProjector walls(cad, sides, boxes);
   r.chordal.rim = clock.run("chordal_rim", [&] {
     const std::size_t tears = fillTears(
         cut, [&](const Vec3& p) { return walls.reaches(Side::Lateral, p, sides.thickness); },

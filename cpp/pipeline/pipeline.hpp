@@ -15,6 +15,8 @@
 
 namespace hexlayer {
 
+class FaceBoxes;
+
 struct MeshOptions {
   int layers = 2;                   // hex layers through the thickness (§7.2)
   double size = 0;                  // quad edge length on the chordal surface; 0 = chosen from the part
@@ -65,8 +67,10 @@ using QuadEdit = std::function<void(const CadSolid& cad, QuadStage& stage)>;
 // meshSolid for a piece of a part (junction_mesh.hpp): the quad stage's quads replaced by `edit` (none: as made, and
 // the boundary grouped as meshSolid's); with an edit, the boundary nodes are given CAD faces but not grouped (the
 // joined part is: MeshResult::surfaceGroups empty). [in] solid, options, edit; [in] cutFaces: per face of the solid
-// (TopExp::MapShapes' order), whether it is a cut through the part (a foot: CadSolid::cutInput); empty: none.
+// (TopExp::MapShapes' order), whether it is a cut through the part (a foot: CadSolid::cutInput); empty: none;
+// [in,out] boxes: the exact boxes of faces the piece shares with the part and the other pieces (CadFaces); null:
+// none.
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options, const QuadEdit& edit,
-                     const std::vector<char>& cutFaces = {});
+                     const std::vector<char>& cutFaces = {}, FaceBoxes* boxes = nullptr);
 
 }  // namespace hexlayer

@@ -41,7 +41,9 @@ bool isCoplanar(const TetMesh& mesh, const std::array<int, 4>& t) {
 // Whether the coplanar tet lies in the rim: its centre closer to the solid's boundary than a quarter
 // of its shortest top-bottom edge (about the wall thickness; a bend's coplanar tet is half of it away).
 // A centre clearly farther than that from the triangulation is not measured on the exact shell.
-bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Shape& boundary,
+// [in,out] boundary: the distance tool with the solid's outer shell loaded once (LoadS2: its faces' boxes are made
+// once; Perform recomputes the rest, the same bits as a tool built per query).
+bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, BRepExtrema_DistShapeShape& boundary,
               const BoundaryTriangles& triangles) {
   double shortest = std::numeric_limits<double>::infinity();
   Vec3 c = Vec3::Zero();
@@ -52,8 +54,9 @@ bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const TopoDS_Sha
         shortest = std::min(shortest, (mesh.nodes[a] - mesh.nodes[b]).norm());
   }
   if (triangles.fartherThan(c, 0.25 * shortest)) return false;
-  BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(gp_Pnt(c.x(), c.y(), c.z())).Vertex(), boundary);
-  return distance.IsDone() && distance.Value() < 0.25 * shortest;
+  boundary.LoadS1(BRepBuilderAPI_MakeVertex(gp_Pnt(c.x(), c.y(), c.z())).Vertex());
+  boundary.Perform();
+  return boundary.IsDone() && boundary.Value() < 0.25 * shortest;
 }
 
 // Whether p is inside the solid: the triangulation decides where it can, rays on the exact faces near the
@@ -174,7 +177,8 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad, const
   TetFilterCounts counts;
   counts.delaunay = mesh.tets.size();
   counts.flat = std::count(verdict.begin(), verdict.end(), kFlat);
-  const TopoDS_Shell boundary = BRepClass3d::OuterShell(cad.solid);
+  BRepExtrema_DistShapeShape boundary;
+  boundary.LoadS2(BRepClass3d::OuterShell(cad.solid));
   for (std::size_t i = 0; i < mesh.tets.size(); ++i)
     if (verdict[i] == kKeptCoplanar && onTheRim(mesh, mesh.tets[i], boundary, triangles)) verdict[i] = kOutside;
   peelHullSlivers(mesh, verdict);

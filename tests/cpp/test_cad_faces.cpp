@@ -7,6 +7,7 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -16,6 +17,7 @@
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -184,4 +186,28 @@ TEST(CadFaces, NearlyEquidistantVerticesAreBRepExtremas) {
           << "k " << k << " face " << f << ": " << fast << " against " << exact;
     }
   }
+}
+
+// A face's exact box (BRepBndLib::AddOptimal: 20 ms on a torus) is measured once for the solids that share the face:
+// CadFaces keeps the boxes it measures in FaceBoxes and takes those kept before, the same boxes to the last bit as
+// measured anew; a copy of the solid (its faces new shapes) shares none. The Ender-3 box's rounded corners are tori.
+TEST(CadFaces, ExactBoxesOfSharedFacesAreMeasuredOnce) {
+  const CadSolid cad = readPart(std::string(HEXLAYER_SHARED_PARTS) + "/ender3_power_holder_box.step");
+  FaceBoxes boxes;
+  const CadFaces first(cad, &boxes), again(cad, &boxes), alone(cad);
+  int tori = 0;
+  for (int f = 0; f < alone.count(); ++f) {
+    ASSERT_NE(boxes.find(alone.face(f).face), nullptr) << "face " << f;
+    tori += BRepAdaptor_Surface(alone.face(f).face).GetType() == GeomAbs_Torus;
+    std::array<double, 6> expected{}, kept{}, taken{};
+    alone.face(f).exactBox.Get(expected[0], expected[1], expected[2], expected[3], expected[4], expected[5]);
+    first.face(f).exactBox.Get(kept[0], kept[1], kept[2], kept[3], kept[4], kept[5]);
+    again.face(f).exactBox.Get(taken[0], taken[1], taken[2], taken[3], taken[4], taken[5]);
+    EXPECT_EQ(kept, expected) << "face " << f;
+    EXPECT_EQ(taken, expected) << "face " << f;
+  }
+  EXPECT_GE(tori, 4);
+  const TopoDS_Shape copy = BRepBuilderAPI_Copy(cad.solid).Shape();
+  for (TopExp_Explorer it(copy, TopAbs_FACE); it.More(); it.Next())
+    EXPECT_EQ(boxes.find(TopoDS::Face(it.Current())), nullptr);
 }
