@@ -8,6 +8,7 @@
 #include <set>
 #include <type_traits>
 
+#include "core/threads.hpp"
 #include "core/union_find.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
@@ -967,8 +968,17 @@ PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, doub
   for (std::size_t t = 0; t < triangles.size(); ++t)
     if (!layout.faces[patch.of[t]].holes.empty()) layout.facets[patch.of[t]].push_back(triangles[t]);
   PatchGrids grids;
-  if (!gridOf(layout, x, size, false, grids.even)) return {};
-  const std::optional<std::size_t> folded = gridOf(layout, x, size, true, grids.graded);
+  std::optional<std::size_t> even, folded;
+  ParallelErrors errors;  // the even grid and the graded one side by side: neither reads the other
+#pragma omp parallel sections
+  {
+#pragma omp section
+    errors.run([&] { even = gridOf(layout, x, size, false, grids.even); });
+#pragma omp section
+    errors.run([&] { folded = gridOf(layout, x, size, true, grids.graded); });
+  }
+  errors.rethrow();
+  if (!even) return {};
   if (!folded || *folded > 0) grids.graded = {};  // a quad folds: even rows only
   return grids;
 }
