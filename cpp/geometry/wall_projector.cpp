@@ -29,9 +29,9 @@ WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides, FaceBo
       tools_(threadCount()),
       cadFaces_(std::make_unique<CadFaces>(cad, boxes)),
       probes_(threadCount()) {
-  auto piece = [](const TopoDS_Shape& shape, int face, int lateral = -1) {
-    Piece w{shape, face, lateral, {}};
-    BRepBndLib::AddOptimal(shape, w.box, false, false);  // exact geometry, not the triangulation
+  auto edgePiece = [](const TopoDS_Shape& edge, int face, int lateral) {
+    Piece w{edge, face, lateral, {}};
+    BRepBndLib::AddOptimal(edge, w.box, false, false);  // exact geometry, not the triangulation
     return w;
   };
   auto facePiece = [&](int f) {  // its box measured once, by CadFaces
@@ -58,7 +58,7 @@ WallProjector::WallProjector(const CadSolid& cad, const WallSides& sides, FaceBo
     if (lateral < 0 || wall < 0) continue;
     const int side = sideIndex(sides.faces[wall].side), id = static_cast<int>(pieces_.size());
     rimEdges[side].push_back(id), rimEdgesOf[side][lateral].push_back(id);
-    pieces_.push_back(piece(edgeFaces.FindKey(e), wall, lateral));
+    pieces_.push_back(edgePiece(edgeFaces.FindKey(e), wall, lateral));
   }
   for (int s = 0; s < 3; ++s) {
     faces_[s] = pieceSet(pieces_, faces[s]);

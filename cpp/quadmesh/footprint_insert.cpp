@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/point_grid.hpp"
 #include "core/polygon.hpp"
+#include "core/threads.hpp"
 #include "core/triangle_tree.hpp"
 #include "core/union_find.hpp"
 #include "quadmesh/quad_completion.hpp"
@@ -904,29 +905,38 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalL
   }
   struct Try {
     std::size_t way;
+    int algorithm;
     StartedChild gmsh;
   };
-  std::vector<Try> tries;  // every way and algorithm started at once, taken in this order
+  std::vector<Try> tries;  // every way and algorithm, taken in this order
   for (std::size_t w = 0; w < ways.size(); ++w)
-    for (int algorithm : kGapAlgorithms)
-      tries.push_back({w, startGapQuads(ways[w].at, spacing[w], ways[w].surfaces, algorithm)});
+    for (int algorithm : kGapAlgorithms) tries.push_back({w, algorithm, {}});
   struct StopLeft {  // a child not waited for (an exception) is not left running
     std::vector<Try>& tries;
     ~StopLeft() {
       for (Try& t : tries) stopChild(t.gmsh);
     }
   } stopLeft{tries};
+  // as many children at once as there are threads (the quad stage's Gmsh tries alike): the next started once a try is
+  // taken
+  const std::size_t running = static_cast<std::size_t>(std::max(1, threadCount()));
+  auto start = [&](std::size_t k) {
+    Try& t = tries[k];
+    t.gmsh = startGapQuads(ways[t.way].at, spacing[t.way], ways[t.way].surfaces, t.algorithm);
+  };
+  for (std::size_t k = 0; k < std::min(running, tries.size()); ++k) start(k);
   QuadMesh best;
   double bestWorst = 0;
   std::string failure = "its quads are folded";
-  for (Try& t : tries) {
+  for (std::size_t k = 0; k < tries.size(); ++k) {
     try {
       double tried = 0;
-      QuadMesh q = gapTry(at, map, chordal, surfaces, ways[t.way], t.gmsh, tried);
+      QuadMesh q = gapTry(at, map, chordal, surfaces, ways[tries[k].way], tries[k].gmsh, tried);
       if (tried > bestWorst) best = std::move(q), bestWorst = tried;
     } catch (const Error& e) {
       failure = e.what();
     }
+    if (k + running < tries.size()) start(k + running);
   }
   if (best.quads.empty()) throw geometryError("junction: the gap round a wall's foot was not meshed: " + failure);
   worst = bestWorst;
