@@ -1,11 +1,13 @@
 #include "geometry/cad_faces.hpp"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepClass_FClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <ElSLib.hxx>
 #include <OSD_ThreadPool.hxx>
 #include <Precision.hxx>
 #include <TopExp.hxx>
@@ -13,7 +15,9 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <gp.hxx>
 #include <gp_Pnt2d.hxx>
+#include <gp_Torus.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -63,6 +67,48 @@ Bnd_Box extremaBox(const TopoDS_Shape& shape) {
   return box;
 }
 
+// The parameters in [lo, hi] at which a cos t + b sin t is extreme (atan2(b, a) + k pi), and lo and hi: where a
+// function of t with no other stationary points in the range has its least and greatest value.
+std::vector<double> extremeParameters(double a, double b, double lo, double hi) {
+  std::vector<double> t{lo, hi};
+  const double first = std::atan2(b, a);
+  for (double k = std::ceil((lo - first) / M_PI); first + k * M_PI <= hi; ++k) t.push_back(first + k * M_PI);
+  return t;
+}
+
+// The box of a ring torus (major radius above the minor) over the face's parameter rectangle, from its extreme points:
+// along an axis e, x(u, v) = e.C + (R + r cos v) g(u) + r (e.Z) sin v with g(u) = (e.X) cos u + (e.Y) sin u, so
+// (R + r cos v > 0) it is extreme in u where g is or at the ends, and at each such u in v where g(u) cos v + (e.Z)
+// sin v is or at the ends (extremeParameters). Exact where BndLib's optimization of a torus takes 20 ms; enlarged by
+// Precision::Confusion(), as BRepBndLib::AddOptimal's. [in] face: on a torus. Returns its box; void if the torus is
+// not a ring.
+Bnd_Box ringTorusBox(const TopoDS_Face& face, const gp_Torus& torus) {
+  Bnd_Box box;
+  if (!(torus.MajorRadius() > torus.MinorRadius())) return box;
+  double u1, u2, v1, v2;
+  BRepTools::UVBounds(face, u1, u2, v1, v2);
+  const gp_Ax3& frame = torus.Position();
+  for (const gp_Dir& e : {gp::DX(), gp::DY(), gp::DZ()})
+    for (double u : extremeParameters(frame.XDirection().Dot(e), frame.YDirection().Dot(e), u1, u2)) {
+      const double g = std::cos(u) * frame.XDirection().Dot(e) + std::sin(u) * frame.YDirection().Dot(e);
+      for (double v : extremeParameters(g, frame.Direction().Dot(e), v1, v2))
+        box.Add(ElSLib::TorusValue(u, v, frame, torus.MajorRadius(), torus.MinorRadius()));
+    }
+  box.Enlarge(Precision::Confusion());
+  return box;
+}
+
+// The face's box from its exact geometry (not its triangulation): a ring torus's from its extreme points
+// (ringTorusBox), any other's BRepBndLib::AddOptimal's. [in] face.
+Bnd_Box exactFaceBox(const TopoDS_Face& face) {
+  const BRepAdaptor_Surface surface(face);
+  if (surface.GetType() == GeomAbs_Torus)
+    if (Bnd_Box box = ringTorusBox(face, surface.Torus()); !box.IsVoid()) return box;
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(face, box, false, false);
+  return box;
+}
+
 // Distance from p to the trimmed face as BRepExtrema_DistShapeShape gives it, built for this query.
 double exactDistance(const TopoDS_Face& face, const gp_Pnt& p) {
   BRepExtrema_DistShapeShape nearest(BRepBuilderAPI_MakeVertex(p).Vertex(), face);
@@ -77,10 +123,7 @@ CadFaces::Face CadFaces::makeFace(const CadSolid& cad, int index, const Bnd_Box*
   Face f;
   f.face = TopoDS::Face(cad.faces(index + 1));
   f.tolerance = BRep_Tool::Tolerance(f.face);
-  if (known)
-    f.exactBox = *known;
-  else
-    BRepBndLib::AddOptimal(f.face, f.exactBox, false, false);
+  f.exactBox = known ? *known : exactFaceBox(f.face);
   f.box = f.exactBox;
   f.box.Enlarge(f.tolerance);
   f.extremaBox = extremaBox(f.face);

@@ -28,7 +28,7 @@ namespace hexlayer {
 
 class BoxTree;
 
-// Faces' exact boxes (BRepBndLib::AddOptimal of their geometry: a torus face's takes 20 ms), kept for the solids that
+// Faces' exact boxes (of their geometry: BRepBndLib::AddOptimal's takes 20 ms on a torus), kept for the solids that
 // share faces: the pieces a part is cut into keep most of its faces (junction_cut.hpp), each measured once.
 class FaceBoxes {
  public:
@@ -58,7 +58,7 @@ class CadFaces {
     TopoDS_Face face;
     std::string name;  // FreeCAD's name of the input face it is (a piece of): "Face<N>"
     double tolerance = 0;
-    Bnd_Box exactBox;                   // BRepBndLib::AddOptimal's, of the exact geometry (not the triangulation)
+    Bnd_Box exactBox;                   // of the exact geometry, not the triangulation (a torus: its extreme points)
     Bnd_Box box;                        // exactBox enlarged by the tolerance: the quick test of `lies`
     Bnd_Box extremaBox;                 // BRepBndLib::Add, as BRepExtrema boxes the face
     std::vector<gp_Pnt> vertices;       // TopExp::MapShapes order

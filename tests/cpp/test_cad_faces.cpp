@@ -7,12 +7,15 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRep_Tool.hxx>
+#include <Precision.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
@@ -210,4 +213,48 @@ TEST(CadFaces, ExactBoxesOfSharedFacesAreMeasuredOnce) {
   const TopoDS_Shape copy = BRepBuilderAPI_Copy(cad.solid).Shape();
   for (TopExp_Explorer it(copy, TopAbs_FACE); it.More(); it.Next())
     EXPECT_EQ(boxes.find(TopoDS::Face(it.Current())), nullptr);
+}
+
+namespace {
+
+// Checks every ring torus face's exact box against BRepBndLib::AddOptimal's, which it replaces: it holds that box
+// (within 1e-9 of the solid's size) and is at most Precision::Confusion() larger (AddOptimal enlarges some sides by
+// it, not all). [in] cad. Returns how many torus faces.
+int expectTorusBoxesHoldAddOptimals(const CadSolid& cad) {
+  const CadFaces faces(cad);
+  int tori = 0;
+  for (int f = 0; f < faces.count(); ++f) {
+    if (BRepAdaptor_Surface(faces.face(f).face).GetType() != GeomAbs_Torus) continue;
+    ++tori;
+    Bnd_Box optimal;
+    BRepBndLib::AddOptimal(faces.face(f).face, optimal, false, false);
+    std::array<double, 6> expected{}, box{};
+    optimal.Get(expected[0], expected[1], expected[2], expected[3], expected[4], expected[5]);
+    faces.face(f).exactBox.Get(box[0], box[1], box[2], box[3], box[4], box[5]);
+    for (int k = 0; k < 6; ++k) {
+      const double outwards = k < 3 ? expected[k] - box[k] : box[k] - expected[k];
+      EXPECT_GE(outwards, -1e-9 * cad.diagonal) << "face " << f << " bound " << k;
+      EXPECT_LE(outwards, Precision::Confusion() + 1e-9 * cad.diagonal) << "face " << f << " bound " << k;
+    }
+  }
+  return tori;
+}
+
+// A torus about a tilted axis off the origin, all lengths times `scale`: whole, or its ring angle and tube angles cut.
+CadSolid torus(double scale, bool whole) {
+  const gp_Ax2 axis(gp_Pnt(3 * scale, -2 * scale, 5 * scale), gp_Dir(1, 2, 3));
+  BRepPrimAPI_MakeTorus make = whole ? BRepPrimAPI_MakeTorus(axis, 10 * scale, 2 * scale)
+                                     : BRepPrimAPI_MakeTorus(axis, 10 * scale, 2 * scale, -0.4, 2.3, 2.5);
+  return prepareSolid(TopoDS::Solid(make.Shape()));
+}
+
+}  // namespace
+
+// A torus face's box comes from its extreme points, not BndLib's optimization (20 ms a face): it holds that box.
+TEST(CadFaces, TorusFaceBoxesHoldAddOptimals) {
+  for (double scale : {1e-3, 1.0, 1e3})
+    for (bool whole : {true, false}) EXPECT_EQ(expectTorusBoxesHoldAddOptimals(torus(scale, whole)), 1) << scale;
+  EXPECT_GE(
+      expectTorusBoxesHoldAddOptimals(readPart(std::string(HEXLAYER_SHARED_PARTS) + "/ender3_power_holder_box.step")),
+      17);
 }
