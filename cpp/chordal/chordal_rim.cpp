@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/threads.hpp"
+
 namespace hexlayer {
 namespace {
 
@@ -59,16 +61,21 @@ RimWalk rimWalk(const ChordalSurface& s) {
 std::vector<std::optional<Vec3>> rimTargets(const ChordalSurface& s, const RimWalk& walk, const RimMiddle& middle,
                                             double reach) {
   std::vector<std::optional<Vec3>> to(s.vertices.size());
-  for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+  ParallelErrors errors;  // each vertex on its own: the walls' projections on every thread
+#pragma omp parallel for schedule(dynamic, 16)
+  for (long v = 0; v < static_cast<long>(s.vertices.size()); ++v) {
     if (walk.next[v] < 0 || walk.previous[v] < 0) continue;
-    const std::optional<Vec3> m = middle(s.vertices[v]);
-    if (!m) continue;
-    const Vec3 move = *m - s.vertices[v];
-    const Vec3 along = (s.vertices[walk.next[v]] - s.vertices[walk.previous[v]]).normalized();
-    if (move.norm() > kMinMove * reach && move.norm() <= reach &&
-        std::abs(move.dot(along)) <= kMaxAlongRim * move.norm())
-      to[v] = m;
+    errors.run([&] {
+      const std::optional<Vec3> m = middle(s.vertices[v]);
+      if (!m) return;
+      const Vec3 move = *m - s.vertices[v];
+      const Vec3 along = (s.vertices[walk.next[v]] - s.vertices[walk.previous[v]]).normalized();
+      if (move.norm() > kMinMove * reach && move.norm() <= reach &&
+          std::abs(move.dot(along)) <= kMaxAlongRim * move.norm())
+        to[v] = m;
+    });
   }
+  errors.rethrow();
   return to;
 }
 

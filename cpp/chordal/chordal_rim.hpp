@@ -17,7 +17,7 @@
 namespace hexlayer {
 
 // The point midway between the top and the bottom wall's rim edges nearest to p (on the lateral face nearest
-// to p where it meets both walls), if any.
+// to p where it meets both walls), if any. Called from every thread at once (each vertex is asked on its own).
 using RimMiddle = std::function<std::optional<Vec3>(const Vec3& p)>;
 
 struct RimSnapStats {
