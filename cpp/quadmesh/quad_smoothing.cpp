@@ -4,7 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "core/box_tree.hpp"
 #include "core/groups.hpp"
+#include "core/threads.hpp"
 
 namespace hexlayer {
 
@@ -226,37 +228,96 @@ int cornerOf(const std::array<int, 4>& quad, int v) {
   return -1;
 }
 
-// Which nodes can still move in a Gauss-Seidel sweep: a node's update depends only on the nodes of
-// the quads around it, so if none of them (itself included) moved since its last visit, the visit
-// would decide as before and is skipped. The result is the same as visiting every node.
+// The order of a Gauss-Seidel sweep, which decides each move only through the order of neighbours (a node moves
+// with its neighbours before it in their new places, those after it in their old): the nodes cut in two halves by
+// a plane (across the longest side of the box of the nodes of poor quads, through the middle one of them, so that
+// each half has as much to do), first each half's nodes with no neighbour in the other half, the two halves side by
+// side (no node of one is a neighbour of the other's), then the nodes along the cut, each part in index order. Only
+// the neighbours across the cut are visited in another order than index order. Below kSplitNodes nodes, or where
+// the cut holds more than kSplitSeam of them, index order. Deterministic, whatever the threads.
+struct SweepOrder {
+  std::array<std::vector<int>, 2> halves;
+  std::vector<int> seam;
+  std::vector<long> position;  // per node, its place in the sweep (the halves, then the seam)
+};
+
+constexpr std::size_t kSplitNodes = 2000;
+constexpr double kSplitSeam = 0.1;
+
+SweepOrder sweepOrder(const QuadMesh& q, const NodeQuads& nq, const std::vector<char>& poor) {
+  const int n = static_cast<int>(q.nodes.size());
+  SweepOrder o;
+  o.position.resize(n);
+  auto inIndexOrder = [&] {
+    o.halves[0].clear(), o.halves[1].clear(), o.seam.clear();
+    for (int node = 0; node < n; ++node) o.halves[0].push_back(node), o.position[node] = node;
+    return o;
+  };
+  Box box;
+  std::vector<int> poorNodes;
+  for (int node = 0; node < n; ++node)
+    if (poor[node]) box.add(q.nodes[node]), poorNodes.push_back(node);
+  if (static_cast<std::size_t>(n) < kSplitNodes || poorNodes.size() < 2) return inIndexOrder();
+  int axis = 0;
+  (box.hi - box.lo).maxCoeff(&axis);
+  auto before = [&](int a, int b) { return std::make_pair(q.nodes[a][axis], a) < std::make_pair(q.nodes[b][axis], b); };
+  const auto middle = poorNodes.begin() + static_cast<long>(poorNodes.size() / 2);
+  std::nth_element(poorNodes.begin(), middle, poorNodes.end(), before);
+  auto half = [&](int node) { return before(node, *middle) ? 0 : 1; };
+  for (int node = 0; node < n; ++node) {
+    bool seam = false;
+    for (int k = nq.start[node]; k < nq.start[node + 1] && !seam; ++k)
+      for (int c : q.quads[nq.items[k]]) seam |= half(c) != half(node);
+    (seam ? o.seam : o.halves[half(node)]).push_back(node);
+  }
+  if (static_cast<double>(o.seam.size()) > kSplitSeam * n) return inIndexOrder();
+  long place = 0;
+  for (const std::vector<int>* part : {&o.halves[0], &o.halves[1], &o.seam})
+    for (int node : *part) o.position[node] = place++;
+  return o;
+}
+
+// Which nodes can still move in a sweep: a node's update depends only on the nodes of the quads around it, so if
+// none of them (itself included) moved since its last visit, the visit would decide as before and is skipped. The
+// result is the same as visiting every node. Times are places in the sweeps' order (sweep * nodes + position):
+// a visit at 2 t, a move at 2 t + 1.
 class MoveClock {
  public:
-  explicit MoveClock(std::size_t nodes) : movedAt_(nodes, 0), visitedAt_(nodes, -1) {}
+  explicit MoveClock(std::size_t nodes) : movedAt_(nodes, -1), visitedAt_(nodes, -2) {}
   bool unchanged(const QuadMesh& q, const NodeQuads& nq, int node) const {
     for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
       for (int c : q.quads[nq.items[k]])
         if (movedAt_[c] > visitedAt_[node]) return false;
     return true;
   }
-  void visit(int node) { visitedAt_[node] = now_; }
-  void moved(int node) { movedAt_[node] = ++now_; }
+  void visit(int node, long t) { visitedAt_[node] = 2 * t; }
+  void moved(int node, long t) { movedAt_[node] = 2 * t + 1; }
 
  private:
   std::vector<long> movedAt_, visitedAt_;
-  long now_ = 0;
 };
 
-// Visits the nodes in order, `iterations` times, skipping those whose neighbourhood has not
-// changed; update(node) returns whether it moved the node.
+// Visits the nodes in the sweep order, `iterations` times, skipping those whose neighbourhood has not changed;
+// update(node) returns whether it moved the node.
 template <class Update>
-void gaussSeidel(const QuadMesh& q, const NodeQuads& nq, int iterations, Update update) {
+void gaussSeidel(const QuadMesh& q, const NodeQuads& nq, const SweepOrder& order, int iterations, Update update) {
   MoveClock clock(q.nodes.size());
-  for (int it = 0; it < iterations; ++it)
-    for (int node = 0; node < static_cast<int>(q.nodes.size()); ++node) {
+  const long n = static_cast<long>(q.nodes.size());
+  ParallelErrors errors;
+  auto sweep = [&](const std::vector<int>& nodes, int it) {
+    for (int node : nodes) {
       if (clock.unchanged(q, nq, node)) continue;
-      clock.visit(node);
-      if (update(node)) clock.moved(node);
+      const long t = it * n + order.position[node];
+      clock.visit(node, t);
+      if (update(node)) clock.moved(node, t);
     }
+  };
+  for (int it = 0; it < iterations; ++it) {
+#pragma omp parallel for schedule(static, 1) if (!order.halves[1].empty())
+    for (int h = 0; h < 2; ++h) errors.run([&] { sweep(order.halves[h], it); });
+    errors.rethrow();
+    sweep(order.seam, it);
+  }
 }
 
 }  // namespace
@@ -306,13 +367,17 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, 
   const NodeQuads nq = quadsAroundNodes(q);
   const std::vector<std::array<int, 2>> rim = rimNeighbours(q);
   const std::vector<Vec3> rimStart = q.nodes;  // rim nodes slide along the rim as Gmsh placed it
+  std::vector<char> poor(q.nodes.size(), 0);
+  for (std::size_t node = 0; node < q.nodes.size(); ++node)
+    poor[node] = worstAround(q, nq, static_cast<int>(node), q.nodes[node]) < kGoodQuad;
+  const SweepOrder order = sweepOrder(q, nq, poor);
   std::vector<int> facet(q.nodes.size(), -1);  // the chordal facet a node was last put on: where to look first
   auto locate = [&](int node, const Vec3& p) {
     const ChordalPoint at = chordal.locate(p, facet[node]);
     facet[node] = at.facet;
     return at.point;
   };
-  gaussSeidel(q, nq, iterations, [&](int node) {
+  gaussSeidel(q, nq, order, iterations, [&](int node) {
     if (rim[node][0] != -1) return false;
     const double before = worstAround(q, nq, node, q.nodes[node]);
     if (before >= kGoodQuad) return false;  // its quads are square already (a structured grid's)
@@ -322,7 +387,7 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, 
     return true;
   });
   // Then the nodes of poor quads are moved to make the worst quad around them as good as can be.
-  gaussSeidel(q, nq, iterations, [&](int node) {
+  gaussSeidel(q, nq, order, iterations, [&](int node) {
     const Vec3 from = q.nodes[node];
     if (rim[node][0] == -2 || (!slideRim && rim[node][0] != -1) || worstAround(q, nq, node, from) >= kGoodQuad)
       return false;
