@@ -455,7 +455,8 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
           // feet on both sides of the sheet (ribs crossing it) are one
           merged = mergeFeetOnBothSides(onChordalSurface(onWall, locator), locator);
           merged.shift /= c.unit;
-          const FootprintInsertion in = insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads));
+          const FootprintInsertion in =
+              insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads), o.gmshRuns.get());
           for (int m : merged.node) column.push_back(in.node[m]);
           t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
           stage.quads = in.quads;
@@ -807,8 +808,10 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   return result;
 }
 
-MeshResult meshFile(const std::string& path, const MeshOptions& o) {
-  validateOptions(o);
+MeshResult meshFile(const std::string& path, const MeshOptions& given) {
+  validateOptions(given);
+  MeshOptions o = given;  // the Gmsh runs forked from a process as small as this one is before it reads the part
+  if (!o.gmshRuns) o.gmshRuns = std::make_shared<ForkServer>(&openGmshSession);
   const std::vector<TopoDS_Solid> solids = readSolids(path);
   if (solids.size() == 1) return meshSolid(solids[0], o);
   MeshResult all;  // several solids: mesh each, one report per solid plus the totals

@@ -2,10 +2,12 @@
 // surface -> quad mesh -> sweep -> quality. Each stage is a call into its own folder.
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "chordal/chordal_surface.hpp"
+#include "core/child_process.hpp"
 #include "core/progress.hpp"
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
@@ -33,6 +35,9 @@ struct MeshOptions {
   // The quad stage's time budgets (quad_stage.hpp: --quad-budget, --quad-try-budget), in seconds; 0 = from the
   // part's size. A Gmsh try that runs out of its budget is a failed try; after the stage's no try starts.
   double quadTryBudget = 0, quadStageBudget = 0;
+  // Forks the Gmsh runs of the gaps round walls' feet (child_process.hpp): meshFile starts one, Gmsh open in it,
+  // before it reads the part; null: each run is forked from this process.
+  std::shared_ptr<ForkServer> gmshRuns;
 };
 
 struct MeshResult {

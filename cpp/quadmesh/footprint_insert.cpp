@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/box_grid.hpp"
+#include "core/bytes.hpp"
 #include "core/child_process.hpp"
 #include "core/error.hpp"
 #include "core/point_grid.hpp"
@@ -557,27 +558,46 @@ std::vector<double> loopSpacing(const std::vector<Vec3>& at, const std::vector<S
   return sum;
 }
 
+// A gap's Gmsh run as bytes (gapQuadsRun's request). [in] at, spacing, surfaces, algorithm: as startGapQuads's.
+std::string gapRequest(const std::vector<Eigen::Vector2d>& at, const std::vector<double>& spacing,
+                       const std::vector<Surface>& surfaces, int algorithm) {
+  std::vector<double> xy;  // Eigen's vectors are not trivially copyable: their coordinates are
+  for (const Eigen::Vector2d& p : at) xy.push_back(p.x()), xy.push_back(p.y());
+  ByteWriter w;
+  w.put(algorithm), w.put(xy), w.put(spacing), w.put(surfaces);
+  return w.bytes();
+}
+
 // Gmsh meshes the surfaces with quads, every boundary node fixed: Blossom's recombination of the triangles of 2D
-// algorithm `algorithm`, in a child process started here (finishGapQuads waits for its quads), so that a gap's tries
-// run side by side. [in] at: 2D points; [in] spacing: the mesh size at each; [in] surfaces: loops of them;
-// [in] algorithm. Returns the running child.
-StartedChild startGapQuads(const std::vector<Eigen::Vector2d>& at, const std::vector<double>& spacing,
-                           const std::vector<Surface>& surfaces, int algorithm) {
-  return startChildProcess(
-      [&] {
-        return inGmshSession([&] {
-          gmsh::model::add("gap");
-          const std::set<int> used = addGapGeometry(at, spacing, surfaces);
-          gmsh::option::setNumber("Mesh.RecombineAll", 1);
-          gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);  // Blossom (the full-quad ones refine the lines)
-          gmsh::option::setNumber("Mesh.Smoothing", 5);
-          gmsh::option::setNumber("Mesh.RandomFactor", 1e-9);
-          gmsh::option::setNumber("Mesh.Algorithm", algorithm);
-          gmsh::model::mesh::generate(2);
-          return toBytes(collectGapQuads(at, used));
-        });
-      },
-      kGmshSeconds);
+// algorithm `algorithm`, in Gmsh's open session. [in] request: gapRequest's bytes. Returns the quads as bytes
+// (toBytes).
+std::string gapQuadsRun(const std::string& request) {
+  int algorithm = 0;
+  std::vector<double> xy, spacing;
+  std::vector<Surface> surfaces;
+  ByteReader r(request);
+  r.get(algorithm), r.get(xy), r.get(spacing), r.get(surfaces);
+  std::vector<Eigen::Vector2d> at;
+  for (std::size_t k = 0; k + 1 < xy.size(); k += 2) at.emplace_back(xy[k], xy[k + 1]);
+  return namingGmshErrors([&] {
+    gmsh::model::add("gap");
+    const std::set<int> used = addGapGeometry(at, spacing, surfaces);
+    gmsh::option::setNumber("Mesh.RecombineAll", 1);
+    gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);  // Blossom (the full-quad ones refine the lines)
+    gmsh::option::setNumber("Mesh.Smoothing", 5);
+    gmsh::option::setNumber("Mesh.RandomFactor", 1e-9);
+    gmsh::option::setNumber("Mesh.Algorithm", algorithm);
+    gmsh::model::mesh::generate(2);
+    return toBytes(collectGapQuads(at, used));
+  });
+}
+
+// gapQuadsRun in a child process started here (finishGapQuads waits for its quads), so that a gap's tries run side by
+// side: the fork server's child, or this process's. [in] server: may be null; [in] at: 2D points; [in] spacing: the
+// mesh size at each; [in] surfaces: loops of them; [in] algorithm. Returns the running child.
+StartedChild startGapQuads(ForkServer* server, const std::vector<Eigen::Vector2d>& at,
+                           const std::vector<double>& spacing, const std::vector<Surface>& surfaces, int algorithm) {
+  return startRun(server, &gapQuadsRun, gapRequest(at, spacing, surfaces, algorithm), kGmshSeconds, inGmshSession);
 }
 
 // [in,out] child: a started startGapQuads, waited for. Returns the quads in the plane, their first at.size() nodes
@@ -888,10 +908,10 @@ std::pair<std::vector<Quad>, double> rimRing(Nodes& nodes, const GapMap& map, co
 // The gap's quads on the sheet: of Gmsh's algorithms (kGapAlgorithms), on the gap as it is and with its acute
 // corners cut off (cutAcuteCorners), the one whose worst quad, smoothed, is best. (Finer mesh sizes at the points are
 // not tried: every boundary edge is one segment, and Gmsh 4.8 sizes the inside from those, not from the points'.)
-// [in] at: every node so far; [in] map, chordal, surfaces; [out] worst: its worst quad's scaled Jacobian. Throws
-// geometryError if none gives unfolded quads.
+// [in] at: every node so far; [in] map, chordal, surfaces; [in] server: forks the Gmsh runs (null: this process);
+// [out] worst: its worst quad's scaled Jacobian. Throws geometryError if none gives unfolded quads.
 QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
-                  const std::vector<Surface>& surfaces, double& worst) {
+                  const std::vector<Surface>& surfaces, ForkServer* server, double& worst) {
   std::vector<Eigen::Vector2d> flat(at.size(), Eigen::Vector2d::Zero());  // the surfaces' nodes only are Gmsh's
   for (const Surface& s : surfaces)
     for (const Loop& loop : s)
@@ -922,7 +942,7 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalL
   const std::size_t running = static_cast<std::size_t>(std::max(1, threadCount()));
   auto start = [&](std::size_t k) {
     Try& t = tries[k];
-    t.gmsh = startGapQuads(ways[t.way].at, spacing[t.way], ways[t.way].surfaces, t.algorithm);
+    t.gmsh = startGapQuads(server, ways[t.way].at, spacing[t.way], ways[t.way].surfaces, t.algorithm);
   };
   for (std::size_t k = 0; k < std::min(running, tries.size()); ++k) start(k);
   QuadMesh best;
@@ -1050,7 +1070,7 @@ MergedFootprints mergeFeetOnBothSides(const FootprintQuads& footprint, const Cho
 
 // insertFootprints with the sheet's quads within `band` of a footprint meshed again.
 FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& footprint, const ChordalLocator& chordal,
-                                double size, double band) {
+                                double size, double band, ForkServer* server) {
   Nodes nodes;
   nodes.at = sheet.nodes;
   nodes.sheetNodes = static_cast<int>(sheet.nodes.size());
@@ -1078,7 +1098,7 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
     evenBoundaries(nodes, edges.free, surfaces, kept);
     if (!surfaces.empty()) {
       double worst = 0;
-      const QuadMesh q = gapQuads(nodes.at, map, chordal, surfaces, worst);  // its first nodes are nodes.at
+      const QuadMesh q = gapQuads(nodes.at, map, chordal, surfaces, server, worst);  // its first nodes are nodes.at
       out.worstQuad = std::min(out.worstQuad, worst);
       nodes.at.insert(nodes.at.end(), q.nodes.begin() + static_cast<long>(nodes.at.size()), q.nodes.end());
       added.insert(added.end(), q.quads.begin(), q.quads.end());
@@ -1123,13 +1143,13 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
 }
 
 FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads& footprint,
-                                    const ChordalLocator& chordal, double size) {
+                                    const ChordalLocator& chordal, double size, ForkServer* server) {
   if (footprint.quads.empty()) throw geometryError("junction: no footprint to put in the sheet's quads");
   FootprintInsertion best;
   std::string failure;
   for (double band : kBands) {  // a wider gap where the boundary leaves Gmsh no good quads
     try {
-      FootprintInsertion in = insertWithin(sheet, footprint, chordal, size, band * size);
+      FootprintInsertion in = insertWithin(sheet, footprint, chordal, size, band * size, server);
       if (best.quads.quads.empty() || in.worstQuad > best.worstQuad) best = std::move(in);
       if (best.worstQuad >= kGoodGap) break;
     } catch (const Error& e) {

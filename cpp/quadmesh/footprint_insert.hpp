@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "chordal/chordal_locator.hpp"
+#include "core/child_process.hpp"
 #include "core/types.hpp"
 #include "quadmesh/quad_mesh.hpp"
 
@@ -52,11 +53,12 @@ struct FootprintInsertion {
 
 // [in] sheet: the sheet's quads (quad_mesh.hpp); [in] footprint; [in] chordal: the sheet's chordal surface, where
 // the gap's new nodes are put; [in] size: the sheet's quad size (the gap is two quads wide round each footprint, three
-// or four where the quads Gmsh can make in the narrower one are poor: the widest's worst quad best).
+// or four where the quads Gmsh can make in the narrower one are poor: the widest's worst quad best); [in] server:
+// forks the gaps' Gmsh runs (child_process.hpp; null: this process does).
 // Returns the quads: the kept ones first (their nodes in their order), then the gap's and the footprint's.
 // Throws geometryError saying why if a footprint does not lie on the sheet, footprints overlap, the gap round one
 // does not unfold onto the plane, or Gmsh cannot fill it with quads.
 FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads& footprint,
-                                    const ChordalLocator& chordal, double size);
+                                    const ChordalLocator& chordal, double size, ForkServer* server = nullptr);
 
 }  // namespace hexlayer

@@ -841,18 +841,19 @@ namespace {
 
 // Gmsh is one process-wide session: open it for one piece of work only, and always close it.
 struct GmshSession {
-  GmshSession() {
-    gmsh::initialize();
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.NumThreads", 1);  // deterministic output
-  }
+  GmshSession() { openGmshSession(); }
   ~GmshSession() { gmsh::finalize(); }
 };
 
 }  // namespace
 
-std::string inGmshSession(const std::function<std::string()>& work) {
-  GmshSession session;
+void openGmshSession() {
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::option::setNumber("General.NumThreads", 1);  // deterministic output
+}
+
+std::string namingGmshErrors(const std::function<std::string()>& work) {
   try {
     return work();
   } catch (const std::exception&) {
@@ -860,6 +861,11 @@ std::string inGmshSession(const std::function<std::string()>& work) {
   } catch (...) {  // Gmsh's error code (lastGmshError)
     throw geometryError(lastGmshError());
   }
+}
+
+std::string inGmshSession(const std::function<std::string()>& work) {
+  GmshSession session;
+  return namingGmshErrors(work);
 }
 
 }  // namespace hexlayer

@@ -129,6 +129,14 @@ long holesClosed(const QuadMesh& quads, const ChordalSurface& chordal);
 // saying why) if no try gave any.
 QuadMesh tryQuadMeshes(const ChordalLocator& chordal, const QuadMeshOptions& options);
 
+// Opens Gmsh's session (gmsh::initialize, quiet, one thread: deterministic output): a fork server's preparation for
+// its children (child_process.hpp), which run in it.
+void openGmshSession();
+
+// Runs work(), Gmsh 4.8's own errors (its error code thrown, the message in its logger) made geometryError.
+// [in] work. Returns its bytes.
+std::string namingGmshErrors(const std::function<std::string()>& work);
+
 // Runs work() between gmsh::initialize and gmsh::finalize (quiet, one thread: deterministic output), finalizing
 // whatever happens; Gmsh 4.8's own errors (its error code thrown, the message in its logger) become geometryError.
 // Meant for a child process (child_process.hpp): Gmsh is one session per process. [in] work. Returns its bytes.
