@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -825,11 +826,10 @@ void repairPoorQuads(QuadMesh& q) {
 
 // One try at the gap: Gmsh's quads of the surfaces (the wedge quads added), checked to fill the gap, smoothed on the
 // sheet. [in] at: every node so far; [in] map, chordal; [in] surfaces: the gap's; [in] cut: what Gmsh meshes;
-// [in,out] gmsh: its Gmsh run (startGapQuads), waited for. Returns the quads; [out] worst: the worst's scaled Jacobian
-// (smoothGap). Throws geometryError if Gmsh fails or its quads do not fill the gap.
+// [in] q: Gmsh's quads (finishGapQuads). Returns the quads; [out] worst: the worst's scaled Jacobian (smoothGap).
+// Throws geometryError if its quads do not fill the gap.
 QuadMesh gapTry(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
-                const std::vector<Surface>& surfaces, const WedgeCut& cut, StartedChild& gmsh, double& worst) {
-  QuadMesh q = finishGapQuads(gmsh);
+                const std::vector<Surface>& surfaces, const WedgeCut& cut, QuadMesh q, double& worst) {
   q.quads.insert(q.quads.end(), cut.quads.begin(), cut.quads.end());
   repairPoorQuads(q);
   checkGapQuads(q, surfaces);
@@ -937,9 +937,9 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalL
       for (Try& t : tries) stopChild(t.gmsh);
     }
   } stopLeft{tries};
-  // as many children at once as there are threads (the quad stage's Gmsh tries alike): the next started once a try is
-  // taken
-  const std::size_t running = static_cast<std::size_t>(std::max(1, threadCount()));
+  // as many children at once as there are threads and one more, which runs while this process smooths the quads of
+  // the tries taken (on one thread, one child): the next started once a try's quads are in, before they are smoothed
+  const std::size_t running = static_cast<std::size_t>(threadCount() > 1 ? threadCount() + 1 : 1);
   auto start = [&](std::size_t k) {
     Try& t = tries[k];
     t.gmsh = startGapQuads(server, ways[t.way].at, spacing[t.way], ways[t.way].surfaces, t.algorithm);
@@ -949,14 +949,21 @@ QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalL
   double bestWorst = 0;
   std::string failure = "its quads are folded";
   for (std::size_t k = 0; k < tries.size(); ++k) {
+    std::optional<QuadMesh> made;
     try {
-      double tried = 0;
-      QuadMesh q = gapTry(at, map, chordal, surfaces, ways[tries[k].way], tries[k].gmsh, tried);
-      if (tried > bestWorst) best = std::move(q), bestWorst = tried;
+      made = finishGapQuads(tries[k].gmsh);
     } catch (const Error& e) {
       failure = e.what();
     }
     if (k + running < tries.size()) start(k + running);
+    if (!made) continue;
+    try {
+      double tried = 0;
+      QuadMesh q = gapTry(at, map, chordal, surfaces, ways[tries[k].way], std::move(*made), tried);
+      if (tried > bestWorst) best = std::move(q), bestWorst = tried;
+    } catch (const Error& e) {
+      failure = e.what();
+    }
   }
   if (best.quads.empty()) throw geometryError("junction: the gap round a wall's foot was not meshed: " + failure);
   worst = bestWorst;
