@@ -4,9 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "core/box_tree.hpp"
 #include "core/groups.hpp"
-#include "core/threads.hpp"
+#include "core/sweep_halves.hpp"
 
 namespace hexlayer {
 
@@ -228,55 +227,6 @@ int cornerOf(const std::array<int, 4>& quad, int v) {
   return -1;
 }
 
-// The order of a Gauss-Seidel sweep, which decides each move only through the order of neighbours (a node moves
-// with its neighbours before it in their new places, those after it in their old): the nodes cut in two halves by
-// a plane (across the longest side of the box of the nodes of poor quads, through the middle one of them, so that
-// each half has as much to do), first each half's nodes with no neighbour in the other half, the two halves side by
-// side (no node of one is a neighbour of the other's), then the nodes along the cut, each part in index order. Only
-// the neighbours across the cut are visited in another order than index order. Below kSplitNodes nodes, or where
-// the cut holds more than kSplitSeam of them, index order. Deterministic, whatever the threads.
-struct SweepOrder {
-  std::array<std::vector<int>, 2> halves;
-  std::vector<int> seam;
-  std::vector<long> position;  // per node, its place in the sweep (the halves, then the seam)
-};
-
-constexpr std::size_t kSplitNodes = 2000;
-constexpr double kSplitSeam = 0.1;
-
-SweepOrder sweepOrder(const QuadMesh& q, const NodeQuads& nq, const std::vector<char>& poor) {
-  const int n = static_cast<int>(q.nodes.size());
-  SweepOrder o;
-  o.position.resize(n);
-  auto inIndexOrder = [&] {
-    o.halves[0].clear(), o.halves[1].clear(), o.seam.clear();
-    for (int node = 0; node < n; ++node) o.halves[0].push_back(node), o.position[node] = node;
-    return o;
-  };
-  Box box;
-  std::vector<int> poorNodes;
-  for (int node = 0; node < n; ++node)
-    if (poor[node]) box.add(q.nodes[node]), poorNodes.push_back(node);
-  if (static_cast<std::size_t>(n) < kSplitNodes || poorNodes.size() < 2) return inIndexOrder();
-  int axis = 0;
-  (box.hi - box.lo).maxCoeff(&axis);
-  auto before = [&](int a, int b) { return std::make_pair(q.nodes[a][axis], a) < std::make_pair(q.nodes[b][axis], b); };
-  const auto middle = poorNodes.begin() + static_cast<long>(poorNodes.size() / 2);
-  std::nth_element(poorNodes.begin(), middle, poorNodes.end(), before);
-  auto half = [&](int node) { return before(node, *middle) ? 0 : 1; };
-  for (int node = 0; node < n; ++node) {
-    bool seam = false;
-    for (int k = nq.start[node]; k < nq.start[node + 1] && !seam; ++k)
-      for (int c : q.quads[nq.items[k]]) seam |= half(c) != half(node);
-    (seam ? o.seam : o.halves[half(node)]).push_back(node);
-  }
-  if (static_cast<double>(o.seam.size()) > kSplitSeam * n) return inIndexOrder();
-  long place = 0;
-  for (const std::vector<int>* part : {&o.halves[0], &o.halves[1], &o.seam})
-    for (int node : *part) o.position[node] = place++;
-  return o;
-}
-
 // Which nodes can still move in a sweep: a node's update depends only on the nodes of the quads around it, so if
 // none of them (itself included) moved since its last visit, the visit would decide as before and is skipped. The
 // result is the same as visiting every node. Times are places in the sweeps' order (sweep * nodes + position):
@@ -297,27 +247,19 @@ class MoveClock {
   std::vector<long> movedAt_, visitedAt_;
 };
 
-// Visits the nodes in the sweep order, `iterations` times, skipping those whose neighbourhood has not changed;
-// update(node) returns whether it moved the node.
+// Visits the nodes in the sweep order (sweep_halves.hpp), `iterations` times, skipping those whose neighbourhood has
+// not changed; update(node) returns whether it moved the node.
 template <class Update>
-void gaussSeidel(const QuadMesh& q, const NodeQuads& nq, const SweepOrder& order, int iterations, Update update) {
+void gaussSeidel(const QuadMesh& q, const NodeQuads& nq, const SweepHalves& order, int iterations, Update update) {
   MoveClock clock(q.nodes.size());
   const long n = static_cast<long>(q.nodes.size());
-  ParallelErrors errors;
-  auto sweep = [&](const std::vector<int>& nodes, int it) {
-    for (int node : nodes) {
-      if (clock.unchanged(q, nq, node)) continue;
+  for (int it = 0; it < iterations; ++it)
+    sweepInHalves(order, [&](int node, int) {
+      if (clock.unchanged(q, nq, node)) return;
       const long t = it * n + order.position[node];
       clock.visit(node, t);
       if (update(node)) clock.moved(node, t);
-    }
-  };
-  for (int it = 0; it < iterations; ++it) {
-#pragma omp parallel for schedule(static, 1) if (!order.halves[1].empty())
-    for (int h = 0; h < 2; ++h) errors.run([&] { sweep(order.halves[h], it); });
-    errors.rethrow();
-    sweep(order.seam, it);
-  }
+    });
 }
 
 }  // namespace
@@ -370,7 +312,7 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, 
   std::vector<char> poor(q.nodes.size(), 0);
   for (std::size_t node = 0; node < q.nodes.size(); ++node)
     poor[node] = worstAround(q, nq, static_cast<int>(node), q.nodes[node]) < kGoodQuad;
-  const SweepOrder order = sweepOrder(q, nq, poor);
+  const SweepHalves order = sweepHalves(q.nodes, poor, nq, [&](int quad) { return q.quads[quad]; });
   std::vector<int> facet(q.nodes.size(), -1);  // the chordal facet a node was last put on: where to look first
   auto locate = [&](int node, const Vec3& p) {
     const ChordalPoint at = chordal.locate(p, facet[node]);

@@ -1,12 +1,14 @@
 #include "sweep/smoothing.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <vector>
 
 #include "core/groups.hpp"
+#include "core/sweep_halves.hpp"
 #include "quality/quality.hpp"
 
 namespace hexlayer {
@@ -146,21 +148,23 @@ bool searchMove(HexMesh& mesh, const WallProjector& walls, const Freedom& f, int
   return false;
 }
 
-// Gauss-Seidel rounds in node order over the candidate nodes, each moved by `move` (the same moves for the same
-// mesh), until a round moves none or kMaxRounds. Returns the moves kept.
+// Gauss-Seidel rounds over the candidate nodes, each moved by `move` (the same moves for the same mesh), until a
+// round moves none or kMaxRounds: in index order, or on a mesh large enough in two halves side by side and their seam
+// after them (sweep_halves.hpp: a move reads only the nodes of the hexes around its node). Returns the moves kept.
 template <class Move>
 std::size_t smoothRounds(HexMesh& mesh, const WallSides& sides, const std::vector<char>& candidate,
-                         const std::vector<std::vector<int>>& neighbours, bool rimEdges, const Move& move) {
+                         const Groups<std::size_t>& hexesAt, const std::vector<std::vector<int>>& neighbours,
+                         bool rimEdges, const Move& move) {
+  const SweepHalves order = sweepHalves(mesh.nodes, candidate, hexesAt, [&](std::size_t h) { return mesh.hexes[h]; });
   std::size_t total = 0;
   for (int round = 0; round < kMaxRounds; ++round) {
-    std::size_t moved = 0;
-    for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-      const int v = static_cast<int>(i);
+    std::array<std::size_t, 3> moved{0, 0, 0};  // per part of the sweep
+    sweepInHalves(order, [&](int v, int part) {
       const Freedom f = candidate[v] ? freedomOf(mesh, sides, v, rimEdges) : Freedom{};
-      if (f.moves && !neighbours[v].empty() && move(f, v)) ++moved;
-    }
-    total += moved;
-    if (moved == 0) break;
+      if (f.moves && !neighbours[v].empty() && move(f, v)) ++moved[part];
+    });
+    total += moved[0] + moved[1] + moved[2];
+    if (moved[0] + moved[1] + moved[2] == 0) break;
   }
   return total;
 }
@@ -217,11 +221,11 @@ SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const 
   };
   auto worstAround = [&](int v) { return hexesAround(v).worst; };
   stats.nodesMoved = smoothRounds(
-      mesh, sides, nodesOfHexesBelow(mesh, sj, kPoorHex), neighbours, false,
+      mesh, sides, nodesOfHexesBelow(mesh, sj, kPoorHex), hexesAt, neighbours, false,
       [&](const Freedom& f, int v) { return laplacianMove(mesh, walls, f, v, neighbours[v], worstAround); });
   stats.searchMoves = smoothRounds(
-      mesh, sides, withHexesAround(mesh, nodesOfHexesBelow(mesh, scaledJacobians(mesh), kBadHex)), neighbours, true,
-      [&](const Freedom& f, int v) { return searchMove(mesh, walls, f, v, neighbours[v], hexesAround); });
+      mesh, sides, withHexesAround(mesh, nodesOfHexesBelow(mesh, scaledJacobians(mesh), kBadHex)), hexesAt, neighbours,
+      true, [&](const Freedom& f, int v) { return searchMove(mesh, walls, f, v, neighbours[v], hexesAround); });
   const std::vector<double> after = scaledJacobians(mesh);
   stats.worstAfter = *std::min_element(after.begin(), after.end());
   return stats;
