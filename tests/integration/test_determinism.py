@@ -46,5 +46,15 @@ class Determinism(unittest.TestCase):
         self.check_twice(os.path.join("junctions", "plate_ribs_tee.step"), ("inp",), "--order", "2")
 
 
+    def test_real_part_smoothed_in_two_halves(self):
+        """Issue 19: a real part whose quads (6 452 nodes) and hexes are smoothed in two halves side by side
+        (core/sweep_halves.hpp) and whose walls' rims are snapped on every thread."""
+        part = os.path.abspath(os.path.join(harness.args.source, "..", "shared", "parts", "real",
+                                            "ender3_support_frame_Uchannel.step"))
+        if not os.path.exists(part):
+            self.fail(f"{part} is missing: the real parts live in shared/parts/real beside the repository")
+        self.check_twice(part, ("inp",))
+
+
 if __name__ == "__main__":
     harness.main()
