@@ -28,12 +28,11 @@ struct SweepHalves {
 constexpr std::size_t kHalvedNodes = 2000;  // nodes from which a sweep is cut in two
 constexpr double kMostSeam = 0.1;           // the largest share of the nodes on the seam
 
-// [in] points: per node; [in] busy: per node, whether it is expected to move (the cut, across the longest side of their
-// box, goes through the middle one of them: each half has as much to do); [in] around: the elements around each node;
-// [in] nodesOf(element): its nodes. Returns the order.
-template <class Index, class NodesOf>
-SweepHalves sweepHalves(const std::vector<Vec3>& points, const std::vector<char>& busy, const Groups<Index>& around,
-                        NodesOf nodesOf) {
+// [in] points: per node; [in] busy(node): whether it is expected to move (the cut, across the longest side of their
+// box, goes through the middle one of them: each half has as much to do), asked only of a mesh large enough to be cut;
+// [in] around: the elements around each node; [in] nodesOf(element): its nodes. Returns the order.
+template <class Index, class Busy, class NodesOf>
+SweepHalves sweepHalves(const std::vector<Vec3>& points, Busy busy, const Groups<Index>& around, NodesOf nodesOf) {
   const int n = static_cast<int>(points.size());
   SweepHalves o;
   o.position.resize(n);
@@ -42,11 +41,12 @@ SweepHalves sweepHalves(const std::vector<Vec3>& points, const std::vector<char>
     for (int node = 0; node < n; ++node) o.halves[0].push_back(node), o.position[node] = node;
     return o;
   };
+  if (static_cast<std::size_t>(n) < kHalvedNodes) return inIndexOrder();
   Box box;
   std::vector<int> moving;
   for (int node = 0; node < n; ++node)
-    if (busy[node]) box.add(points[node]), moving.push_back(node);
-  if (static_cast<std::size_t>(n) < kHalvedNodes || moving.size() < 2) return inIndexOrder();
+    if (busy(node)) box.add(points[node]), moving.push_back(node);
+  if (moving.size() < 2) return inIndexOrder();
   int axis = 0;
   (box.hi - box.lo).maxCoeff(&axis);
   auto before = [&](int a, int b) { return std::make_pair(points[a][axis], a) < std::make_pair(points[b][axis], b); };

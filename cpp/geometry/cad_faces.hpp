@@ -28,8 +28,8 @@ namespace hexlayer {
 
 class BoxTree;
 
-// Faces' exact boxes (of their geometry: BRepBndLib::AddOptimal's takes 20 ms on a torus), kept for the solids that
-// share faces: the pieces a part is cut into keep most of its faces (junction_cut.hpp), each measured once.
+// Faces' exact boxes (of their geometry: BRepBndLib::AddOptimal's takes milliseconds on a curved face), kept for the
+// solids that share faces: the pieces a part is cut into keep most of its faces (junction_cut.hpp), each measured once.
 class FaceBoxes {
  public:
   // [in] face. Returns the box kept for it (or for a face IsSame to it: the same surface and place), else null.

@@ -309,10 +309,10 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, 
   const NodeQuads nq = quadsAroundNodes(q);
   const std::vector<std::array<int, 2>> rim = rimNeighbours(q);
   const std::vector<Vec3> rimStart = q.nodes;  // rim nodes slide along the rim as Gmsh placed it
-  std::vector<char> poor(q.nodes.size(), 0);
-  for (std::size_t node = 0; node < q.nodes.size(); ++node)
-    poor[node] = worstAround(q, nq, static_cast<int>(node), q.nodes[node]) < kGoodQuad;
-  const SweepHalves order = sweepHalves(q.nodes, poor, nq, [&](int quad) { return q.quads[quad]; });
+  // the sweeps cut in two through the nodes of poor quads
+  const SweepHalves order = sweepHalves(
+      q.nodes, [&](int node) { return worstAround(q, nq, node, q.nodes[node]) < kGoodQuad; }, nq,
+      [&](int quad) { return q.quads[quad]; });
   std::vector<int> facet(q.nodes.size(), -1);  // the chordal facet a node was last put on: where to look first
   auto locate = [&](int node, const Vec3& p) {
     const ChordalPoint at = chordal.locate(p, facet[node]);

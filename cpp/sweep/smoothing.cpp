@@ -155,7 +155,8 @@ template <class Move>
 std::size_t smoothRounds(HexMesh& mesh, const WallSides& sides, const std::vector<char>& candidate,
                          const Groups<std::size_t>& hexesAt, const std::vector<std::vector<int>>& neighbours,
                          bool rimEdges, const Move& move) {
-  const SweepHalves order = sweepHalves(mesh.nodes, candidate, hexesAt, [&](std::size_t h) { return mesh.hexes[h]; });
+  const SweepHalves order = sweepHalves(
+      mesh.nodes, [&](int v) { return candidate[v] != 0; }, hexesAt, [&](std::size_t h) { return mesh.hexes[h]; });
   std::size_t total = 0;
   for (int round = 0; round < kMaxRounds; ++round) {
     std::array<std::size_t, 3> moved{0, 0, 0};  // per part of the sweep
@@ -163,8 +164,9 @@ std::size_t smoothRounds(HexMesh& mesh, const WallSides& sides, const std::vecto
       const Freedom f = candidate[v] ? freedomOf(mesh, sides, v, rimEdges) : Freedom{};
       if (f.moves && !neighbours[v].empty() && move(f, v)) ++moved[part];
     });
-    total += moved[0] + moved[1] + moved[2];
-    if (moved[0] + moved[1] + moved[2] == 0) break;
+    const std::size_t inRound = moved[0] + moved[1] + moved[2];
+    total += inRound;
+    if (inRound == 0) break;
   }
   return total;
 }

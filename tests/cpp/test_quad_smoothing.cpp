@@ -42,6 +42,16 @@ ChordalSurface surfaceOf(const QuadMesh& q) {
   return s;
 }
 
+// The grid's nodes strictly inside x in (0, xMax), y in (0, n) pushed up to 0.35 in the plane (fixed seed).
+QuadMesh perturbed(const QuadMesh& grid, int n, double xMax, unsigned seed) {
+  QuadMesh q = grid;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> push(-0.35, 0.35);
+  for (Vec3& p : q.nodes)
+    if (p.x() > 0 && p.x() < xMax && p.y() > 0 && p.y() < n) p += Vec3(push(random), push(random), 0);
+  return q;
+}
+
 double worstQuad(const QuadMesh& q) {
   double worst = 1;
   for (const auto& f : q.quads)
@@ -103,11 +113,7 @@ TEST(QuadSmoothing, PerturbedGridIsSmoothedBackKeepingItsCornersAndRim) {
   const QuadMesh square = grid(6);
   const ChordalSurface surface = surfaceOf(square);
   const ChordalLocator locator(surface);
-  QuadMesh q = square;
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> push(-0.35, 0.35);
-  for (Vec3& p : q.nodes)
-    if (p.x() > 0 && p.x() < 6 && p.y() > 0 && p.y() < 6) p += Vec3(push(random), push(random), 0);
+  QuadMesh q = perturbed(square, 6, 6, 3);
   const double before = worstQuad(q);
   ASSERT_LT(before, 0.6);
   QuadMesh again = q;
@@ -133,11 +139,7 @@ TEST(QuadSmoothing, LargeGridIsSmoothedTheSameOnOneThreadAndOnTwo) {
   const QuadMesh square = grid(64);
   const ChordalSurface surface = surfaceOf(square);
   const ChordalLocator locator(surface);
-  QuadMesh q = square;
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> push(-0.35, 0.35);
-  for (Vec3& p : q.nodes)
-    if (p.x() > 0 && p.x() < 21 && p.y() > 0 && p.y() < 64) p += Vec3(push(random), push(random), 0);
+  QuadMesh q = perturbed(square, 64, 21, 5);
   const double before = worstQuad(q);
   ASSERT_LT(before, 0.6);
   QuadMesh two = q;

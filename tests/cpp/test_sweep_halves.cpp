@@ -73,7 +73,8 @@ std::vector<Vec3> smoothed(Grid g, const std::vector<char>& busy, const SweepHal
 TEST(SweepHalves, SmallMeshesKeepIndexOrder) {
   const Grid g = grid(10);
   const std::vector<char> busy(g.nodes.size(), 1);
-  const SweepHalves order = sweepHalves(g.nodes, busy, g.around, [&](int c) { return g.cells[c]; });
+  const SweepHalves order = sweepHalves(
+      g.nodes, [&](int v) { return busy[v] != 0; }, g.around, [&](int c) { return g.cells[c]; });
   ASSERT_EQ(order.halves[0].size(), g.nodes.size());
   EXPECT_TRUE(order.halves[1].empty() && order.seam.empty());
   for (std::size_t v = 0; v < g.nodes.size(); ++v) EXPECT_EQ(order.position[v], static_cast<long>(v));
@@ -85,7 +86,8 @@ TEST(SweepHalves, LargeGridIsCutInTwoHalvesAndAThinSeamAndSweptTheSameOnAnyThrea
   std::vector<char> busy(g.nodes.size(), 0);
   for (std::size_t v = 0; v < g.nodes.size(); ++v)
     busy[v] = g.nodes[v].x() > 0 && g.nodes[v].x() < 60 && v > 60 && v < g.nodes.size() - 61;
-  const SweepHalves order = sweepHalves(g.nodes, busy, g.around, [&](int c) { return g.cells[c]; });
+  const SweepHalves order = sweepHalves(
+      g.nodes, [&](int v) { return busy[v] != 0; }, g.around, [&](int c) { return g.cells[c]; });
   EXPECT_GT(order.halves[0].size(), 1500u);
   EXPECT_GT(order.halves[1].size(), 1500u);
   EXPECT_LE(order.seam.size(), g.nodes.size() / 20);  // a band a few nodes wide across the grid
