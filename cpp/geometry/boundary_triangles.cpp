@@ -18,7 +18,10 @@ namespace hexlayer {
 
 namespace {
 
-constexpr double kFineDeflection = 1e-4;  // of the diagonal, for freeform faces (prepareSolid: 2e-3)
+// Of the diagonal, for freeform faces (prepareSolid: 2e-3). At 1e-4 Watson's Delaunay took 1.5 s for the 80 000
+// triangles of a curved shell's three B-spline faces, at 2e-4 0.48 s for 44 000, the same meshes of 176 sample parts
+// and twins.
+constexpr double kFineDeflection = 2e-4;
 
 // The points where the face's surface is singular: the vertices of its degenerated edges (a
 // sphere's or a cone's pole), with their tolerances.

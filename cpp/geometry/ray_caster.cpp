@@ -430,7 +430,12 @@ std::optional<bool> RayCaster::inside(const Vec3& p, double tolerance, double re
     const Vec3 dir = d.normalized();
     const std::vector<std::pair<double, int>> faces = candidates(p, dir, -tolerance, reach);
     const long asked = intersectorOnOtherSurfaces_;
-    const std::vector<RayHit> hits = hitsOnFaces(faces, p, dir, -tolerance, reach);
+    std::vector<RayHit> hits;
+    try {
+      hits = hitsOnFaces(faces, p, dir, -tolerance, reach);
+    } catch (const Standard_Failure&) {  // the intersector's ON test at a B-spline face's degenerated edge: no count
+      continue;
+    }
     // On other surfaces OpenCASCADE's intersector searches a polyhedron, made to find the nearest hit, and may
     // miss one (a B-spline face's seam): a ray that needed it counts nothing.
     if (intersectorOnOtherSurfaces_ != asked) continue;
