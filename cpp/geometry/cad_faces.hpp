@@ -13,6 +13,7 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include <memory>
 #include <optional>
@@ -20,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/point_grid.hpp"
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
 #include "geometry/uv_boundary.hpp"
@@ -67,6 +69,10 @@ class CadFaces {
     double uvBounds[4] = {0, 0, 0, 0};  // BRepTools::UVBounds: u1, u2, v1, v2
     std::unique_ptr<UvBoundary> boundary;
     std::unique_ptr<BoxTree> edgeTree;  // over the boxes of `edges`, in their order (none if one is void)
+    // A freeform face's triangulation nodes (prepareSolid's) and their (u, v): where a local search for a point's foot
+    // starts (CadFaceProbe::footNearSeed); empty on the other faces.
+    std::unique_ptr<PointGrid> seeds;
+    std::vector<gp_Pnt2d> seedUv;  // indexed by the seeds' ids
   };
   // An edge and the box BRepExtrema gives it.
   struct Edge {
@@ -126,11 +132,13 @@ class CadFaceProbe {
   struct Surface {
     BRepAdaptor_Surface adaptor;
     Extrema_ExtPS extrema;  // points to adaptor
+    double tolU = 0, tolV = 0;
   };
   Surface& surface(int face);
   BRepExtrema_ExtPC& curve(int edge);
   TopAbs_State classify(int face, double u, double v);
   std::optional<double> faceDistance(int face, const gp_Pnt& p);
+  std::optional<double> footNearSeed(int face, const gp_Pnt& p);
   std::optional<double> edgeDistance(int edge, const TopoDS_Vertex& vertex);
   double vertexDistance(const CadFaces::Face& f, const gp_Pnt& p) const;
   std::optional<double> edgesDistance(const CadFaces::Face& f, const gp_Pnt& p, const Bnd_Box& pointBox,
