@@ -1,7 +1,10 @@
 // The OpenMP thread count and index, 1 and 0 in a build without OpenMP: per-thread copies of
 // OpenCASCADE query objects (not thread-safe when shared) are indexed by them.
 #pragma once
+#include <cstddef>
 #include <exception>
+#include <functional>
+#include <vector>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -47,5 +50,41 @@ class ParallelErrors {
  private:
   std::exception_ptr first_;
 };
+
+// Runs jobs that do not depend on each other side by side: as OpenMP tasks of the enclosing parallel region (a job's
+// own parallel loops then run on its thread alone), or of a region of their own; the first job on this thread. After
+// all have run, throws the exception of the first job, in their order, that threw one (the same whatever finished
+// first). [in] jobs.
+inline void sideBySide(const std::vector<std::function<void()>>& jobs) {
+  std::vector<std::exception_ptr> failed(jobs.size());
+  auto runOne = [&](std::size_t k) {
+    try {
+      jobs[k]();
+    } catch (...) {
+      failed[k] = std::current_exception();
+    }
+  };
+  auto runAll = [&] {
+    for (std::size_t k = 1; k < jobs.size(); ++k) {
+#pragma omp task default(shared) firstprivate(k)
+      runOne(k);
+    }
+    if (!jobs.empty()) runOne(0);
+#pragma omp taskwait
+  };
+#ifdef _OPENMP
+  if (omp_in_parallel()) {
+    runAll();
+  } else {
+#pragma omp parallel
+#pragma omp single
+    runAll();
+  }
+#else
+  runAll();
+#endif
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+}
 
 }  // namespace hexlayer

@@ -593,22 +593,54 @@ std::string gapQuadsRun(const std::string& request) {
   });
 }
 
+// A gap's Gmsh run, started (startGapQuads): the child, and which of the given points are its points.
+struct GapRun {
+  StartedChild child;
+  std::vector<int> points;  // Gmsh's points in order (the surfaces' nodes, ascending): into the given points
+  std::size_t given = 0;    // how many points were given
+};
+
 // gapQuadsRun in a child process started here (finishGapQuads waits for its quads), so that a gap's tries run side by
-// side: the fork server's child, or this process's. [in] server: may be null; [in] at: 2D points; [in] spacing: the
-// mesh size at each; [in] surfaces: loops of them; [in] algorithm. Returns the running child.
-StartedChild startGapQuads(ForkServer* server, const std::vector<Eigen::Vector2d>& at,
-                           const std::vector<double>& spacing, const std::vector<Surface>& surfaces, int algorithm) {
-  return startRun(server, &gapQuadsRun, gapRequest(at, spacing, surfaces, algorithm), kGmshSeconds, inGmshSession);
+// side: the fork server's child, or this process's. Gmsh gets the surfaces' nodes alone, numbered in their order: its
+// quads are the same whatever the numbers of the nodes (and the nodes before them). [in] server: may be null; [in] at:
+// 2D points; [in] spacing: the mesh size at each; [in] surfaces: loops of them; [in] algorithm. Returns the run.
+GapRun startGapQuads(ForkServer* server, const std::vector<Eigen::Vector2d>& at, const std::vector<double>& spacing,
+                     const std::vector<Surface>& surfaces, int algorithm) {
+  std::set<int> used;
+  for (const Surface& s : surfaces)
+    for (const Loop& loop : s) used.insert(loop.begin(), loop.end());
+  GapRun run{{}, std::vector<int>(used.begin(), used.end()), at.size()};
+  std::vector<int> local(at.size(), -1);
+  std::vector<Eigen::Vector2d> points;
+  std::vector<double> sizes;
+  for (int n : run.points)
+    local[n] = static_cast<int>(points.size()), points.push_back(at[n]), sizes.push_back(spacing[n]);
+  std::vector<Surface> renumbered = surfaces;
+  for (Surface& s : renumbered)
+    for (Loop& loop : s)
+      for (int& n : loop) n = local[n];
+  run.child =
+      startRun(server, &gapQuadsRun, gapRequest(points, sizes, renumbered, algorithm), kGmshSeconds, inGmshSession);
+  return run;
 }
 
-// [in,out] child: a started startGapQuads, waited for. Returns the quads in the plane, their first at.size() nodes
-// the given points. Throws geometryError if Gmsh failed or left triangles.
-QuadMesh finishGapQuads(StartedChild& child) {
-  const ChildResult run = waitForChild(child);
-  if (!run.ok) throw geometryError("junction: the gap round a wall's foot was not meshed (Gmsh: " + run.failure + ")");
-  QuadMesh q = fromBytes(run.output);
+// [in,out] run: a started startGapQuads, waited for. Returns the quads in the plane, their first nodes the given
+// points (the others at 0), then Gmsh's new ones. Throws geometryError if Gmsh failed or left triangles.
+QuadMesh finishGapQuads(GapRun& run) {
+  const ChildResult done = waitForChild(run.child);
+  if (!done.ok)
+    throw geometryError("junction: the gap round a wall's foot was not meshed (Gmsh: " + done.failure + ")");
+  QuadMesh q = fromBytes(done.output);
   if (q.holes > 0)
     throw geometryError("junction: Gmsh left " + std::to_string(q.holes) + " triangles in the gap round a wall's foot");
+  const std::size_t points = run.points.size();
+  std::vector<Vec3> nodes(run.given, Vec3::Zero());
+  for (std::size_t k = 0; k < points; ++k) nodes[run.points[k]] = q.nodes[k];
+  nodes.insert(nodes.end(), q.nodes.begin() + static_cast<long>(points), q.nodes.end());
+  for (Quad& quad : q.quads)
+    for (int& n : quad)
+      n = static_cast<std::size_t>(n) < points ? run.points[n] : static_cast<int>(run.given + n - points);
+  q.nodes = std::move(nodes);
   return q;
 }
 
@@ -905,69 +937,93 @@ std::pair<std::vector<Quad>, double> rimRing(Nodes& nodes, const GapMap& map, co
   return {};
 }
 
-// The gap's quads on the sheet: of Gmsh's algorithms (kGapAlgorithms), on the gap as it is and with its acute
-// corners cut off (cutAcuteCorners), the one whose worst quad, smoothed, is best. (Finer mesh sizes at the points are
-// not tried: every boundary edge is one segment, and Gmsh 4.8 sizes the inside from those, not from the points'.)
-// [in] at: every node so far; [in] map, chordal, surfaces; [in] server: forks the Gmsh runs (null: this process);
-// [out] worst: its worst quad's scaled Jacobian. Throws geometryError if none gives unfolded quads.
-QuadMesh gapQuads(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
-                  const std::vector<Surface>& surfaces, ForkServer* server, double& worst) {
-  std::vector<Eigen::Vector2d> flat(at.size(), Eigen::Vector2d::Zero());  // the surfaces' nodes only are Gmsh's
-  for (const Surface& s : surfaces)
-    for (const Loop& loop : s)
-      for (int n : loop) flat[n] = map.at(at[n]);
-  std::vector<WedgeCut> ways{{flat, {}, surfaces, {}}};
-  if (WedgeCut cut = cutAcuteCorners(flat, surfaces); !cut.quads.empty()) ways.push_back(std::move(cut));
-  std::vector<std::vector<double>> spacing;  // per way, the mesh size at each of its points
-  for (const WedgeCut& way : ways) {
-    spacing.push_back(loopSpacing(at, surfaces));
-    spacing.back().insert(spacing.back().end(), way.spacing.begin(), way.spacing.end());
-  }
+// A gap ready for Gmsh: the nodes so far, its map and surfaces, the ways to mesh it (as it is, and with its acute
+// corners cut off: cutAcuteCorners), each way's mesh sizes at its points, and its tries: every way with each of Gmsh's
+// algorithms (kGapAlgorithms), taken in this order. (Finer mesh sizes at the points are not tried: every boundary edge
+// is one segment, and Gmsh 4.8 sizes the inside from those, not from the points'.)
+struct GapTries {
   struct Try {
     std::size_t way;
     int algorithm;
-    StartedChild gmsh;
+    GapRun gmsh;
   };
-  std::vector<Try> tries;  // every way and algorithm, taken in this order
-  for (std::size_t w = 0; w < ways.size(); ++w)
-    for (int algorithm : kGapAlgorithms) tries.push_back({w, algorithm, {}});
+  std::vector<Vec3> at;  // every node when the gap was made ready (the first of its quads')
+  const GapMap* map = nullptr;
+  std::vector<Surface> surfaces;
+  std::vector<WedgeCut> ways;
+  std::vector<std::vector<double>> spacing;  // per way, at each of its points
+  std::vector<Try> tries;
+};
+
+// [in] at: every node so far; [in] map: the gap's, kept by the caller; [in] surfaces. Returns its tries, not started.
+GapTries gapTries(const std::vector<Vec3>& at, const GapMap& map, std::vector<Surface> surfaces) {
+  GapTries g{at, &map, std::move(surfaces), {}, {}, {}};
+  std::vector<Eigen::Vector2d> flat(at.size(), Eigen::Vector2d::Zero());  // the surfaces' nodes only are Gmsh's
+  for (const Surface& s : g.surfaces)
+    for (const Loop& loop : s)
+      for (int n : loop) flat[n] = map.at(at[n]);
+  g.ways.push_back({flat, {}, g.surfaces, {}});
+  if (WedgeCut cut = cutAcuteCorners(flat, g.surfaces); !cut.quads.empty()) g.ways.push_back(std::move(cut));
+  for (const WedgeCut& way : g.ways) {
+    g.spacing.push_back(loopSpacing(at, g.surfaces));
+    g.spacing.back().insert(g.spacing.back().end(), way.spacing.begin(), way.spacing.end());
+  }
+  for (std::size_t w = 0; w < g.ways.size(); ++w)
+    for (int algorithm : kGapAlgorithms) g.tries.push_back({w, algorithm, {}});
+  return g;
+}
+
+// The gaps' quads on the sheet: of each gap's tries (gapTries), the one whose worst quad, smoothed, is best. The tries
+// of all gaps run in their order, as many children at once as there are threads and one more, which runs while this
+// process smooths the quads of the tries taken (on one thread, one child): the next started once a try's quads are
+// in, before they are smoothed, also a later gap's. [in,out] gaps; [in] chordal; [in] server: forks the Gmsh runs
+// (null: this process); [in] meshed(g, quads, worst): called with each gap's quads (their first nodes gaps[g].at)
+// and their worst quad's scaled Jacobian, in the gaps' order. Throws geometryError for the first gap, in their order,
+// that no try gives unfolded quads.
+void gapQuads(std::vector<GapTries>& gaps, const ChordalLocator& chordal, ForkServer* server,
+              const std::function<void(std::size_t, QuadMesh, double)>& meshed) {
+  std::vector<std::pair<std::size_t, std::size_t>> order;  // (gap, try)
+  for (std::size_t g = 0; g < gaps.size(); ++g)
+    for (std::size_t k = 0; k < gaps[g].tries.size(); ++k) order.emplace_back(g, k);
   struct StopLeft {  // a child not waited for (an exception) is not left running
-    std::vector<Try>& tries;
+    std::vector<GapTries>& gaps;
     ~StopLeft() {
-      for (Try& t : tries) stopChild(t.gmsh);
+      for (GapTries& g : gaps)
+        for (GapTries::Try& t : g.tries) stopChild(t.gmsh.child);
     }
-  } stopLeft{tries};
-  // as many children at once as there are threads and one more, which runs while this process smooths the quads of
-  // the tries taken (on one thread, one child): the next started once a try's quads are in, before they are smoothed
+  } stopLeft{gaps};
   const std::size_t running = static_cast<std::size_t>(threadCount() > 1 ? threadCount() + 1 : 1);
-  auto start = [&](std::size_t k) {
-    Try& t = tries[k];
-    t.gmsh = startGapQuads(server, ways[t.way].at, spacing[t.way], ways[t.way].surfaces, t.algorithm);
+  auto start = [&](std::size_t i) {
+    GapTries& g = gaps[order[i].first];
+    GapTries::Try& t = g.tries[order[i].second];
+    t.gmsh = startGapQuads(server, g.ways[t.way].at, g.spacing[t.way], g.ways[t.way].surfaces, t.algorithm);
   };
-  for (std::size_t k = 0; k < std::min(running, tries.size()); ++k) start(k);
+  for (std::size_t i = 0; i < std::min(running, order.size()); ++i) start(i);
   QuadMesh best;
   double bestWorst = 0;
   std::string failure = "its quads are folded";
-  for (std::size_t k = 0; k < tries.size(); ++k) {
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    GapTries& g = gaps[order[i].first];
+    GapTries::Try& t = g.tries[order[i].second];
     std::optional<QuadMesh> made;
     try {
-      made = finishGapQuads(tries[k].gmsh);
+      made = finishGapQuads(t.gmsh);
     } catch (const Error& e) {
       failure = e.what();
     }
-    if (k + running < tries.size()) start(k + running);
-    if (!made) continue;
-    try {
-      double tried = 0;
-      QuadMesh q = gapTry(at, map, chordal, surfaces, ways[tries[k].way], std::move(*made), tried);
-      if (tried > bestWorst) best = std::move(q), bestWorst = tried;
-    } catch (const Error& e) {
-      failure = e.what();
-    }
+    if (i + running < order.size()) start(i + running);
+    if (made) try {
+        double tried = 0;
+        QuadMesh q = gapTry(g.at, *g.map, chordal, g.surfaces, g.ways[t.way], std::move(*made), tried);
+        if (tried > bestWorst) best = std::move(q), bestWorst = tried;
+      } catch (const Error& e) {
+        failure = e.what();
+      }
+    if (order[i].second + 1 < g.tries.size()) continue;  // the gap's last try taken: its best
+    if (best.quads.empty()) throw geometryError("junction: the gap round a wall's foot was not meshed: " + failure);
+    meshed(order[i].first, std::move(best), bestWorst);
+    best = {}, bestWorst = 0, failure = "its quads are folded";
   }
-  if (best.quads.empty()) throw geometryError("junction: the gap round a wall's foot was not meshed: " + failure);
-  worst = bestWorst;
-  return best;
 }
 
 // A foot of a footprint: its quads and its nodes (sorted).
@@ -1087,36 +1143,56 @@ FootprintInsertion insertWithin(const QuadMesh& sheet, const FootprintQuads& foo
   std::vector<Quad> added;  // in the numbering of `nodes`
   FootprintInsertion out;
   const EdgeUses quadsOfEdge = edgeUses(sheet);
-  for (const Gap& gap : gaps) {
-    const GapMap map(sheet, gap);
-    const GapEdges edges = gapEdges(nodes, map, sheet, quadsOfEdge, footprint, gap, size);
-    std::vector<Loop> loops = chainLoops(edges.edges);
-    dropTinyRimEdges(nodes, edges.free, size, loops);
-    std::vector<Surface> surfaces;
-    for (Surface& s : surfacesOf(nodes, map, loops)) {
-      auto [ring, worst] = rimRing(nodes, map, edges.free, s);
-      if (ring.empty()) {
-        surfaces.push_back(std::move(s));
-        continue;
+  // Every gap made ready in turn (its rim rings, its even boundaries), then all meshed by Gmsh side by side: a gap's
+  // quads use its own nodes and the nodes before it, so its new nodes are numbered after all, and the quads are taken
+  // gap by gap as before. The first error in the gaps' order is thrown.
+  std::vector<std::unique_ptr<GapMap>> maps;
+  std::vector<GapTries> ready;
+  std::vector<std::vector<Quad>> rings(gaps.size()), meshed(gaps.size());
+  std::vector<int> readyGap;  // per ready gap, its gap
+  std::exception_ptr notReady;
+  for (std::size_t made = 0; made < gaps.size() && !notReady; ++made) try {
+      const Gap& gap = gaps[made];
+      maps.push_back(std::make_unique<GapMap>(sheet, gap));
+      const GapMap& map = *maps.back();
+      const GapEdges edges = gapEdges(nodes, map, sheet, quadsOfEdge, footprint, gap, size);
+      std::vector<Loop> loops = chainLoops(edges.edges);
+      dropTinyRimEdges(nodes, edges.free, size, loops);
+      std::vector<Surface> surfaces;
+      for (Surface& s : surfacesOf(nodes, map, loops)) {
+        auto [ring, worst] = rimRing(nodes, map, edges.free, s);
+        if (ring.empty()) {
+          surfaces.push_back(std::move(s));
+          continue;
+        }
+        rings[made].insert(rings[made].end(), ring.begin(), ring.end());
+        out.worstQuad = std::min(out.worstQuad, worst), out.quadsMeshed += ring.size();
       }
-      added.insert(added.end(), ring.begin(), ring.end());
-      out.worstQuad = std::min(out.worstQuad, worst), out.quadsMeshed += ring.size();
+      evenBoundaries(nodes, edges.free, surfaces, kept);
+      if (!surfaces.empty()) ready.push_back(gapTries(nodes.at, map, std::move(surfaces))), readyGap.push_back(made);
+    } catch (...) {
+      notReady = std::current_exception();
     }
-    evenBoundaries(nodes, edges.free, surfaces, kept);
-    if (!surfaces.empty()) {
-      double worst = 0;
-      const QuadMesh q = gapQuads(nodes.at, map, chordal, surfaces, server, worst);  // its first nodes are nodes.at
-      out.worstQuad = std::min(out.worstQuad, worst);
-      nodes.at.insert(nodes.at.end(), q.nodes.begin() + static_cast<long>(nodes.at.size()), q.nodes.end());
-      added.insert(added.end(), q.quads.begin(), q.quads.end());
-      out.quadsMeshed += q.quads.size();
-    }
-    for (int f : gap.footprintQuads) {
+  gapQuads(ready, chordal, server, [&](std::size_t r, QuadMesh q, double worst) {
+    const int before = static_cast<int>(ready[r].at.size()), first = static_cast<int>(nodes.at.size());
+    nodes.at.insert(nodes.at.end(), q.nodes.begin() + before, q.nodes.end());
+    for (Quad& quad : q.quads)
+      for (int& n : quad)
+        if (n >= before) n += first - before;
+    meshed[readyGap[r]] = std::move(q.quads);
+    out.worstQuad = std::min(out.worstQuad, worst);
+    out.quadsMeshed += meshed[readyGap[r]].size();
+  });
+  if (notReady) std::rethrow_exception(notReady);
+  for (std::size_t g = 0; g < gaps.size(); ++g) {
+    added.insert(added.end(), rings[g].begin(), rings[g].end());
+    added.insert(added.end(), meshed[g].begin(), meshed[g].end());
+    for (int f : gaps[g].footprintQuads) {
       Quad quad = footprint.quads[f];
       for (int& n : quad) n += nodes.sheetNodes;
       added.push_back(quad);
     }
-    out.quadsRemoved += gap.sheetQuads.size();
+    out.quadsRemoved += gaps[g].sheetQuads.size();
   }
   // Renumber: the kept quads' nodes in their order, then the others as the added quads use them.
   std::vector<int> id(nodes.at.size(), -1);

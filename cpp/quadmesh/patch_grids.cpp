@@ -969,15 +969,8 @@ PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, doub
     if (!layout.faces[patch.of[t]].holes.empty()) layout.facets[patch.of[t]].push_back(triangles[t]);
   PatchGrids grids;
   std::optional<std::size_t> even, folded;
-  ParallelErrors errors;  // the even grid and the graded one side by side: neither reads the other
-#pragma omp parallel sections
-  {
-#pragma omp section
-    errors.run([&] { even = gridOf(layout, x, size, false, grids.even); });
-#pragma omp section
-    errors.run([&] { folded = gridOf(layout, x, size, true, grids.graded); });
-  }
-  errors.rethrow();
+  sideBySide({[&] { even = gridOf(layout, x, size, false, grids.even); },  // neither reads the other
+              [&] { folded = gridOf(layout, x, size, true, grids.graded); }});
   if (!even) return {};
   if (!folded || *folded > 0) grids.graded = {};  // a quad folds: even rows only
   return grids;

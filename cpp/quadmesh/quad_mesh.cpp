@@ -647,9 +647,14 @@ void rankEvenPatchGrid(bool graded, PatchGrids& patch, const ChordalLocator& cho
 // crosses them.
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
-  const SurfaceMap square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
-  std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o, chordalEuler);
-  PatchGrids patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle);
+  SurfaceMap square;
+  std::vector<QuadMesh> blocks;
+  PatchGrids patch;
+  sideBySide({[&] { patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle); },
+              [&] {  // the maps onto the plane are on one thread: the patch grids beside them
+                square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
+                blocks = blockGridQuads(chordal, square, o, chordalEuler);
+              }});
   bool graded = !patch.graded.empty();
   const bool none = patch.even.empty();
   addBlockGrid(blocks, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);

@@ -50,3 +50,43 @@ TEST(ParallelErrors, StandardExceptionReachesTheCallerAndNoneMeansNoThrow) {
   EXPECT_NO_THROW(loopThrowingAt(100, -1, std::runtime_error("never"), all));
   EXPECT_EQ(std::count(all.begin(), all.end(), 1), 100);
 }
+
+// Jobs side by side (sideBySide), outside a parallel region and as tasks inside one (the quad stage's patch grids
+// beside its maps, the patch grids' even and graded grids beside each other): every job runs once, a job's own
+// sideBySide inside runs too, and the exception thrown is the first job's in their order, whichever threw first.
+TEST(SideBySide, EveryJobRunsOnceAndTheFirstJobsExceptionIsThrown) {
+  for (bool inRegion : {false, true}) {
+    std::vector<int> runs(4, 0);
+    auto jobs = [&] {
+      sideBySide({[&] { ++runs[0]; },
+                  [&] {
+                    sideBySide({[&] { ++runs[1]; }, [&] { ++runs[2]; }});
+                  },
+                  [&] { ++runs[3]; }});
+    };
+    if (inRegion) {
+#pragma omp parallel
+#pragma omp single
+      jobs();
+    } else {
+      jobs();
+    }
+    EXPECT_EQ(runs, std::vector<int>(4, 1)) << (inRegion ? "inside a parallel region" : "outside");
+  }
+  std::vector<char> done(3, 0);
+  try {
+    sideBySide({[&] { done[0] = 1; },
+                [&] {
+                  done[1] = 1;
+                  throw std::runtime_error("second");
+                },
+                [&] {
+                  done[2] = 1;
+                  throw Standard_NullObject("third");
+                }});
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "second");
+  }
+  EXPECT_EQ(done, std::vector<char>(3, 1));
+}
