@@ -648,13 +648,11 @@ void rankEvenPatchGrid(bool graded, PatchGrids& patch, const ChordalLocator& cho
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
   SurfaceMap square;
-  std::vector<QuadMesh> blocks;
   PatchGrids patch;
+  // the map onto the plane is on one thread: the patch grids beside it (the block grids after, on every thread)
   sideBySide({[&] { patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle); },
-              [&] {  // the maps onto the plane are on one thread: the patch grids beside them
-                square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square);
-                blocks = blockGridQuads(chordal, square, o, chordalEuler);
-              }});
+              [&] { square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square); }});
+  std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o, chordalEuler);
   bool graded = !patch.graded.empty();
   const bool none = patch.even.empty();
   addBlockGrid(blocks, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);
