@@ -73,12 +73,14 @@ TEST(BoundaryTriangles, CurvedAndFreeformSolidsAreDecidedAsOpenCascadeDecides) {
 // Gmsh's periodic curved shell (a B-spline face whose parameters run unevenly over the triangles): measured at
 // the same parameters, its triangles lay 0.19 off the surface, a margin of 0.39 on a wall 1.0 thick, and most tet
 // centres went to OpenCASCADE's classifier (78 of the mesher's 136 s); measured to the nearest surface point where
-// the parameters say more than twice the deflection, 0.03.
+// the parameters say more than twice the deflection, 0.03 (at a deflection of 1e-4 of the diagonal: a margin of 0.06;
+// at 2e-4, three times faster to triangulate, 0.12, and the tet filter takes as long: the tets' centres lie about
+// half a wall from its faces).
 TEST(BoundaryTriangles, AFreeformShellsMarginIsItsTrianglesDistance) {
   const CadSolid shell =
       prepareSolid(readSolids(std::string(HEXLAYER_SHARED_PARTS) + "/gmsh_periodic_u_cst_curved_shell.step").at(0));
   const BoundaryTriangles triangles(shell);
-  EXPECT_LT(triangles.margin(), 0.1) << "a tenth of the wall";
+  EXPECT_LT(triangles.margin(), 0.15) << "well inside the wall (1.0 thick)";
   Bnd_Box box;
   BRepBndLib::Add(shell.solid, box);
   double x0, y0, z0, x1, y1, z1;
