@@ -10,8 +10,9 @@ from /usr/bin/python3 through /usr/lib/freecad-python3/lib). Units mm. Every fil
 STEP header timestamp is fixed, as in scripts/make_samples.py, so re-running gives the same files.
 
 Made here: shapes without a solid (a lone face, a wire, an open shell), several solids, a thick block, a
-plate with a rib (T-junction), small features below the default element size (a hole, fillets, chamfers, a
-short edge, a sliver face), and damaged files (garbage bytes, truncated STEP and BREP, a STEP named .brep).
+plate with a rib (T-junction), a plate with a pin under a wider head (a junction refused), small features below
+the default element size (a hole, fillets, chamfers, a short edge, a sliver face), and damaged files (garbage bytes,
+truncated STEP and BREP, a STEP named .brep).
 """
 import os
 import re
@@ -77,6 +78,14 @@ def t_junction():
     return plate().fuse(rib).removeSplitter()
 
 
+def mushroom_pin():
+    # A pin (Ø3) under a wider head (Ø6 x 2) standing on the plate: no thin sheet, and no column (the head's underside
+    # looks back at the plate), so its junction is refused.
+    pin = Part.makeCylinder(1.5, 8, Vector(30, 20, 1))
+    head = Part.makeCylinder(3, 2, Vector(30, 20, 9))
+    return plate().fuse([pin, head]).removeSplitter()
+
+
 # ---- small features below the default element size (the 2 mm wall) ---------------------------------------
 
 def small_hole():
@@ -112,6 +121,7 @@ SHAPES = {
     "two_plates.step": two_plates,
     "thick_block.step": thick_block,
     "t_junction.step": t_junction,
+    "mushroom_pin.step": mushroom_pin,
     "small_hole.step": small_hole,
     "small_fillets.step": small_fillets,
     "small_chamfers.step": small_chamfers,

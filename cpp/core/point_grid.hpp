@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -26,22 +25,6 @@ class PointGrid {
   template <class F>
   void forEachNear(const Vec3& p, double radius, F&& f) const {
     visitNear(p, radius, [&](int id, const Vec3& q) { return f(id, q), false; });
-  }
-
-  // The id of the stored point nearest to p (the first in forEachNear's order of those as near), none if empty: the
-  // points within a radius doubled from one cell until some are, or it holds the occupied cells.
-  std::optional<int> nearest(const Vec3& p) const {
-    if (cells_.empty()) return std::nullopt;
-    const Vec3 lo = lo_.cast<double>() * h_, hi = (hi_ + Eigen::Vector3i::Ones()).cast<double>() * h_;
-    const double reach = (p - lo).cwiseAbs().cwiseMax((p - hi).cwiseAbs()).norm();  // to the farthest corner
-    for (double radius = h_;; radius *= 2) {
-      std::optional<int> best;
-      double bestSquare = std::numeric_limits<double>::infinity();
-      forEachNear(p, radius, [&](int id, const Vec3& q) {
-        if (const double square = (q - p).squaredNorm(); square < bestSquare) bestSquare = square, best = id;
-      });
-      if (best || radius >= reach) return best;
-    }
   }
 
   // Whether pred(id, point) holds for a stored point within `radius` of p; stops at the first.

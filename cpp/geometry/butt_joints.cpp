@@ -73,7 +73,9 @@ std::vector<ButtJoint> findButtJoints(const CadSolid& cad, const WallSides& side
   const std::vector<FacePairEdge> concave = concaveEdges(cad);
   std::set<std::pair<int, int>> inside;  // face pairs sharing a sharp inside edge, both ways
   for (const FacePairEdge& c : concave) inside.emplace(c.a, c.b), inside.emplace(c.b, c.a);
-  const std::vector<int> sheet = wallSheetOfFaces(findSheets(cad, sides), sides.faces.size());
+  std::vector<Sheet> sheets = findSheets(cad, sides);  // the walls' (a column has none to butt)
+  sheets.erase(std::remove_if(sheets.begin(), sheets.end(), [](const Sheet& s) { return s.column; }), sheets.end());
+  const std::vector<int> sheet = wallSheetOfFaces(sheets, sides.faces.size());
   const std::vector<std::set<int>> beside = faceNeighbours(cad);
   const double tolerance = kPlanar * cad.diagonal;
   auto planar = [&](int f) { return planeOf(cad.faces(f + 1), tolerance).has_value(); };

@@ -118,18 +118,18 @@ double exactDistance(const TopoDS_Face& face, const gp_Pnt& p) {
   return nearest.Value();
 }
 
-// A freeform face's seeds (CadFaces::Face): its triangulation's nodes and their (u, v), in a grid of cells about as
-// wide as the triangles. [in,out] f: its face and exact box read, seeds set.
+// A freeform face's seeds (CadFaces::Face): its triangulation's nodes and their (u, v), in a grid (BoxGrid, each node
+// a point box) of cells about as wide as the triangles. [in,out] f: its face and exact box read, seeds set.
 void addSeeds(CadFaces::Face& f) {
   if (BRepAdaptor_Surface(f.face, false).GetType() <= GeomAbs_Torus || f.exactBox.IsVoid()) return;
   TopLoc_Location place;
   const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(f.face, place);
   if (mesh.IsNull() || !mesh->HasUVNodes() || mesh->NbNodes() == 0) return;
-  f.seeds = std::make_unique<PointGrid>(std::sqrt(f.exactBox.SquareExtent() / mesh->NbNodes()));
+  f.seedGrid = std::make_unique<BoxGrid>(std::sqrt(f.exactBox.SquareExtent() / mesh->NbNodes()));
   for (int i = 1; i <= mesh->NbNodes(); ++i) {
     const gp_Pnt q = mesh->Node(i).Transformed(place.Transformation());
-    f.seeds->insert(static_cast<int>(f.seedUv.size()), Vec3(q.X(), q.Y(), q.Z()));
-    f.seedUv.push_back(mesh->UVNode(i));
+    f.seeds.push_back({Vec3(q.X(), q.Y(), q.Z()), mesh->UVNode(i)});
+    f.seedGrid->insert(i - 1, f.seeds.back().point, f.seeds.back().point);
   }
 }
 
@@ -272,13 +272,13 @@ std::optional<double> CadFaceProbe::faceDistance(int face, const gp_Pnt& p) {
 // 0.1 ms a point on a B-spline face) would find a distance as small, below the tolerance too. nullopt elsewhere.
 std::optional<double> CadFaceProbe::footNearSeed(int face, const gp_Pnt& p) {
   const CadFaces::Face& f = faces_.face(face);
-  if (!f.seeds) return std::nullopt;
+  if (!f.seedGrid) return std::nullopt;
   const Vec3 at(p.X(), p.Y(), p.Z());
-  const std::optional<int> seed = f.seeds->nearest(at);
-  if (!seed) return std::nullopt;
+  const int seed = f.seedGrid->nearest(at, [&](int k, double) { return (f.seeds[k].point - at).squaredNorm(); });
+  if (seed < 0) return std::nullopt;
   const Surface& s = surface(face);
   Extrema_GenLocateExtPS local(s.adaptor, s.tolU, s.tolV);
-  local.Perform(p, f.seedUv[*seed].X(), f.seedUv[*seed].Y());
+  local.Perform(p, f.seeds[seed].uv.X(), f.seeds[seed].uv.Y());
   if (!local.IsDone()) return std::nullopt;
   const double distance = std::sqrt(local.SquareDistance());
   if (!(distance < f.tolerance)) return std::nullopt;

@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/point_grid.hpp"
+#include "core/box_grid.hpp"
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
 #include "geometry/uv_boundary.hpp"
@@ -70,9 +70,13 @@ class CadFaces {
     std::unique_ptr<UvBoundary> boundary;
     std::unique_ptr<BoxTree> edgeTree;  // over the boxes of `edges`, in their order (none if one is void)
     // A freeform face's triangulation nodes (prepareSolid's) and their (u, v): where a local search for a point's foot
-    // starts (CadFaceProbe::footNearSeed); empty on the other faces.
-    std::unique_ptr<PointGrid> seeds;
-    std::vector<gp_Pnt2d> seedUv;  // indexed by the seeds' ids
+    // starts (CadFaceProbe::footNearSeed); none on the other faces.
+    struct Seed {
+      Vec3 point;
+      gp_Pnt2d uv;
+    };
+    std::vector<Seed> seeds;
+    std::unique_ptr<BoxGrid> seedGrid;  // over the seeds' points, by index
   };
   // An edge and the box BRepExtrema gives it.
   struct Edge {

@@ -6,6 +6,7 @@
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRepLProp_SLProps.hxx>
 #include <BRepLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
@@ -20,6 +21,7 @@
 #include <IGESControl_Reader.hxx>
 #include <IMeshTools_Parameters.hxx>
 #include <NCollection_DataMap.hxx>
+#include <Precision.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Solid.hxx>
 #include <Standard_Failure.hxx>
@@ -377,6 +379,31 @@ long eulerCharacteristic(const CadSolid& cad) {
     edges += !BRep_Tool::Degenerated(TopoDS::Edge(cad.edges(e)));  // a sphere's pole is no edge
   const long faces = cad.faces.Extent();
   return cad.vertices.Extent() - edges + 2 * faces - wires;
+}
+
+std::optional<double> filletRadius(const TopoDS_Shape& face) {
+  constexpr double kSameCurvature = 0.02;  // relative: a fillet's curvature across it varies less
+  const BRepAdaptor_Surface s(TopoDS::Face(face));
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(TopoDS::Face(face), u0, u1, v0, v1);
+  std::vector<double> curvature;
+  bool concave = true;
+  for (int i = 1; i <= 3; ++i)
+    for (int k = 1; k <= 3; ++k) {
+      const double u = u0 + 0.25 * i * (u1 - u0), v = v0 + 0.25 * k * (v1 - v0);
+      BRepLProp_SLProps props(s, u, v, 2, Precision::Confusion());
+      if (!props.IsCurvatureDefined()) return std::nullopt;
+      const double kMax = props.MaxCurvature(), kMin = props.MinCurvature();
+      const double kappa = std::abs(kMax) >= std::abs(kMin) ? kMax : kMin;  // signed along props.Normal()
+      if (!(std::abs(kappa) > 0)) return std::nullopt;
+      const gp_Dir n = props.Normal();
+      const Vec3 towardsCentre = Vec3(n.X(), n.Y(), n.Z()) * (1 / kappa);  // the centre of curvature from the point
+      concave = concave && outwardNormal(face, u, v).dot(towardsCentre) > 0;
+      curvature.push_back(std::abs(kappa));
+    }
+  const auto [least, most] = std::minmax_element(curvature.begin(), curvature.end());
+  if (!concave || *most - *least > kSameCurvature * *most) return std::nullopt;
+  return 1 / *most;
 }
 
 }  // namespace hexlayer

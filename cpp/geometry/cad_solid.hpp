@@ -96,6 +96,11 @@ std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance);
 // cylinder goes on round). None if it is another shape. [in] face, tolerance: absolute.
 std::optional<gp_Cylinder> cylinderOf(const TopoDS_Shape& face, double tolerance);
 
+// The radius of a concave fillet face: its larger principal curvature (BRepLProp_SLProps) the same at a 3 x 3 grid
+// of points over its parameter box (a cylinder, a sphere, a torus's tube, also written as a B-spline), its centre of
+// curvature outside the material (the outward normal points at it); none for any other face. [in] face.
+std::optional<double> filletRadius(const TopoDS_Shape& face);
+
 // Whether two planes are one: parallel (1e-9 rad) and the one's origin within `tolerance` of the other. [in] a, b.
 inline bool samePlane(const gp_Pln& a, const gp_Pln& b, double tolerance) {
   return a.Axis().IsParallel(b.Axis(), 1e-9) && a.Distance(b.Location()) <= tolerance;

@@ -3,11 +3,9 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Defeaturing.hxx>
 #include <BRepCheck_Analyzer.hxx>
-#include <BRepLProp_SLProps.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
-#include <Precision.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -22,35 +20,7 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kSameCurvature = 0.02;  // relative: a fillet's curvature across it varies less
-constexpr double kPlanar = 1e-7;         // x the part's diagonal: a B-spline face this near a plane is one (a chamfer)
-
-// The radius of a concave fillet face: its larger principal curvature (BRepLProp_SLProps) the same at a 3 x 3 grid
-// of points over its parameter box (a cylinder, a sphere, a torus's tube, also written as a B-spline), its centre of
-// curvature outside the material (the outward normal points at it); none for any other face.
-std::optional<double> filletRadius(const TopoDS_Shape& face) {
-  const BRepAdaptor_Surface s(TopoDS::Face(face));
-  double u0, u1, v0, v1;
-  BRepTools::UVBounds(TopoDS::Face(face), u0, u1, v0, v1);
-  std::vector<double> curvature;
-  bool concave = true;
-  for (int i = 1; i <= 3; ++i)
-    for (int k = 1; k <= 3; ++k) {
-      const double u = u0 + 0.25 * i * (u1 - u0), v = v0 + 0.25 * k * (v1 - v0);
-      BRepLProp_SLProps props(s, u, v, 2, Precision::Confusion());
-      if (!props.IsCurvatureDefined()) return std::nullopt;
-      const double kMax = props.MaxCurvature(), kMin = props.MinCurvature();
-      const double kappa = std::abs(kMax) >= std::abs(kMin) ? kMax : kMin;  // signed along props.Normal()
-      if (!(std::abs(kappa) > 0)) return std::nullopt;
-      const gp_Dir n = props.Normal();
-      const Vec3 towardsCentre = Vec3(n.X(), n.Y(), n.Z()) * (1 / kappa);  // the centre of curvature from the point
-      concave = concave && outwardNormal(face, u, v).dot(towardsCentre) > 0;
-      curvature.push_back(std::abs(kappa));
-    }
-  const auto [least, most] = std::minmax_element(curvature.begin(), curvature.end());
-  if (!concave || *most - *least > kSameCurvature * *most) return std::nullopt;
-  return 1 / *most;
-}
+constexpr double kPlanar = 1e-7;  // x the part's diagonal: a B-spline face this near a plane is one (a chamfer)
 
 // The width of a chamfer face at a foot: a plane (also written as a B-spline) of the rim (no wall), whose edges
 // with walls are all concave (a chamfer between a rib and the plate meets both in 135-degree concave edges; a rim

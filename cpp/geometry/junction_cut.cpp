@@ -36,6 +36,7 @@
 #include <TopoDS_Wire.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -56,6 +57,7 @@ constexpr double kOppositeWalls = 0.9;  // cosine: a sheet's two walls at its fo
 constexpr int kSeamSamples = 4;         // points per foot edge, less one, that the seam of its surface keeps away from
 constexpr double kOnBoth = 100;         // x kJoin: a gap's closing edge along a curved wall also lies on the base's
 constexpr double kJoin = 1e-7;          // times the part's diagonal: ends of foot edges this close are one point
+constexpr double kRimTurn = 1e-6;       // sine: rims running on from a foot's two ends meet if they turn more
 
 double areaOf(const TopoDS_Shape& face) {
   GProp_GProps props;
@@ -115,6 +117,7 @@ bool edgeLiesOn(const TopoDS_Edge& edge, const Handle(Geom_Surface) & surface, d
 // wall stands flush with the base's rim (a box's lower end wall butting on its side walls, its outer face on the
 // side walls' ends), its foot runs to that rim along them (an edge of two such faces twice). [in] j, s, base.
 std::vector<TopoDS_Edge> flushFootEdges(const Junctions& j, int s, int base) {
+  if (j.sheets[s].column) return {};  // no walls: its foot is its concave edges
   const double tolerance = kJoin * j.cad.diagonal;
   const TopoDS_Face& face = TopoDS::Face(j.cad.faces(base + 1));
   const std::optional<gp_Pln> plane = planeOf(face, tolerance);  // a plane written as a B-spline ends at the face
@@ -155,18 +158,24 @@ gp_Pnt endPoint(const TopoDS_Wire& wire, bool first) {
   return BRep_Tool::Pnt(first ? a : b);
 }
 
+// The direction in which the edge leaves through its end `at`: its tangent there, pointing away from it; none if `at`
+// is no end of it. [in] edge, at, tolerance.
+std::optional<gp_Vec> leaving(const TopoDS_Edge& edge, const gp_Pnt& at, double tolerance) {
+  const BRepAdaptor_Curve curve(edge);
+  for (const double t : {curve.FirstParameter(), curve.LastParameter()}) {
+    gp_Pnt p;
+    gp_Vec d;
+    curve.D1(t, p, d);
+    if (p.Distance(at) <= tolerance && d.Magnitude() > 0)
+      return t == curve.FirstParameter() ? -d.Normalized() : d.Normalized();
+  }
+  return std::nullopt;
+}
+
 // The direction a wire leaves through its end `at`: the tangent of its edge there, pointing away from the edge.
 gp_Vec outward(const TopoDS_Wire& wire, const gp_Pnt& at, double tolerance) {
-  for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next()) {
-    const BRepAdaptor_Curve curve(TopoDS::Edge(it.Current()));
-    for (const double t : {curve.FirstParameter(), curve.LastParameter()}) {
-      gp_Pnt p;
-      gp_Vec d;
-      curve.D1(t, p, d);
-      if (p.Distance(at) <= tolerance && d.Magnitude() > 0)
-        return t == curve.FirstParameter() ? -d.Normalized() : d.Normalized();
-    }
-  }
+  for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next())
+    if (const std::optional<gp_Vec> d = leaving(TopoDS::Edge(it.Current()), at, tolerance)) return *d;
   return gp_Vec(0, 0, 0);
 }
 
@@ -202,11 +211,40 @@ TopoDS_Edge closingEdge(const Handle(Geom_Surface) & surface, const std::vector<
   return edgeOnSurface(surface, a, b, tolerance);
 }
 
+// The direction in which the sheet's rim runs on past p: the tangent at p of the rim edge (`rims`) ending there,
+// pointing away from it; none if p is no end of one. [in] rims, p, tolerance.
+std::optional<gp_Vec> rimRunsOn(const std::vector<TopoDS_Edge>& rims, const gp_Pnt& p, double tolerance) {
+  for (const TopoDS_Edge& edge : rims)
+    if (const std::optional<gp_Vec> d = leaving(edge, p, tolerance)) return d;
+  return std::nullopt;
+}
+
+// The way from a to b round a corner of the base's rim that a standing piece covers (a post at a plate's corner, its
+// sides flush with the plate's: its foot's two ends lie on the two sides): straight on from a along the rim there to
+// where the rim from b, run on, meets it, then to b. None unless rims run on from both a and b and their lines meet
+// ahead of both (within `tolerance`); the ends are then joined straight. [in] rims: the base face's edges with the
+// sheet's rim faces (convex); [in] a, b, tolerance.
+std::optional<std::array<TopoDS_Edge, 2>> roundRimCorner(const std::vector<TopoDS_Edge>& rims, const gp_Pnt& a,
+                                                         const gp_Pnt& b, double tolerance) {
+  const std::optional<gp_Vec> da = rimRunsOn(rims, a, tolerance), db = rimRunsOn(rims, b, tolerance);
+  if (!da || !db) return std::nullopt;
+  const gp_Vec ab(a, b), n = da->Crossed(*db);
+  if (n.Magnitude() < kRimTurn) return std::nullopt;  // parallel: the straight line is the rim's
+  // a + s da = b + t db: s and t from the cross products with n (the lines lie in one plane)
+  const double s = ab.Crossed(*db).Dot(n) / n.SquareMagnitude(), t = ab.Crossed(*da).Dot(n) / n.SquareMagnitude();
+  const gp_Pnt corner = a.Translated(s * *da);
+  if (!(s > tolerance && t > tolerance) || corner.Distance(b.Translated(t * *db)) > tolerance) return std::nullopt;
+  return std::array<TopoDS_Edge, 2>{BRepBuilderAPI_MakeEdge(a, corner).Edge(),
+                                    BRepBuilderAPI_MakeEdge(corner, b).Edge()};
+}
+
 // The foot edges joined into closed wires. Open chains are closed by segments on the base wall's surface between
 // their free ends: first an end and the end it runs on to (a rib's foot continued under a rib crossing it), then
-// the nearest free ends (a foot running to the wall's edge, a partition's two edges between walls).
+// the nearest free ends (a foot running to the wall's edge, a partition's two edges between walls), round the corner
+// of the base's rim where the foot covers one (roundRimCorner, on a plane base; rims: the base face's rim edges).
 std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, const Handle(Geom_Surface) & surface,
-                                     const std::vector<Handle(Geom_Surface)>& along, double tolerance) {
+                                     const std::vector<Handle(Geom_Surface)>& along,
+                                     const std::vector<TopoDS_Edge>& rims, double tolerance) {
   Handle(TopTools_HSequenceOfShape) in = new TopTools_HSequenceOfShape, wires;
   for (const TopoDS_Edge& e : edges) in->Append(e);
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, wires);
@@ -223,6 +261,7 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, cons
     const gp_Vec d(ends[i], ends[j]);
     return d.Magnitude() > tolerance && out[i].Dot(d.Normalized()) > kRunsOn && out[j].Dot(-d.Normalized()) > kRunsOn;
   };
+  const bool plane = GeomAdaptor_Surface(surface).GetType() == GeomAbs_Plane;
   for (const bool continuing : {true, false})
     for (;;) {  // nearest pairs first
       std::size_t bi = 0, bj = 0;
@@ -233,7 +272,10 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, cons
             best = ends[i].Distance(ends[j]), bi = i, bj = j;
       if (!std::isfinite(best)) break;
       used[bi] = used[bj] = 1;
-      in->Append(closingEdge(surface, along, ends[bi], ends[bj], tolerance));
+      if (const auto round = continuing || !plane ? std::nullopt : roundRimCorner(rims, ends[bi], ends[bj], tolerance))
+        in->Append((*round)[0]), in->Append((*round)[1]);
+      else
+        in->Append(closingEdge(surface, along, ends[bi], ends[bj], tolerance));
     }
   Handle(TopTools_HSequenceOfShape) closed;
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, closed);
@@ -386,6 +428,22 @@ bool standsOnRimFace(const Junctions& j, int s) {
   });
 }
 
+// The edges of base face `face` with the sheet's rim faces: its edges with lateral faces that are not concave.
+// [in] j, face.
+std::vector<TopoDS_Edge> rimEdges(const Junctions& j, int face) {
+  std::set<int> concave;
+  for (const FacePairEdge& c : j.concave) concave.insert(c.edge);
+  std::vector<TopoDS_Edge> rims;
+  for (TopExp_Explorer e(j.cad.faces(face + 1), TopAbs_EDGE); e.More(); e.Next()) {
+    const TopTools_ListOfShape& faces = j.edgeFaces.FindFromKey(e.Current());
+    const bool byRim = std::any_of(faces.cbegin(), faces.cend(), [&](const TopoDS_Shape& g) {
+      return j.sides.faces[j.cad.faces.FindIndex(g) - 1].side == Side::Lateral;
+    });
+    if (byRim && !concave.count(j.cad.edges.FindIndex(e.Current()) - 1)) rims.push_back(TopoDS::Edge(e.Current()));
+  }
+  return rims;
+}
+
 // The feet of standing sheet s: faces on the surfaces of the base's walls under it, bounded by its foot edges.
 std::vector<Foot> footFaces(const Junctions& j, int s) {
   std::vector<Foot> feet;
@@ -397,7 +455,7 @@ std::vector<Foot> footFaces(const Junctions& j, int s) {
   for (const SurfaceEdges& on : surfaces)
     if (!on.plane) along.push_back(on.surface);
   for (const SurfaceEdges& on : surfaces)
-    for (const TopoDS_Wire& wire : closedWires(on.edges, on.surface, along, tolerance))
+    for (const TopoDS_Wire& wire : closedWires(on.edges, on.surface, along, rimEdges(j, on.face), tolerance))
       if (const std::optional<TopoDS_Face> face = faceOn(on, wire, tolerance))
         if (const double area = areaOf(*face); area > tolerance * tolerance)  // not edges there and back (no area)
           feet.push_back({s, on.base, on.face, *face, area});
@@ -539,8 +597,9 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
   for (const FacePairEdge& c : concave)
     if (const int a = faceSheet[c.a], b = faceSheet[c.b]; a > 0 && b > 0 && a != b)
       meets[a].insert(b), meets[b].insert(a);
-  std::vector<std::vector<std::pair<Vec3, double>>> planes(n);
-  for (int s = 1; s < n; ++s) planes[s] = wallPlanes(cad, sheets[s]);
+  std::vector<std::vector<std::pair<Vec3, double>>> planes(n);  // none for a column: it crosses nothing
+  for (int s = 1; s < n; ++s)
+    if (!sheets[s].column) planes[s] = wallPlanes(cad, sheets[s]);
   struct Crossing {
     int a, b;
     std::set<int> crossers;  // the other rib's segments both meet
@@ -565,13 +624,16 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
       continue;
     uf.unite(c.a, c.b), through.insert({c.a, c.b}), crossed.insert(c.crossers.begin(), c.crossers.end());
   }
-  std::map<int, std::vector<int>> faces;  // root -> faces
-  for (int s = 0; s < n; ++s) {
-    std::vector<int>& f = faces[uf.find(s)];
-    f.insert(f.end(), sheets[s].faces.begin(), sheets[s].faces.end());
-  }
+  std::map<int, std::vector<int>> group;  // root -> sheets
+  for (int s = 0; s < n; ++s) group[uf.find(s)].push_back(s);
   std::vector<Sheet> merged;
-  for (auto& [root, f] : faces) {
+  for (const auto& [root, ribs] : group) {
+    if (ribs.size() == 1) {  // as found (a column keeps its flag and volume)
+      merged.push_back(sheets[root]);
+      continue;
+    }
+    std::vector<int> f;
+    for (int s : ribs) f.insert(f.end(), sheets[s].faces.begin(), sheets[s].faces.end());
     std::sort(f.begin(), f.end());
     merged.push_back(sheetOf(cad, sides, f));
   }

@@ -1,20 +1,69 @@
 #include "geometry/sheet_junctions.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepBndLib.hxx>
+#include <BRep_Builder.hxx>
+#include <Bnd_OBB.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/union_find.hpp"
 #include "geometry/face_sampling.hpp"
+#include "geometry/sheet_edges.hpp"
 
 namespace hexlayer {
 namespace {
 
+constexpr double kSmallFeatureWalls = 2;  // a column within a box this many walls across (diagonal) may be small
+// A group of faces that encloses no more than this share of its area times the wall with its foot stands out of
+// nothing: a face at the wall's level (the floor of a boss's bore over a smaller hole through the plate).
+constexpr double kStandsOut = 1e-3;
+
+std::vector<FaceSample> centreSamples(const TopoDS_Shape& face, double area) {
+  return sampleFace(face, std::sqrt(std::max(area, 1e-30) / 16));
+}
+
 Vec3 faceCentre(const TopoDS_Shape& face, double area) {
   Vec3 c = Vec3::Zero();
-  for (const FaceSample& s : sampleFace(face, std::sqrt(std::max(area, 1e-30) / 16))) c += s.area * s.point;
+  for (const FaceSample& s : centreSamples(face, area)) c += s.area * s.point;
   return c;
+}
+
+// The volume the faces enclose with a plane through `origin` closing them: V = 1/3 * sum over the faces of
+// (x - origin) . n dA (the divergence theorem; the closing plane adds nothing). [in] cad, sides, faces, origin.
+double volumeOverFoot(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces, const Vec3& origin) {
+  double v = 0;
+  for (int f : faces)
+    for (const FaceSample& s : centreSamples(cad.faces(f + 1), sides.faces[f].area))
+      v += s.area * (s.point - origin).dot(s.normal) / 3;
+  return std::abs(v);
+}
+
+// Whether the faces are a small feature: all narrower than half the wall (narrowLateral, counted by
+// findSmallFeatures) and within a box less than two walls across (a nub, a corner's chip; not a thin tall pin).
+bool smallFeature(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces) {
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  for (int f : faces) {
+    if (!narrowLateral(sides, f)) return false;
+    builder.Add(all, cad.faces(f + 1));
+  }
+  Bnd_OBB box;  // oriented: the same box for the part turned
+  BRepBndLib::AddOBB(all, box);
+  return std::sqrt(box.SquareExtent()) < kSmallFeatureWalls * sides.thickness;
+}
+
+Vec3 edgeMiddle(const TopoDS_Shape& edge) {
+  BRepAdaptor_Curve curve(TopoDS::Edge(edge));
+  const gp_Pnt p = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
+  return {p.X(), p.Y(), p.Z()};
 }
 
 }  // namespace
@@ -52,7 +101,51 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
   std::vector<Sheet> sheets;
   for (const auto& [root, faces] : byRoot) sheets.push_back(sheetOf(cad, sides, faces));
   std::stable_sort(sheets.begin(), sheets.end(), [](const Sheet& a, const Sheet& b) { return a.area > b.area; });
+  if (sheets.empty()) return sheets;
+  const std::vector<Sheet> columns = standingColumns(cad, sides);
+  sheets.insert(sheets.end(), columns.begin(), columns.end());
   return sheets;
+}
+
+std::vector<Sheet> standingColumns(const CadSolid& cad, const WallSides& sides) {
+  const int n = static_cast<int>(sides.faces.size());
+  auto isWall = [&](int f) { return sides.faces[f].side != Side::Lateral; };
+  std::vector<char> candidate(n, 0);  // lateral, no cut face, meets no wall in a smooth or convex edge
+  for (int f = 0; f < n; ++f) candidate[f] = !isWall(f) && !isCutFace(cad, f);
+  for (const SheetJoin& j : sides.sheetJoins)
+    if (isWall(j.a) != isWall(j.b)) candidate[isWall(j.a) ? j.b : j.a] = 0;
+  UnionFind uf(n);
+  const std::vector<std::set<int>> next = faceNeighbours(cad);
+  for (int f = 0; f < n; ++f)
+    for (int g : next[f])
+      if (candidate[f] && candidate[g]) uf.unite(f, g);
+  std::map<int, Vec3> foot;  // per group root standing on a wall: a point of its first concave edge with one
+  for (const FacePairEdge& c : concaveEdges(cad))
+    if (isWall(c.a) != isWall(c.b))
+      if (const int f = isWall(c.a) ? c.b : c.a; candidate[f])
+        foot.emplace(uf.find(f), edgeMiddle(cad.edges(c.edge + 1)));
+  // or through a fillet at its foot (smooth with a wall, concave, of a radius below the wall's thickness), which the
+  // pipeline removes before the cut (foot_fillets.hpp)
+  for (const SheetJoin& j : sides.sheetJoins)
+    if (const int f = isWall(j.a) ? j.b : j.a; j.smooth && isWall(j.a) != isWall(j.b))
+      if (const std::optional<double> r = filletRadius(cad.faces(f + 1)); r && *r < sides.thickness)
+        for (int g : next[f])
+          if (candidate[g])
+            foot.emplace(uf.find(g), faceCentre(cad.faces(f + 1), sides.faces[f].area) / sides.faces[f].area);
+  std::vector<Sheet> columns;
+  for (const auto& [root, at] : foot) {
+    std::vector<int> faces;
+    for (int f = 0; f < n; ++f)
+      if (candidate[f] && uf.find(f) == root) faces.push_back(f);
+    if (smallFeature(cad, sides, faces)) continue;
+    Sheet column = sheetOf(cad, sides, faces);
+    column.volume = volumeOverFoot(cad, sides, faces, at);
+    if (column.volume <= kStandsOut * column.area * sides.thickness) continue;  // at the wall's level: a bore's floor
+    column.column = true;
+    columns.push_back(std::move(column));
+  }
+  std::stable_sort(columns.begin(), columns.end(), [](const Sheet& a, const Sheet& b) { return a.area > b.area; });
+  return columns;
 }
 
 std::vector<int> wallSheetOfFaces(const std::vector<Sheet>& sheets, std::size_t faces) {

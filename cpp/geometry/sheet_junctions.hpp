@@ -17,13 +17,26 @@ struct Sheet {
   double area = 0;             // of those faces
   double volume = 0;           // about: half the sum of face area x the wall thickness measured from it
   Vec3 centre = Vec3::Zero();  // area-weighted centre of the faces' samples
+  bool column = false;         // lateral faces standing on walls (standingColumns): a post, a pin, a block
 };
 
 // Wall faces joined by a smooth or convex edge (WallSides::sheetJoins) or across the wall
 // (a face and the face its rays hit) are one sheet. Sheets joined only by concave sharp edges
 // stand on each other. The first sheet is the largest (the one that is meshed), the others follow
-// by decreasing area.
+// by decreasing area, then the columns standing on them (standingColumns).
 std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides);
+
+// Pieces standing on walls that have no wall of their own (a square post, a block, a low pad: no face's rays cross
+// a wall): lateral faces that meet no wall in a smooth or convex edge and are no cut face, joined by their edges, a
+// group of them meeting a wall in a concave sharp edge or through a fillet at its foot (a concave fillet below the
+// wall's thickness meeting the wall smoothly, which the pipeline removes before the cut: foot_fillets.hpp). A rim
+// meets its walls in convex edges and a thickness step's side meets the thicker wall's top in one, so neither is
+// taken; a post's side flush with the sheet's rim (one face with it) is left to the rim, the cut closing its foot
+// along the rim; a group whose faces are all narrower than half the wall (narrowLateral) within a box less than two
+// walls across is a small feature (a nub, a corner's chip), smoothed over and counted as one. Its volume: the
+// divergence theorem over its faces from a point of its foot (exact for a plane foot). [in] cad, sides. Returns them
+// by decreasing area, `column` set.
+std::vector<Sheet> standingColumns(const CadSolid& cad, const WallSides& sides);
 
 // "(x, y, z)": the sheet's centre in the input's units (CadSolid::unit), for messages.
 std::string sheetPlace(const CadSolid& cad, const Sheet& s);

@@ -421,7 +421,7 @@ SmallFeatures findSmallFeatures(const CadSolid& cad, const WallSides& sides, dou
   }
   for (int f = 0; f < cad.faces.Extent(); ++f) {
     const FaceSide& face = sides.faces[f];  // a lateral face is about as wide as the wall is thick
-    if (face.width >= size || (face.side == Side::Lateral && face.width >= 0.5 * sides.thickness)) continue;
+    if (face.width >= size || (face.side == Side::Lateral && !narrowLateral(sides, f))) continue;
     TopExp_Explorer edge(cad.faces(f + 1), TopAbs_EDGE);
     note(small.narrowFaces, edge.More() ? edgeMiddle(edge.Current()) : Vec3::Zero());
   }

@@ -88,4 +88,10 @@ struct SmallFeatures {
 };
 SmallFeatures findSmallFeatures(const CadSolid& cad, const WallSides& sides, double size);
 
+// Whether lateral face f is narrower than half the wall's thickness (a small feature whatever the quad size: a
+// chamfer, a small round, a sliver; findSmallFeatures counts it). [in] sides, f.
+inline bool narrowLateral(const WallSides& sides, int f) {
+  return sides.faces[f].side == Side::Lateral && sides.faces[f].width < 0.5 * sides.thickness;
+}
+
 }  // namespace hexlayer

@@ -111,6 +111,18 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSu
   return foot;
 }
 
+WallFoot columnFoot(const HexMesh& column, const QuadMesh& quads) {
+  const int stride = column.layers + 1;
+  WallFoot foot;
+  foot.column = true;
+  foot.footprint.quads = quads.quads;
+  for (std::size_t q = 0; q < quads.nodes.size(); ++q) {
+    foot.wallNode.push_back(static_cast<int>(q) * stride);
+    foot.footprint.nodes.push_back(column.nodes[q * stride]);
+  }
+  return foot;
+}
+
 std::vector<int> footNodesShared(const HexMesh& sheet, const std::vector<int>& column, const HexMesh& walls,
                                  const std::vector<int>& wallNode, double tolerance) {
   const int m = sheet.layers, stride = m + 1;

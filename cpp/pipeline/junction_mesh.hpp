@@ -42,6 +42,7 @@ struct WallFoot {
   FootprintQuads footprint;   // its nodes where the wall's are (not yet on the sheet's chordal surface)
   std::vector<int> wallNode;  // per footprint node, the wall's hex node it is
   bool ring = false;          // every foot closed on itself (a boss)
+  bool column = false;        // the foot filled: a column's (column_piece.hpp)
 };
 
 // [in] wall: hexes swept from `quads` (sweep.hpp's layout: quad node q's sweep column is the hex nodes q (m + 1) + k,
@@ -49,6 +50,10 @@ struct WallFoot {
 // Returns the footprint: for every rim edge of the quads whose two sweep columns lie on one foot's surface, the m
 // quads between the columns. Throws geometryError if there is none.
 WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet);
+
+// [in] column: hexes swept from `quads` up a column (column_sweep.hpp, sweep.hpp's layout). Returns the footprint:
+// the quads themselves, their nodes the columns' first (layer 0) nodes.
+WallFoot columnFoot(const HexMesh& column, const QuadMesh& quads);
 
 // Per node of the sheet's hexes, the standing walls' node it is, or -1: for every footprint node f the end of the
 // sweep column of quad node column[f] nearer to it is walls' node wallNode[f]; for 20-node hexes the mid-edge node

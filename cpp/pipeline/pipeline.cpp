@@ -19,9 +19,11 @@
 #include "core/append.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/polygon.hpp"
 #include "geometry/boundary_triangles.hpp"
 #include "geometry/butt_joints.hpp"
 #include "geometry/cad_faces.hpp"
+#include "geometry/column_piece.hpp"
 #include "geometry/foot_fillets.hpp"
 #include "geometry/junction_cut.hpp"
 #include "geometry/mixed_faces.hpp"
@@ -32,11 +34,13 @@
 #include "pipeline/mesh_report.hpp"
 #include "pipeline/shell_mesh.hpp"
 #include "pipeline/surface_groups.hpp"
+#include "quadmesh/column_foot.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_stage.hpp"
 #include "quadmesh/quad_strips.hpp"
 #include "quality/quality.hpp"
 #include "quality/validation.hpp"
+#include "sweep/column_sweep.hpp"
 #include "sweep/quadratic.hpp"
 #include "sweep/rim_cap.hpp"
 #include "sweep/rim_projection.hpp"
@@ -375,6 +379,62 @@ std::vector<int> toCutFaces(HexMesh& mesh, const std::vector<int>& origin) {
   return onFoot;
 }
 
+// The solid as the stages see it (the geometry stage): every stage up to the surface groups works on the part scaled to
+// one size (normalizingUnit). [in] solid; [in] cutFaces: per face, whether it is a cut through the part (a piece's
+// foot; empty: none); [in,out] clock.
+CadSolid stageSolid(const TopoDS_Solid& solid, const std::vector<char>& cutFaces, StageClock& clock) {
+  CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid, normalizingUnit(solid)); });
+  cad.cutInput = cutFaces;
+  return cad;
+}
+
+// A column's faces as a sheet's walls: its foot the bottom, its caps the top, its sides the rim; its thickness the
+// foot's width (twice its area over its outline: the outer loop's area counter-clockwise, the holes' clockwise).
+WallSides columnSides(const CadSolid& cad, const ColumnPiece& column, const ColumnFoot& foot) {
+  WallSides sides;
+  sides.faces.resize(cad.faces.Extent());
+  sides.faces[column.foot].side = Side::Bottom;
+  for (int f : column.caps) sides.faces[f].side = Side::Top;
+  double area = 0, outline = 0;
+  for (const std::vector<int>& loop : foot.loops) {
+    std::vector<Eigen::Vector2d> polygon;
+    for (int n : loop) polygon.push_back(onFootPlane(foot, column, foot.quads.nodes[n]));
+    area += polygonArea(polygon);
+    for (std::size_t k = 0; k < polygon.size(); ++k) outline += (polygon[k] - polygon[(k + 1) % polygon.size()]).norm();
+  }
+  sides.thickness = outline > 0 ? 2 * area / outline : 0;
+  return sides;
+}
+
+// A piece standing on a sheet that is no sheet but a column (column_piece.hpp: a pin, a post, a block): its foot's
+// quads (column_foot.hpp) swept up its axis (column_sweep.hpp), about as many layers as its height holds quads; the
+// boundary nodes given CAD faces, not grouped (the joined part is). [in] solid, given, cutFaces: as meshSolid's for a
+// piece; [in] size: the quad size, in the solid's units; [in,out] boxes. Returns nullopt if the piece is no column.
+std::optional<MeshResult> meshColumn(const TopoDS_Solid& solid, const MeshOptions& given,
+                                     const std::vector<char>& cutFaces, double size, FaceBoxes* boxes) {
+  MeshResult result;
+  MeshReport& r = result.report;
+  StageClock clock(r.stages, given);
+  const CadSolid cad = stageSolid(solid, cutFaces, clock);
+  const MeshOptions o = inPipelineUnits(given, cad.unit);
+  const std::optional<ColumnPiece> column = columnPiece(cad);
+  if (!column) return std::nullopt;
+  r.size = size * cad.unit, r.sizeSource = "the sheet's wall thickness";
+  const ColumnFoot foot =
+      clock.run("quad_mesh", [&] { return columnFootQuads(cad, *column, r.size, o.gmshRuns.get()); });
+  const WallSides sides = columnSides(cad, *column, foot);
+  r.thickness = sides.thickness;
+  const WallProjector walls(cad, sides, boxes);
+  const int layers = std::max(1, static_cast<int>(std::lround(column->height / r.size)));
+  result.mesh = clock.run("sweep", [&] { return sweepColumn(cad, foot, *column, walls, layers); });
+  if (o.order == 2) r.quadratic = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
+  groupByCadFace(result.mesh, cad, walls, r, /*group=*/false);
+  result.quadMesh = foot.quads;
+  r.quadMesh = countQuadMesh(foot.quads);
+  measureSolid(result, cad, sides, o, 0, clock);
+  return result;
+}
+
 constexpr double kOnFoot = 1e-3;  // of a layer: a node this near a foot's plane lies on it
 
 // A part cut at its junctions (issue 18; junction_mesh.hpp), meshed piece by piece: every sheet after the sheets
@@ -387,6 +447,7 @@ struct JunctionPieces {
   // Per standing sheet, per sheet it stands on, its footprint there, its nodes joined's.
   std::vector<std::map<int, WallFoot>> feet;
   std::vector<char> crossed;  // per piece, whether walls stand on both its sides at one place (ribs crossing it)
+  std::vector<char> columns;  // per piece, whether it is a column found on the part (Sheet::column)
   MeshResult stages;          // the pieces' chordal surfaces and quads, one after the other
 };
 
@@ -432,7 +493,8 @@ FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& no
 // (in joined's nodes). [in] o: in the pipeline's units; [in] tolerance: how near a node lies to its foot's plane;
 // [in] wallShare: of the wall's thickness, how far a column's end may be from its foot node. [in,out] t; [in,out]
 // boxes: the faces' exact boxes, shared with the part and the other pieces.
-void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance, double wallShare, FaceBoxes& boxes) {
+void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance, double wallShare, double columnSize,
+               FaceBoxes& boxes) {
   const int pieces = static_cast<int>(t.cut.pieces.size());
   reportProgress(o.progress, progressNote("", "piece " + std::to_string(pieces - s) + " of " + std::to_string(pieces)));
   std::vector<int> footNode;
@@ -444,38 +506,58 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
     if (f.sheet == s) ownFeet.emplace_back(f.face, tolerance);
   std::vector<char> cutFaces;  // the piece's feet, on the sheets it stands on or under those standing on it
   for (int origin : t.cut.faceOrigin[s]) cutFaces.push_back(origin < 0);
-  MeshResult piece = meshSolid(
-      t.cut.pieces[s], o,
-      [&](const CadSolid& c, QuadStage& stage) {
-        std::vector<char> blocked;  // the footprints' quads
-        if (!footprint.quads.empty()) {
-          const ChordalLocator locator(stage.chordal);
-          FootprintQuads onWall = footprint;
-          for (Vec3& p : onWall.nodes) p *= c.unit;
-          // feet on both sides of the sheet (ribs crossing it) are one
-          merged = mergeFeetOnBothSides(onChordalSurface(onWall, locator), locator);
-          merged.shift /= c.unit;
-          const FootprintInsertion in =
-              insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads), o.gmshRuns.get());
-          for (int m : merged.node) column.push_back(in.node[m]);
-          t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
-          stage.quads = in.quads;
-          std::vector<char> onFootprint(stage.quads.nodes.size(), 0);
-          for (int n : in.node) onFootprint[n] = 1;
-          blocked.resize(stage.quads.quads.size(), 0);
-          for (std::size_t q = 0; q < stage.quads.quads.size(); ++q)
-            blocked[q] = std::all_of(stage.quads.quads[q].begin(), stage.quads.quads[q].end(),
-                                     [&](int n) { return onFootprint[n] != 0; });
-        }
-        // a rim loop all on a foot (a boss's) becomes a closed loop of fixed nodes in the sheet it stands on: even
-        evenRimLoops(
-            stage.quads,
-            [&](const Vec3& p) {
-              return std::any_of(ownFeet.begin(), ownFeet.end(), [&](FootSurface& f) { return f.holds(p / c.unit); });
-            },
-            blocked);
-      },
-      cutFaces, &boxes);
+  // the sheet's quads made to carry the footprints of the walls standing on it
+  const QuadEdit carryFootprints = [&](const CadSolid& c, QuadStage& stage) {
+    std::vector<char> blocked;  // the footprints' quads
+    if (!footprint.quads.empty()) {
+      const ChordalLocator locator(stage.chordal);
+      FootprintQuads onWall = footprint;
+      for (Vec3& p : onWall.nodes) p *= c.unit;
+      // feet on both sides of the sheet (ribs crossing it) are one
+      merged = mergeFeetOnBothSides(onChordalSurface(onWall, locator), locator);
+      merged.shift /= c.unit;
+      const FootprintInsertion in =
+          insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads), o.gmshRuns.get());
+      for (int m : merged.node) column.push_back(in.node[m]);
+      t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
+      stage.quads = in.quads;
+      std::vector<char> onFootprint(stage.quads.nodes.size(), 0);
+      for (int n : in.node) onFootprint[n] = 1;
+      blocked.resize(stage.quads.quads.size(), 0);
+      for (std::size_t q = 0; q < stage.quads.quads.size(); ++q)
+        blocked[q] = std::all_of(stage.quads.quads[q].begin(), stage.quads.quads[q].end(),
+                                 [&](int n) { return onFootprint[n] != 0; });
+    }
+    // a rim loop all on a foot (a boss's) becomes a closed loop of fixed nodes in the sheet it stands on: even
+    evenRimLoops(
+        stage.quads,
+        [&](const Vec3& p) {
+          return std::any_of(ownFeet.begin(), ownFeet.end(), [&](FootSurface& f) { return f.holds(p / c.unit); });
+        },
+        blocked);
+  };
+  MeshResult piece;
+  bool isColumn = t.columns[s] != 0;
+  if (isColumn) {  // no wall of its own: a column or nothing (a low pad lying on its foot would mesh as a flat sheet)
+    if (!footprint.quads.empty())
+      throw geometryError("column: walls stand on a post or block, which is not meshed yet");
+    std::optional<MeshResult> asColumn = meshColumn(t.cut.pieces[s], o, cutFaces, columnSize, &boxes);
+    if (!asColumn)
+      throw geometryError(
+          "column: a post or block stands on the sheet, but it is no column (its foot is not one face, or is tilted "
+          "over 45 degrees to its sides, or a face of it overhangs the foot), which is not meshed yet");
+    piece = std::move(*asColumn);
+  } else {
+    try {
+      piece = meshSolid(t.cut.pieces[s], o, carryFootprints, cutFaces, &boxes);
+    } catch (const Error& e) {  // a standing piece that is no sheet may be a column (none standing on it)
+      std::optional<MeshResult> asColumn;
+      if (e.code() == ExitCode::UnsupportedGeometry && s > 0 && footprint.quads.empty())
+        asColumn = meshColumn(t.cut.pieces[s], o, cutFaces, columnSize, &boxes);
+      if (!asColumn) throw;
+      piece = std::move(*asColumn), isColumn = true;
+    }
+  }
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty()) {
     const double reach = wallShare * piece.report.thickness + merged.shift;
@@ -491,7 +573,7 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
     if (f.sheet == s) bases.insert(f.base);
   for (int b : bases) {
     std::vector<FootSurface> surfaces = footSurfaces(t.cut, s, b, tolerance);
-    WallFoot foot = wallFoot(piece.mesh, piece.quadMesh, surfaces);
+    WallFoot foot = isColumn ? columnFoot(piece.mesh, piece.quadMesh) : wallFoot(piece.mesh, piece.quadMesh, surfaces);
     for (int& n : foot.wallNode) n = id[n];
     t.feet[s][b] = std::move(foot);
   }
@@ -506,13 +588,14 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   JunctionPieces t;
   t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });  // sheets: crossings merged
   t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size()), t.crossed.assign(t.cut.pieces.size(), 0);
+  for (const Sheet& sheet : sheets) t.columns.push_back(sheet.column);
   // The sheet's node under a foot node is known by its column (the footprint's quad node); it is checked to be the
   // column's end nearer to the foot within half the wall's thickness (the sheet's rim and poor hexes are
   // smoothed after the sweep, and in a bend its chordal facets are coarser than the wall), then is the foot's node.
   MeshOptions piece = o;
   piece.force = true;
   for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s)
-    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.5, boxes);
+    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.5, o.size > 0 ? o.size : sides.thickness, boxes);
   return t;
 }
 
@@ -590,12 +673,13 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
   for (std::size_t w = 1; w < t.feet.size(); ++w) {
     JunctionRecord j = junctionRecord(cad, sheets[w]);
     std::vector<int> foot;
-    bool ring = true;
+    bool ring = true, column = true;
     for (const auto& [base, on] : t.feet[w])
-      foot.insert(foot.end(), on.wallNode.begin(), on.wallNode.end()), ring = ring && on.ring;
+      foot.insert(foot.end(), on.wallNode.begin(), on.wallNode.end()), ring = ring && on.ring,
+                                                                       column = column && on.column;
     const JunctionHexes hexes = junctionHexes(result.mesh, result.scaledJacobian, foot);
     j.at /= cad.unit, j.area /= cad.unit * cad.unit, j.volume /= cad.unit * cad.unit * cad.unit;  // as toInputUnits
-    j.kind = ring ? "ring" : t.crossed[w] ? "X" : "T", j.meshed = true, j.hexes = hexes.hexes;
+    j.kind = column ? "column" : ring ? "ring" : t.crossed[w] ? "X" : "T", j.meshed = true, j.hexes = hexes.hexes;
     j.minScaledJacobian = hexes.minScaledJacobian, j.meanScaledJacobian = hexes.meanScaledJacobian;
     r.junctions.push_back(j);
   }
@@ -724,9 +808,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   MeshResult result;
   MeshReport& r = result.report;
   StageClock clock(r.stages, given);
-  // Every stage up to the surface groups works on the part scaled to one size (normalizingUnit).
-  CadSolid cad = clock.run("geometry", [&] { return prepareSolid(solid, normalizingUnit(solid)); });
-  cad.cutInput = cutFaces;
+  CadSolid cad = stageSolid(solid, cutFaces, clock);
   const MeshOptions o = inPipelineUnits(given, cad.unit);
   // The boundary's triangles (a finer BRepMesh on freeform faces: seconds on a B-spline shell), made once for the wall
   // sides and the tet filter, again only if faces were split in between.

@@ -684,9 +684,7 @@ double smoothGap(const std::vector<Vec3>& at, const GapMap& map, const ChordalLo
   double worst = 1;
   for (const Quad& quad : q.quads) {
     const std::array<Vec3, 4> c{q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]};
-    const double sj = quadScaledJacobian(c);
-    const Vec3 normal = map.normal(0.25 * (c[0] + c[1] + c[2] + c[3]));
-    worst = std::min(worst, (c[2] - c[0]).cross(c[3] - c[1]).dot(normal) < 0 ? -sj : sj);
+    worst = std::min(worst, quadScaledJacobian(c, map.normal(0.25 * (c[0] + c[1] + c[2] + c[3]))));
   }
   return worst;
 }
@@ -786,13 +784,12 @@ WedgeCut cutAcuteCorners(const std::vector<Eigen::Vector2d>& at, const std::vect
   return cut;
 }
 
-// The worst scaled Jacobian of the quads in the plane z = 0, negative for a clockwise one (turned over).
+// The worst scaled Jacobian of the quads in the plane z = 0, negative for a clockwise one (turned over) or a bow tie.
 double worstInPlane(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads) {
   double worst = 1;
   for (const Quad& q : quads) {
     const std::array<Vec3, 4> c{nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]};
-    const double sj = quadScaledJacobian(c);
-    worst = std::min(worst, (c[2] - c[0]).cross(c[3] - c[1]).z() < 0 ? -sj : sj);
+    worst = std::min(worst, quadScaledJacobian(c, Vec3::UnitZ()));
   }
   return worst;
 }
@@ -1240,6 +1237,31 @@ FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads&
     }
   }
   if (best.quads.quads.empty()) throw geometryError(failure);
+  return best;
+}
+
+QuadMesh quadsInPolygon(const std::vector<Eigen::Vector2d>& at, const std::vector<std::vector<int>>& loops,
+                        ForkServer* server) {
+  std::vector<Vec3> at3;
+  for (const Eigen::Vector2d& p : at) at3.emplace_back(p.x(), p.y(), 0);
+  const std::vector<Surface> surfaces{loops};
+  const std::vector<double> spacing = loopSpacing(at3, surfaces);
+  std::vector<GapRun> runs;  // every algorithm side by side; the best worst quad kept, the first on a tie
+  for (int algorithm : kGapAlgorithms) runs.push_back(startGapQuads(server, at, spacing, surfaces, algorithm));
+  QuadMesh best;
+  double bestWorst = -std::numeric_limits<double>::infinity();
+  std::string failure;
+  for (GapRun& run : runs) {
+    try {
+      QuadMesh q = finishGapQuads(run);
+      checkGapQuads(q, surfaces);
+      if (const double worst = worstInPlane(q.nodes, q.quads); worst > bestWorst)
+        best = std::move(q), bestWorst = worst;
+    } catch (const Error& e) {
+      if (failure.empty()) failure = e.what();
+    }
+  }
+  if (best.quads.empty()) throw geometryError(failure);
   return best;
 }
 

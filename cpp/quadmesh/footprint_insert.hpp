@@ -8,6 +8,8 @@
 // row of quads from the footprint's nodes to as many placed anew on the hole's rim). The footprint's quads are then the
 // sheet's, node for node, whatever the sheet's outline, holes or quad layout.
 #pragma once
+#include <Eigen/Core>
+
 #include <array>
 #include <vector>
 
@@ -60,5 +62,14 @@ struct FootprintInsertion {
 // does not unfold onto the plane, or Gmsh cannot fill it with quads.
 FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads& footprint,
                                     const ChordalLocator& chordal, double size, ForkServer* server = nullptr);
+
+// Quads filling a polygon in the plane (with holes), every boundary node fixed, as the gaps round feet are filled:
+// Gmsh's 2D algorithms side by side, Blossom's recombination, the one whose worst quad is best (the first of equals).
+// A column's foot (column_sweep.hpp). [in] at: the loops' points; [in] loops: the outer loop counter-clockwise, then
+// the holes clockwise, an even number of edges in all; [in] server: forks the Gmsh runs (null: this process does).
+// Returns the quads (counter-clockwise), their first at.size() nodes the given points (z = 0). Throws geometryError if
+// no algorithm fills the polygon with quads alone.
+QuadMesh quadsInPolygon(const std::vector<Eigen::Vector2d>& at, const std::vector<std::vector<int>>& loops,
+                        ForkServer* server = nullptr);
 
 }  // namespace hexlayer

@@ -13,11 +13,8 @@ namespace {
 
 // The quad's scaled Jacobian from its corners, the edge vectors edge[k] = p[k+1] - p[k] and their
 // lengths (corner k's second edge p[k+3] - p[k] is the exact negation of edge k+3).
-double scaledJacobianFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge,
-                               const std::array<double, 4>& length) {
-  Vec3 n = (p[2] - p[0]).cross(p[3] - p[1]);
-  if (n.norm() == 0) return -1;
-  n.normalize();
+// [in] n: the unit normal the corners are seen along.
+double scaledJacobianAlong(const Vec3& n, const std::array<Vec3, 4>& edge, const std::array<double, 4>& length) {
   double sj = 1;
   for (int k = 0; k < 4; ++k) {
     const Vec3 e2 = -edge[(k + 3) % 4];
@@ -25,6 +22,13 @@ double scaledJacobianFromEdges(const std::array<Vec3, 4>& p, const std::array<Ve
     sj = std::min(sj, len > 0 ? n.dot(edge[k].cross(e2)) / len : -1.0);
   }
   return sj;
+}
+
+double scaledJacobianFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& edge,
+                               const std::array<double, 4>& length) {
+  const Vec3 n = (p[2] - p[0]).cross(p[3] - p[1]);
+  if (n.norm() == 0) return -1;
+  return scaledJacobianAlong(n.normalized(), edge, length);
 }
 
 std::array<Vec3, 4> edgesOf(const std::array<Vec3, 4>& p) {
@@ -54,6 +58,15 @@ double qualityFromEdges(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>&
 double quadScaledJacobian(const std::array<Vec3, 4>& p) {
   const std::array<Vec3, 4> edge = edgesOf(p);
   return scaledJacobianFromEdges(p, edge, lengthsOf(edge));
+}
+
+double quadScaledJacobian(const std::array<Vec3, 4>& p, const Vec3& normal) {
+  const std::array<Vec3, 4> edge = edgesOf(p);
+  const std::array<double, 4> length = lengthsOf(edge);
+  const double own = scaledJacobianFromEdges(p, edge, length);  // through its diagonals, then turned to face `normal`
+  const double facing = (p[2] - p[0]).cross(p[3] - p[1]).dot(normal) < 0 ? -own : own;
+  const double along = scaledJacobianAlong(normal, edge, length);  // negative at a corner turned back (a bow tie)
+  return along < 0 ? std::min(facing, along) : facing;
 }
 
 double quadSmoothingQuality(const std::array<Vec3, 4>& p) {

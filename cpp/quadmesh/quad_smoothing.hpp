@@ -11,6 +11,11 @@ namespace hexlayer {
 // normal through the diagonals.
 double quadScaledJacobian(const std::array<Vec3, 4>& corners);
 
+// The same for a quad facing a given unit normal (the surface's side the quads face): negative for one turned over
+// (its diagonals' normal against `normal`) or crossing itself (a bow tie: seen along `normal`, a corner turns back,
+// though through its own diagonals' normal half its corners would look right, and turned over the others).
+double quadScaledJacobian(const std::array<Vec3, 4>& corners, const Vec3& normal);
+
 // What the smoothing maximizes: the scaled Jacobian, capped by four times the ratio of the shortest to
 // the longest edge. A quad with a collapsed edge can have square corners, but its hexes are as
 // thin as that edge; quads up to 4:1 (a structured grid across a tapering wall) are not penalized.

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/polygon.hpp"
+
 namespace hexlayer {
 namespace {
 
@@ -90,26 +92,10 @@ std::vector<int> templateBoundary(const CapTemplate& t) {
 }
 
 std::vector<std::vector<double>> insideWeights(const CapTemplate& t) {
-  const std::vector<int> polygon = templateBoundary(t);
-  const std::size_t n = polygon.size();
+  std::vector<Vec2> polygon;
+  for (int node : templateBoundary(t)) polygon.push_back(templatePosition(t, node));
   std::vector<std::vector<double>> weights;
-  for (std::size_t j = 0; j < t.inside.size(); ++j) {
-    const Vec2 x = t.inside[j];
-    std::vector<Vec2> d(n);
-    for (std::size_t i = 0; i < n; ++i) d[i] = templatePosition(t, polygon[i]) - x;
-    // tan(alpha_i / 2) of the signed angle at x between vertex i and i + 1 (Floater, Eq. 2.1)
-    std::vector<double> halfTan(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 &a = d[i], &b = d[(i + 1) % n];
-      const double alpha = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-      halfTan[i] = std::tan(0.5 * alpha);
-    }
-    std::vector<double> w(n);
-    double sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += w[i] = (halfTan[(i + n - 1) % n] + halfTan[i]) / d[i].norm();
-    for (double& wi : w) wi /= sum;
-    weights.push_back(w);
-  }
+  for (const Vec2& x : t.inside) weights.push_back(meanValueWeights({polygon}, x));
   return weights;
 }
 

@@ -12,36 +12,6 @@ namespace {
 const double kTurned = std::cos(1e-5);   // a first line this far from the chordal normal was turned (aimed)
 constexpr double kUntangleTarget = 0.2;  // columns below this scaled Jacobian get their directions smoothed
 
-// §7.3: one hex per quad and layer, quad j's hex of layer k at index j * m + k; hex node of quad
-// node i in layer k at i * (m + 1) + k. Node positions are left to placeSweepLine.
-HexMesh layeredHexes(const QuadMesh& q, const std::vector<SweepDirection>& dir, int m) {
-  const std::vector<std::vector<int>> rim = rimEdgeNeighbours(q);  // the chordal surface's rim
-  HexMesh mesh;
-  mesh.layers = m;
-  const int stride = m + 1;
-  mesh.nodes.assign(q.nodes.size() * stride, Vec3::Zero());
-  mesh.nodeLayer.resize(mesh.nodes.size());
-  mesh.nodeOnRim.resize(mesh.nodes.size());
-  mesh.nodeFace.assign(mesh.nodes.size(), -1);
-  for (size_t i = 0; i < q.nodes.size(); ++i)
-    for (int k = 0; k <= m; ++k) {
-      mesh.nodeLayer[i * stride + k] = k;
-      mesh.nodeOnRim[i * stride + k] = !rim[i].empty();
-    }
-  mesh.hexes.reserve(q.quads.size() * m);
-  for (std::array<int, 4> quad : q.quads) {
-    const Vec3 n = (q.nodes[quad[2]] - q.nodes[quad[0]]).cross(q.nodes[quad[3]] - q.nodes[quad[1]]);
-    const Vec3 sweepDir = dir[quad[0]].normal + dir[quad[1]].normal + dir[quad[2]].normal + dir[quad[3]].normal;
-    if (n.dot(sweepDir) < 0) std::swap(quad[1], quad[3]);  // counter-clockwise seen from the top
-    for (int k = 0; k < m; ++k) {                          // the quad's nodes in layers k and k + 1
-      std::array<int, 8> hex;
-      for (int c = 0; c < 4; ++c) hex[c] = quad[c] * stride + k, hex[c + 4] = quad[c] * stride + k + 1;
-      mesh.hexes.push_back(hex);
-    }
-  }
-  return mesh;
-}
-
 // Places the m + 1 hex nodes of quad node i on its sweep line along `normal` (§7.2); returns the line.
 SweepLine placeSweepLine(HexMesh& mesh, const Vec3& q, int i, const Vec3& normal, double radius,
                          const std::vector<double>& offsets, const WallMap& walls) {
@@ -61,6 +31,34 @@ double columnQuality(const HexMesh& mesh, int quad) {
 }
 
 }  // namespace
+
+HexMesh layeredHexes(const QuadMesh& q, const std::vector<Vec3>& up, int m) {
+  const std::vector<std::vector<int>> rim = rimEdgeNeighbours(q);  // the chordal surface's rim
+  HexMesh mesh;
+  mesh.layers = m;
+  const int stride = m + 1;
+  mesh.nodes.assign(q.nodes.size() * stride, Vec3::Zero());
+  mesh.nodeLayer.resize(mesh.nodes.size());
+  mesh.nodeOnRim.resize(mesh.nodes.size());
+  mesh.nodeFace.assign(mesh.nodes.size(), -1);
+  for (size_t i = 0; i < q.nodes.size(); ++i)
+    for (int k = 0; k <= m; ++k) {
+      mesh.nodeLayer[i * stride + k] = k;
+      mesh.nodeOnRim[i * stride + k] = !rim[i].empty();
+    }
+  mesh.hexes.reserve(q.quads.size() * m);
+  for (std::array<int, 4> quad : q.quads) {
+    const Vec3 n = (q.nodes[quad[2]] - q.nodes[quad[0]]).cross(q.nodes[quad[3]] - q.nodes[quad[1]]);
+    const Vec3 sweepDir = up[quad[0]] + up[quad[1]] + up[quad[2]] + up[quad[3]];
+    if (n.dot(sweepDir) < 0) std::swap(quad[1], quad[3]);  // counter-clockwise seen from the top
+    for (int k = 0; k < m; ++k) {                          // the quad's nodes in layers k and k + 1
+      std::array<int, 8> hex;
+      for (int c = 0; c < 4; ++c) hex[c] = quad[c] * stride + k, hex[c + 4] = quad[c] * stride + k + 1;
+      mesh.hexes.push_back(hex);
+    }
+  }
+  return mesh;
+}
 
 SweepDirection interpolateSweep(const ChordalSurface& chordal, const ChordalPoint& at) {
   const auto& f = chordal.facets[at.facet];
@@ -93,9 +91,9 @@ SweepResult sweepQuads(const QuadMesh& q, const ChordalLocator& chordal, int m, 
   for (long i = 0; i < static_cast<long>(q.nodes.size()); ++i)
     dir[i] = interpolateSweep(chordal.surface(), chordal.locate(q.nodes[i]));
 
-  SweepResult result{layeredHexes(q, dir, m), {}};
   std::vector<Vec3> normal(dir.size());
   for (size_t i = 0; i < dir.size(); ++i) normal[i] = dir[i].normal;
+  SweepResult result{layeredHexes(q, normal, m), {}};
   auto place = [&](int i) { placeSweepLine(result.mesh, q.nodes[i], i, normal[i], dir[i].radius, offsets, walls); };
   const WallMap& first = aimed ? aimed : walls;
   ParallelErrors errors;

@@ -42,6 +42,12 @@ SweepLine radiusSweepLine(const Vec3& q, const Vec3& n, double r);
 // line of q: q + t (π_t(q) - q) above the chordal surface, q - t (π_b(q) - q) below it.
 Vec3 layerNode(const Vec3& q, const SweepLine& line, double t);
 
+// §7.3: one hex per quad and layer, quad j's hex of layer k at index j * m + k; hex node of quad node i in layer k at
+// i * (m + 1) + k (nodeLayer k, nodeOnRim for the quads' rim nodes, nodeFace -1; positions left at zero). A quad is
+// turned counter-clockwise seen from its nodes' mean `up`, so that every hex is positively oriented once its nodes are
+// placed up the columns. [in] q; [in] up: per quad node, its column's direction; [in] m: layers.
+HexMesh layeredHexes(const QuadMesh& q, const std::vector<Vec3>& up, int m);
+
 // Builds the layered hex mesh. Quads are turned so that their normal agrees with n̄, which makes
 // every hex positively oriented; a quad node shared by quads gives shared hex nodes (conformal).
 // Where sweep lines converge (a bend whose inner radius is smaller than the wall's half-thickness)

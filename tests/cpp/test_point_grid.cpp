@@ -31,26 +31,3 @@ TEST(PointGrid, QueriesFindExactlyThePointsWithinTheRadiusInCellOrder) {
     EXPECT_EQ(first, found.empty() ? -1 : found.front()) << "stops at the first point forEachNear visits";
   }
 }
-
-// The nearest point, near the points and far from them (50 cells away), at three scales; none in an empty grid.
-TEST(PointGrid, NearestIsTheNearestOfAllPoints) {
-  for (double scale : {1e-3, 1.0, 1e3}) {
-    std::mt19937 random(11);
-    std::uniform_real_distribution<double> along(-5, 5), across(0, 0.5), far(-50, 50);
-    PointGrid grid(0.3 * scale);
-    EXPECT_FALSE(grid.nearest(Vec3::Zero()).has_value());
-    std::vector<Vec3> points;
-    for (int i = 0; i < 300; ++i)
-      points.push_back(scale * Vec3(along(random), along(random), across(random))), grid.insert(i, points.back());
-    for (int q = 0; q < 100; ++q) {
-      const Vec3 p = scale * (q % 2 ? Vec3(along(random), along(random), across(random))
-                                    : Vec3(far(random), far(random), far(random)));
-      int expected = 0;
-      for (int i = 1; i < 300; ++i)
-        if ((points[i] - p).squaredNorm() < (points[expected] - p).squaredNorm()) expected = i;
-      const std::optional<int> found = grid.nearest(p);
-      ASSERT_TRUE(found.has_value());
-      EXPECT_EQ((points[*found] - p).squaredNorm(), (points[expected] - p).squaredNorm()) << "scale " << scale;
-    }
-  }
-}

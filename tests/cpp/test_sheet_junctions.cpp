@@ -193,3 +193,57 @@ TEST(SheetJunctions, RoundedRimsAreNoBends) {
   EXPECT_TRUE(endSides.bendRounds.empty());
   EXPECT_EQ(findSheets(end, endSides).size(), 1u);
 }
+
+namespace {
+
+// The plate with boxes fused on (lo corner, size), its coplanar faces merged, scaled by s.
+CadSolid plateWith(const std::vector<std::pair<gp_Pnt, gp_Pnt>>& boxes, double s) {
+  TopoDS_Shape part = plate();
+  for (const auto& [lo, size] : boxes)
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(lo, size.X(), size.Y(), size.Z()).Shape()).Shape();
+  gp_Trsf scaling;
+  scaling.SetScale(gp_Pnt(0, 0, 0), s);
+  return solidOf(BRepBuilderAPI_Transform(part, scaling, true).Shape());
+}
+
+}  // namespace
+
+// Posts and blocks of plane sides stand on the plate though no ray of theirs crosses a wall (a 4 x 4 post 8 above
+// the plate, a 12 x 5 x 4 block, a 10 x 10 pad 1 high): each a column, its volume above the plate's top; at scales
+// 1e-3, 1, 1e3.
+TEST(SheetJunctions, PostsOfPlaneSidesAreColumns) {
+  for (const double s : {1e-3, 1.0, 1e3}) {
+    const CadSolid cad = plateWith({{gp_Pnt(28, 18, 1), gp_Pnt(4, 4, 9)},
+                                    {gp_Pnt(5, 5, 1), gp_Pnt(12, 5, 5)},
+                                    {gp_Pnt(40, 25, 1), gp_Pnt(10, 10, 2)}},
+                                   s);
+    const WallSides sides = classifyWallSides(cad);
+    const std::vector<Sheet> sheets = findSheets(cad, sides);
+    ASSERT_EQ(sheets.size(), 4u) << s;
+    EXPECT_FALSE(sheets[0].column);
+    const double volumes[] = {12 * 5 * 4, 4 * 4 * 8, 10 * 10 * 1};  // by decreasing area: block, post, pad
+    const double areas[] = {2 * (12 + 5) * 4 + 60, 4 * 4 * 8 + 16, 4 * 10 + 100};
+    for (int k = 0; k < 3; ++k) {
+      const Sheet& c = sheets[k + 1];
+      EXPECT_TRUE(c.column) << s;
+      EXPECT_EQ(c.faces.size(), 5u) << s;
+      EXPECT_NEAR(c.area / (s * s), areas[k], 1e-6 * areas[k]) << s;
+      EXPECT_NEAR(c.volume / (s * s * s), volumes[k], 1e-6 * volumes[k]) << s;
+    }
+    EXPECT_NEAR(sheets[2].centre.x() / s, 30, 1e-6) << "the post's";
+  }
+}
+
+// No column where nothing stands: a thickness step (a pad whose top's rays cross to the plate's bottom: a wall), a
+// hole and a pocket (their sides meet the top in convex edges), a small nub (all its faces narrower than half the
+// wall, within two walls: a small feature).
+TEST(SheetJunctions, StepsHolesPocketsAndNubsAreNoColumns) {
+  TopoDS_Shape part = BRepAlgoAPI_Fuse(plate(), BRepPrimAPI_MakeBox(gp_Pnt(5, 5, 1), 20, 20, 2).Shape()).Shape();
+  part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(45, 20, -1), gp_Dir(0, 0, 1)), 3, 4)).Shape();
+  part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeBox(gp_Pnt(35, 5, 1), 6, 6, 2).Shape()).Shape();
+  part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(50, 30, 1), 0.8, 0.8, 1.6).Shape()).Shape();
+  const CadSolid cad = solidOf(part);
+  const WallSides sides = classifyWallSides(cad);
+  EXPECT_TRUE(standingColumns(cad, sides).empty());
+  EXPECT_EQ(findSheets(cad, sides).size(), 1u);
+}

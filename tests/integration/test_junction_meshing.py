@@ -23,7 +23,7 @@ Checked on the written .inp with tools of their own, not the mesher's report:
 - every CAD face of the part (the rib's and the plate's) has its FACE<N> node set and element-face surface, every
   boundary quad is in exactly one surface, and every node of FACE<N> lies within 1e-6 x the diagonal of face N
   (Gmsh's closest point), within 1.5 x its radius for a fillet smoothed over (the report's small_features);
-and from the report: every junction meshed, of its kind ("T", "X" or "ring"), its hexes' scaled Jacobian mean >= 0.8 (the issue's bar).
+and from the report: every junction meshed, of its kind ("T", "X", "ring" or "column"), its hexes' scaled Jacobian mean >= 0.8 (the issue's bar).
 
 Run by CTest as: /usr/bin/python3 test_junction_meshing.py --hexlayer PATH --source DIR
 """
@@ -65,10 +65,12 @@ PARTS = {"plate_rib": ["T"], "plate_rib_thin": ["T"], "plate_rib_thick": ["T"], 
          "plate_rib_fillet": ["T"], "box_rib_fillet": ["T"],
          # Four gussets all round a boss: the boss's gap a ring (an annulus in the map); refused with 3 layers
          # (PART_RUNS; test_gussets_all_round_a_boss_twins).
-         "plate_boss_gussets": ["ring", "T", "T", "T", "T"]}
+         "plate_boss_gussets": ["ring", "T", "T", "T", "T"],
+         # A solid pin (no thin sheet): a column, its foot's quads swept up its axis (column_sweep.hpp).
+         "plate_boss_solid": ["column"]}
 # Every edge straight, every wall flat.
 STRAIGHT = {part for part, kinds in PARTS.items() if "ring" not in kinds} - {"shell_rib", "box_partition",
-                                                                              "box_rib_fillet"}
+                                                                              "box_rib_fillet", "plate_boss_solid"}
 FILLETS = {"plate_rib_fillet": 2, "box_rib_fillet": 4}  # the fillet faces at the rib's foot
 FILLET_REACH = 1.5  # x the largest fillet smoothed over: how far its group's nodes may lie from it
 RUNS = ((2, 1), (3, 1), (2, 2))  # (layers, order)
@@ -258,6 +260,76 @@ def write_filleted_boss(path, radius, scale, turn):
                 and abs(gmsh.model.getBoundingBox(1, c)[5] - 2) < 1e-6 and gmsh.model.getBoundingBox(1, c)[0] > 25]
         filleted = occ.fillet([body[0][1]], root, [radius])
         occ.cut(filleted, [(3, occ.addCylinder(30, 20, 2, 0, 0, 12, 2))])
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
+def write_column(path, shape, scale, turn):
+    """Writes test_columns_twins's part as STEP: a 60 x 40 x 2 plate with a column standing on its top at (30, 20), 10
+    high: "cone" (R2.2 at the foot to R1 at the top), "wide" (R4), "under" (R2, under the plate), "rim"
+    (R2 at (4, 20), 2 from the plate's side), "two" (R1.5 at (15, 20) beside a rib 2 thick along x at y 30..32),
+    "domed" (R2, its tip a hemisphere, 10 high). Scaled and turned
+    (turned_and_scaled); returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        x = 4 if shape == "rim" else 30
+        tools = {"cone": lambda: [occ.addCone(30, 20, 1, 0, 0, 11, 2.2, 1.0)],
+                 "wide": lambda: [occ.addCylinder(30, 20, 1, 0, 0, 11, 4)],
+                 "rim": lambda: [occ.addCylinder(x, 20, 1, 0, 0, 11, 2)],
+                 "under": lambda: [occ.addCylinder(30, 20, 1, 0, 0, -11, 2)],
+                 "two": lambda: [occ.addCylinder(15, 20, 1, 0, 0, 11, 1.5), occ.addBox(0, 30, 1, 60, 2, 11)],
+                 "domed": lambda: [occ.addCylinder(30, 20, 1, 0, 0, 8, 2), occ.addSphere(30, 20, 9, 2)]}[shape]()
+        occ.fuse([(3, occ.addBox(0, 0, 0, 60, 40, 2))], [(3, t) for t in tools])
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
+def write_post(path, shape, scale, turn):
+    """Writes test_posts_twins's part as STEP: a 60 x 40 x 2 plate with posts of plane sides on its top, which no ray
+    crosses as a wall: "square" (4 x 4, 9 high, at (28, 18)), "block" (12 x 5, 5 high), "pad" (10 x 10, 1 high), "pads"
+    (three 4 x 4 pads 1 high along a diagonal, their gaps in the plate's quads one), "thin" (1 x 1, 8 high), "fillet"
+    (the square post with a fillet R1.5 round its foot), "flush" (the square post with a side flush with the plate's
+    side at x = 60), "corner" (the square post at the plate's corner, two sides flush with the plate's); on the top of a half tube (R40 outside, wall 2, 60 long along x) instead of the plate: "shell_pin"
+    (R1.5, 11 high from z = 39), "shell_post" (4 x 4), "shell_pin_off" (the pin upright at y = 15, 23 degrees off
+    the tube's normal there); "slope_pin": the plate turned 25 degrees about y, the pin upright on it. Scaled and turned (turned_and_scaled); returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        if shape.startswith("shell"):
+            outside, inside = occ.addCylinder(0, 0, 0, 60, 0, 0, 40), occ.addCylinder(0, 0, 0, 60, 0, 0, 38)
+            tube = occ.cut([(3, outside)], [(3, inside)])[0]
+            base = occ.intersect(tube, [(3, occ.addBox(0, -50, 0, 60, 100, 50))])[0]
+        else:
+            base = [(3, occ.addBox(0, 0, 0, 60, 40, 2))]
+        if shape == "slope_pin":
+            occ.rotate(base, 30, 20, 1, 0, 1, 0, 25 * np.pi / 180)
+        tools = {"shell_pin": lambda: [occ.addCylinder(30, 0, 39, 0, 0, 11, 1.5)],
+                 "shell_pin_off": lambda: [occ.addCylinder(30, 15, 36, 0, 0, 10, 1.5)],
+                 "slope_pin": lambda: [occ.addCylinder(30, 20, 1, 0, 0, 10, 1.5)],
+                 "shell_post": lambda: [occ.addBox(28, -2, 39, 4, 4, 11)],
+                 "square": lambda: [occ.addBox(28, 18, 1, 4, 4, 9)],
+                 "block": lambda: [occ.addBox(20, 15, 1, 12, 5, 6)],
+                 "pad": lambda: [occ.addBox(20, 10, 1, 10, 10, 2)],
+                 "pads": lambda: [occ.addBox(15 + 12 * k, 12 + 6 * k, 1, 4, 4, 2) for k in range(3)],
+                 "thin": lambda: [occ.addBox(29.5, 19.5, 1, 1, 1, 8)],
+                 "fillet": lambda: [occ.addBox(28, 18, 1, 4, 4, 9)],
+                 "flush": lambda: [occ.addBox(56, 18, 1, 4, 4, 9)],
+                 "corner": lambda: [occ.addBox(56, 36, 1, 4, 4, 9)]}[shape]()
+        fused, _ = occ.fuse(base, [(3, t) for t in tools])
+        if shape == "fillet":
+            occ.synchronize()
+            foot = [tag for _, tag in occ.getEntities(1) if all(
+                abs(a - b) < 1e-6 for a, b in zip(occ.getBoundingBox(1, tag)[2::3], (2, 2))) and
+                27.9 < occ.getBoundingBox(1, tag)[0] and occ.getBoundingBox(1, tag)[3] < 32.1 and
+                17.9 < occ.getBoundingBox(1, tag)[1] and occ.getBoundingBox(1, tag)[4] < 22.1]
+            occ.fillet([fused[0][1]], foot, [1.5])
         return turned_and_scaled(gmsh, path, scale, turn)
     finally:
         gmsh.finalize()
@@ -552,6 +624,54 @@ class JunctionMeshing(unittest.TestCase):
                 with self.subTest(part=name, layers=layers, order=order):
                     _, report = self.check_part(name, step, layers, order, ["ring"])
                     self.assertEqual(len(report["small_features"]["foot_fillets_smoothed"]["faces"]), 1)
+
+    def test_columns_twins(self):
+        """Columns (column_piece.hpp: no thin sheets, but every line up their axis runs from the foot to the top): a
+        cone, a wide pin, a pin under the plate, a pin 2 from the plate's side, a pin beside a rib, a pin with a
+        hemispherical tip (its inner nodes put on the dome up the axis); the cone in metres
+        (B-spline faces), turned 30 degrees about a skew axis, and both; 2 layers, and 3 at order 2. (A pin whose tip
+        is rounded R0.5 meshes too, the round smoothed over as a fillet narrower than a quad is: no boundary quad is
+        grouped with it, not checked here.)"""
+        for name, shape, scale, turn, kinds in (
+                ("column_cone", "cone", 1.0, 0.0, ["column"]), ("column_wide", "wide", 1.0, 0.0, ["column"]),
+                ("column_rim", "rim", 1.0, 0.0, ["column"]), ("column_two", "two", 1.0, 0.0, ["T", "column"]),
+                ("column_cone_metres", "cone", 1e-3, 0.0, ["column"]),
+                ("column_cone_turned", "cone", 1.0, 30.0, ["column"]),
+                ("column_cone_metres_turned", "cone", 1e-3, 30.0, ["column"]),
+                ("column_under", "under", 1.0, 0.0, ["column"]), ("column_domed", "domed", 1.0, 0.0, ["column"])):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_column(step, shape, scale, turn)
+            for layers, order in ((2, 1), (3, 2)):
+                with self.subTest(part=name, layers=layers, order=order):
+                    self.check_part(name, step, layers, order, kinds)
+
+    def test_posts_twins(self):
+        """Posts, blocks and pads of plane sides (sheet_junctions.hpp standingColumns: no face of theirs is a wall, yet
+        they stand on one) meshed as columns, not left out: a square post, a block, a low wide pad, three pads whose
+        gaps in the plate's quads are one (a bow-tie quad there was once taken for a good one), a thin post 1 x 1, the
+        post with a fillet round its foot (removed before the cut, reported), the post flush with the plate's side and
+        at its corner (the foot closed round the corner of the plate's rim); the
+        square post in metres and turned 30 degrees about a skew axis; a pin and a post on a half tube (their feet
+        curved), the pin in metres, a pin upright off the tube's top and on a plate sloping 25 degrees (the axis the
+        pin's, its foot tilted to it); 2 layers, and 3 at order 2."""
+        for name, shape, scale, turn, kinds in (
+                ("post_square", "square", 1.0, 0.0, ["column"]), ("post_block", "block", 1.0, 0.0, ["column"]),
+                ("post_pad", "pad", 1.0, 0.0, ["column"]), ("post_pads", "pads", 1.0, 0.0, ["column"] * 3),
+                ("post_thin", "thin", 1.0, 0.0, ["column"]), ("post_fillet", "fillet", 1.0, 0.0, ["column"]),
+                ("post_flush", "flush", 1.0, 0.0, ["column"]), ("post_corner", "corner", 1.0, 0.0, ["column"]),
+                ("post_metres", "square", 1e-3, 0.0, ["column"]),
+                ("post_turned", "square", 1.0, 30.0, ["column"]), ("shell_pin", "shell_pin", 1.0, 0.0, ["column"]),
+                ("shell_post", "shell_post", 1.0, 0.0, ["column"]),
+                ("shell_pin_metres", "shell_pin", 1e-3, 0.0, ["column"]),
+                ("shell_pin_off", "shell_pin_off", 1.0, 0.0, ["column"]),
+                ("slope_pin", "slope_pin", 1.0, 0.0, ["column"])):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_post(step, shape, scale, turn)
+            for layers, order in ((2, 1), (3, 2)):
+                with self.subTest(part=name, layers=layers, order=order):
+                    _, report = self.check_part(name, step, layers, order, kinds)
+                    if shape == "fillet":
+                        self.assertEqual(len(report["small_features"]["foot_fillets_smoothed"]["faces"]), 4)
 
     def test_ribs_on_plates(self):
         for part in PARTS:

@@ -36,7 +36,8 @@ MANIFOLD = {"plate_rib_rim", "plate_boss_collar"}
 # in a bend), ribs crossing (a grid), filleted feet (the fillets smoothed over).
 JUNCTIONS_MESHED = {"plate_rib", "plate_rib_thin", "plate_rib_thick", "plate_rib_split", "plate_rib_inside",
                     "plate_boss", "plate_boss_hole", "plate_ribs_tee", "shell_rib", "box_partition", "lbracket_gusset",
-                    "plate_rib_grid", "plate_rib_fillet", "box_rib_fillet", "box_end_wall_low", "plate_boss_gussets"}
+                    "plate_rib_grid", "plate_rib_fillet", "box_rib_fillet", "box_end_wall_low", "plate_boss_gussets",
+                    "plate_boss_solid"}
 MESHED_TODAY = MANIFOLD | JUNCTIONS_MESHED
 JUNCTION_WORDS = ("T-junction", "face a wall on its own side")
 # Today's CLI with --drop-junctions: every part meshed (exit 0), the main sheet without its ribs, bosses and

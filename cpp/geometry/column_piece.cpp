@@ -1,0 +1,112 @@
+#include "geometry/column_piece.hpp"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <Poly_Triangulation.hxx>
+#include <TopoDS.hxx>
+#include <gp_Pln.hxx>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hexlayer {
+namespace {
+
+constexpr double kPlanarFoot = 1e-7;  // times the part's diagonal: a foot this near a plane is one
+// 1 - cosine: a plane foot tilted less from square to the axis is square to it
+constexpr double kSquareFoot = 1e-9;
+// The column's axis is its sides' direction where that is more than kSameAxis (radians) off the foot's normal (a pin
+// drawn straight on a sloping or curved wall); its sides lean at most kMaxSideLean from square to the foot's normal;
+// the foot's normals are within kMaxFootTilt of the axis.
+constexpr double kSameAxis = 1.0 * M_PI / 180, kMaxSideLean = M_PI / 6, kMaxFootTilt = M_PI / 4;
+
+// The range of n . axis over the face's outward normals at the nodes of its triangulation (BRepMesh's, at their
+// (u, v): a B-spline face's triangles can lean far from its surface), and its farthest point along the axis; nullopt
+// for a face without a triangulation.
+struct FaceReach {
+  double lowest = std::numeric_limits<double>::infinity(), highest = -std::numeric_limits<double>::infinity();
+  double top = -std::numeric_limits<double>::infinity();
+};
+std::optional<FaceReach> faceReach(const TopoDS_Face& face, const Vec3& axis) {
+  TopLoc_Location at;
+  const Handle(Poly_Triangulation) t = BRep_Tool::Triangulation(face, at);
+  if (t.IsNull() || !t->HasUVNodes() || t->NbNodes() == 0) return std::nullopt;
+  FaceReach r;
+  for (int i = 1; i <= t->NbNodes(); ++i) {
+    const gp_Pnt p = t->Node(i).Transformed(at.Transformation());
+    r.top = std::max(r.top, Vec3(p.X(), p.Y(), p.Z()).dot(axis));
+    const Vec3 n = outwardNormal(face, t->UVNode(i).X(), t->UVNode(i).Y());
+    if (n.isZero()) continue;  // a pole (a cone's apex): no normal
+    r.lowest = std::min(r.lowest, n.dot(axis)), r.highest = std::max(r.highest, n.dot(axis));
+  }
+  if (r.lowest > r.highest) return std::nullopt;
+  return r;
+}
+
+// The direction the column's sides run in: of the faces whose normals (at their triangulation's nodes) all lie
+// within kMaxSideLean of square to the foot's normal, the direction most square to all their normals (the least
+// eigenvector of the sum of n n^T: a cylinder's or a prism's axis), turned towards the foot's normal; the foot's
+// normal itself if that is within kSameAxis of it, or there are no such faces. [in] cad, foot; [in] footNormal.
+Vec3 sidesAxis(const CadSolid& cad, int foot, const Vec3& footNormal) {
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  const double lean = std::sin(kMaxSideLean);
+  for (int f = 0; f < cad.faces.Extent(); ++f) {
+    if (f == foot) continue;
+    const TopoDS_Face& face = TopoDS::Face(cad.faces(f + 1));
+    const std::optional<FaceReach> r = faceReach(face, footNormal);
+    if (!r || r->lowest < -lean || r->highest > lean) continue;
+    TopLoc_Location at;
+    const Handle(Poly_Triangulation) t = BRep_Tool::Triangulation(face, at);
+    for (int i = 1; i <= t->NbNodes(); ++i) {
+      const Vec3 n = outwardNormal(face, t->UVNode(i).X(), t->UVNode(i).Y());
+      sum += n * n.transpose();
+    }
+  }
+  if (sum.isZero()) return footNormal;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(sum);
+  Vec3 axis = eigen.eigenvectors().col(0).normalized();  // the least eigenvalue's
+  if (axis.dot(footNormal) < 0) axis = -axis;
+  return axis.dot(footNormal) >= std::cos(kSameAxis) ? footNormal : axis;
+}
+
+}  // namespace
+
+std::optional<ColumnPiece> columnPiece(const CadSolid& cad) {
+  ColumnPiece c;
+  for (int f = 0; f < cad.faces.Extent(); ++f)
+    if (isCutFace(cad, f)) {
+      if (c.foot >= 0) return std::nullopt;  // feet on two faces
+      c.foot = f;
+    }
+  if (c.foot < 0) return std::nullopt;
+  const TopoDS_Face& foot = TopoDS::Face(cad.faces(c.foot + 1));
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(foot, u0, u1, v0, v1);
+  const Vec3 footNormal = -outwardNormal(foot, 0.5 * (u0 + u1), 0.5 * (v0 + v1));  // outward is into the sheet
+  c.axis = sidesAxis(cad, c.foot, footNormal);
+  // a plane square to the axis (or a B-spline lying on one: a part scaled to metres, a CAD system's export); else a
+  // foot whose normals stay within kMaxFootTilt of the axis (a pin on a shell, or drawn along its sides' direction
+  // on a sloping wall): its plane the one square to the axis through its middle, its nodes put on it along the axis
+  const std::optional<gp_Pln> plane = planeOf(foot, kPlanarFoot * cad.diagonal);
+  const std::optional<FaceReach> tilt = faceReach(foot, -c.axis);
+  if (!tilt || tilt->lowest < std::cos(kMaxFootTilt)) return std::nullopt;
+  c.footOffPlane = !plane || tilt->lowest < 1 - kSquareFoot;
+  c.origin = plane && !c.footOffPlane ? toVec(plane->Location())
+                                      : toVec(BRepAdaptor_Surface(foot).Value(0.5 * (u0 + u1), 0.5 * (v0 + v1)));
+  const double square = std::sin(kMaxColumnDraft), base = c.origin.dot(c.axis);
+  for (int f = 0; f < cad.faces.Extent(); ++f) {
+    if (f == c.foot) continue;
+    const std::optional<FaceReach> r = faceReach(TopoDS::Face(cad.faces(f + 1)), c.axis);
+    if (!r || r->lowest < -square) return std::nullopt;  // it looks back at the foot: an overhang
+    (r->highest <= square ? c.sides : c.caps).push_back(f);
+    c.height = std::max(c.height, r->top - base);
+  }
+  if (c.caps.empty() || c.sides.empty() || !(c.height > 0)) return std::nullopt;
+  return c;
+}
+
+}  // namespace hexlayer

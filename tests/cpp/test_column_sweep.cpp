@@ -1,0 +1,184 @@
+// Columns (column_piece.hpp, column_foot.hpp, column_sweep.hpp): a cone and a square post cut off at their feet are
+// columns, swept from their feet's quads to their tops; a pin under a wider head is none. At scales 1e-3, 1 and 1e3.
+#include <gtest/gtest.h>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include <cmath>
+
+#include "core/polygon.hpp"
+#include "geometry/column_piece.hpp"
+#include "geometry/wall_projector.hpp"
+#include "quadmesh/column_foot.hpp"
+#include "quality/quality.hpp"
+#include "sweep/column_sweep.hpp"
+
+namespace hexlayer {
+namespace {
+
+// The solid prepared, its face lowest in z (a plane z = 0) marked as a cut (its foot).
+CadSolid withFootAtZ0(const TopoDS_Shape& shape) {
+  TopExp_Explorer solid(shape, TopAbs_SOLID);
+  CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
+  cad.cutInput.assign(cad.faces.Extent(), 0);
+  for (int f = 0; f < cad.faces.Extent(); ++f) {
+    const BRepAdaptor_Surface s(TopoDS::Face(cad.faces(f + 1)));
+    if (s.GetType() == GeomAbs_Plane && std::abs(s.Plane().Location().Z()) < 1e-9 &&
+        std::abs(s.Plane().Axis().Direction().Z()) > 0.999)
+      cad.cutInput[f] = 1;
+  }
+  return cad;
+}
+
+WallSides sidesOf(const CadSolid& cad, const ColumnPiece& c) {
+  WallSides sides;
+  sides.faces.resize(cad.faces.Extent());
+  sides.faces[c.foot].side = Side::Bottom;
+  for (int f : c.caps) sides.faces[f].side = Side::Top;
+  return sides;
+}
+
+double meshVolume(const HexMesh& mesh) {
+  double v = 0;
+  for (std::size_t h = 0; h < mesh.hexes.size(); ++h) v += hexVolume(hexCorners(mesh, h));
+  return v;
+}
+
+TEST(ColumnPiece, AConeAndAPostAreColumnsAPinUnderAWiderHeadIsNone) {
+  for (double s : {1e-3, 1.0, 1e3}) {
+    const CadSolid cone = withFootAtZ0(BRepPrimAPI_MakeCone(2.2 * s, 1.0 * s, 10 * s).Shape());
+    const std::optional<ColumnPiece> c = columnPiece(cone);
+    ASSERT_TRUE(c) << s;
+    EXPECT_NEAR(c->axis.z(), 1.0, 1e-12);
+    EXPECT_NEAR(c->height, 10 * s, 1e-9 * s);
+    EXPECT_EQ(c->sides.size(), 1u);
+    EXPECT_EQ(c->caps.size(), 1u);
+    const CadSolid post = withFootAtZ0(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 4 * s, 3 * s, 9 * s).Shape());
+    const std::optional<ColumnPiece> p = columnPiece(post);
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->sides.size(), 4u);
+    EXPECT_EQ(p->caps.size(), 1u);
+    const TopoDS_Shape mushroom =
+        BRepAlgoAPI_Fuse(BRepPrimAPI_MakeCylinder(1.5 * s, 8 * s).Shape(),
+                         BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 8 * s), gp_Dir(0, 0, 1)), 3 * s, 2 * s).Shape())
+            .Shape();
+    EXPECT_FALSE(columnPiece(withFootAtZ0(mushroom))) << s;
+    EXPECT_FALSE(columnPiece(prepareSolid(cone.solid)));  // no cut face: no foot
+  }
+}
+
+TEST(ColumnSweep, AConesHexesFillItFromItsFootToItsTop) {
+  for (double s : {1e-3, 1.0, 1e3}) {
+    const double r0 = 2.2 * s, r1 = 1.0 * s, h = 10 * s;
+    const CadSolid cone = withFootAtZ0(BRepPrimAPI_MakeCone(r0, r1, h).Shape());
+    const ColumnPiece c = *columnPiece(cone);
+    const ColumnFoot foot = columnFootQuads(cone, c, 1.0 * s, nullptr);
+    ASSERT_EQ(foot.loops.size(), 1u);
+    EXPECT_EQ(foot.loops[0].size(), 14u);  // 2 pi 2.2 / 1 = 13.8: 14
+    for (int n : foot.loops[0]) EXPECT_NEAR(std::hypot(foot.quads.nodes[n].x(), foot.quads.nodes[n].y()), r0, 1e-9 * s);
+    const WallSides sides = sidesOf(cone, c);
+    const WallProjector walls(cone, sides);
+    const HexMesh mesh = sweepColumn(cone, foot, c, walls, 10);
+    EXPECT_EQ(mesh.hexes.size(), foot.quads.quads.size() * 10);
+    for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
+    for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+      const Vec3& p = mesh.nodes[n];
+      if (mesh.nodeLayer[n] == 10) EXPECT_NEAR(p.z(), h, 1e-9 * s);
+      if (mesh.nodeLayer[n] == 0) EXPECT_NEAR(p.z(), 0, 1e-12 * s);
+      if (mesh.nodeOnRim[n]) EXPECT_NEAR(std::hypot(p.x(), p.y()), r0 + (r1 - r0) * p.z() / h, 1e-6 * s);
+    }
+    // the frustum's volume, less the chords' segments (14 sides: about 3.3 %)
+    const double frustum = M_PI * h / 3 * (r0 * r0 + r0 * r1 + r1 * r1);
+    EXPECT_NEAR(meshVolume(mesh) / frustum, 1 - 0.033, 0.005) << s;
+  }
+}
+
+// A pin R1.5 standing on a tube R40 (its axis along x at z = -40): its foot is the tube's surface under it, curved. It
+// is a column (the foot's normals within the draft of the one at its middle); the foot's inner quad nodes lie on the
+// tube, the hexes fill the pin from it to its top at z = 10.
+TEST(ColumnSweep, APinsCurvedFootOnATubeIsSweptFromTheTube) {
+  for (double s : {1e-3, 1.0, 1e3}) {
+    const TopoDS_Shape pin = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -2 * s), gp_Dir(0, 0, 1)), 1.5 * s, 12 * s);
+    const TopoDS_Shape tube =
+        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-10 * s, 0, -40 * s), gp_Dir(1, 0, 0), gp_Dir(0, 0, -1)), 40 * s, 20 * s)
+            .Shape();  // its seam underneath, away from the foot
+    TopExp_Explorer solid(BRepAlgoAPI_Cut(pin, tube).Shape(), TopAbs_SOLID);
+    CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
+    cad.cutInput.assign(cad.faces.Extent(), 0);
+    for (int f = 0; f < cad.faces.Extent(); ++f) {
+      const BRepAdaptor_Surface on(TopoDS::Face(cad.faces(f + 1)));
+      cad.cutInput[f] = on.GetType() == GeomAbs_Cylinder && on.Cylinder().Radius() > 10 * s;
+    }
+    const std::optional<ColumnPiece> c = columnPiece(cad);
+    ASSERT_TRUE(c) << s;
+    EXPECT_TRUE(c->footOffPlane);
+    EXPECT_NEAR(c->axis.z(), 1.0, 1e-6);
+    const ColumnFoot foot = columnFootQuads(cad, *c, 1.0 * s, nullptr);
+    auto onTube = [&](const Vec3& p) { return std::hypot(p.y(), p.z() + 40 * s) - 40 * s; };
+    for (const Vec3& p : foot.quads.nodes) EXPECT_NEAR(onTube(p), 0, 1e-6 * s);
+    const WallProjector walls(cad, sidesOf(cad, *c));
+    const HexMesh mesh = sweepColumn(cad, foot, *c, walls, 10);
+    for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
+    for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+      if (mesh.nodeLayer[n] == 10) EXPECT_NEAR(mesh.nodes[n].z(), 10 * s, 1e-9 * s);
+    // the pin over the tube (whose top sinks 0.007 under it on average) as a prism on the outline's polygon
+    const double n = static_cast<double>(foot.loops[0].size()), polygon = n / (2 * M_PI) * std::sin(2 * M_PI / n);
+    EXPECT_NEAR(meshVolume(mesh) / (M_PI * 2.25 * s * s * (10 * s)), polygon, 0.005) << s;
+  }
+}
+
+// A pin R1.5 upright, cut at its foot by a plane sloping 25 degrees (a pin drawn straight on a sloping wall): its axis
+// is its side's (z), not the foot's normal; the foot is off the plane square to it, its inner nodes put on the slope;
+// the hexes reach the top at z = 10.
+TEST(ColumnSweep, APinUprightOnASlopeRunsAlongItsSide) {
+  for (double s : {1e-3, 1.0, 1e3}) {
+    const TopoDS_Shape pin = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -5 * s), gp_Dir(0, 0, 1)), 1.5 * s, 15 * s);
+    const double a = 25 * M_PI / 180;
+    const Vec3 slope(std::sin(a), 0, std::cos(a));  // the plane's normal: z turned a about y
+    gp_Trsf turn;
+    turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 1, 0)), a);
+    const TopoDS_Shape below = BRepPrimAPI_MakeBox(gp_Pnt(-10 * s, -10 * s, -20 * s), 20 * s, 20 * s, 20 * s).Shape();
+    TopExp_Explorer solid(BRepAlgoAPI_Cut(pin, BRepBuilderAPI_Transform(below, turn).Shape()).Shape(), TopAbs_SOLID);
+    CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
+    cad.cutInput.assign(cad.faces.Extent(), 0);
+    for (int f = 0; f < cad.faces.Extent(); ++f) {
+      const BRepAdaptor_Surface on(TopoDS::Face(cad.faces(f + 1)));
+      cad.cutInput[f] = on.GetType() == GeomAbs_Plane && std::abs(on.Plane().Axis().Direction().Z()) < 0.99;
+    }
+    const std::optional<ColumnPiece> c = columnPiece(cad);
+    ASSERT_TRUE(c) << s;
+    EXPECT_TRUE(c->footOffPlane);
+    EXPECT_NEAR(c->axis.z(), 1.0, 1e-9);
+    const ColumnFoot foot = columnFootQuads(cad, *c, 1.0 * s, nullptr);
+    for (const Vec3& p : foot.quads.nodes) EXPECT_NEAR(slope.dot(p), 0, 1e-9 * s);
+    const WallProjector walls(cad, sidesOf(cad, *c));
+    const HexMesh mesh = sweepColumn(cad, foot, *c, walls, 10);
+    for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
+    for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+      if (mesh.nodeLayer[n] == 10) EXPECT_NEAR(mesh.nodes[n].z(), 10 * s, 1e-9 * s);
+  }
+}
+
+TEST(MeanValueWeights, ReproduceLinearFunctionsInAPolygonWithAHole) {
+  const std::vector<Eigen::Vector2d> outer{{0, 0}, {4, 0}, {5, 3}, {2, 5}, {-1, 3}};
+  const std::vector<Eigen::Vector2d> hole{{1.5, 1.5}, {1.5, 2.5}, {2.5, 2.5}, {2.5, 1.5}};  // clockwise
+  for (const Eigen::Vector2d& x : {Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(3.5, 1.0), Eigen::Vector2d(2, 4)}) {
+    const std::vector<double> w = meanValueWeights({outer, hole}, x);
+    ASSERT_EQ(w.size(), 9u);
+    Eigen::Vector2d at = Eigen::Vector2d::Zero();
+    double sum = 0;
+    for (std::size_t i = 0; i < 9; ++i) at += w[i] * (i < 5 ? outer[i] : hole[i - 5]), sum += w[i];
+    EXPECT_NEAR(sum, 1, 1e-12);
+    EXPECT_NEAR((at - x).norm(), 0, 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace hexlayer
