@@ -35,14 +35,22 @@ Vec3 faceCentre(const TopoDS_Shape& face, double area) {
   return c;
 }
 
-// The volume the faces enclose with a plane through `origin` closing them: V = 1/3 * sum over the faces of
-// (x - origin) . n dA (the divergence theorem; the closing plane adds nothing). [in] cad, sides, faces, origin.
-double volumeOverFoot(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces, const Vec3& origin) {
-  double v = 0;
-  for (int f : faces)
+// The faces as a column: their area, centre and the volume they enclose with a plane through `origin` closing them,
+// V = 1/3 * sum over the faces of (x - origin) . n dA (the divergence theorem; the closing plane adds nothing), from
+// one sampling. [in] cad, sides, faces, origin.
+Sheet columnOf(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces, const Vec3& origin) {
+  Sheet column;
+  column.faces = faces, column.column = true;
+  double volume = 0;
+  for (int f : faces) {
+    Vec3 centre = Vec3::Zero();
     for (const FaceSample& s : centreSamples(cad.faces(f + 1), sides.faces[f].area))
-      v += s.area * (s.point - origin).dot(s.normal) / 3;
-  return std::abs(v);
+      centre += s.area * s.point, volume += s.area * (s.point - origin).dot(s.normal) / 3;
+    column.area += sides.faces[f].area, column.centre += centre;
+  }
+  column.centre /= std::max(column.area, 1e-30);
+  column.volume = std::abs(volume);
+  return column;
 }
 
 // Whether the faces are a small feature: all narrower than half the wall (narrowLateral, counted by
@@ -138,10 +146,8 @@ std::vector<Sheet> standingColumns(const CadSolid& cad, const WallSides& sides) 
     for (int f = 0; f < n; ++f)
       if (candidate[f] && uf.find(f) == root) faces.push_back(f);
     if (smallFeature(cad, sides, faces)) continue;
-    Sheet column = sheetOf(cad, sides, faces);
-    column.volume = volumeOverFoot(cad, sides, faces, at);
+    Sheet column = columnOf(cad, sides, faces, at);
     if (column.volume <= kStandsOut * column.area * sides.thickness) continue;  // at the wall's level: a bore's floor
-    column.column = true;
     columns.push_back(std::move(column));
   }
   std::stable_sort(columns.begin(), columns.end(), [](const Sheet& a, const Sheet& b) { return a.area > b.area; });

@@ -83,12 +83,6 @@ Vec3 edgeMiddle(const TopoDS_Shape& edge) {
   return {p.X(), p.Y(), p.Z()};
 }
 
-double perimeter(const TopoDS_Shape& face) {
-  double p = 0;  // a seam edge is met twice, as the face's boundary runs along it twice
-  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) p += edgeLength(it.Current());
-  return p;
-}
-
 // The inward rays of one face's samples: where each first meets the boundary again.
 struct FaceRays {
   std::vector<Ray> all;            // every ray that hit
@@ -332,6 +326,12 @@ std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, WallSides& w,
 
 }  // namespace
 
+double faceWidth(const TopoDS_Shape& face) {
+  double perimeter = 0;  // a seam edge is met twice, as the face's boundary runs along it twice
+  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) perimeter += edgeLength(it.Current());
+  return 2 * triangulatedArea(face) / std::max(perimeter, 1e-30);
+}
+
 Error ownSideError(const CadSolid& cad, const WallSides& w) { return junctionError(cad, w, w.ownSideFaces); }
 
 WallSides classifyWallSides(const CadSolid& cad) { return classifyWallSides(cad, BoundaryTriangles(cad)); }
@@ -363,7 +363,7 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
     landing[f] = dominantHit(hits.all);
     meanNormal[f] = hits.meanNormal;
     fs.area = triangulatedArea(cad.faces(f + 1));
-    fs.width = 2 * fs.area / std::max(perimeter(cad.faces(f + 1)), 1e-30);
+    fs.width = faceWidth(cad.faces(f + 1));
     double crossingArea = 0;
     for (const Ray& r : hits.crossing) crossingArea += r.weight, across[f][r.hitFace] += r.weight;
     fs.wallShare = crossingArea / std::max(hits.sampledArea, 1e-300);

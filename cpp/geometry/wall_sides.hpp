@@ -24,10 +24,14 @@ struct RayMark {
   double length = 0;  // to the hit (0: none)
 };
 
+// A face's width: twice its area over its perimeter (about the wall's thickness for a rim face, a post's width for its
+// foot). [in] face.
+double faceWidth(const TopoDS_Shape& face);
+
 struct FaceSide {
   Side side = Side::Lateral;
   double thickness = 0;  // area-weighted median distance to the opposite wall along the inward normal
-  double width = 0;      // 2 * area / perimeter: about the wall thickness for a lateral (rim) face
+  double width = 0;      // faceWidth: about the wall thickness for a lateral (rim) face
   double area = 0;
   int opposite = -1;           // 0-based index of the face most rays crossing the wall hit, -1 if none
   double wallShare = 0;        // share of the face's area whose inward rays cross the wall (a wall face: >= 0.5)

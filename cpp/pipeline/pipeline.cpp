@@ -4,8 +4,10 @@
 #include <Standard_Failure.hxx>
 #include <gp_Pnt.hxx>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -19,7 +21,6 @@
 #include "core/append.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
-#include "core/polygon.hpp"
 #include "geometry/boundary_triangles.hpp"
 #include "geometry/butt_joints.hpp"
 #include "geometry/cad_faces.hpp"
@@ -146,7 +147,7 @@ std::string describeSheet(const CadSolid& cad, const Sheet& s) {
   out << sheetPlace(cad, s) << " [";
   const std::vector<std::string> names = faceNames(cad, s);
   for (std::size_t k = 0; k < names.size(); ++k) out << (k ? " " : "") << names[k];
-  out << "]";
+  out << "]" << (s.column ? " (a column)" : "");
   return out.str();
 }
 
@@ -155,8 +156,10 @@ std::string describeSheet(const CadSolid& cad, const Sheet& s) {
 Error junctionRefusal(const CadSolid& cad, const std::vector<Sheet>& sheets, const std::string& why) {
   std::ostringstream msg;
   const std::string prefix = "T-junction: ";
-  msg << prefix << sheets.size() - 1 << " sheet(s) (rib, boss or flange) stand on the main sheet, where the "
-      << "chordal surface would be non-manifold, which this method does not mesh";
+  const auto columns = std::count_if(sheets.begin() + 1, sheets.end(), [](const Sheet& s) { return s.column; });
+  msg << prefix << sheets.size() - 1 << " sheet(s) (rib, boss or flange";
+  if (columns > 0) msg << "; " << columns << " of them a column: a pin, post, block or pad";
+  msg << ") stand on the main sheet, where the chordal surface would be non-manifold, which this method does not mesh";
   if (!why.empty())
     msg << " (junction meshing: " << (why.rfind(prefix, 0) == 0 ? why.substr(prefix.size()) : why) << ")";
   msg << ": " << describeSheet(cad, sheets[1]);
@@ -389,29 +392,25 @@ CadSolid stageSolid(const TopoDS_Solid& solid, const std::vector<char>& cutFaces
 }
 
 // A column's faces as a sheet's walls: its foot the bottom, its caps the top, its sides the rim; its thickness the
-// foot's width (twice its area over its outline: the outer loop's area counter-clockwise, the holes' clockwise).
-WallSides columnSides(const CadSolid& cad, const ColumnPiece& column, const ColumnFoot& foot) {
+// foot's width (faceWidth). [in] cad, column.
+WallSides columnSides(const CadSolid& cad, const ColumnPiece& column) {
   WallSides sides;
   sides.faces.resize(cad.faces.Extent());
   sides.faces[column.foot].side = Side::Bottom;
   for (int f : column.caps) sides.faces[f].side = Side::Top;
-  double area = 0, outline = 0;
-  for (const std::vector<int>& loop : foot.loops) {
-    std::vector<Eigen::Vector2d> polygon;
-    for (int n : loop) polygon.push_back(onFootPlane(foot, column, foot.quads.nodes[n]));
-    area += polygonArea(polygon);
-    for (std::size_t k = 0; k < polygon.size(); ++k) outline += (polygon[k] - polygon[(k + 1) % polygon.size()]).norm();
-  }
-  sides.thickness = outline > 0 ? 2 * area / outline : 0;
+  sides.thickness = faceWidth(cad.faces(column.foot + 1));
   return sides;
 }
 
 // A piece standing on a sheet that is no sheet but a column (column_piece.hpp: a pin, a post, a block): its foot's
 // quads (column_foot.hpp) swept up its axis (column_sweep.hpp), about as many layers as its height holds quads; the
 // boundary nodes given CAD faces, not grouped (the joined part is). [in] solid, given, cutFaces: as meshSolid's for a
-// piece; [in] size: the quad size, in the solid's units; [in,out] boxes. Returns nullopt if the piece is no column.
+// piece; [in] size: the quad size, in the solid's units; [in] across: the feet of columns meshed before on the sheets
+// this one stands on, in the part's units: one on the sheet's other side under this one gives its quads
+// (columnFootAcross); [in,out] boxes. Returns nullopt if the piece is no column.
 std::optional<MeshResult> meshColumn(const TopoDS_Solid& solid, const MeshOptions& given,
-                                     const std::vector<char>& cutFaces, double size, FaceBoxes* boxes) {
+                                     const std::vector<char>& cutFaces, double size,
+                                     const std::vector<FootprintQuads>& across, FaceBoxes* boxes) {
   MeshResult result;
   MeshReport& r = result.report;
   StageClock clock(r.stages, given);
@@ -420,9 +419,14 @@ std::optional<MeshResult> meshColumn(const TopoDS_Solid& solid, const MeshOption
   const std::optional<ColumnPiece> column = columnPiece(cad);
   if (!column) return std::nullopt;
   r.size = size * cad.unit, r.sizeSource = "the sheet's wall thickness";
-  const ColumnFoot foot =
-      clock.run("quad_mesh", [&] { return columnFootQuads(cad, *column, r.size, o.gmshRuns.get()); });
-  const WallSides sides = columnSides(cad, *column, foot);
+  const ColumnFoot foot = clock.run("quad_mesh", [&] {
+    for (FootprintQuads other : across) {  // a column across the sheet: its foot's quads
+      for (Vec3& p : other.nodes) p *= cad.unit;
+      if (std::optional<ColumnFoot> taken = columnFootAcross(cad, *column, other, r.size)) return *taken;
+    }
+    return columnFootQuads(cad, *column, r.size, o.gmshRuns.get());
+  });
+  const WallSides sides = columnSides(cad, *column);
   r.thickness = sides.thickness;
   const WallProjector walls(cad, sides, boxes);
   const int layers = std::max(1, static_cast<int>(std::lround(column->height / r.size)));
@@ -489,6 +493,45 @@ FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& no
   return f;
 }
 
+// The feet of the columns meshed before piece s on the sheets it stands on (a column across the sheet may be one).
+std::vector<FootprintQuads> columnFeetUnder(const JunctionPieces& t, int s) {
+  std::vector<FootprintQuads> feet;
+  for (const Foot& own : t.cut.feet)
+    if (own.sheet == s)
+      for (std::size_t other = s + 1; other < t.feet.size(); ++other)
+        if (const auto foot = t.feet[other].find(own.base); foot != t.feet[other].end() && foot->second.column)
+          feet.push_back(foot->second.footprint);
+  return feet;
+}
+
+// A piece's hexes and whether they are a column's: a column found on the part (Sheet::column) is meshed as one (a low
+// pad alone would mesh as a flat sheet lying on its foot); another piece by the sheet method, its quads edited by
+// `carry`, or as a column where that method refuses a standing piece that carries no footprint (a pin: `not a thin
+// section`). [in] solid, o, cutFaces, columnSize, across: as meshColumn's; [in] foundColumn, standing, carries: the
+// piece's kind, whether it stands on another, whether others stand on it; [in,out] boxes. Throws the sheet method's
+// error.
+std::pair<MeshResult, bool> pieceHexes(const TopoDS_Solid& solid, bool foundColumn, bool standing, bool carries,
+                                       const MeshOptions& o, const QuadEdit& carry, const std::vector<char>& cutFaces,
+                                       double columnSize, const std::vector<FootprintQuads>& across, FaceBoxes& boxes) {
+  std::exception_ptr sheetError;
+  if (!foundColumn) {
+    try {
+      return {meshSolid(solid, o, carry, cutFaces, &boxes), false};
+    } catch (const Error& e) {
+      if (e.code() != ExitCode::UnsupportedGeometry || !standing || carries) throw;
+      sheetError = std::current_exception();
+    }
+  } else if (carries) {
+    throw geometryError("column: walls stand on a post or block, which is not meshed yet");
+  }
+  if (std::optional<MeshResult> column = meshColumn(solid, o, cutFaces, columnSize, across, &boxes))
+    return {std::move(*column), true};
+  if (sheetError) std::rethrow_exception(sheetError);
+  throw geometryError(
+      "column: a post or block stands on the sheet, but it is no column (its foot is not one face, or is tilted over "
+      "45 degrees to its sides, or a face of it overhangs the foot), which is not meshed yet");
+}
+
 // Meshes piece s with its quads carrying the footprints on it, joins its hexes to t.joined and keeps its own feet
 // (in joined's nodes). [in] o: in the pipeline's units; [in] tolerance: how near a node lies to its foot's plane;
 // [in] wallShare: of the wall's thickness, how far a column's end may be from its foot node. [in,out] t; [in,out]
@@ -536,28 +579,8 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
         },
         blocked);
   };
-  MeshResult piece;
-  bool isColumn = t.columns[s] != 0;
-  if (isColumn) {  // no wall of its own: a column or nothing (a low pad lying on its foot would mesh as a flat sheet)
-    if (!footprint.quads.empty())
-      throw geometryError("column: walls stand on a post or block, which is not meshed yet");
-    std::optional<MeshResult> asColumn = meshColumn(t.cut.pieces[s], o, cutFaces, columnSize, &boxes);
-    if (!asColumn)
-      throw geometryError(
-          "column: a post or block stands on the sheet, but it is no column (its foot is not one face, or is tilted "
-          "over 45 degrees to its sides, or a face of it overhangs the foot), which is not meshed yet");
-    piece = std::move(*asColumn);
-  } else {
-    try {
-      piece = meshSolid(t.cut.pieces[s], o, carryFootprints, cutFaces, &boxes);
-    } catch (const Error& e) {  // a standing piece that is no sheet may be a column (none standing on it)
-      std::optional<MeshResult> asColumn;
-      if (e.code() == ExitCode::UnsupportedGeometry && s > 0 && footprint.quads.empty())
-        asColumn = meshColumn(t.cut.pieces[s], o, cutFaces, columnSize, &boxes);
-      if (!asColumn) throw;
-      piece = std::move(*asColumn), isColumn = true;
-    }
-  }
+  auto [piece, isColumn] = pieceHexes(t.cut.pieces[s], t.columns[s] != 0, s > 0, !footprint.quads.empty(), o,
+                                      carryFootprints, cutFaces, columnSize, columnFeetUnder(t, s), boxes);
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty()) {
     const double reach = wallShare * piece.report.thickness + merged.shift;

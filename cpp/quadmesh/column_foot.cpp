@@ -1,7 +1,10 @@
 #include "quadmesh/column_foot.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepTools_WireExplorer.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_UniformAbscissa.hxx>
@@ -12,9 +15,11 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 
 #include "core/error.hpp"
@@ -24,7 +29,8 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kStraight = 1e-9;  // an edge whose chord is this much shorter than it, relative, or less is straight
+constexpr double kOnOutline = 1e-2;  // of the quad size: an outline node this near the foot's edges lies on them
+constexpr double kStraight = 1e-9;   // an edge whose chord is this much shorter than it, relative, or less is straight
 
 // One edge of a wire in the wire's order: its curve, run from `first` to `last` (reversed where the wire runs it
 // backwards), its length and how many segments it gets.
@@ -98,13 +104,80 @@ Vec3 alongAxisOnto(const Handle(Geom_Surface) & surface, const Vec3& p, const Ve
   return onto.NbPoints() > 0 ? toVec(onto.NearestPoint()) : p;
 }
 
-}  // namespace
-
-ColumnFoot columnFootQuads(const CadSolid& cad, const ColumnPiece& column, double size, ForkServer* server) {
+// A foot with its plane's axes (e1 x e2 = the column's axis) and nothing on it yet.
+ColumnFoot footPlane(const ColumnPiece& column) {
   ColumnFoot foot;
   const Vec3& a = column.axis;
   foot.e1 = (std::abs(a.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(a).normalized();
   foot.e2 = a.cross(foot.e1);
+  return foot;
+}
+
+// The loops of the quads' boundary edges (each edge in one quad only), each in the quads' direction: the outer loop
+// counter-clockwise and the holes clockwise where the quads are. Empty if the edges do not close into simple loops.
+std::vector<std::vector<int>> boundaryLoops(const QuadMesh& quads) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& q : quads.quads)
+    for (int c = 0; c < 4; ++c) ++uses[{std::min(q[c], q[(c + 1) % 4]), std::max(q[c], q[(c + 1) % 4])}];
+  std::map<int, int> next;
+  for (const auto& q : quads.quads)
+    for (int c = 0; c < 4; ++c)
+      if (const int a = q[c], b = q[(c + 1) % 4]; uses[{std::min(a, b), std::max(a, b)}] == 1)
+        if (!next.emplace(a, b).second) return {};  // a node twice on the outline
+  std::vector<std::vector<int>> loops;
+  while (!next.empty()) {
+    std::vector<int> loop{next.begin()->first};
+    for (auto at = next.find(loop.back()); at != next.end() && at->second != loop.front(); at = next.find(loop.back()))
+      loop.push_back(at->second), next.erase(at);
+    if (next.erase(loop.back()) == 0) return {};  // open
+    loops.push_back(loop);
+  }
+  return loops;
+}
+
+}  // namespace
+
+std::optional<ColumnFoot> columnFootAcross(const CadSolid& cad, const ColumnPiece& column, const FootprintQuads& other,
+                                           double size) {
+  ColumnFoot foot = footPlane(column);
+  const TopoDS_Face& face = TopoDS::Face(cad.faces(column.foot + 1));
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+  for (const Vec3& p : other.nodes) foot.quads.nodes.push_back(alongAxisOnto(surface, p, column.axis));
+  foot.quads.quads = other.quads;
+  std::vector<Eigen::Vector2d> flat;
+  for (const Vec3& p : foot.quads.nodes) flat.push_back(onFootPlane(foot, column, p));
+  double area = 0;  // the quads' in the plane, counter-clockwise positive
+  for (const auto& q : foot.quads.quads) area += polygonArea({flat[q[0]], flat[q[1]], flat[q[2]], flat[q[3]]});
+  if (area < 0)
+    for (auto& q : foot.quads.quads) std::reverse(q.begin(), q.end());
+  foot.loops = boundaryLoops(foot.quads);
+  int wires = 0;
+  for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) ++wires;
+  if (foot.loops.empty() || static_cast<int>(foot.loops.size()) != wires) return std::nullopt;
+  TopoDS_Compound edges;
+  BRep_Builder builder;
+  builder.MakeCompound(edges);
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) builder.Add(edges, e.Current());
+  for (const std::vector<int>& loop : foot.loops)
+    for (int n : loop) {
+      const Vec3& p = foot.quads.nodes[n];
+      BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(gp_Pnt(p.x(), p.y(), p.z())).Vertex(), edges);
+      if (!d.IsDone() || d.Value() > kOnOutline * size) return std::nullopt;
+    }
+  // the outer loop (the largest) first
+  std::vector<double> loopArea;
+  for (const std::vector<int>& loop : foot.loops) {
+    std::vector<Eigen::Vector2d> polygon;
+    for (int n : loop) polygon.push_back(flat[n]);
+    loopArea.push_back(std::abs(polygonArea(polygon)));
+  }
+  const long outer = std::max_element(loopArea.begin(), loopArea.end()) - loopArea.begin();
+  std::rotate(foot.loops.begin(), foot.loops.begin() + outer, foot.loops.begin() + outer + 1);
+  return foot;
+}
+
+ColumnFoot columnFootQuads(const CadSolid& cad, const ColumnPiece& column, double size, ForkServer* server) {
+  ColumnFoot foot = footPlane(column);
   const TopoDS_Face& face = TopoDS::Face(cad.faces(column.foot + 1));
   std::vector<Eigen::Vector2d> at;
   std::vector<Vec3> points;

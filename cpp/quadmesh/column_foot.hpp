@@ -4,12 +4,14 @@
 #pragma once
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 #include "core/child_process.hpp"
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
 #include "geometry/column_piece.hpp"
+#include "quadmesh/footprint_insert.hpp"
 #include "quadmesh/quad_mesh.hpp"
 
 namespace hexlayer {
@@ -36,5 +38,14 @@ inline constexpr int kMinRoundLoop = 8;
 // it along the axis.
 // Throws geometryError if Gmsh cannot fill the foot with quads.
 ColumnFoot columnFootQuads(const CadSolid& cad, const ColumnPiece& column, double size, ForkServer* server);
+
+// A column standing on the other side of the sheet where another stands (a pin through a plate) takes that one's foot:
+// its quads, their nodes put on this foot along the axis, turned to run counter-clockwise seen from up this axis, so
+// that the two feet are one another's node for node (footprint_insert.hpp's mergeFeetOnBothSides). [in] cad, column:
+// as columnFootQuads's; [in] other: the other column's foot quads, in cad's units; [in] size: the quad size. Returns
+// nullopt unless every outline node lands on this foot's edges (within a hundredth of the size), in as many loops as
+// the foot has wires (a pin of one section through the plate; a cone's feet differ).
+std::optional<ColumnFoot> columnFootAcross(const CadSolid& cad, const ColumnPiece& column, const FootprintQuads& other,
+                                           double size);
 
 }  // namespace hexlayer

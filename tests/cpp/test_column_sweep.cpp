@@ -1,5 +1,6 @@
 // Columns (column_piece.hpp, column_foot.hpp, column_sweep.hpp): a cone and a square post cut off at their feet are
-// columns, swept from their feet's quads to their tops; a pin under a wider head is none. At scales 1e-3, 1 and 1e3.
+// columns, swept from their feet's quads to their tops; a pin under a wider head is none; a pin below a plate takes
+// the foot of the pin above, a wider one does not. At scales 1e-3, 1 and 1e3.
 #include <gtest/gtest.h>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
@@ -177,6 +178,43 @@ TEST(MeanValueWeights, ReproduceLinearFunctionsInAPolygonWithAHole) {
     for (std::size_t i = 0; i < 9; ++i) at += w[i] * (i < 5 ? outer[i] : hole[i - 5]), sum += w[i];
     EXPECT_NEAR(sum, 1, 1e-12);
     EXPECT_NEAR((at - x).norm(), 0, 1e-12);
+  }
+}
+
+TEST(ColumnFoot, APinBelowThePlateTakesTheFootOfThePinAboveNodeForNode) {
+  for (double s : {1e-3, 1.0, 1e3}) {
+    const CadSolid above = withFootAtZ0(BRepPrimAPI_MakeCylinder(1.5 * s, 8 * s).Shape());
+    const std::optional<ColumnPiece> a = columnPiece(above);
+    ASSERT_TRUE(a) << s;
+    const ColumnFoot given = columnFootQuads(above, *a, 1.0 * s, nullptr);
+    const FootprintQuads other{given.quads.nodes, given.quads.quads};
+    // the pin's twin below z = 0 (its axis -z): the same nodes, its quads counter-clockwise seen from down the z axis
+    const gp_Ax2 down(gp_Pnt(0, 0, 0), gp_Dir(0, 0, -1));
+    const CadSolid below = withFootAtZ0(BRepPrimAPI_MakeCylinder(down, 1.5 * s, 6 * s).Shape());
+    const std::optional<ColumnPiece> b = columnPiece(below);
+    ASSERT_TRUE(b) << s;
+    EXPECT_NEAR(b->axis.z(), -1.0, 1e-12);
+    const std::optional<ColumnFoot> taken = columnFootAcross(below, *b, other, 1.0 * s);
+    ASSERT_TRUE(taken) << s;
+    ASSERT_EQ(taken->quads.nodes.size(), given.quads.nodes.size());
+    for (std::size_t n = 0; n < given.quads.nodes.size(); ++n)
+      EXPECT_LT((taken->quads.nodes[n] - given.quads.nodes[n]).norm(), 1e-12 * s) << n;
+    ASSERT_EQ(taken->loops.size(), 1u);
+    EXPECT_EQ(taken->loops[0].size(), given.loops[0].size());
+    std::vector<Eigen::Vector2d> outline;
+    for (int n : taken->loops[0]) outline.push_back(onFootPlane(*taken, *b, taken->quads.nodes[n]));
+    EXPECT_GT(polygonArea(outline), 0.9 * M_PI * 1.5 * 1.5 * s * s);  // counter-clockwise up the axis
+    for (const auto& q : taken->quads.quads)
+      EXPECT_GT(
+          polygonArea(
+              {onFootPlane(*taken, *b, taken->quads.nodes[q[0]]), onFootPlane(*taken, *b, taken->quads.nodes[q[1]]),
+               onFootPlane(*taken, *b, taken->quads.nodes[q[2]]), onFootPlane(*taken, *b, taken->quads.nodes[q[3]])}),
+          0);
+    // a wider pin below: the feet are not alike
+    const CadSolid wider = withFootAtZ0(BRepPrimAPI_MakeCylinder(down, 2.5 * s, 6 * s).Shape());
+    const std::optional<ColumnPiece> w = columnPiece(wider);
+    ASSERT_TRUE(w);
+    EXPECT_FALSE(columnFootAcross(wider, *w, other, 1.0 * s)) << s;
   }
 }
 

@@ -27,6 +27,8 @@ and from the report: every junction meshed, of its kind ("T", "X", "ring" or "co
 
 Run by CTest as: /usr/bin/python3 test_junction_meshing.py --hexlayer PATH --source DIR
 """
+# ctest: a test per method
+# (tests/CMakeLists.txt: each test method is a test of its own, run side by side; together they take about 9 minutes)
 import json
 import os
 import subprocess
@@ -296,7 +298,10 @@ def write_post(path, shape, scale, turn):
     (the square post with a fillet R1.5 round its foot), "flush" (the square post with a side flush with the plate's
     side at x = 60), "corner" (the square post at the plate's corner, two sides flush with the plate's); on the top of a half tube (R40 outside, wall 2, 60 long along x) instead of the plate: "shell_pin"
     (R1.5, 11 high from z = 39), "shell_post" (4 x 4), "shell_pin_off" (the pin upright at y = 15, 23 degrees off
-    the tube's normal there); "slope_pin": the plate turned 25 degrees about y, the pin upright on it. Scaled and turned (turned_and_scaled); returns its volume."""
+    the tube's normal there); "slope_pin": the plate turned 25 degrees about y, the pin upright on it; through the plate
+    (a column on each side, 16-17 long): "through_pin" (R1.5 from z = -6), "through_post" (4 x 4 from z = -7),
+    "through_slope" (the plate turned 15 degrees about y, the pin upright through it). Scaled and turned
+    (turned_and_scaled); returns its volume."""
     import gmsh
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
@@ -308,12 +313,15 @@ def write_post(path, shape, scale, turn):
             base = occ.intersect(tube, [(3, occ.addBox(0, -50, 0, 60, 100, 50))])[0]
         else:
             base = [(3, occ.addBox(0, 0, 0, 60, 40, 2))]
-        if shape == "slope_pin":
-            occ.rotate(base, 30, 20, 1, 0, 1, 0, 25 * np.pi / 180)
+        if shape in ("slope_pin", "through_slope"):
+            occ.rotate(base, 30, 20, 1, 0, 1, 0, (25 if shape == "slope_pin" else 15) * np.pi / 180)
         tools = {"shell_pin": lambda: [occ.addCylinder(30, 0, 39, 0, 0, 11, 1.5)],
                  "shell_pin_off": lambda: [occ.addCylinder(30, 15, 36, 0, 0, 10, 1.5)],
                  "slope_pin": lambda: [occ.addCylinder(30, 20, 1, 0, 0, 10, 1.5)],
                  "shell_post": lambda: [occ.addBox(28, -2, 39, 4, 4, 11)],
+                 "through_pin": lambda: [occ.addCylinder(30, 20, -6, 0, 0, 16, 1.5)],
+                 "through_post": lambda: [occ.addBox(28, 18, -7, 4, 4, 17)],
+                 "through_slope": lambda: [occ.addCylinder(30, 20, -8, 0, 0, 18, 1.5)],
                  "square": lambda: [occ.addBox(28, 18, 1, 4, 4, 9)],
                  "block": lambda: [occ.addBox(20, 15, 1, 12, 5, 6)],
                  "pad": lambda: [occ.addBox(20, 10, 1, 10, 10, 2)],
@@ -672,6 +680,21 @@ class JunctionMeshing(unittest.TestCase):
                     _, report = self.check_part(name, step, layers, order, kinds)
                     if shape == "fillet":
                         self.assertEqual(len(report["small_features"]["foot_fillets_smoothed"]["faces"]), 4)
+
+    def test_columns_through(self):
+        """A pin or post through the plate: a column on each side, whose feet must be one another's node for node (the
+        second takes the first's quads: column_foot.hpp columnFootAcross); the pin in metres and turned 30 degrees about
+        a skew axis, a pin upright through a plate sloping 15 degrees (its feet tilted); 2 layers, and 3 at order 2."""
+        for name, shape, scale, turn in (("through_pin", "through_pin", 1.0, 0.0),
+                                          ("through_pin_metres", "through_pin", 1e-3, 0.0),
+                                          ("through_pin_turned", "through_pin", 1.0, 30.0),
+                                          ("through_post", "through_post", 1.0, 0.0),
+                                          ("through_slope", "through_slope", 1.0, 0.0)):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_post(step, shape, scale, turn)
+            for layers, order in ((2, 1), (3, 2)):
+                with self.subTest(part=name, layers=layers, order=order):
+                    self.check_part(name, step, layers, order, ["column"] * 2)
 
     def test_ribs_on_plates(self):
         for part in PARTS:
