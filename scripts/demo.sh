@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DHEXLAYER_FULL_SUITE=OFF >/dev/null
 cmake --build build -j"$(nproc)" --target hexlayer pyhexlayer
 scripts/install-workbench.sh build
 mkdir -p out

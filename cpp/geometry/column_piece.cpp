@@ -23,6 +23,8 @@ constexpr double kSquareFoot = 1e-9;
 // drawn straight on a sloping or curved wall); its sides lean at most kMaxSideLean from square to the foot's normal;
 // the foot's normals are within kMaxFootTilt of the axis.
 constexpr double kSameAxis = 1.0 * M_PI / 180, kMaxSideLean = M_PI / 6, kMaxFootTilt = M_PI / 4;
+// Of the greatest eigenvalue: a second least eigenvalue of the sides' normals' n n^T this small leaves the axis free.
+constexpr double kFreeAxis = 1e-3;
 
 // The range of n . axis over the face's outward normals at the nodes of its triangulation (BRepMesh's, at their
 // (u, v): a B-spline face's triangles can lean far from its surface), and its farthest point along the axis; nullopt
@@ -47,13 +49,11 @@ std::optional<FaceReach> faceReach(const TopoDS_Face& face, const Vec3& axis) {
   return r;
 }
 
-// The direction the column's sides run in: of the faces whose normals (at their triangulation's nodes) all lie
-// within kMaxSideLean of square to the foot's normal, the direction most square to all their normals (the least
-// eigenvector of the sum of n n^T: a cylinder's or a prism's axis), turned towards the foot's normal; the foot's
-// normal itself if that is within kSameAxis of it, or there are no such faces. [in] cad, foot; [in] footNormal.
-Vec3 sidesAxis(const CadSolid& cad, int foot, const Vec3& footNormal) {
+// The sum of n n^T over the normals (at their triangulation's nodes) of the faces but the foot whose normals all lie
+// within `lean` (radians) of square to the foot's normal. [in] cad, foot, footNormal, lean.
+Eigen::Matrix3d sideNormals(const CadSolid& cad, int foot, const Vec3& footNormal, double leanAngle) {
   Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
-  const double lean = std::sin(kMaxSideLean);
+  const double lean = std::sin(leanAngle);
   for (int f = 0; f < cad.faces.Extent(); ++f) {
     if (f == foot) continue;
     const TopoDS_Face& face = TopoDS::Face(cad.faces(f + 1));
@@ -66,11 +66,29 @@ Vec3 sidesAxis(const CadSolid& cad, int foot, const Vec3& footNormal) {
       sum += n * n.transpose();
     }
   }
-  if (sum.isZero()) return footNormal;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(sum);
-  Vec3 axis = eigen.eigenvectors().col(0).normalized();  // the least eigenvalue's
-  if (axis.dot(footNormal) < 0) axis = -axis;
-  return axis.dot(footNormal) >= std::cos(kSameAxis) ? footNormal : axis;
+  return sum;
+}
+
+// The direction most square to the normals whose sum of n n^T is `sum`: its least eigenvector; nullopt if there are
+// none, or if they leave it free to turn (the two least eigenvalues both about 0: the normals of two parallel faces).
+std::optional<Vec3> leastDirection(const Eigen::Matrix3d& sum) {
+  if (sum.isZero()) return std::nullopt;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(sum);  // eigenvalues ascending
+  if (eigen.eigenvalues()(1) <= kFreeAxis * eigen.eigenvalues()(2)) return std::nullopt;
+  return Vec3(eigen.eigenvectors().col(0).normalized());
+}
+
+// The direction the column's sides run in: of the faces whose normals all lie within kMaxSideLean of square to the
+// foot's normal (or, if none do or they leave it free, within kMaxFootTilt: a pin or post upright on a wall sloping 30
+// to 45 degrees), the direction most square to all their normals (leastDirection: a cylinder's or a prism's axis),
+// turned towards the foot's normal; the foot's normal itself if that is within kSameAxis of it, or none is found.
+// [in] cad, foot; [in] footNormal.
+Vec3 sidesAxis(const CadSolid& cad, int foot, const Vec3& footNormal) {
+  std::optional<Vec3> axis = leastDirection(sideNormals(cad, foot, footNormal, kMaxSideLean));
+  if (!axis) axis = leastDirection(sideNormals(cad, foot, footNormal, kMaxFootTilt));
+  if (!axis) return footNormal;
+  if (axis->dot(footNormal) < 0) *axis = -*axis;
+  return axis->dot(footNormal) >= std::cos(kSameAxis) ? footNormal : *axis;
 }
 
 }  // namespace

@@ -26,9 +26,10 @@ inline constexpr double kMaxColumnDraft = 0.35;  // 20 degrees
 
 // [in] cad: a piece cut off the part (CadSolid::cutInput: its cut faces), prepared (its faces triangulated).
 // The axis is the foot's normal at its middle, or the direction the sides run in if that is over a degree off it (a
-// pin drawn straight on a sloping or curved wall: its sides' normals' least-squares square direction). Returns the
-// column if its one cut face is a plane square to the axis (or lies on one), or is curved or tilted with its normals
-// within 45 degrees of the axis (a pin on a shell, on a slope), and every other face's normals (at its
+// pin or post drawn straight on a wall sloping up to 45 degrees or on a curved one: its sides' normals' least-squares
+// square direction). Returns the column if its one cut face is a plane square to the axis (or lies on one), or is
+// curved or tilted with its normals within 45 degrees of the axis (a pin on a shell, on a slope), and every other
+// face's normals (at its
 // triangulation's nodes) face the axis's way or square to it within kMaxColumnDraft (no face looks back at the foot:
 // no overhang, so every line up the axis from the foot leaves the column through a cap), with at least one cap;
 // nullopt otherwise.

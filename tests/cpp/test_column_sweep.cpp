@@ -138,33 +138,42 @@ TEST(ColumnSweep, APinsCurvedFootOnATubeIsSweptFromTheTube) {
 // A pin R1.5 upright, cut at its foot by a plane sloping 25 degrees (a pin drawn straight on a sloping wall): its axis
 // is its side's (z), not the foot's normal; the foot is off the plane square to it, its inner nodes put on the slope;
 // the hexes reach the top at z = 10.
-TEST(ColumnSweep, APinUprightOnASlopeRunsAlongItsSide) {
-  for (double s : {1e-3, 1.0, 1e3}) {
-    const TopoDS_Shape pin = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -5 * s), gp_Dir(0, 0, 1)), 1.5 * s, 15 * s);
-    const double a = 25 * M_PI / 180;
-    const Vec3 slope(std::sin(a), 0, std::cos(a));  // the plane's normal: z turned a about y
-    gp_Trsf turn;
-    turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 1, 0)), a);
-    const TopoDS_Shape below = BRepPrimAPI_MakeBox(gp_Pnt(-10 * s, -10 * s, -20 * s), 20 * s, 20 * s, 20 * s).Shape();
-    TopExp_Explorer solid(BRepAlgoAPI_Cut(pin, BRepBuilderAPI_Transform(below, turn).Shape()).Shape(), TopAbs_SOLID);
-    CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
-    cad.cutInput.assign(cad.faces.Extent(), 0);
-    for (int f = 0; f < cad.faces.Extent(); ++f) {
-      const BRepAdaptor_Surface on(TopoDS::Face(cad.faces(f + 1)));
-      cad.cutInput[f] = on.GetType() == GeomAbs_Plane && std::abs(on.Plane().Axis().Direction().Z()) < 0.99;
-    }
-    const std::optional<ColumnPiece> c = columnPiece(cad);
-    ASSERT_TRUE(c) << s;
-    EXPECT_TRUE(c->footOffPlane);
-    EXPECT_NEAR(c->axis.z(), 1.0, 1e-9);
-    const ColumnFoot foot = columnFootQuads(cad, *c, 1.0 * s, nullptr);
-    for (const Vec3& p : foot.quads.nodes) EXPECT_NEAR(slope.dot(p), 0, 1e-9 * s);
-    const WallProjector walls(cad, sidesOf(cad, *c));
-    const HexMesh mesh = sweepColumn(cad, foot, *c, walls, 10);
-    for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
-    for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
-      if (mesh.nodeLayer[n] == 10) EXPECT_NEAR(mesh.nodes[n].z(), 10 * s, 1e-9 * s);
-  }
+// A pin (round) and a square post (two of its sides square to the slope, two leaning as far as the slope: their normals
+// alone leave the axis free) upright on walls sloping 25 and 40 degrees.
+TEST(ColumnSweep, APinOrPostUprightOnASlopeRunsAlongItsSides) {
+  for (double s : {1e-3, 1.0, 1e3})
+    for (const bool round : {true, false})
+      for (const double degrees : {25.0, 40.0}) {
+        const TopoDS_Shape pin =
+            round ? BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -5 * s), gp_Dir(0, 0, 1)), 1.5 * s, 15 * s).Shape()
+                  : BRepPrimAPI_MakeBox(gp_Pnt(-1.5 * s, -1.5 * s, -5 * s), 3 * s, 3 * s, 15 * s).Shape();
+        const double a = degrees * M_PI / 180;
+        const Vec3 slope(std::sin(a), 0, std::cos(a));  // the plane's normal: z turned a about y
+        gp_Trsf turn;
+        turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 1, 0)), a);
+        const TopoDS_Shape below =
+            BRepPrimAPI_MakeBox(gp_Pnt(-10 * s, -10 * s, -20 * s), 20 * s, 20 * s, 20 * s).Shape();
+        TopExp_Explorer solid(BRepAlgoAPI_Cut(pin, BRepBuilderAPI_Transform(below, turn).Shape()).Shape(),
+                              TopAbs_SOLID);
+        CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
+        cad.cutInput.assign(cad.faces.Extent(), 0);
+        for (int f = 0; f < cad.faces.Extent(); ++f) {
+          const BRepAdaptor_Surface on(TopoDS::Face(cad.faces(f + 1)));
+          cad.cutInput[f] = on.GetType() == GeomAbs_Plane && std::abs(on.Plane().Axis().Direction().Z()) < 0.99 &&
+                            std::abs(on.Plane().Axis().Direction().Z()) > 0.5;
+        }
+        const std::optional<ColumnPiece> c = columnPiece(cad);
+        ASSERT_TRUE(c) << s << " " << round << " " << degrees;
+        EXPECT_TRUE(c->footOffPlane);
+        EXPECT_NEAR(c->axis.z(), 1.0, 1e-9);
+        const ColumnFoot foot = columnFootQuads(cad, *c, 1.0 * s, nullptr);
+        for (const Vec3& p : foot.quads.nodes) EXPECT_NEAR(slope.dot(p), 0, 1e-9 * s);
+        const WallProjector walls(cad, sidesOf(cad, *c));
+        const HexMesh mesh = sweepColumn(cad, foot, *c, walls, 10);
+        for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
+        for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+          if (mesh.nodeLayer[n] == 10) EXPECT_NEAR(mesh.nodes[n].z(), 10 * s, 1e-9 * s);
+      }
 }
 
 TEST(MeanValueWeights, ReproduceLinearFunctionsInAPolygonWithAHole) {

@@ -298,7 +298,9 @@ def write_post(path, shape, scale, turn):
     (the square post with a fillet R1.5 round its foot), "flush" (the square post with a side flush with the plate's
     side at x = 60), "corner" (the square post at the plate's corner, two sides flush with the plate's); on the top of a half tube (R40 outside, wall 2, 60 long along x) instead of the plate: "shell_pin"
     (R1.5, 11 high from z = 39), "shell_post" (4 x 4), "shell_pin_off" (the pin upright at y = 15, 23 degrees off
-    the tube's normal there); "slope_pin": the plate turned 25 degrees about y, the pin upright on it; through the plate
+    the tube's normal there); "slope_pin": the plate turned 25 degrees about y, the pin upright on it; "slope40_pin" and
+    "slope40_post" (3 x 3) upright on the plate turned 40 degrees (the pin is made, not tested: its column's average is
+    below the bar); through the plate
     (a column on each side, 16-17 long): "through_pin" (R1.5 from z = -6), "through_post" (4 x 4 from z = -7),
     "through_slope" (the plate turned 15 degrees about y, the pin upright through it). Scaled and turned
     (turned_and_scaled); returns its volume."""
@@ -313,11 +315,14 @@ def write_post(path, shape, scale, turn):
             base = occ.intersect(tube, [(3, occ.addBox(0, -50, 0, 60, 100, 50))])[0]
         else:
             base = [(3, occ.addBox(0, 0, 0, 60, 40, 2))]
-        if shape in ("slope_pin", "through_slope"):
-            occ.rotate(base, 30, 20, 1, 0, 1, 0, (25 if shape == "slope_pin" else 15) * np.pi / 180)
+        slopes = {"slope_pin": 25, "through_slope": 15, "slope40_pin": 40, "slope40_post": 40}
+        if shape in slopes:
+            occ.rotate(base, 30, 20, 1, 0, 1, 0, slopes[shape] * np.pi / 180)
         tools = {"shell_pin": lambda: [occ.addCylinder(30, 0, 39, 0, 0, 11, 1.5)],
                  "shell_pin_off": lambda: [occ.addCylinder(30, 15, 36, 0, 0, 10, 1.5)],
                  "slope_pin": lambda: [occ.addCylinder(30, 20, 1, 0, 0, 10, 1.5)],
+                 "slope40_pin": lambda: [occ.addCylinder(30, 20, 1, 0, 0, 10, 1.5)],
+                 "slope40_post": lambda: [occ.addBox(28.5, 18.5, 1, 3, 3, 10)],
                  "shell_post": lambda: [occ.addBox(28, -2, 39, 4, 4, 11)],
                  "through_pin": lambda: [occ.addCylinder(30, 20, -6, 0, 0, 16, 1.5)],
                  "through_post": lambda: [occ.addBox(28, 18, -7, 4, 4, 17)],
@@ -661,7 +666,9 @@ class JunctionMeshing(unittest.TestCase):
         at its corner (the foot closed round the corner of the plate's rim); the
         square post in metres and turned 30 degrees about a skew axis; a pin and a post on a half tube (their feet
         curved), the pin in metres, a pin upright off the tube's top and on a plate sloping 25 degrees (the axis the
-        pin's, its foot tilted to it); 2 layers, and 3 at order 2."""
+        pin's, its foot tilted to it), a 3 x 3 post upright on the plate sloping 40 degrees (its two sides square to the
+        slope leave its axis free: the sides leaning 40 degrees give it; a pin there meshes too, but its column hexes'
+        average is 0.796, below the issue's 0.8); 2 layers, and 3 at order 2."""
         for name, shape, scale, turn, kinds in (
                 ("post_square", "square", 1.0, 0.0, ["column"]), ("post_block", "block", 1.0, 0.0, ["column"]),
                 ("post_pad", "pad", 1.0, 0.0, ["column"]), ("post_pads", "pads", 1.0, 0.0, ["column"] * 3),
@@ -672,7 +679,8 @@ class JunctionMeshing(unittest.TestCase):
                 ("shell_post", "shell_post", 1.0, 0.0, ["column"]),
                 ("shell_pin_metres", "shell_pin", 1e-3, 0.0, ["column"]),
                 ("shell_pin_off", "shell_pin_off", 1.0, 0.0, ["column"]),
-                ("slope_pin", "slope_pin", 1.0, 0.0, ["column"])):
+                ("slope_pin", "slope_pin", 1.0, 0.0, ["column"]),
+                ("slope40_post", "slope40_post", 1.0, 0.0, ["column"])):
             step = os.path.join(self.tmp.name, name + ".step")
             self.volumes[name] = write_post(step, shape, scale, turn)
             for layers, order in ((2, 1), (3, 2)):
