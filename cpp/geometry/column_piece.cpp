@@ -127,4 +127,13 @@ std::optional<ColumnPiece> columnPiece(const CadSolid& cad) {
   return c;
 }
 
+WallSides columnSides(const CadSolid& cad, const ColumnPiece& column) {
+  WallSides sides;
+  sides.faces.resize(cad.faces.Extent());
+  sides.faces[column.foot].side = Side::Bottom;
+  for (int f : column.caps) sides.faces[f].side = Side::Top;
+  sides.thickness = faceWidth(cad.faces(column.foot + 1));
+  return sides;
+}
+
 }  // namespace hexlayer

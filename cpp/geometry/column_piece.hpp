@@ -8,6 +8,7 @@
 
 #include "core/types.hpp"
 #include "geometry/cad_solid.hpp"
+#include "geometry/wall_sides.hpp"
 
 namespace hexlayer {
 
@@ -34,5 +35,9 @@ inline constexpr double kMaxColumnDraft = 0.35;  // 20 degrees
 // no overhang, so every line up the axis from the foot leaves the column through a cap), with at least one cap;
 // nullopt otherwise.
 std::optional<ColumnPiece> columnPiece(const CadSolid& cad);
+
+// A column's faces as a sheet's walls (what the sweep projects onto): its foot the bottom, its caps the top, its sides
+// the rim; its thickness the foot's width (faceWidth). [in] cad, column.
+WallSides columnSides(const CadSolid& cad, const ColumnPiece& column);
 
 }  // namespace hexlayer

@@ -391,17 +391,6 @@ CadSolid stageSolid(const TopoDS_Solid& solid, const std::vector<char>& cutFaces
   return cad;
 }
 
-// A column's faces as a sheet's walls: its foot the bottom, its caps the top, its sides the rim; its thickness the
-// foot's width (faceWidth). [in] cad, column.
-WallSides columnSides(const CadSolid& cad, const ColumnPiece& column) {
-  WallSides sides;
-  sides.faces.resize(cad.faces.Extent());
-  sides.faces[column.foot].side = Side::Bottom;
-  for (int f : column.caps) sides.faces[f].side = Side::Top;
-  sides.thickness = faceWidth(cad.faces(column.foot + 1));
-  return sides;
-}
-
 // A piece standing on a sheet that is no sheet but a column (column_piece.hpp: a pin, a post, a block): its foot's
 // quads (column_foot.hpp) swept up its axis (column_sweep.hpp), about as many layers as its height holds quads; the
 // boundary nodes given CAD faces, not grouped (the joined part is). [in] solid, given, cutFaces: as meshSolid's for a

@@ -104,6 +104,12 @@ Vec3 alongAxisOnto(const Handle(Geom_Surface) & surface, const Vec3& p, const Ve
   return onto.NbPoints() > 0 ? toVec(onto.NearestPoint()) : p;
 }
 
+// The outer loop's index: the loop of the largest area (per loop, its signed area in the foot's plane).
+long outerLoop(const std::vector<double>& area) {
+  return std::max_element(area.begin(), area.end(), [](double x, double y) { return std::abs(x) < std::abs(y); }) -
+         area.begin();
+}
+
 // A foot with its plane's axes (e1 x e2 = the column's axis) and nothing on it yet.
 ColumnFoot footPlane(const ColumnPiece& column) {
   ColumnFoot foot;
@@ -164,14 +170,13 @@ std::optional<ColumnFoot> columnFootAcross(const CadSolid& cad, const ColumnPiec
       BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(gp_Pnt(p.x(), p.y(), p.z())).Vertex(), edges);
       if (!d.IsDone() || d.Value() > kOnOutline * size) return std::nullopt;
     }
-  // the outer loop (the largest) first
   std::vector<double> loopArea;
   for (const std::vector<int>& loop : foot.loops) {
     std::vector<Eigen::Vector2d> polygon;
     for (int n : loop) polygon.push_back(flat[n]);
-    loopArea.push_back(std::abs(polygonArea(polygon)));
+    loopArea.push_back(polygonArea(polygon));
   }
-  const long outer = std::max_element(loopArea.begin(), loopArea.end()) - loopArea.begin();
+  const long outer = outerLoop(loopArea);  // first
   std::rotate(foot.loops.begin(), foot.loops.begin() + outer, foot.loops.begin() + outer + 1);
   return foot;
 }
@@ -196,9 +201,7 @@ ColumnFoot columnFootQuads(const CadSolid& cad, const ColumnPiece& column, doubl
   }
   if (foot.loops.empty()) throw geometryError("column: a column's foot has no edges");
   // the outer loop (the largest) first and counter-clockwise, the holes clockwise
-  const long outer =
-      std::max_element(area.begin(), area.end(), [](double x, double y) { return std::abs(x) < std::abs(y); }) -
-      area.begin();
+  const long outer = outerLoop(area);
   for (std::size_t l = 0; l < foot.loops.size(); ++l)
     if ((static_cast<long>(l) == outer) != (area[l] > 0)) std::reverse(foot.loops[l].begin(), foot.loops[l].end());
   std::rotate(foot.loops.begin(), foot.loops.begin() + outer, foot.loops.begin() + outer + 1);

@@ -38,14 +38,6 @@ CadSolid withFootAtZ0(const TopoDS_Shape& shape) {
   return cad;
 }
 
-WallSides sidesOf(const CadSolid& cad, const ColumnPiece& c) {
-  WallSides sides;
-  sides.faces.resize(cad.faces.Extent());
-  sides.faces[c.foot].side = Side::Bottom;
-  for (int f : c.caps) sides.faces[f].side = Side::Top;
-  return sides;
-}
-
 double meshVolume(const HexMesh& mesh) {
   double v = 0;
   for (std::size_t h = 0; h < mesh.hexes.size(); ++h) v += hexVolume(hexCorners(mesh, h));
@@ -84,7 +76,7 @@ TEST(ColumnSweep, AConesHexesFillItFromItsFootToItsTop) {
     ASSERT_EQ(foot.loops.size(), 1u);
     EXPECT_EQ(foot.loops[0].size(), 14u);  // 2 pi 2.2 / 1 = 13.8: 14
     for (int n : foot.loops[0]) EXPECT_NEAR(std::hypot(foot.quads.nodes[n].x(), foot.quads.nodes[n].y()), r0, 1e-9 * s);
-    const WallSides sides = sidesOf(cone, c);
+    const WallSides sides = columnSides(cone, c);
     const WallProjector walls(cone, sides);
     const HexMesh mesh = sweepColumn(cone, foot, c, walls, 10);
     EXPECT_EQ(mesh.hexes.size(), foot.quads.quads.size() * 10);
@@ -124,7 +116,7 @@ TEST(ColumnSweep, APinsCurvedFootOnATubeIsSweptFromTheTube) {
     const ColumnFoot foot = columnFootQuads(cad, *c, 1.0 * s, nullptr);
     auto onTube = [&](const Vec3& p) { return std::hypot(p.y(), p.z() + 40 * s) - 40 * s; };
     for (const Vec3& p : foot.quads.nodes) EXPECT_NEAR(onTube(p), 0, 1e-6 * s);
-    const WallProjector walls(cad, sidesOf(cad, *c));
+    const WallProjector walls(cad, columnSides(cad, *c));
     const HexMesh mesh = sweepColumn(cad, foot, *c, walls, 10);
     for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
     for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
@@ -168,7 +160,7 @@ TEST(ColumnSweep, APinOrPostUprightOnASlopeRunsAlongItsSides) {
         EXPECT_NEAR(c->axis.z(), 1.0, 1e-9);
         const ColumnFoot foot = columnFootQuads(cad, *c, 1.0 * s, nullptr);
         for (const Vec3& p : foot.quads.nodes) EXPECT_NEAR(slope.dot(p), 0, 1e-9 * s);
-        const WallProjector walls(cad, sidesOf(cad, *c));
+        const WallProjector walls(cad, columnSides(cad, *c));
         const HexMesh mesh = sweepColumn(cad, foot, *c, walls, 10);
         for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
         for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
