@@ -1968,6 +1968,127 @@ def write_readme(outdir, rows, head=None, notes=None):
         fh.write("\n".join(lines))
 
 
+# ---------------------------------------------------------------------------
+# Thickness steps (written to the subfolder steps/): a wall going on thinner
+# past a step in one or both of its faces (a plate milled thinner from both
+# sides, a groove or a round diaphragm in a plate, a thinner band round a
+# tube). The thin wall stands on the thick wall's rim face, no more than its
+# own thickness above or below it.
+# ---------------------------------------------------------------------------
+
+STEP_L, STEP_W, STEP_T = 100.0, 40.0, 3.0   # the plate: [0, 100] x [0, 40] x [0, 3]
+
+
+def stepped_plate(z0, t, split=False):
+    """STEP_L x STEP_W plate, STEP_T thick for x <= 50 and t thick (z0 ... z0 + t)
+    beyond; with `split` the thick half fused from two boxes (x 0...25, 25...50)
+    not unified, so its faces are split at x = 25."""
+    half = STEP_L / 2
+    thick = [occ.addBox(0, 0, 0, half / 2, STEP_W, STEP_T), occ.addBox(half / 2, 0, 0, half / 2, STEP_W, STEP_T)]
+    if not split:
+        thick = [fuse_volumes(thick)]
+    fuse_volumes(thick + [occ.addBox(half, 0, z0, half, STEP_W, t)], unify=not split)
+    return half * STEP_W * (STEP_T + t)
+
+
+def step_both_sides():
+    return stepped_plate(0.75, 1.5), dict(dims="100 × 40 plate, 3 thick for x ≤ 50, 1.5 thick (z 0.75…2.25) beyond: "
+                                               "a step of 0.75 in both faces", wall="3 / 1.5")
+
+
+def step_unequal():
+    return stepped_plate(0.5, 1.5), dict(dims="as step_both_sides, the thin half at z 0.5…2.0: steps of 0.5 below, "
+                                              "1.0 above", wall="3 / 1.5")
+
+
+def step_one_side():
+    return stepped_plate(1.5, 1.5), dict(dims="as step_both_sides, the thin half at z 1.5…3: the top flush, a step "
+                                              "of 1.5 below", wall="3 / 1.5")
+
+
+def step_split():
+    return stepped_plate(0.75, 1.5, split=True), dict(
+        dims="step_both_sides fused from 3 boxes not unified: the thick half's faces split at x = 25", wall="3 / 1.5")
+
+
+def step_metres():
+    volume = stepped_plate(0.75, 1.5)
+    occ.dilate(occ.getEntities(3), 0, 0, 0, 1e-3, 1e-3, 1e-3)
+    return volume * 1e-9, dict(dims="step_both_sides scaled by 1e-3 (in metres, written as mm)", wall="0.003 / 0.0015")
+
+
+def step_oblique():
+    # The step runs from (40, 0) to (60, 40) (63.4° to x): the thick part x <= 40 + y / 2.
+    thick = extrude_polygon_xy([(0.0, 0.0), (40.0, 0.0), (60.0, STEP_W), (0.0, STEP_W)], STEP_T)
+    thin = extrude_polygon_xy([(40.0, 0.0), (STEP_L, 0.0), (STEP_L, STEP_W), (60.0, STEP_W)], 1.5)
+    occ.translate([(3, thin)], 0, 0, 0.75)
+    fuse_volumes([thick, thin])
+    return 50 * STEP_W * (STEP_T + 1.5), dict(dims="as step_both_sides, the step oblique: from (40, 0) to (60, 40)",
+                                              wall="3 / 1.5")
+
+
+def groove_both_sides():
+    # A flexure hinge: a 10 wide groove across the plate, 0.75 deep in the top and in the bottom.
+    plate = occ.addBox(0, 0, 0, STEP_L, STEP_W, STEP_T)
+    grooves = [occ.addBox(45, -1, 2.25, 10, STEP_W + 2, 1), occ.addBox(45, -1, -1, 10, STEP_W + 2, 1.75)]
+    one_volume(occ.cut([(3, plate)], [(3, g) for g in grooves])[0])
+    return STEP_L * STEP_W * STEP_T - 10 * STEP_W * 1.5, dict(
+        dims="100 × 40 × 3 plate, a groove 10 wide across it (x 45…55) 0.75 deep in both faces", wall="3 / 1.5")
+
+
+def diaphragm():
+    # A round diaphragm: the plate 1 thick (z 1...2) within R15 of (50, 30).
+    plate = occ.addBox(0, 0, 0, STEP_L, 60, STEP_T)
+    pockets = [occ.addCylinder(50, 30, 2, 0, 0, 2, 15), occ.addCylinder(50, 30, -1, 0, 0, 2, 15)]
+    one_volume(occ.cut([(3, plate)], [(3, c) for c in pockets])[0])
+    return STEP_L * 60 * STEP_T - math.pi * 15 ** 2 * 2, dict(
+        dims="100 × 60 × 3 plate, 1 thick (z 1…2) within R15 of (50, 30): round pockets 1 deep in both faces",
+        wall="3 / 1")
+
+
+def tube_band():
+    # A tube R30 outside, wall 3, 60 long, 1.5 thick (R27.75...R29.25) for z 20...40.
+    whole = tube(30.0, 3.0, 0.0, 60.0)
+    band = tube(31.0, 5.0, 20.0, 40.0)   # R26...R31 over the band, taken away: two tubes left
+    occ.cut([(3, whole)], [(3, band)])
+    keep = tube(29.25, 1.5, 20.0, 40.0)
+    fuse_volumes([tag for _, tag in occ.getEntities(3) if tag != keep] + [keep])
+    return math.pi * ((30 ** 2 - 27 ** 2) * 40 + (29.25 ** 2 - 27.75 ** 2) * 20), dict(
+        dims="tube R30 outside, wall 3, 60 long; for z 20…40 1.5 thick (R27.75…R29.25): a step of 0.75 in both "
+             "faces", wall="3 / 1.5")
+
+
+STEP_PARTS = [
+    ("step_both_sides", step_both_sides),
+    ("step_unequal", step_unequal),
+    ("step_one_side", step_one_side),
+    ("step_split", step_split),
+    ("step_metres", step_metres),
+    ("step_oblique", step_oblique),
+    ("groove_both_sides", groove_both_sides),
+    ("diaphragm", diaphragm),
+    ("tube_band", tube_band),
+]
+
+STEP_README_HEAD = [
+    "# HexLayer sample parts: thickness steps",
+    "",
+    "Small single-solid STEP files (AP214, units mm unless named metres) whose",
+    "wall goes on thinner past a step in one or both of its faces: a plate",
+    "milled thinner from both sides (steps equal, unequal, on one side, the",
+    "step oblique, faces split, in metres), a groove across a plate, a round",
+    "diaphragm, a thinner band round a tube.",
+]
+
+STEP_README_NOTES = [
+    "Made by `scripts/make_samples.py` (`--only steps` writes this folder alone;",
+    "run it with `/usr/bin/python3`, which needs the Debian package",
+    "`python3-gmsh`); licence AGPL-3.0-or-later like the project. The STEP header",
+    "timestamp is fixed, so regenerating the files gives byte-identical output.",
+    "",
+]
+
+
 def make_subfolder(outdir, folder, parts, head, notes):
     """Write `parts` (name, builder) to OUTPUT_DIR/folder with a README.md of
     their own, between `head` and `notes`."""
@@ -1986,8 +2107,8 @@ def main(argv):
     only = None
     if len(argv) >= 3 and argv[-2] == "--only":
         only, argv = argv[-1], argv[:-2]
-    if len(argv) > 2 or only not in (None, "many"):
-        sys.exit("usage: make_samples.py [OUTPUT_DIR] [--only many]")
+    if len(argv) > 2 or only not in (None, "many", "steps"):
+        sys.exit("usage: make_samples.py [OUTPUT_DIR] [--only many|steps]")
     outdir = argv[1] if len(argv) == 2 else os.path.join(repo_root, "Resources", "samples")
     os.makedirs(outdir, exist_ok=True)
 
@@ -1997,6 +2118,9 @@ def main(argv):
         if only == "many":
             make_subfolder(outdir, "many", MANY_PARTS, MANY_README_HEAD, MANY_README_NOTES)
             return 0
+        if only == "steps":
+            make_subfolder(outdir, "steps", STEP_PARTS, STEP_README_HEAD, STEP_README_NOTES)
+            return 0
         rows = []
         for name, builder in PARTS:
             print(name)
@@ -2004,6 +2128,7 @@ def main(argv):
         # The rim parts last (see the note on PARTS), then the junction parts, then the bent boxes (in OUTPUT_DIR).
         make_subfolder(outdir, "rims", RIM_PARTS, RIM_README_HEAD, RIM_README_NOTES)
         make_subfolder(outdir, "junctions", JUNCTION_PARTS, JUNCTION_README_HEAD, JUNCTION_README_NOTES)
+        make_subfolder(outdir, "steps", STEP_PARTS, STEP_README_HEAD, STEP_README_NOTES)
         for name, builder in BENT_BOX_PARTS:
             print(name)
             rows.append(make_part(name, builder, outdir))

@@ -1,11 +1,14 @@
 #include "geometry/sheet_junctions.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Curve2d.hxx>
 #include <BRepBndLib.hxx>
 #include <BRep_Builder.hxx>
 #include <Bnd_OBB.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Face.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +27,10 @@ constexpr double kSmallFeatureWalls = 2;  // a column within a box this many wal
 // A group of faces that encloses no more than this share of its area times the wall with its foot stands out of
 // nothing: a face at the wall's level (the floor of a boss's bore over a smaller hole through the plate).
 constexpr double kStandsOut = 1e-3;
+constexpr double kStepCos = 0.866;  // cos 30 deg: the walls on either side of a thickness step face the same way
+// A step's side at most this many thinner walls high: the sweep's hexes across it (one row) slope that much; a higher
+// step (a 6 mm plate going on 1.5 thick) would fold them.
+constexpr double kStepWalls = 1.05;
 
 std::vector<FaceSample> centreSamples(const TopoDS_Shape& face, double area) {
   return sampleFace(face, std::sqrt(std::max(area, 1e-30) / 16));
@@ -74,7 +81,43 @@ Vec3 edgeMiddle(const TopoDS_Shape& edge) {
   return {p.X(), p.Y(), p.Z()};
 }
 
+// The outward normal of face f at the middle of its edge e (0-based). [in] cad, f, e.
+Vec3 normalAtEdge(const CadSolid& cad, int f, int e) {
+  const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
+  const BRepAdaptor_Curve2d curve(TopoDS::Edge(cad.edges(e + 1)), face);
+  const gp_Pnt2d uv = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
+  return outwardNormal(face, uv.X(), uv.Y());
+}
+
 }  // namespace
+
+std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides) {
+  const int n = static_cast<int>(sides.faces.size());
+  auto isWall = [&](int f) { return sides.faces[f].side != Side::Lateral; };
+  struct Meeting {
+    int wall = -1, edge = -1;
+  };
+  std::vector<std::vector<Meeting>> concave(n), convex(n);  // per lateral face, the walls it meets so, and where
+  std::set<int> concaveEdge;
+  for (const FacePairEdge& c : concaveEdges(cad)) concaveEdge.insert(c.edge);
+  for (const FacePairEdge& e : sharpEdges(cad))
+    if (const auto [wall, side] = isWall(e.a) ? std::pair(e.a, e.b) : std::pair(e.b, e.a);
+        isWall(wall) && !isWall(side))
+      (concaveEdge.count(e.edge) ? concave : convex)[side].push_back({wall, e.edge});
+  std::vector<std::pair<int, int>> steps;
+  for (int r = 0; r < n; ++r)
+    for (const Meeting& a : concave[r])
+      for (const Meeting& b : convex[r]) {
+        const FaceSide &thin = sides.faces[a.wall], &thick = sides.faces[b.wall], &side = sides.faces[r];
+        if (thin.side == thick.side && side.width < kStepWalls * thin.thickness &&
+            thick.thickness > thin.thickness + 0.5 * side.width &&
+            normalAtEdge(cad, a.wall, a.edge).dot(normalAtEdge(cad, b.wall, b.edge)) > kStepCos)
+          steps.emplace_back(std::min(a.wall, b.wall), std::max(a.wall, b.wall));
+      }
+  std::sort(steps.begin(), steps.end());
+  steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+  return steps;
+}
 
 std::string sheetPlace(const CadSolid& cad, const Sheet& s) {
   std::ostringstream out;
@@ -103,6 +146,7 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
     if (isWall(j.a) && isWall(j.b)) uf.unite(j.a, j.b);
   for (int f = 0; f < n; ++f)
     if (isWall(f) && isWall(sides.faces[f].opposite)) uf.unite(f, sides.faces[f].opposite);
+  for (const auto& [a, b] : thicknessSteps(cad, sides)) uf.unite(a, b);
   std::map<int, std::vector<int>> byRoot;
   for (int f = 0; f < n; ++f)
     if (isWall(f)) byRoot[uf.find(f)].push_back(f);

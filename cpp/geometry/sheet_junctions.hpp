@@ -4,6 +4,7 @@
 // here from the CAD faces, before any node is placed, so that the user learns where it is.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
@@ -37,6 +38,13 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides);
 // divergence theorem over its faces from a point of its foot (exact for a plane foot). [in] cad, sides. Returns them
 // by decreasing area, `column` set.
 std::vector<Sheet> standingColumns(const CadSolid& cad, const WallSides& sides);
+
+// Thickness steps: a lateral face meeting a wall face A in a concave edge and a wall face B in a convex one, A and B
+// on the same side, facing the same way there (their normals at the edges' middles within 30 degrees), B's wall
+// thicker than A's by over half the face's width, the face no wider than A's wall: a thinner wall going on from a
+// thicker one, its faces stepping in (one or both) by at most its own thickness. [in] cad, sides. Returns the pairs
+// (A, B), A < B, sorted.
+std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides);
 
 // "(x, y, z)": the sheet's centre in the input's units (CadSolid::unit), for messages.
 std::string sheetPlace(const CadSolid& cad, const Sheet& s);

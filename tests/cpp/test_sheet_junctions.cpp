@@ -247,3 +247,52 @@ TEST(SheetJunctions, StepsHolesPocketsAndNubsAreNoColumns) {
   EXPECT_TRUE(standingColumns(cad, sides).empty());
   EXPECT_EQ(findSheets(cad, sides).size(), 1u);
 }
+
+namespace {
+
+// A 60 x 40 plate `thick` thick for x <= 30 (z 0 ... thick), `thin` thick beyond (z z0 ... z0 + thin), scaled by s.
+CadSolid steppedPlate(double thick, double z0, double thin, double s) {
+  TopoDS_Shape part = BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 30, 40, thick).Shape(),
+                                       BRepPrimAPI_MakeBox(gp_Pnt(30, 0, z0), 30, 40, thin).Shape())
+                          .Shape();
+  gp_Trsf scaling;
+  scaling.SetScale(gp_Pnt(0, 0, 0), s);
+  return solidOf(BRepBuilderAPI_Transform(part, scaling, true).Shape());
+}
+
+}  // namespace
+
+// A plate 3 thick going on 1.5 thick past a step in both faces (0.75 each, or 0.5 and 1.0) is one sheet: the thin
+// wall's faces meet the thick wall's rim face in concave edges, which made them a sheet standing on a rim. A step
+// higher than the thin wall (a plate 6 thick going on 1.5 thick) is no thickness step: two sheets, as before. At
+// scales 1e-3, 1, 1e3.
+TEST(SheetJunctions, AThinnerWallPastAStepInBothFacesIsTheSameSheet) {
+  for (const double s : {1e-3, 1.0, 1e3})
+    for (const double z0 : {0.75, 0.5}) {
+      const CadSolid cad = steppedPlate(3, z0, 1.5, s);
+      const WallSides sides = classifyWallSides(cad);
+      EXPECT_EQ(thicknessSteps(cad, sides).size(), 2u) << s << " " << z0 << ": one per face";
+      const std::vector<Sheet> sheets = findSheets(cad, sides);
+      ASSERT_EQ(sheets.size(), 1u) << s << " " << z0;
+      EXPECT_EQ(sheets[0].faces.size(), 4u) << "the thick and the thin top and bottom";
+    }
+  for (const double s : {1e-3, 1.0, 1e3}) {
+    const CadSolid cad = steppedPlate(6, 2.25, 1.5, s);
+    const WallSides sides = classifyWallSides(cad);
+    EXPECT_TRUE(thicknessSteps(cad, sides).empty()) << s;
+    EXPECT_EQ(findSheets(cad, sides).size(), 2u) << s;
+  }
+}
+
+// A boss with gussets: a gusset's top meets the gusset's side in a convex edge and the boss's round side in a concave
+// one, but they face different ways there (and are as thick): no step, the gussets stay sheets of their own.
+TEST(SheetJunctions, AGussetOnABossIsNoThicknessStep) {
+  const gp_Ax2 axis(gp_Pnt(30, 20, 1), gp_Dir(0, 0, 1));
+  TopoDS_Shape part = BRepAlgoAPI_Fuse(plate(), BRepPrimAPI_MakeCylinder(axis, 4, 11).Shape()).Shape();
+  part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(29, 22, 1), 2, 10, 7).Shape()).Shape();
+  part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, 2), gp_Dir(0, 0, 1)), 2, 12)).Shape();
+  const CadSolid cad = solidOf(part);
+  const WallSides sides = classifyWallSides(cad);
+  EXPECT_TRUE(thicknessSteps(cad, sides).empty());
+  EXPECT_EQ(findSheets(cad, sides).size(), 3u) << "the plate, the boss, the gusset";
+}

@@ -15,6 +15,7 @@ import tempfile
 import unittest
 
 import harness
+from sample_mesh import MeshTest
 
 CLEAR = "\r\033[K"
 
@@ -32,15 +33,7 @@ class Version(unittest.TestCase):
         self.assertEqual(done.stdout.strip(), "hexlayer " + version)
 
 
-class Progress(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.tmp = tempfile.TemporaryDirectory()
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.tmp.cleanup()
-
+class Progress(MeshTest):
     def command(self, name, *extra):
         out = os.path.join(self.tmp.name, name + ".inp")
         report = os.path.join(self.tmp.name, name + ".json")

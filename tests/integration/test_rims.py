@@ -22,17 +22,14 @@ Run by CTest as: /usr/bin/python3 test_rims.py --hexlayer PATH --source DIR
 """
 import math
 import os
-import subprocess
 import sys
-import tempfile
-import unittest
 
 import harness
 from cad import face_distances, opened, surface_euler_characteristic
-from inp import hex_arrays, read_inp
+from sample_mesh import MeshTest, check_hexes, mesh_sample
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from hex_geometry import boundary_euler_characteristic, hex_scaled_jacobians, hex_volumes  # noqa: E402
+from hex_geometry import boundary_euler_characteristic  # noqa: E402
 
 
 # Quality met by every part (scaled Jacobian, every hex): min >= 0.3, avg >= 0.95. The near-full-round plate, whose
@@ -59,45 +56,19 @@ EXACT_VOLUME = {"strip_skin_wrap": (40 * 2 + math.pi * 2 ** 2 / 8) * 20}
 LAYERS = (2, 3)
 
 
-def mesh(part, layers, tmp):
-    step = os.path.join(harness.args.source, "Resources", "samples", "rims", part + ".step")
-    out = os.path.join(tmp, f"{part}_{layers}.inp")
-    done = subprocess.run([harness.args.hexlayer, "mesh", step, "-o", out, "--layers", str(layers), "--quiet"],
-                          capture_output=True, text=True, timeout=600)
-    if done.returncode != 0:
-        raise AssertionError(f"{part}, {layers} layers: exit {done.returncode}: {done.stderr[-2000:]}")
-    return step, read_inp(out)
-
-
-class Rims(unittest.TestCase):
+class Rims(MeshTest):
     @classmethod
     def setUpClass(cls):
-        cls.tmp = tempfile.TemporaryDirectory()
-        cls.meshes = {(part, layers): mesh(part, layers, cls.tmp.name) for part in PARTS for layers in LAYERS}
+        super().setUpClass()
+        cls.meshes = {(part, layers): mesh_sample("rims", part, layers, cls.tmp.name) for part in PARTS
+                      for layers in LAYERS}
         cls.euler = {}
 
-    @classmethod
-    def tearDownClass(cls):
-        cls.tmp.cleanup()
-
     def check(self, part, layers):
-        step, (nodes, elements, sets) = self.meshes[(part, layers)]
-        self.assertTrue(elements)
-        self.assertTrue(all(len(e) == 8 for _, e in elements), "every element an 8-node hex")
-        x, hexes, index = hex_arrays(nodes, elements)
-        volumes = hex_volumes(x, hexes)
-        sj = hex_scaled_jacobians(x, hexes)
-        self.assertGreater(volumes.min(), 0)
-        lo_min, lo_avg = QUALITY.get(part, (0.3, 0.95))
-        self.assertGreaterEqual(sj.min(), lo_min)
-        self.assertGreaterEqual(sj.mean(), lo_avg)
+        step, x, hexes, index, sets = self.meshes[(part, layers)]
         with opened(step) as gmsh:  # the CAD as Gmsh's OpenCASCADE reads it, not as hexlayer does
-            cad_volume = EXACT_VOLUME.get(part, sum(gmsh.model.occ.getMass(3, t) for _, t in gmsh.model.getEntities(3)))
-            error = (volumes.sum() - cad_volume) / cad_volume
-            allowed = 0.01
-            self.assertLessEqual(abs(error), allowed, f"volume {100 * error:+.2f} %, allowed {100 * allowed:.2f} %")
-            print(f"{part}, {layers} layers: {len(hexes)} hexes, SJ min {sj.min():.3f} avg {sj.mean():.3f}, volume "
-                  f"{100 * error:+.2f} % (allowed {100 * allowed:.2f} %)")
+            check_hexes(self, gmsh, x, hexes, QUALITY.get(part, (0.3, 0.95)), 0.01, f"{part}, {layers} layers",
+                        EXACT_VOLUME.get(part))
             self.check_boundary(gmsh, x, index, sets, mixed=part in MIXED)
         self.assertEqual(boundary_euler_characteristic(hexes), self.cad_euler(part, step), "the part's topology")
 
@@ -118,10 +89,7 @@ class Rims(unittest.TestCase):
         self.assertEqual(rim - on_rim_faces, set(), "rim nodes not on a rim face")
 
     def test_every_rim_kind(self):
-        for part in PARTS:
-            for layers in LAYERS:
-                with self.subTest(part=part, layers=layers):
-                    self.check(part, layers)
+        self.check_each(PARTS, LAYERS)
 
 
 if __name__ == "__main__":
