@@ -15,6 +15,7 @@
 #include <BRep_Tool.hxx>
 #include <BinTools.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
 #include <Geom_Plane.hxx>
 #include <Geom_Surface.hxx>
@@ -244,15 +245,28 @@ CadSolid prepareSolid(const TopoDS_Solid& input, double unit) {
   storePlanarCurves(cad.faces);
   TopExp::MapShapes(cad.solid, TopAbs_EDGE, cad.edges);
   TopExp::MapShapes(cad.solid, TopAbs_VERTEX, cad.vertices);
-  GProp_GProps props;  // adaptive, to a relative error of kVolumeTolerance: the default rule is 1 % off on B-splines
-  BRepGProp::VolumePropertiesGK(cad.solid, props, kVolumeTolerance, false, true);
-  cad.volume = props.Mass();
+  cad.volume = volumeOf(cad.solid, kVolumeTolerance).first;
   if (!(cad.volume > 0)) throw inputError("the solid has no positive volume (inside out or empty)");
   Bnd_Box box;
   BRepBndLib::Add(cad.solid, box);
   cad.diagonal = std::sqrt(box.SquareExtent());
   triangulateFaces(cad.solid, 0.002 * cad.diagonal);  // for sampling the faces (thickness rays, bubble candidates)
   return cad;
+}
+
+Vec3 normalAtEdge(const TopoDS_Face& face, const TopoDS_Edge& edge) {
+  double first = 0, last = 0;
+  const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+  if (pcurve.IsNull()) return Vec3::Zero();
+  const gp_Pnt2d uv = pcurve->Value(0.5 * (first + last));
+  return outwardNormal(face, uv.X(), uv.Y());
+}
+
+std::pair<double, Vec3> volumeOf(const TopoDS_Shape& solid, double relativeError) {
+  GProp_GProps props;
+  BRepGProp::VolumePropertiesGK(solid, props, relativeError, false, true);
+  const gp_Pnt c = props.CentreOfMass();
+  return {props.Mass(), Vec3(c.X(), c.Y(), c.Z())};
 }
 
 void triangulateFaces(const TopoDS_Shape& shape, double deflection) {

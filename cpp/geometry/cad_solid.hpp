@@ -2,6 +2,7 @@
 #pragma once
 #include <Bnd_Box.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
 #include <gp_Cylinder.hxx>
@@ -10,6 +11,7 @@
 #include <gp_Pnt2d.hxx>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
@@ -86,6 +88,14 @@ inline Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // Unit outward normal of face `f` at parameter (u, v), respecting the face orientation.
 Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v);
+
+// The outward normal of `face` at the middle of its edge `edge` (zero if the edge has no curve on the face).
+// [in] face, edge.
+Vec3 normalAtEdge(const TopoDS_Face& face, const TopoDS_Edge& edge);
+
+// The solid's volume and centre of mass (adaptive Gauss-Kronrod, to `relativeError`: OpenCASCADE's default rule is 1 %
+// off on B-spline faces). [in] solid, relativeError.
+std::pair<double, Vec3> volumeOf(const TopoDS_Shape& solid, double relativeError = 1e-7);
 
 // The face's plane: its surface's if a plane, or the plane a B-spline (or other) surface lies on within tolerance
 // (CAD systems and scaling write planes as B-splines); none if it is curved. [in] face, tolerance.

@@ -533,15 +533,6 @@ bool crossedInSegments(const std::set<int>& crossers, const std::vector<std::vec
   return false;
 }
 
-// The outward normal of `face` at the middle of its edge `edge`. [in] face, edge.
-Vec3 normalAtEdge(const TopoDS_Face& face, const TopoDS_Edge& edge) {
-  double first = 0, last = 0;
-  const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-  if (pcurve.IsNull()) return Vec3::Zero();
-  const gp_Pnt2d uv = pcurve->Value(0.5 * (first + last));
-  return outwardNormal(face, uv.X(), uv.Y());
-}
-
 // Whether sheet s meets sheet b's walls in concave edges with both of its own walls (two of its faces there face
 // opposite ways): s's thickness ends on b's wall, so s stands on b (a rib's end on another rib's side), whichever
 // is larger. [in] normals: per (s, b), the outward normals of s's wall faces at its concave edges with b's walls.
@@ -641,11 +632,45 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
   return standingOrder(cad, sides, concave, std::move(merged));
 }
 
+// Each sheet's pieces among the solids of the cut: the solid holding (the image of) its first wall face is its piece,
+// cut.pieces[s]; a solid holding no earlier sheet's wall face but an image of one of s's is a further piece of s
+// (appended). Throws geometryError if a solid is no sheet's or a sheet has no solid. [in] cad, sheets, split, solids;
+// [out] cut: pieces, sheetOf.
+void piecesOfSheets(const CadSolid& cad, const std::vector<Sheet>& sheets, BRepAlgoAPI_Splitter& split,
+                    const std::vector<TopoDS_Solid>& solids, JunctionCut& cut) {
+  std::vector<TopTools_IndexedMapOfShape> faces(solids.size());
+  for (std::size_t k = 0; k < solids.size(); ++k) TopExp::MapShapes(solids[k], TopAbs_FACE, faces[k]);
+  auto holding = [&](const TopoDS_Shape& face) {
+    for (std::size_t k = 0; k < solids.size(); ++k)
+      if (faces[k].Contains(face)) return static_cast<int>(k);
+    return -1;
+  };
+  std::vector<int> owner(solids.size(), -1);
+  for (std::size_t s = 0; s < sheets.size(); ++s) {
+    const int first = holding(imagesOf(split, cad.faces(sheets[s].faces.front() + 1)).front());
+    if (first < 0 || owner[first] >= 0)
+      throw geometryError("T-junction: no piece holds the sheet at " + sheetPlace(cad, sheets[s]) + " after the cut");
+    owner[first] = static_cast<int>(s);
+    cut.pieces.push_back(solids[first]), cut.sheetOf.push_back(static_cast<int>(s));
+  }
+  for (std::size_t s = 1; s < sheets.size(); ++s)
+    for (int f : sheets[s].faces)
+      for (const TopoDS_Shape& image : imagesOf(split, cad.faces(f + 1)))
+        if (const int k = holding(image); k >= 0 && owner[k] < 0) {
+          owner[k] = static_cast<int>(s);
+          cut.pieces.push_back(solids[k]), cut.sheetOf.push_back(static_cast<int>(s));
+        }
+  if (cut.pieces.size() != solids.size())
+    throw geometryError("T-junction: cutting the sheets off the one they stand on gave " +
+                        std::to_string(solids.size()) + " pieces for " + std::to_string(sheets.size()) + " sheets, " +
+                        std::to_string(solids.size() - cut.pieces.size()) + " of them no sheet's");
+}
+
 JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
   if (sheets.size() < 2) {  // one piece: the solid, each face its own origin
     std::vector<int> same(cad.faces.Extent());
     std::iota(same.begin(), same.end(), 0);
-    return {{cad.solid}, {}, {same}};
+    return {{cad.solid}, {0}, {}, {same}};
   }
   const Junctions junctions{cad, sides, sheets, sheetOfFaces(cad, sides, sheets), concaveEdges(cad), facesOfEdges(cad)};
   JunctionCut cut;
@@ -662,33 +687,17 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
   std::vector<TopoDS_Solid> solids;
   for (TopExp_Explorer it(split.Shape(), TopAbs_SOLID); it.More(); it.Next())
     solids.push_back(TopoDS::Solid(it.Current()));
-  if (solids.size() != sheets.size())
-    throw geometryError("T-junction: cutting the sheets off the one they stand on gave " +
-                        std::to_string(solids.size()) + " pieces for " + std::to_string(sheets.size()) + " sheets");
-  // Each sheet's piece: the solid holding (the image of) its first wall face.
-  for (const Sheet& s : sheets) {
-    const TopoDS_Shape wall = imagesOf(split, cad.faces(s.faces.front() + 1)).front();
-    for (const TopoDS_Solid& solid : solids) {
-      TopTools_IndexedMapOfShape faces;
-      TopExp::MapShapes(solid, TopAbs_FACE, faces);
-      if (faces.Contains(wall)) {
-        cut.pieces.push_back(solid);
-        break;
-      }
-    }
-    if (cut.pieces.size() != static_cast<std::size_t>(&s - sheets.data() + 1))
-      throw geometryError("T-junction: no piece holds the sheet at " + sheetPlace(cad, s) + " after the cut");
-  }
-  // The feet as they are in the pieces: the pieces of each cutting face that the base's piece shares with its
-  // sheet's piece (a foot across a bore keeps the ring round it).
+  piecesOfSheets(cad, sheets, split, solids, cut);
+  // The feet as they are in the pieces: the pieces of each cutting face that the base's piece shares with a piece of
+  // its sheet (a foot across a bore keeps the ring round it).
+  std::vector<TopTools_IndexedMapOfShape> pieceFaces(cut.pieces.size());
+  for (std::size_t p = 0; p < cut.pieces.size(); ++p) TopExp::MapShapes(cut.pieces[p], TopAbs_FACE, pieceFaces[p]);
   for (const Foot& f : cutters) {
-    TopTools_IndexedMapOfShape baseFaces, pieceFaces;
-    TopExp::MapShapes(cut.pieces[f.base], TopAbs_FACE, baseFaces);
-    TopExp::MapShapes(cut.pieces[f.sheet], TopAbs_FACE, pieceFaces);
     for (const TopoDS_Shape& image : imagesOf(split, f.face))
-      if (baseFaces.Contains(image) && pieceFaces.Contains(image))
-        cut.feet.push_back({f.sheet, f.base, f.baseFace, TopoDS::Face(image), areaOf(image)});
-    if (cut.feet.empty() || cut.feet.back().sheet != f.sheet)
+      for (std::size_t p = 0; p < cut.pieces.size(); ++p)
+        if (cut.sheetOf[p] == f.sheet && pieceFaces[f.base].Contains(image) && pieceFaces[p].Contains(image))
+          cut.feet.push_back({static_cast<int>(p), f.base, f.baseFace, TopoDS::Face(image), areaOf(image)});
+    if (cut.feet.empty() || cut.sheetOf[cut.feet.back().sheet] != f.sheet)  // none yet: a cutter may leave none
       throw geometryError("T-junction: the foot of the sheet at " + sheetPlace(cad, sheets[f.sheet]) +
                           " is not a face of both pieces after the cut");
   }

@@ -25,8 +25,11 @@ struct Foot {
 };
 
 struct JunctionCut {
-  std::vector<TopoDS_Solid> pieces;  // per sheet given, in their order: pieces[0] is the base
-  std::vector<Foot> feet;
+  // Per sheet given, in their order, its piece (pieces[0] is the base); then the further pieces of sheets the cut
+  // parts (a boss through the plate: above and below it), each standing on the sheet its feet lie on.
+  std::vector<TopoDS_Solid> pieces;
+  std::vector<int> sheetOf;  // per piece, the sheet it is (a piece of)
+  std::vector<Foot> feet;    // Foot::sheet: the piece standing on it
   // Per piece, per face of the piece (TopExp::MapShapes order, FreeCAD's numbering), the 0-based face of the cut
   // solid it is or is a piece of; -1 for a foot (a face no CAD face gave).
   std::vector<std::vector<int>> faceOrigin;
@@ -41,7 +44,8 @@ struct JunctionCut {
 std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets);
 
 // [in] cad: the solid; [in] sides: its faces' sides (classifyWallSides); [in] sheets: findSheets's, the first
-// the base. Every other sheet is cut off along the base's wall faces it stands on (the concave edges between
+// the base. Every other sheet is cut off along the base's wall faces it stands on (a sheet through the base, on both
+// of its walls, in as many pieces as the cut makes of it) (the concave edges between
 // its faces, walls and their rim faces, and the base's walls bound its foot; a foot running to the wall's
 // edge is closed along it, on the wall's surface: plane, cylinder or any other).
 // Throws geometryError naming the sheet's place if no foot can be made, or the cut does not give one piece per

@@ -1,14 +1,12 @@
 #include "geometry/sheet_junctions.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
-#include <BRepAdaptor_Curve2d.hxx>
 #include <BRepBndLib.hxx>
 #include <BRep_Builder.hxx>
 #include <Bnd_OBB.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
-#include <gp_Pnt2d.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -81,14 +79,6 @@ Vec3 edgeMiddle(const TopoDS_Shape& edge) {
   return {p.X(), p.Y(), p.Z()};
 }
 
-// The outward normal of face f at the middle of its edge e (0-based). [in] cad, f, e.
-Vec3 normalAtEdge(const CadSolid& cad, int f, int e) {
-  const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
-  const BRepAdaptor_Curve2d curve(TopoDS::Edge(cad.edges(e + 1)), face);
-  const gp_Pnt2d uv = curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter()));
-  return outwardNormal(face, uv.X(), uv.Y());
-}
-
 }  // namespace
 
 std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides) {
@@ -96,6 +86,9 @@ std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallS
   auto isWall = [&](int f) { return sides.faces[f].side != Side::Lateral; };
   struct Meeting {
     int wall = -1, edge = -1;
+  };
+  auto normal = [&](const Meeting& m) {  // the wall's outward normal at the middle of the edge
+    return normalAtEdge(TopoDS::Face(cad.faces(m.wall + 1)), TopoDS::Edge(cad.edges(m.edge + 1)));
   };
   std::vector<std::vector<Meeting>> concave(n), convex(n);  // per lateral face, the walls it meets so, and where
   std::set<int> concaveEdge;
@@ -110,8 +103,7 @@ std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallS
       for (const Meeting& b : convex[r]) {
         const FaceSide &thin = sides.faces[a.wall], &thick = sides.faces[b.wall], &side = sides.faces[r];
         if (thin.side == thick.side && side.width < kStepWalls * thin.thickness &&
-            thick.thickness > thin.thickness + 0.5 * side.width &&
-            normalAtEdge(cad, a.wall, a.edge).dot(normalAtEdge(cad, b.wall, b.edge)) > kStepCos)
+            thick.thickness > thin.thickness + 0.5 * side.width && normal(a).dot(normal(b)) > kStepCos)
           steps.emplace_back(std::min(a.wall, b.wall), std::max(a.wall, b.wall));
       }
   std::sort(steps.begin(), steps.end());

@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "core/error.hpp"
 
@@ -43,6 +44,27 @@ void shareMidEdgeNodes(const HexMesh& sheet, const HexMesh& walls, std::vector<i
     }
 }
 
+// The mean of the points.
+Vec3 middleOf(const std::vector<Vec3>& points) {
+  Vec3 sum = Vec3::Zero();
+  for (const Vec3& p : points) sum += p;
+  return sum / static_cast<double>(std::max<std::size_t>(points.size(), 1));
+}
+
+// Moves the nodes flagged `moved` by `move`, and at order 2 every mid-edge node at a moved node that is not a wall's
+// (shared) nor moved itself by the mean of its edge's ends' moves. [in,out] mesh; [in,out] move, moved: per node;
+// [in] shared: per node, its walls' node or -1 (footNodesShared's; empty: none).
+void moveNodes(HexMesh& mesh, std::vector<Vec3>& move, std::vector<char>& moved, const std::vector<int>& shared) {
+  if (mesh.quadratic())
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+      for (std::size_t e = 0; e < kHexEdges.size(); ++e) {
+        const int a = mesh.hexes[h][kHexEdges[e][0]], b = mesh.hexes[h][kHexEdges[e][1]], mid = mesh.midEdges[h][e];
+        if ((moved[a] || moved[b]) && (shared.empty() || shared[mid] < 0) && !moved[mid])
+          move[mid] = 0.5 * (move[a] + move[b]), moved[mid] = 1;
+      }
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n) mesh.nodes[n] += move[n];
+}
+
 }  // namespace
 
 FootSurface::FootSurface(const TopoDS_Face& foot, double tolerance) : tolerance_(tolerance) {
@@ -64,6 +86,12 @@ bool FootSurface::holds(const Vec3& p) {
   if (plane_) return std::abs(p.dot(plane_->first) - plane_->second) <= tolerance_;
   surface_->ValueOfUV(at, tolerance_);
   return surface_->Gap() <= tolerance_;
+}
+
+Vec3 FootSurface::project(const Vec3& p) {
+  if (plane_) return p - (p.dot(plane_->first) - plane_->second) * plane_->first;
+  const gp_Pnt at = surface_->Value(surface_->ValueOfUV(gp_Pnt(p.x(), p.y(), p.z()), tolerance_));
+  return {at.X(), at.Y(), at.Z()};
 }
 
 std::vector<FootSurface> footSurfaces(const JunctionCut& cut, int sheet, int base, double tolerance) {
@@ -97,6 +125,10 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSu
     if (added) foot.wallNode.push_back(n), foot.footprint.nodes.push_back(wall.nodes[n]);
     return it->second;
   };
+  for (int q = 0; q < static_cast<int>(quads.nodes.size()); ++q)
+    if (std::any_of(on.begin(), on.end(), [&](const std::vector<char>& f) { return f[q] != 0; })) {
+      foot.footColumns.emplace_back(wall.nodes.begin() + q * stride, wall.nodes.begin() + (q + 1) * stride);
+    }
   std::vector<int> footEdges(quads.nodes.size(), 0);
   for (int a = 0; a < static_cast<int>(quads.nodes.size()); ++a)
     for (int b : rim[a]) {
@@ -109,6 +141,72 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSu
   if (foot.footprint.quads.empty()) throw geometryError("junction: a standing wall has no quads along its foot");
   foot.ring = std::none_of(footEdges.begin(), footEdges.end(), [](int e) { return e == 1; });
   return foot;
+}
+
+constexpr double kAcross = 1e-3;  // of the reach: rim nodes this near their columns across are left there
+
+std::size_t alignFootAcross(QuadMesh& quads, std::vector<FootSurface>& feet, const FootColumns& across, double unit,
+                            double reach) {
+  std::vector<Vec3> targets;  // the columns across, their middles projected onto the foot they face
+  for (const std::vector<Vec3>& column : across)
+    for (FootSurface& f : feet)
+      if (const Vec3 p = f.project(middleOf(column)); f.holds(p)) {
+        targets.push_back(p);
+        break;
+      }
+  const std::vector<std::vector<int>> rim = rimEdgeNeighbours(quads);
+  std::vector<std::tuple<double, int, int>> pairs;  // (distance, rim node, target) within reach
+  std::size_t onFoot = 0;
+  for (int q = 0; q < static_cast<int>(quads.nodes.size()); ++q) {
+    const Vec3 p = quads.nodes[q] / unit;
+    if (rim[q].empty() || std::none_of(feet.begin(), feet.end(), [&](FootSurface& f) { return f.holds(p); })) continue;
+    ++onFoot;
+    for (int t = 0; t < static_cast<int>(targets.size()); ++t)
+      if (const double d = (targets[t] - p).norm(); d <= reach) pairs.emplace_back(d, q, t);
+  }
+  if (onFoot != targets.size() || targets.empty()) return 0;
+  std::sort(pairs.begin(), pairs.end());  // the nearest pairs first, each node and target in one
+  std::vector<int> taken(targets.size(), -1);
+  std::set<int> placed;
+  double farthest = 0;
+  for (const auto& [d, q, t] : pairs)
+    if (taken[t] < 0 && !placed.count(q)) taken[t] = q, placed.insert(q), farthest = d;
+  if (placed.size() != targets.size() || farthest <= kAcross * reach) return 0;  // not one to one, or across already
+  for (std::size_t t = 0; t < targets.size(); ++t) quads.nodes[taken[t]] = targets[t] * unit;
+  return targets.size();
+}
+
+std::size_t snapFootColumnsAcross(HexMesh& piece, const QuadMesh& quads, std::vector<FootSurface>& feet,
+                                  const FootColumns& across, double unit, double reach) {
+  const int m = piece.layers, stride = m + 1;
+  const std::vector<std::vector<int>> rim = rimEdgeNeighbours(quads);
+  std::vector<Vec3> move(piece.nodes.size(), Vec3::Zero());
+  std::vector<char> moved(piece.nodes.size(), 0);
+  std::size_t columns = 0;
+  for (int q = 0; q < static_cast<int>(quads.nodes.size()) && (q + 1) * stride <= static_cast<int>(piece.nodes.size());
+       ++q) {
+    if (rim[q].empty()) continue;
+    std::vector<Vec3> own(piece.nodes.begin() + q * stride, piece.nodes.begin() + (q + 1) * stride);
+    for (Vec3& p : own) p /= unit;
+    for (FootSurface& f : feet) {
+      if (!std::all_of(own.begin(), own.end(), [&](const Vec3& p) { return f.holds(p); })) continue;
+      const Vec3 middle = middleOf(own);
+      const std::vector<Vec3>* best = nullptr;
+      for (const std::vector<Vec3>& column : across)
+        if (column.size() == own.size() && (f.project(middleOf(column)) - middle).norm() <= reach &&
+            (!best || (f.project(middleOf(column)) - middle).norm() < (f.project(middleOf(*best)) - middle).norm()))
+          best = &column;
+      if (!best) break;
+      const bool reversed =
+          (f.project(best->front()) - own.front()).norm() > (f.project(best->back()) - own.front()).norm();
+      for (int k = 0; k <= m; ++k)
+        move[q * stride + k] = unit * (f.project((*best)[reversed ? m - k : k]) - own[k]), moved[q * stride + k] = 1;
+      ++columns;
+      break;
+    }
+  }
+  moveNodes(piece, move, moved, {});
+  return columns;
 }
 
 WallFoot columnFoot(const HexMesh& column, const QuadMesh& quads) {
@@ -145,7 +243,8 @@ std::vector<int> footNodesShared(const HexMesh& sheet, const std::vector<int>& c
 
 namespace {
 
-// At order 2, every edge at a moved node whose mid-edge node is not a wall's gets it at its middle. [in,out] sheet;
+// At order 2, every edge at a moved node whose mid-edge node is not a wall's gets it at its middle (evenFootColumns).
+// [in,out] sheet;
 // [in] moved: per node; [in] shared: footNodesShared's.
 void midEdgesAtMiddle(HexMesh& sheet, const std::vector<char>& moved, const std::vector<int>& shared) {
   if (!sheet.quadratic()) return;
@@ -190,16 +289,19 @@ void leanCrossedColumns(HexMesh& sheet, const QuadMesh& quads, const std::vector
     std::sort(grown.begin(), grown.end());
     front = std::move(grown);
   }
+  // Each node of a leaning column moves by its ends' offsets interpolated along it (a straight, even column stays
+  // one; a rim column on a round rim, on it, where its ends barely move); at order 2 a mid-edge node by the mean of its
+  // edge's ends' moves.
+  std::vector<Vec3> move(sheet.nodes.size(), Vec3::Zero());
   std::vector<char> moved(sheet.nodes.size(), 0);
   for (int c = 0; c < columns; ++c) {
     if (ring[c] < 0) continue;
     const double w = 1.0 - static_cast<double>(ring[c]) / (kLeanRings + 1);
-    const int a = c * stride, b = a + m;
-    const Vec3 from = sheet.nodes[a] + w * offset[source[c]].first, to = sheet.nodes[b] + w * offset[source[c]].second;
-    for (int k = 0; k <= m; ++k)
-      sheet.nodes[a + k] = from + (to - from) * (static_cast<double>(k) / m), moved[a + k] = 1;
+    const auto& [low, high] = offset[source[c]];
+    for (int k = 0, a = c * stride; k <= m; ++k)
+      move[a + k] = w * (low + (high - low) * (static_cast<double>(k) / m)), moved[a + k] = 1;
   }
-  midEdgesAtMiddle(sheet, moved, shared);
+  moveNodes(sheet, move, moved, shared);
 }
 
 void evenFootColumns(HexMesh& sheet, int columns, const std::vector<int>& shared, const HexMesh& walls) {

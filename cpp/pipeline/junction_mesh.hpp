@@ -25,6 +25,8 @@ class FootSurface {
   FootSurface(const TopoDS_Face& foot, double tolerance);
   // Whether p lies on the foot's surface, within the foot's box.
   bool holds(const Vec3& p);
+  // The point of the foot's surface nearest to p (on a plane: along its normal).
+  Vec3 project(const Vec3& p);
 
  private:
   double tolerance_;
@@ -43,7 +45,30 @@ struct WallFoot {
   std::vector<int> wallNode;  // per footprint node, the wall's hex node it is
   bool ring = false;          // every foot closed on itself (a boss)
   bool column = false;        // the foot filled: a column's (column_piece.hpp)
+  std::vector<std::vector<Vec3>> footColumns;  // a wall's sweep columns on the foot, each its nodes (not a column's)
 };
+
+// A standing piece whose foot lies across the sheet from the foot of a piece meshed before it (a boss through the
+// plate, standing on both of its walls at one place): its quads' rim nodes on the foot are put across from that
+// foot's sweep columns (their middles projected onto this foot), so that the two feet are one another's node for node
+// and the sheet carries them as one footprint (footprint_insert.hpp's mergeFeetOnBothSides). Only where the rim nodes
+// on the foot and the columns across it pair off one to one, each nearest to its own and within `reach`; else the
+// quads stay. [in,out] quads: the piece's, its nodes `unit` times the feet's units; [in,out] feet: the piece's own;
+// [in] across: the other feet's sweep columns (WallFoot::footColumns, the feet's units); [in] unit; [in] reach: in
+// the feet's units. Returns how many rim nodes were put across (0: none).
+using FootColumns = std::vector<std::vector<Vec3>>;
+std::size_t alignFootAcross(QuadMesh& quads, std::vector<FootSurface>& feet, const FootColumns& across, double unit,
+                            double reach);
+
+// After the sweep, the piece's sweep columns on its feet that alignFootAcross put across from another foot's columns
+// get their nodes across from those (each node projected onto the foot, the nearer end to the nearer end): the
+// sweep's columns from two chordal nodes across from one another lean apart by their normals (a few degrees on a
+// boss's coarse ring), which left the sheet's columns between them off a round bore. At order 2 a mid-edge node at a
+// moved node moves by the mean of its edge's ends' moves. [in,out] piece: its hexes, `unit` times the feet's units;
+// [in] quads: it was swept from; [in,out] feet; [in] across; [in] unit; [in] reach: how far (the feet's units) a
+// column's middle may be from the one across's projection. Returns how many columns moved.
+std::size_t snapFootColumnsAcross(HexMesh& piece, const QuadMesh& quads, std::vector<FootSurface>& feet,
+                                  const FootColumns& across, double unit, double reach);
 
 // [in] wall: hexes swept from `quads` (sweep.hpp's layout: quad node q's sweep column is the hex nodes q (m + 1) + k,
 // k = 0..m); [in] quads; [in,out] feet: the surfaces of the wall's feet (footSurfaces).
@@ -66,14 +91,15 @@ std::vector<int> footNodesShared(const HexMesh& sheet, const std::vector<int>& c
                                  const std::vector<int>& wallNode, double tolerance);
 
 // Ribs crossing a sheet (feet on both its walls at one place, footprint_insert.hpp's mergeFeetOnBothSides): the
-// sheet's sweep columns whose two ends are walls' foot nodes run straight between those, their inner nodes evenly on
-// the segment. Where the ribs cross obliquely the two feet are offset along the sheet, so those columns lean; the
-// columns within kLeanRings rings of quads round them lean less and less (each end moved by the nearest crossed
-// column's end offset times 1 - ring / (kLeanRings + 1)), so that no hex between a leaning column and an upright one
-// folds. Columns ending on one wall's foot stay, and rim columns but those next along the rim to a leaning rim
-// column (a crossing at the sheet's rim: its offset lies along the rim). At order 2 every edge at a moved node whose
-// mid-edge node is not a wall's gets it at its middle. [in,out] sheet: its columns as sweep.hpp lays them; [in] quads:
-// it is swept from; [in] shared: footNodesShared's; [in] walls.
+// sheet's sweep columns whose two ends are walls' foot nodes end on those, each inner node moved by the ends' moves
+// interpolated along the column (a straight, even column stays one; a rim column on a bore through a boss on both
+// walls stays on the bore). Where the ribs cross obliquely the two feet are offset along the sheet, so those columns
+// lean; the columns within kLeanRings rings of quads round them lean less and less (each end moved by the nearest
+// crossed column's end offset times 1 - ring / (kLeanRings + 1)), so that no hex between a leaning column and an
+// upright one folds. Columns ending on one wall's foot stay, and rim columns but those next along the rim to a leaning
+// rim column (a crossing at the sheet's rim: its offset lies along the rim). At order 2 every edge at a moved node
+// whose mid-edge node is not a wall's moves it by the mean of its ends' moves. [in,out] sheet: its columns as sweep.hpp
+// lays them; [in] quads: it is swept from; [in] shared: footNodesShared's; [in] walls.
 void leanCrossedColumns(HexMesh& sheet, const QuadMesh& quads, const std::vector<int>& shared, const HexMesh& walls);
 
 // Sweep columns ending on one wall's foot whose inner nodes lie off their even places between the column's ends (the

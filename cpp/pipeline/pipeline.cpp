@@ -176,6 +176,19 @@ JunctionRecord junctionRecord(const CadSolid& cad, const Sheet& s) {
   return j;
 }
 
+// The record of piece w: its sheet's, or where the cut parted the sheet (a boss through the plate), the piece's centre
+// of mass and its share (by volume) of the sheet's area and volume. [in] cad, sheets, cut, w.
+JunctionRecord pieceRecord(const CadSolid& cad, const std::vector<Sheet>& sheets, const JunctionCut& cut, int w) {
+  JunctionRecord j = junctionRecord(cad, sheets[cut.sheetOf[w]]);
+  double all = 0;
+  for (std::size_t p = 0; p < cut.pieces.size(); ++p)
+    if (cut.sheetOf[p] == cut.sheetOf[w]) all += volumeOf(cut.pieces[p]).first;
+  if (const auto [volume, centre] = volumeOf(cut.pieces[w]); volume < all) {
+    j.at = centre, j.area *= volume / all, j.volume *= volume / all;
+  }
+  return j;
+}
+
 // Ribs, bosses and flanges standing on the sheet (T-junctions, where the chordal surface would be
 // non-manifold), found two ways: sheets that meet only along concave edges, and walls whose rays cross to
 // a wall on their own side. Refused, or left out with dropJunctions. [in,out] sides: the junctions' faces made
@@ -429,6 +442,9 @@ std::optional<MeshResult> meshColumn(const TopoDS_Solid& solid, const MeshOption
 }
 
 constexpr double kOnFoot = 1e-3;  // of a layer: a node this near a foot's plane lies on it
+// A wall's foot column this near (of a quad edge) to the projection of a column across the sheet is put across from it
+// (snapFootColumnsAcross): alignFootAcross put its chordal node there.
+constexpr double kAcrossReach = 0.25;
 
 // A part cut at its junctions (issue 18; junction_mesh.hpp), meshed piece by piece: every sheet after the sheets
 // standing on it (the cut's later, smaller sheets), its quads carrying their footprints, its hexes joined to theirs.
@@ -493,19 +509,32 @@ std::vector<FootprintQuads> columnFeetUnder(const JunctionPieces& t, int s) {
   return feet;
 }
 
+// The sweep columns on the feet of the walls meshed before piece s on the sheets it stands on (a wall across the sheet
+// from s's foot may be one: alignFootAcross).
+FootColumns wallFeetUnder(const JunctionPieces& t, int s) {
+  FootColumns columns;
+  for (const Foot& own : t.cut.feet)
+    if (own.sheet == s)
+      for (std::size_t other = s + 1; other < t.feet.size(); ++other)
+        if (const auto foot = t.feet[other].find(own.base); foot != t.feet[other].end() && !foot->second.column)
+          columns.insert(columns.end(), foot->second.footColumns.begin(), foot->second.footColumns.end());
+  return columns;
+}
+
 // A piece's hexes and whether they are a column's: a column found on the part (Sheet::column) is meshed as one (a low
 // pad alone would mesh as a flat sheet lying on its foot); another piece by the sheet method, its quads edited by
-// `carry`, or as a column where that method refuses a standing piece that carries no footprint (a pin: `not a thin
-// section`). [in] solid, o, cutFaces, columnSize, across: as meshColumn's; [in] foundColumn, standing, carries: the
-// piece's kind, whether it stands on another, whether others stand on it; [in,out] boxes. Throws the sheet method's
-// error.
+// `carry` and its hexes by `swept`, or as a column where that method refuses a standing piece that carries no footprint
+// (a pin: `not a thin section`). [in] solid, o, cutFaces, columnSize, across: as meshColumn's; [in] foundColumn,
+// standing, carries: the piece's kind, whether it stands on another, whether others stand on it; [in,out] boxes. Throws
+// the sheet method's error.
 std::pair<MeshResult, bool> pieceHexes(const TopoDS_Solid& solid, bool foundColumn, bool standing, bool carries,
-                                       const MeshOptions& o, const QuadEdit& carry, const std::vector<char>& cutFaces,
-                                       double columnSize, const std::vector<FootprintQuads>& across, FaceBoxes& boxes) {
+                                       const MeshOptions& o, const QuadEdit& carry, const HexEdit& swept,
+                                       const std::vector<char>& cutFaces, double columnSize,
+                                       const std::vector<FootprintQuads>& across, FaceBoxes& boxes) {
   std::exception_ptr sheetError;
   if (!foundColumn) {
     try {
-      return {meshSolid(solid, o, carry, cutFaces, &boxes), false};
+      return {meshSolid(solid, o, carry, cutFaces, &boxes, swept), false};
     } catch (const Error& e) {
       if (e.code() != ExitCode::UnsupportedGeometry || !standing || carries) throw;
       sheetError = std::current_exception();
@@ -538,8 +567,13 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
     if (f.sheet == s) ownFeet.emplace_back(f.face, tolerance);
   std::vector<char> cutFaces;  // the piece's feet, on the sheets it stands on or under those standing on it
   for (int origin : t.cut.faceOrigin[s]) cutFaces.push_back(origin < 0);
+  const FootColumns across = wallFeetUnder(t, s);
+  double aligned = 0;  // the reach alignFootAcross had (0: it put no rim node across)
   // the sheet's quads made to carry the footprints of the walls standing on it
   const QuadEdit carryFootprints = [&](const CadSolid& c, QuadStage& stage) {
+    if (const double reach = meanEdge(stage.quads) / c.unit;
+        alignFootAcross(stage.quads, ownFeet, across, c.unit, reach))
+      aligned = reach;
     std::vector<char> blocked;  // the footprints' quads
     if (!footprint.quads.empty()) {
       const ChordalLocator locator(stage.chordal);
@@ -568,8 +602,12 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
         },
         blocked);
   };
+  // its foot columns put across from those of a wall across the sheet (alignFootAcross put its rim nodes there)
+  const HexEdit snapAcross = [&](const CadSolid& c, const QuadStage& stage, HexMesh& mesh) {
+    if (aligned > 0) snapFootColumnsAcross(mesh, stage.quads, ownFeet, across, c.unit, kAcrossReach * aligned);
+  };
   auto [piece, isColumn] = pieceHexes(t.cut.pieces[s], t.columns[s] != 0, s > 0, !footprint.quads.empty(), o,
-                                      carryFootprints, cutFaces, columnSize, columnFeetUnder(t, s), boxes);
+                                      carryFootprints, snapAcross, cutFaces, columnSize, columnFeetUnder(t, s), boxes);
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty()) {
     const double reach = wallShare * piece.report.thickness + merged.shift;
@@ -600,7 +638,7 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   JunctionPieces t;
   t.cut = clock.run("junction_cut", [&] { return cutAtJunctions(cad, sides, sheets); });  // sheets: crossings merged
   t.reports.resize(t.cut.pieces.size()), t.feet.resize(t.cut.pieces.size()), t.crossed.assign(t.cut.pieces.size(), 0);
-  for (const Sheet& sheet : sheets) t.columns.push_back(sheet.column);
+  for (int s : t.cut.sheetOf) t.columns.push_back(sheets[s].column);
   // The sheet's node under a foot node is known by its column (the footprint's quad node); it is checked to be the
   // column's end nearer to the foot within half the wall's thickness (the sheet's rim and poor hexes are
   // smoothed after the sweep, and in a bend its chordal facets are coarser than the wall), then is the foot's node.
@@ -683,7 +721,7 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
   measureSolid(result, cad, sides, o, 0, clock);
   r.junctions.clear();
   for (std::size_t w = 1; w < t.feet.size(); ++w) {
-    JunctionRecord j = junctionRecord(cad, sheets[w]);
+    JunctionRecord j = pieceRecord(cad, sheets, t.cut, static_cast<int>(w));
     std::vector<int> foot;
     bool ring = true, column = true;
     for (const auto& [base, on] : t.feet[w])
@@ -815,7 +853,7 @@ void validateOptions(const MeshOptions& o) {
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given) { return meshSolid(solid, given, {}); }
 
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const QuadEdit& edit,
-                     const std::vector<char>& cutFaces, FaceBoxes* boxes) {
+                     const std::vector<char>& cutFaces, FaceBoxes* boxes, const HexEdit& hexEdit) {
   validateOptions(given);
   MeshResult result;
   MeshReport& r = result.report;
@@ -890,6 +928,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   r.rimCap = clock.run("rim_cap", [&] { return capRims(result.mesh, cad, sides, walls); });
   r.smoothing = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
   r.sharpEdges = clock.run("sharp_edges", [&] { return captureSharpEdges(result.mesh, cad, sides); });
+  if (hexEdit) hexEdit(cad, stage, result.mesh);
   if (o.order == 2) r.quadratic = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   result.surfaceGroups =
       clock.run("surface_groups", [&] { return groupByCadFace(result.mesh, cad, walls, r, /*group=*/!edit); });

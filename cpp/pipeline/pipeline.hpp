@@ -69,13 +69,17 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options);
 // [in] cad: the solid as the stages see it (scaled by cad.unit); [in,out] stage: its quads replaced.
 using QuadEdit = std::function<void(const CadSolid& cad, QuadStage& stage)>;
 
+// Edits the swept hexes before they are made order 2 (a piece's foot columns put across from another piece's foot).
+// [in] cad: as QuadEdit's; [in] stage: the quads swept; [in,out] mesh: the hexes, in cad's units.
+using HexEdit = std::function<void(const CadSolid& cad, const QuadStage& stage, HexMesh& mesh)>;
+
 // meshSolid for a piece of a part (junction_mesh.hpp): the quad stage's quads replaced by `edit` (none: as made, and
 // the boundary grouped as meshSolid's); with an edit, the boundary nodes are given CAD faces but not grouped (the
 // joined part is: MeshResult::surfaceGroups empty). [in] solid, options, edit; [in] cutFaces: per face of the solid
 // (TopExp::MapShapes' order), whether it is a cut through the part (a foot: CadSolid::cutInput); empty: none;
 // [in,out] boxes: the exact boxes of faces the piece shares with the part and the other pieces (CadFaces); null:
-// none.
+// none; [in] hexEdit: run on the hexes after the sweep's stages, before order 2 (none: nothing).
 MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& options, const QuadEdit& edit,
-                     const std::vector<char>& cutFaces = {}, FaceBoxes* boxes = nullptr);
+                     const std::vector<char>& cutFaces = {}, FaceBoxes* boxes = nullptr, const HexEdit& hexEdit = {});
 
 }  // namespace hexlayer

@@ -65,11 +65,8 @@ void expectFaceOrigins(const CadSolid& cad, const JunctionCut& cut) {
   for (int f = 0; f < cad.faces.Extent(); ++f) EXPECT_NEAR(area[f] / areaOf(cad.faces(f + 1)), 1, 1e-9) << "face " << f;
 }
 
-double volumeOf(const TopoDS_Shape& shape) {
-  GProp_GProps props;
-  BRepGProp::VolumePropertiesGK(shape, props, 1e-10, false, true);
-  return props.Mass();
-}
+// To a relative error of 1e-10.
+double exactVolume(const TopoDS_Shape& shape) { return volumeOf(shape, 1e-10).first; }
 
 // The part cut at its junctions: as many pieces as sheets (the base the largest), each one sheet with no
 // junction, their volumes the parts' (base box, then the ribs in order, times s^3), and feet of total area
@@ -85,7 +82,7 @@ void expectCut(const std::vector<Box>& parts, double footArea) {
     ASSERT_EQ(cut.pieces.size(), parts.size());
     const double unit3 = cad.unit * cad.unit * cad.unit, s3 = s * s * s;
     for (std::size_t p = 0; p < parts.size(); ++p) {
-      EXPECT_NEAR(volumeOf(cut.pieces[p]) / unit3 / s3 / parts[p].volume(), 1, 1e-9) << "piece " << p;
+      EXPECT_NEAR(exactVolume(cut.pieces[p]) / unit3 / s3 / parts[p].volume(), 1, 1e-9) << "piece " << p;
       if (sheets[p].column) continue;  // a post: no sheet, a column (column_piece.hpp)
       const CadSolid piece = prepareSolid(cut.pieces[p]);
       const WallSides pieceSides = classifyWallSides(piece);
@@ -145,7 +142,7 @@ TEST(JunctionCut, JunctionSamplesOnPlanes) {
     EXPECT_FALSE(cut.feet.empty());
     double volume = 0;
     for (const TopoDS_Solid& p : cut.pieces) {
-      volume += volumeOf(p);
+      volume += exactVolume(p);
       const CadSolid piece = prepareSolid(p);
       const WallSides pieceSides = classifyWallSides(piece);
       EXPECT_EQ(findSheets(piece, pieceSides).size(), 1u);
@@ -193,7 +190,7 @@ SampleCut cutSample(const std::string& name, double s) {
 void expectPiecesAddUp(const SampleCut& c) {
   double volume = 0;
   for (const TopoDS_Solid& p : c.cut.pieces) {
-    volume += volumeOf(p);
+    volume += exactVolume(p);
     const CadSolid piece = prepareSolid(p, normalizingUnit(p));
     EXPECT_EQ(findSheets(piece, classifyWallSides(piece)).size(), 1u);
   }
@@ -329,5 +326,34 @@ TEST(JunctionCut, ARibFromAWallIntoABoss) {
     expectPiecesAddUp(c);
     for (const Foot& f : c.cut.feet)
       EXPECT_GT(areaOf(f.face) / (c.cad.unit * c.cad.unit) / (s * s), 1.0) << "sheet " << f.sheet;
+  }
+}
+
+// A hollow boss through the plate (R4 outside, R2 bore through both, from z = -6 to 12 on a 2 mm plate): one sheet
+// (its bore one face on both sides), cut off along both of the plate's walls into two pieces, the one below appended
+// as a further piece of the same sheet, each with its ring foot (pi (4^2 - 2^2)) shared with the plate's piece; the
+// volumes adding up, at scales 1, 1e-3, 1e3.
+TEST(JunctionCut, ABossThroughThePlateIsCutInTwoPieces) {
+  TopoDS_Shape part = BRepAlgoAPI_Fuse(boxes({{0, 0, 0, 60, 40, 2}}, 1),
+                                       BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, -6), gp::DZ()), 4, 18).Shape())
+                          .Shape();
+  part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, -7), gp::DZ()), 2, 20).Shape()).Shape();
+  ShapeUpgrade_UnifySameDomain unify(part);
+  unify.Build();
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const SampleCut c = cutSolid(test_boxes::scaled(unify.Shape(), s));
+    ASSERT_EQ(c.sheets.size(), 2u);
+    ASSERT_EQ(c.cut.pieces.size(), 3u);
+    EXPECT_EQ(c.cut.sheetOf, (std::vector<int>{0, 1, 1}));
+    expectPiecesAddUp(c);
+    ASSERT_EQ(c.cut.feet.size(), 2u);
+    std::set<int> standing;
+    for (const Foot& f : c.cut.feet) {
+      standing.insert(f.sheet);
+      EXPECT_EQ(f.base, 0);
+      EXPECT_NEAR(areaOf(f.face) / (c.cad.unit * c.cad.unit) / (s * s) / (M_PI * 12), 1, 1e-6);
+    }
+    EXPECT_EQ(standing, (std::set<int>{1, 2})) << "each piece of the boss on its foot";
   }
 }

@@ -348,6 +348,35 @@ def write_post(path, shape, scale, turn):
         gmsh.finalize()
 
 
+def write_boss_through(path, shape, scale, turn):
+    """Writes test_bosses_through's part as STEP: a 60 x 40 x 2 plate with a hollow boss through it (its bore through
+    the plate, the boss standing on both of its walls): "boss" (R4 outside, R2 bore, from z = -6 to 12 at (30, 20)),
+    "equal" (from -8 to 10), "thick" (R6 / R3: its wall 1.5 x the plate's), "thin" (R3 / R2: half the plate's),
+    "near_rim" (at (8, 20): 4 from the plate's side), "split" (the plate fused from two boxes at x = 25, its faces
+    split there), "two" (a second boss at (45, 20) from -4 to 8, the first at (15, 20)). Scaled and turned
+    (turned_and_scaled); returns its volume."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        occ = gmsh.model.occ
+        if shape == "split":
+            gmsh.option.setNumber("Geometry.OCCUnionUnify", 0)
+            body = occ.fuse([(3, occ.addBox(0, 0, 0, 25, 40, 2))], [(3, occ.addBox(25, 0, 0, 35, 40, 2))])[0]
+        else:
+            body = [(3, occ.addBox(0, 0, 0, 60, 40, 2))]
+        r, bore, low, high = {"thick": (6, 3), "thin": (3, 2)}.get(shape, (4, 2)) + (
+            (-8, 10) if shape == "equal" else (-6, 12))
+        bosses = {"near_rim": [(8, 20, low, high)], "two": [(15, 20, low, high), (45, 20, -4, 8)]}.get(
+            shape, [(30, 20, low, high)])
+        for x, y, z0, z1 in bosses:
+            body = occ.fuse(body, [(3, occ.addCylinder(x, y, z0, 0, 0, z1 - z0, r))])[0]
+            body = occ.cut(body, [(3, occ.addCylinder(x, y, z0 - 1, 0, 0, z1 - z0 + 2, bore))])[0]
+        return turned_and_scaled(gmsh, path, scale, turn)
+    finally:
+        gmsh.finalize()
+
+
 def turned_and_scaled(gmsh, path, scale, turn):
     """Turns the model's volumes by `turn` degrees about the axis (1, 2, 3), scales them by `scale` and writes them
     as STEP; returns their volume (Gmsh's)."""
@@ -703,6 +732,27 @@ class JunctionMeshing(unittest.TestCase):
             for layers, order in ((2, 1), (3, 2)):
                 with self.subTest(part=name, layers=layers, order=order):
                     self.check_part(name, step, layers, order, ["column"] * 2)
+
+    def test_bosses_through(self):
+        """A hollow boss through the plate, its bore through it (one sheet on both walls, cut in two pieces:
+        junction_cut.hpp; the second takes the first's foot: junction_mesh.hpp alignFootAcross): ends at other heights
+        and at the same, its wall 1.5 x and 0.5 x the plate's, 4 from the plate's side, the plate's faces split, two
+        bosses; the first in metres and turned 30 degrees about a skew axis; 2 layers, and 3 at order 2."""
+        for name, shape, scale, turn in (("boss_through", "boss", 1.0, 0.0),
+                                          ("boss_through_metres", "boss", 1e-3, 0.0),
+                                          ("boss_through_turned", "boss", 1.0, 30.0),
+                                          ("boss_through_equal", "equal", 1.0, 0.0),
+                                          ("boss_through_thick", "thick", 1.0, 0.0),
+                                          ("boss_through_thin", "thin", 1.0, 0.0),
+                                          ("boss_through_near_rim", "near_rim", 1.0, 0.0),
+                                          ("boss_through_split", "split", 1.0, 0.0),
+                                          ("bosses_through", "two", 1.0, 0.0)):
+            step = os.path.join(self.tmp.name, name + ".step")
+            self.volumes[name] = write_boss_through(step, shape, scale, turn)
+            runs = ((2, 1), (3, 2)) if shape == "boss" else ((2, 1),)
+            for layers, order in runs:
+                with self.subTest(part=name, layers=layers, order=order):
+                    self.check_part(name, step, layers, order, ["ring"] * (4 if shape == "two" else 2))
 
     def test_ribs_on_plates(self):
         for part in PARTS:
