@@ -7,10 +7,12 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
+#include <gp_Pln.hxx>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -79,6 +81,40 @@ Vec3 edgeMiddle(const TopoDS_Shape& edge) {
   return {p.X(), p.Y(), p.Z()};
 }
 
+// Whether two planes are one within `tolerance` (parallel, and each one's origin within tolerance of the other).
+bool samePlane(const gp_Pln& a, const gp_Pln& b, double tolerance) {
+  return a.Axis().Direction().IsParallel(b.Axis().Direction(), 1e-6) && a.Distance(b.Location()) <= tolerance &&
+         b.Distance(a.Location()) <= tolerance;
+}
+
+// Joins to the largest sheet (roots of `uf` over the wall faces, by area) every sheet whose wall faces all lie on the
+// planes of its wall faces on their sides: the plate's disc inside a tube fused onto a plate that was not bored, cut
+// off from the plate by the tube's feet only. (Not two other sheets: a rib's segments either side of a crossing rib
+// lie on one pair of planes, and mergeCrossingRibs decides which runs through.) [in] cad, sides; [in,out] uf.
+void joinCoplanarSheets(const CadSolid& cad, const WallSides& sides, UnionFind& uf) {
+  const double tolerance = 1e-6 * cad.diagonal;
+  std::map<int, std::vector<std::pair<int, std::optional<gp_Pln>>>> sheets;  // root -> its faces and their planes
+  std::map<int, double> area;
+  for (int f = 0; f < static_cast<int>(sides.faces.size()); ++f)
+    if (sides.faces[f].side != Side::Lateral) {
+      sheets[uf.find(f)].emplace_back(f, planeOf(cad.faces(f + 1), tolerance));
+      area[uf.find(f)] += sides.faces[f].area;
+    }
+  if (sheets.size() < 2) return;
+  const int largest = std::max_element(area.begin(), area.end(), [](const auto& a, const auto& b) {
+                        return a.second < b.second;
+                      })->first;
+  const auto& base = sheets[largest];
+  for (const auto& [root, faces] : sheets)
+    if (root != largest && std::all_of(faces.begin(), faces.end(), [&](const auto& face) {
+          return face.second && std::any_of(base.begin(), base.end(), [&](const auto& other) {
+                   return other.second && sides.faces[other.first].side == sides.faces[face.first].side &&
+                          samePlane(*face.second, *other.second, tolerance);
+                 });
+        }))
+      uf.unite(root, largest);
+}
+
 }  // namespace
 
 std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides) {
@@ -139,6 +175,7 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
   for (int f = 0; f < n; ++f)
     if (isWall(f) && isWall(sides.faces[f].opposite)) uf.unite(f, sides.faces[f].opposite);
   for (const auto& [a, b] : thicknessSteps(cad, sides)) uf.unite(a, b);
+  joinCoplanarSheets(cad, sides, uf);
   std::map<int, std::vector<int>> byRoot;
   for (int f = 0; f < n; ++f)
     if (isWall(f)) byRoot[uf.find(f)].push_back(f);

@@ -143,6 +143,12 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSu
   return foot;
 }
 
+bool columnsAcross(std::vector<FootSurface>& feet, const FootColumns& columns) {
+  return !columns.empty() && std::all_of(columns.begin(), columns.end(), [&](const std::vector<Vec3>& column) {
+    return std::any_of(feet.begin(), feet.end(), [&](FootSurface& f) { return f.holds(f.project(middleOf(column))); });
+  });
+}
+
 constexpr double kAcross = 1e-3;  // of the reach: rim nodes this near their columns across are left there
 
 std::size_t alignFootAcross(QuadMesh& quads, std::vector<FootSurface>& feet, const FootColumns& across, double unit,

@@ -57,6 +57,10 @@ struct WallFoot {
 // [in] across: the other feet's sweep columns (WallFoot::footColumns, the feet's units); [in] unit; [in] reach: in
 // the feet's units. Returns how many rim nodes were put across (0: none).
 using FootColumns = std::vector<std::vector<Vec3>>;
+
+// Whether every column's middle, projected onto one of the feet, lies on it (the columns stand across the sheet from
+// those feet). [in,out] feet; [in] columns. False if there are none.
+bool columnsAcross(std::vector<FootSurface>& feet, const FootColumns& columns);
 std::size_t alignFootAcross(QuadMesh& quads, std::vector<FootSurface>& feet, const FootColumns& across, double unit,
                             double reach);
 

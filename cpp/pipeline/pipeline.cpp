@@ -509,16 +509,19 @@ std::vector<FootprintQuads> columnFeetUnder(const JunctionPieces& t, int s) {
   return feet;
 }
 
-// The sweep columns on the feet of the walls meshed before piece s on the sheets it stands on (a wall across the sheet
-// from s's foot may be one: alignFootAcross).
-FootColumns wallFeetUnder(const JunctionPieces& t, int s) {
-  FootColumns columns;
+// The feet of the walls meshed before piece s across the sheet from its own: every sweep column's middle projected onto
+// one of s's feet lies on it (a boss's other half; alignFootAcross). [in] t, s; [in,out] ownFeet: s's.
+std::vector<const WallFoot*> wallFeetAcross(const JunctionPieces& t, int s, std::vector<FootSurface>& ownFeet) {
+  std::vector<const WallFoot*> feet;
   for (const Foot& own : t.cut.feet)
     if (own.sheet == s)
       for (std::size_t other = s + 1; other < t.feet.size(); ++other)
-        if (const auto foot = t.feet[other].find(own.base); foot != t.feet[other].end() && !foot->second.column)
-          columns.insert(columns.end(), foot->second.footColumns.begin(), foot->second.footColumns.end());
-  return columns;
+        if (const auto foot = t.feet[other].find(own.base);
+            foot != t.feet[other].end() && !foot->second.column &&
+            std::find(feet.begin(), feet.end(), &foot->second) == feet.end() &&
+            columnsAcross(ownFeet, foot->second.footColumns))
+          feet.push_back(&foot->second);
+  return feet;
 }
 
 // A piece's hexes and whether they are a column's: a column found on the part (Sheet::column) is meshed as one (a low
@@ -567,8 +570,14 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
     if (f.sheet == s) ownFeet.emplace_back(f.face, tolerance);
   std::vector<char> cutFaces;  // the piece's feet, on the sheets it stands on or under those standing on it
   for (int origin : t.cut.faceOrigin[s]) cutFaces.push_back(origin < 0);
-  const FootColumns across = wallFeetUnder(t, s);
-  double aligned = 0;  // the reach alignFootAcross had (0: it put no rim node across)
+  FootColumns across;  // the sweep columns of the feet across the sheet from the piece's, and the quads round a ring's
+  MeshOptions own = o;
+  for (const WallFoot* foot : wallFeetAcross(t, s, ownFeet)) {
+    across.insert(across.end(), foot->footColumns.begin(), foot->footColumns.end());
+    own.ringAround = foot->ring && own.ringAround == 0 ? static_cast<int>(foot->footColumns.size()) : -1;
+  }
+  own.ringAround = std::max(own.ringAround, 0);  // one ring across: as many quads round; more: from the size
+  double aligned = 0;                            // the reach alignFootAcross had (0: it put no rim node across)
   // the sheet's quads made to carry the footprints of the walls standing on it
   const QuadEdit carryFootprints = [&](const CadSolid& c, QuadStage& stage) {
     if (const double reach = meanEdge(stage.quads) / c.unit;
@@ -606,7 +615,7 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
   const HexEdit snapAcross = [&](const CadSolid& c, const QuadStage& stage, HexMesh& mesh) {
     if (aligned > 0) snapFootColumnsAcross(mesh, stage.quads, ownFeet, across, c.unit, kAcrossReach * aligned);
   };
-  auto [piece, isColumn] = pieceHexes(t.cut.pieces[s], t.columns[s] != 0, s > 0, !footprint.quads.empty(), o,
+  auto [piece, isColumn] = pieceHexes(t.cut.pieces[s], t.columns[s] != 0, s > 0, !footprint.quads.empty(), own,
                                       carryFootprints, snapAcross, cutFaces, columnSize, columnFeetUnder(t, s), boxes);
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty()) {
@@ -909,6 +918,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   qo.size = r.size, qo.adaptive = o.sizing == "adaptive", qo.sizing = {r.size, o.minSize, o.maxSize};
   qo.knifeEdges = !sides.knifeEdges.empty(), qo.progress = o.progress;
   qo.tryBudget = o.quadTryBudget, qo.stageBudget = o.quadStageBudget;
+  qo.ringAround = o.ringAround;
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
   if (edit) edit(cad, stage);
   const QuadMesh& quads = stage.quads;

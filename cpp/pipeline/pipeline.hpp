@@ -38,6 +38,9 @@ struct MeshOptions {
   // Forks the Gmsh runs of the gaps round walls' feet (child_process.hpp): meshFile starts one, Gmsh open in it,
   // before it reads the part; null: each run is forked from this process.
   std::shared_ptr<ForkServer> gmshRuns;
+  // A junction piece's ring grid (a boss's half across the plate from the other's ring of this many foot columns):
+  // its quads round; 0 = from the size.
+  int ringAround = 0;
 };
 
 struct MeshResult {

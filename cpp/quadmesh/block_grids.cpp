@@ -933,7 +933,7 @@ std::vector<double> loopAngles(const SurfaceMap& map, const std::vector<int>& lo
   return angle;
 }
 
-BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size) {
+BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size, int given) {
   if (map.empty() || map.boundary != MapBoundary::Annulus || map.holes.size() != 1) return {};
   const MapLocator locate(map);
   const std::vector<int>& inner = map.holes[0];
@@ -945,7 +945,7 @@ BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size) {
   // Even: a tube standing on a sheet (a boss) puts a ring of `around` quads in the sheet's quads, and the quads
   // inside and round it can only be all quads if their boundaries are even.
   int around = std::max(kMinAround, count(std::max(outerQuads, innerQuads)));
-  around += around % 2;
+  around = given > 0 ? given : around + around % 2;
   // Rows as square as the columns: the map's rectangle is -log(inner radius) tall and 2 pi wide.
   const double height = -std::log(map.innerRadius);
   const int across = count(height / (2 * M_PI) * around);

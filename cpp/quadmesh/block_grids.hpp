@@ -67,7 +67,8 @@ BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size, const SquareR
 
 // Ring grid of a surface mapped onto the annulus's rectangle (a tube, a ring): `around` x `across`
 // quads evenly spaced in it (square where the map is conformal), the rim rows on the rims by arc
-// length, periodic round the ring: every node is regular. Empty for any other map.
-BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size);
+// length, periodic round the ring: every node is regular; `around` quads round if given (> 0), else as many as the
+// longer rim holds at the size, even. Empty for any other map.
+BlockGrid ringGrid(const SurfaceMap& map, const SizeField& size, int around = 0);
 
 }  // namespace hexlayer

@@ -565,7 +565,8 @@ std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const Surfac
   if (!square.empty() && !square.sharpCorners && square.holes.empty())
     addBlockGrid(tries, oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
   if (!square.empty() && square.holes.size() == 1)
-    addBlockGrid(tries, ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size), QuadLayout::Ring);
+    addBlockGrid(tries, ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size, o.ringAround),
+                 QuadLayout::Ring);
   return tries;
 }
 

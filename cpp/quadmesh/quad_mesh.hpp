@@ -59,6 +59,7 @@ struct PatchSplit {
 
 struct QuadMeshOptions {
   double size = 0;                 // target edge length (uniform sizing)
+  int ringAround = 0;              // the ring grid's quads round (ringGrid), 0: from the size
   std::vector<double> vertexSize;  // adaptive sizing: target edge length per chordal vertex (sizing.hpp)
   // Adaptive sizing of the own-patch tries (PatchSplit::ownPatches) and of the patch grid (patch_grids.hpp), if not
   // empty: without the curvature term, since the sharp creases they are for are their patches' curves (refining a

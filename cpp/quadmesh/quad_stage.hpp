@@ -28,6 +28,7 @@ struct QuadStageOptions {
   // A part whose tries all finish within their budgets gets the same quads on any machine; one that runs out gets
   // the quads of the tries that finished (a slower machine may finish fewer).
   double tryBudget = 0, stageBudget = 0;
+  int ringAround = 0;  // a ring grid's quads round (QuadMeshOptions::ringAround); 0: from the size
 };
 
 struct QuadStage {

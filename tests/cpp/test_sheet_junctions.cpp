@@ -296,3 +296,28 @@ TEST(SheetJunctions, AGussetOnABossIsNoThicknessStep) {
   EXPECT_TRUE(thicknessSteps(cad, sides).empty());
   EXPECT_EQ(findSheets(cad, sides).size(), 3u) << "the plate, the boss, the gusset";
 }
+
+// A tube (R2, bore R1) fused onto the plate through it, the plate not bored (as FreeCAD's fuse of a tube and a plate
+// gives): the plate's disc inside the tube lies on the plate's two planes and joins the plate's sheet; the tube's
+// halves above and below stand on it (three sheets). A rib's segments either side of a crossing rib lie on one pair of
+// planes too, but join no sheet but the largest: they stay segments (mergeCrossingRibs decides). At scales 1e-3, 1,
+// 1e3.
+TEST(SheetJunctions, APlatesDiscInsideATubeFusedThroughItIsThePlates) {
+  for (const double s : {1e-3, 1.0, 1e3}) {
+    const gp_Ax2 axis(gp_Pnt(30, 20, -4), gp_Dir(0, 0, 1));
+    const TopoDS_Shape tube =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(axis, 2, 14).Shape(), BRepPrimAPI_MakeCylinder(axis, 1, 14).Shape())
+            .Shape();
+    gp_Trsf scaling;
+    scaling.SetScale(gp_Pnt(0, 0, 0), s);
+    const CadSolid cad =
+        solidOf(BRepBuilderAPI_Transform(BRepAlgoAPI_Fuse(plate(), tube).Shape(), scaling, true).Shape());
+    const WallSides sides = classifyWallSides(cad);
+    const std::vector<Sheet> sheets = findSheets(cad, sides);
+    ASSERT_EQ(sheets.size(), 3u) << s;
+    EXPECT_EQ(sheets[0].faces.size(), 4u) << s << ": the plate's top and bottom, the disc's top and bottom";
+    EXPECT_NEAR(sheets[0].area / (s * s), 2 * 60 * 40 - 2 * M_PI * (4 - 1), 1e-4 * 4800) << s;  // areas as sampled
+  }
+  const CadSolid grid = plateWith({{gp_Pnt(0, 12, 1), gp_Pnt(60, 2, 6)}, {gp_Pnt(29, 0, 1), gp_Pnt(2, 40, 6)}}, 1);
+  EXPECT_EQ(findSheets(grid, classifyWallSides(grid)).size(), 5u) << "the plate and four rib segments";
+}

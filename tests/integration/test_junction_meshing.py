@@ -353,8 +353,10 @@ def write_boss_through(path, shape, scale, turn):
     the plate, the boss standing on both of its walls): "boss" (R4 outside, R2 bore, from z = -6 to 12 at (30, 20)),
     "equal" (from -8 to 10), "thick" (R6 / R3: its wall 1.5 x the plate's), "thin" (R3 / R2: half the plate's),
     "near_rim" (at (8, 20): 4 from the plate's side), "split" (the plate fused from two boxes at x = 25, its faces
-    split there), "two" (a second boss at (45, 20) from -4 to 8, the first at (15, 20)). Scaled and turned
-    (turned_and_scaled); returns its volume."""
+    split there), "two" (a second boss at (45, 20) from -4 to 8, the first at (15, 20)), "tube" (R2 / R1 from -4 to
+    10: its wall half the plate's, its halves' rings of one count), "tube_blind" (that tube fused onto the plate
+    unbored, as FreeCAD's fuse of a tube and a plate gives: the plate's disc inside the tube joins the plate).
+    Scaled and turned (turned_and_scaled); returns its volume."""
     import gmsh
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
@@ -365,13 +367,17 @@ def write_boss_through(path, shape, scale, turn):
             body = occ.fuse([(3, occ.addBox(0, 0, 0, 25, 40, 2))], [(3, occ.addBox(25, 0, 0, 35, 40, 2))])[0]
         else:
             body = [(3, occ.addBox(0, 0, 0, 60, 40, 2))]
-        r, bore, low, high = {"thick": (6, 3), "thin": (3, 2)}.get(shape, (4, 2)) + (
-            (-8, 10) if shape == "equal" else (-6, 12))
+        r, bore, low, high = {"thick": (6, 3), "thin": (3, 2), "tube": (2, 1), "tube_blind": (2, 1)}.get(
+            shape, (4, 2)) + {"equal": (-8, 10), "tube": (-4, 10), "tube_blind": (-4, 10)}.get(shape, (-6, 12))
         bosses = {"near_rim": [(8, 20, low, high)], "two": [(15, 20, low, high), (45, 20, -4, 8)]}.get(
             shape, [(30, 20, low, high)])
         for x, y, z0, z1 in bosses:
-            body = occ.fuse(body, [(3, occ.addCylinder(x, y, z0, 0, 0, z1 - z0, r))])[0]
-            body = occ.cut(body, [(3, occ.addCylinder(x, y, z0 - 1, 0, 0, z1 - z0 + 2, bore))])[0]
+            boss = [(3, occ.addCylinder(x, y, z0, 0, 0, z1 - z0, r))]
+            bore_tool = [(3, occ.addCylinder(x, y, z0 - 1, 0, 0, z1 - z0 + 2, bore))]
+            if shape == "tube_blind":
+                body = occ.fuse(body, occ.cut(boss, bore_tool)[0])[0]
+            else:
+                body = occ.cut(occ.fuse(body, boss)[0], bore_tool)[0]
         return turned_and_scaled(gmsh, path, scale, turn)
     finally:
         gmsh.finalize()
@@ -737,7 +743,8 @@ class JunctionMeshing(unittest.TestCase):
         """A hollow boss through the plate, its bore through it (one sheet on both walls, cut in two pieces:
         junction_cut.hpp; the second takes the first's foot: junction_mesh.hpp alignFootAcross): ends at other heights
         and at the same, its wall 1.5 x and 0.5 x the plate's, 4 from the plate's side, the plate's faces split, two
-        bosses; the first in metres and turned 30 degrees about a skew axis; 2 layers, and 3 at order 2."""
+        bosses, a thin tube, the tube fused onto the plate unbored (also turned); the first in metres and turned 30
+        degrees about a skew axis; 2 layers, and 3 at order 2."""
         for name, shape, scale, turn in (("boss_through", "boss", 1.0, 0.0),
                                           ("boss_through_metres", "boss", 1e-3, 0.0),
                                           ("boss_through_turned", "boss", 1.0, 30.0),
@@ -746,7 +753,10 @@ class JunctionMeshing(unittest.TestCase):
                                           ("boss_through_thin", "thin", 1.0, 0.0),
                                           ("boss_through_near_rim", "near_rim", 1.0, 0.0),
                                           ("boss_through_split", "split", 1.0, 0.0),
-                                          ("bosses_through", "two", 1.0, 0.0)):
+                                          ("bosses_through", "two", 1.0, 0.0),
+                                          ("tube_through", "tube", 1.0, 0.0),
+                                          ("tube_through_blind", "tube_blind", 1.0, 0.0),
+                                          ("tube_through_blind_turned", "tube_blind", 1.0, 30.0)):
             step = os.path.join(self.tmp.name, name + ".step")
             self.volumes[name] = write_boss_through(step, shape, scale, turn)
             runs = ((2, 1), (3, 2)) if shape == "boss" else ((2, 1),)
