@@ -428,6 +428,17 @@ bool standsOnRimFace(const Junctions& j, int s) {
   });
 }
 
+// A note naming a thickness step where sheet s goes on from a thicker wall past a step in its faces that the sweep's
+// hexes do not take (thicknessSteps at any width of the step's side), else "". [in] j, s.
+std::string stepNote(const Junctions& j, int s) {
+  const std::vector<int>& own = j.sheets[s].faces;
+  for (const auto& [a, b] : thicknessSteps(j.cad, j.sides, std::numeric_limits<double>::infinity()))
+    if ((std::count(own.begin(), own.end(), a) > 0) != (std::count(own.begin(), own.end(), b) > 0))
+      return " (a thinner wall going on from a thicker one's rim: a thickness step is meshed where the step's side "
+             "runs all along the rim and is no wider than the thinner wall)";
+  return "";
+}
+
 // The edges of base face `face` with the sheet's rim faces: its edges with lateral faces that are not concave.
 // [in] j, face.
 std::vector<TopoDS_Edge> rimEdges(const Junctions& j, int face) {
@@ -461,7 +472,8 @@ std::vector<Foot> footFaces(const Junctions& j, int s) {
           feet.push_back({s, on.base, on.face, *face, area});
   if (feet.empty() && standsOnRimFace(j, s))
     throw geometryError("T-junction: the sheet at " + sheetPlace(j.cad, j.sheets[s]) +
-                        " stands on the edge (a rim face) of another sheet, not on its wall, which is not meshed yet");
+                        " stands on the edge (a rim face) of another sheet, not on its wall" + stepNote(j, s) +
+                        ", which is not meshed yet");
   if (feet.empty())
     throw geometryError("T-junction: no foot found for the sheet at " + sheetPlace(j.cad, j.sheets[s]) +
                         " on the sheet it stands on");

@@ -28,9 +28,6 @@ constexpr double kSmallFeatureWalls = 2;  // a column within a box this many wal
 // nothing: a face at the wall's level (the floor of a boss's bore over a smaller hole through the plate).
 constexpr double kStandsOut = 1e-3;
 constexpr double kStepCos = 0.866;  // cos 30 deg: the walls on either side of a thickness step face the same way
-// A step's side at most this many thinner walls high: the sweep's hexes across it (one row) slope that much; a higher
-// step (a 6 mm plate going on 1.5 thick) would fold them.
-constexpr double kStepWalls = 1.05;
 
 std::vector<FaceSample> centreSamples(const TopoDS_Shape& face, double area) {
   return sampleFace(face, std::sqrt(std::max(area, 1e-30) / 16));
@@ -117,7 +114,7 @@ void joinCoplanarSheets(const CadSolid& cad, const WallSides& sides, UnionFind& 
 
 }  // namespace
 
-std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides) {
+std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides, double highest) {
   const int n = static_cast<int>(sides.faces.size());
   auto isWall = [&](int f) { return sides.faces[f].side != Side::Lateral; };
   struct Meeting {
@@ -138,7 +135,7 @@ std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallS
     for (const Meeting& a : concave[r])
       for (const Meeting& b : convex[r]) {
         const FaceSide &thin = sides.faces[a.wall], &thick = sides.faces[b.wall], &side = sides.faces[r];
-        if (thin.side == thick.side && side.width < kStepWalls * thin.thickness &&
+        if (thin.side == thick.side && side.width < highest * thin.thickness &&
             thick.thickness > thin.thickness + 0.5 * side.width && normal(a).dot(normal(b)) > kStepCos)
           steps.emplace_back(std::min(a.wall, b.wall), std::max(a.wall, b.wall));
       }

@@ -41,10 +41,14 @@ std::vector<Sheet> standingColumns(const CadSolid& cad, const WallSides& sides);
 
 // Thickness steps: a lateral face meeting a wall face A in a concave edge and a wall face B in a convex one, A and B
 // on the same side, facing the same way there (their normals at the edges' middles within 30 degrees), B's wall
-// thicker than A's by over half the face's width, the face no wider than A's wall: a thinner wall going on from a
-// thicker one, its faces stepping in (one or both) by at most its own thickness. [in] cad, sides. Returns the pairs
-// (A, B), A < B, sorted.
-std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides);
+// thicker than A's by over half the face's width, the face (its width: faceWidth) no wider than A's wall: a thinner
+// wall going on from a thicker one, its faces stepping in (one or both) across the whole side. (A tab narrower than
+// the plate's rim it stands on is not one: the rim face is as wide as the plate's wall; meshed as one sheet its hexes
+// were poor, 0.12 / 0.69.) [in] cad, sides; [in] highest: how many of A's walls the face may be wide (kStepWalls: a
+// step the sweep's hexes take; infinity: any step, to name one in a refusal). Returns the pairs (A, B), A < B, sorted.
+inline constexpr double kStepWalls = 1.05;
+std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides,
+                                                double highest = kStepWalls);
 
 // "(x, y, z)": the sheet's centre in the input's units (CadSolid::unit), for messages.
 std::string sheetPlace(const CadSolid& cad, const Sheet& s);

@@ -241,7 +241,8 @@ TEST(JunctionCut, WallsStandingOnWalls) {
 }
 
 // A tab 1 thick sticking out of the 2 mm plate's side face (mid-thickness): it stands on the plate's rim face, not on
-// its wall; refused, saying so (a post on a wall's edge, as on the Framework cover).
+// its wall; refused, saying so (a post on a wall's edge, as on the Framework cover), and naming the thickness step
+// (thicknessSteps takes none whose side is wider than the thinner wall: this rim face is as wide as the plate's).
 TEST(JunctionCut, ASheetOnARimFaceIsRefusedSayingSo) {
   for (double s : {1.0, 1e-3, 1e3}) {
     SCOPED_TRACE("x " + std::to_string(s));
@@ -256,6 +257,8 @@ TEST(JunctionCut, ASheetOnARimFaceIsRefusedSayingSo) {
     } catch (const Error& e) {
       EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
       EXPECT_NE(std::string(e.what()).find("stands on the edge (a rim face) of another sheet"), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("a thinner wall going on from a thicker one's rim"), std::string::npos)
           << e.what();
     }
   }
