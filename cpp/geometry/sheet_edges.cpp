@@ -55,7 +55,7 @@ std::vector<SheetJoin> sheetJoins(const CadSolid& cad) {
 std::vector<FacePairEdge> concaveEdges(const CadSolid& cad) {
   std::vector<FacePairEdge> concave;
   forEachFacePairEdge(cad, [&](int edge, int a, int b, auto has) {
-    if (has(ChFiDS_Concave)) concave.push_back({edge, a, b});
+    if (has(ChFiDS_Concave)) concave.push_back({edge, a, b, true});
   });
   return concave;
 }
@@ -63,7 +63,7 @@ std::vector<FacePairEdge> concaveEdges(const CadSolid& cad) {
 std::vector<FacePairEdge> sharpEdges(const CadSolid& cad) {
   std::vector<FacePairEdge> sharp;
   forEachFacePairEdge(cad, [&](int edge, int a, int b, auto has) {
-    if (has(ChFiDS_Concave) || has(ChFiDS_Convex)) sharp.push_back({edge, a, b});
+    if (has(ChFiDS_Concave) || has(ChFiDS_Convex)) sharp.push_back({edge, a, b, has(ChFiDS_Concave)});
   });
   return sharp;
 }

@@ -20,14 +20,15 @@ std::vector<SheetJoin> sheetJoins(const CadSolid& cad);
 
 // A CAD edge between two faces (concave and sharp: where a rib, boss or flange may stand on a sheet).
 struct FacePairEdge {
-  int edge = -1;       // 0-based in CadSolid::edges
-  int a = -1, b = -1;  // its two distinct faces, 0-based, a < b
+  int edge = -1;         // 0-based in CadSolid::edges
+  int a = -1, b = -1;    // its two distinct faces, 0-based, a < b
+  bool concave = false;  // some piece of it concave (concaveEdges: all)
 };
 
 // [in] cad: the solid. Returns its concave sharp edges between two distinct faces.
 std::vector<FacePairEdge> concaveEdges(const CadSolid& cad);
 
-// [in] cad: the solid. Returns its sharp edges, concave or convex, between two distinct faces.
+// [in] cad: the solid. Returns its sharp edges, concave or convex (FacePairEdge::concave), between two distinct faces.
 std::vector<FacePairEdge> sharpEdges(const CadSolid& cad);
 
 // [in] cad: the solid. Per face (0-based), the faces it shares an edge with.

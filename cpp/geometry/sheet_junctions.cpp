@@ -124,12 +124,10 @@ std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallS
     return normalAtEdge(TopoDS::Face(cad.faces(m.wall + 1)), TopoDS::Edge(cad.edges(m.edge + 1)));
   };
   std::vector<std::vector<Meeting>> concave(n), convex(n);  // per lateral face, the walls it meets so, and where
-  std::set<int> concaveEdge;
-  for (const FacePairEdge& c : concaveEdges(cad)) concaveEdge.insert(c.edge);
   for (const FacePairEdge& e : sharpEdges(cad))
     if (const auto [wall, side] = isWall(e.a) ? std::pair(e.a, e.b) : std::pair(e.b, e.a);
         isWall(wall) && !isWall(side))
-      (concaveEdge.count(e.edge) ? concave : convex)[side].push_back({wall, e.edge});
+      (e.concave ? concave : convex)[side].push_back({wall, e.edge});
   std::vector<std::pair<int, int>> steps;
   for (int r = 0; r < n; ++r)
     for (const Meeting& a : concave[r])

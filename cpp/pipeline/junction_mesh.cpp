@@ -188,20 +188,25 @@ std::size_t snapFootColumnsAcross(HexMesh& piece, const QuadMesh& quads, std::ve
   const std::vector<std::vector<int>> rim = rimEdgeNeighbours(quads);
   std::vector<Vec3> move(piece.nodes.size(), Vec3::Zero());
   std::vector<char> moved(piece.nodes.size(), 0);
+  std::vector<std::vector<Vec3>> onFoot(feet.size());  // per foot, the columns' middles across projected onto it
+  for (std::size_t f = 0; f < feet.size(); ++f)
+    for (const std::vector<Vec3>& column : across) onFoot[f].push_back(feet[f].project(middleOf(column)));
   std::size_t columns = 0;
   for (int q = 0; q < static_cast<int>(quads.nodes.size()) && (q + 1) * stride <= static_cast<int>(piece.nodes.size());
        ++q) {
     if (rim[q].empty()) continue;
     std::vector<Vec3> own(piece.nodes.begin() + q * stride, piece.nodes.begin() + (q + 1) * stride);
     for (Vec3& p : own) p /= unit;
-    for (FootSurface& f : feet) {
+    for (std::size_t g = 0; g < feet.size(); ++g) {
+      FootSurface& f = feet[g];
       if (!std::all_of(own.begin(), own.end(), [&](const Vec3& p) { return f.holds(p); })) continue;
       const Vec3 middle = middleOf(own);
       const std::vector<Vec3>* best = nullptr;
-      for (const std::vector<Vec3>& column : across)
-        if (column.size() == own.size() && (f.project(middleOf(column)) - middle).norm() <= reach &&
-            (!best || (f.project(middleOf(column)) - middle).norm() < (f.project(middleOf(*best)) - middle).norm()))
-          best = &column;
+      double nearest = 0;
+      for (std::size_t c = 0; c < across.size(); ++c)
+        if (const double d = (onFoot[g][c] - middle).norm();
+            across[c].size() == own.size() && d <= reach && (!best || d < nearest))
+          best = &across[c], nearest = d;
       if (!best) break;
       const bool reversed =
           (f.project(best->front()) - own.front()).norm() > (f.project(best->back()) - own.front()).norm();

@@ -180,12 +180,12 @@ JunctionRecord junctionRecord(const CadSolid& cad, const Sheet& s) {
 // of mass and its share (by volume) of the sheet's area and volume. [in] cad, sheets, cut, w.
 JunctionRecord pieceRecord(const CadSolid& cad, const std::vector<Sheet>& sheets, const JunctionCut& cut, int w) {
   JunctionRecord j = junctionRecord(cad, sheets[cut.sheetOf[w]]);
+  if (std::count(cut.sheetOf.begin(), cut.sheetOf.end(), cut.sheetOf[w]) < 2) return j;  // the sheet is one piece
   double all = 0;
   for (std::size_t p = 0; p < cut.pieces.size(); ++p)
     if (cut.sheetOf[p] == cut.sheetOf[w]) all += volumeOf(cut.pieces[p]).first;
-  if (const auto [volume, centre] = volumeOf(cut.pieces[w]); volume < all) {
-    j.at = centre, j.area *= volume / all, j.volume *= volume / all;
-  }
+  const auto [volume, centre] = volumeOf(cut.pieces[w]);
+  j.at = centre, j.area *= volume / all, j.volume *= volume / all;
   return j;
 }
 
@@ -498,28 +498,15 @@ FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& no
   return f;
 }
 
-// The feet of the columns meshed before piece s on the sheets it stands on (a column across the sheet may be one).
-std::vector<FootprintQuads> columnFeetUnder(const JunctionPieces& t, int s) {
-  std::vector<FootprintQuads> feet;
-  for (const Foot& own : t.cut.feet)
-    if (own.sheet == s)
-      for (std::size_t other = s + 1; other < t.feet.size(); ++other)
-        if (const auto foot = t.feet[other].find(own.base); foot != t.feet[other].end() && foot->second.column)
-          feet.push_back(foot->second.footprint);
-  return feet;
-}
-
-// The feet of the walls meshed before piece s across the sheet from its own: every sweep column's middle projected onto
-// one of s's feet lies on it (a boss's other half; alignFootAcross). [in] t, s; [in,out] ownFeet: s's.
-std::vector<const WallFoot*> wallFeetAcross(const JunctionPieces& t, int s, std::vector<FootSurface>& ownFeet) {
+// The feet of the pieces meshed before piece s on the sheets it stands on, each once (a column's or a wall's across
+// the sheet from s's may be one).
+std::vector<const WallFoot*> feetMeshedBefore(const JunctionPieces& t, int s) {
   std::vector<const WallFoot*> feet;
   for (const Foot& own : t.cut.feet)
     if (own.sheet == s)
       for (std::size_t other = s + 1; other < t.feet.size(); ++other)
         if (const auto foot = t.feet[other].find(own.base);
-            foot != t.feet[other].end() && !foot->second.column &&
-            std::find(feet.begin(), feet.end(), &foot->second) == feet.end() &&
-            columnsAcross(ownFeet, foot->second.footColumns))
+            foot != t.feet[other].end() && std::find(feet.begin(), feet.end(), &foot->second) == feet.end())
           feet.push_back(&foot->second);
   return feet;
 }
@@ -570,14 +557,20 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
     if (f.sheet == s) ownFeet.emplace_back(f.face, tolerance);
   std::vector<char> cutFaces;  // the piece's feet, on the sheets it stands on or under those standing on it
   for (int origin : t.cut.faceOrigin[s]) cutFaces.push_back(origin < 0);
-  FootColumns across;  // the sweep columns of the feet across the sheet from the piece's, and the quads round a ring's
+  // The feet meshed before: the columns' (meshColumn takes one across the sheet), and the walls' across the sheet from
+  // the piece's (every sweep column's middle projected onto one of its feet lies on it: a boss's other half), whose
+  // sweep columns the piece's foot is put across from; one ring across: the piece's ring grid as many quads round.
+  std::vector<FootprintQuads> columnFeet;
+  std::vector<const WallFoot*> wallsAcross;
+  FootColumns across;
+  for (const WallFoot* foot : feetMeshedBefore(t, s))
+    if (foot->column)
+      columnFeet.push_back(foot->footprint);
+    else if (columnsAcross(ownFeet, foot->footColumns))
+      wallsAcross.push_back(foot), across.insert(across.end(), foot->footColumns.begin(), foot->footColumns.end());
   MeshOptions own = o;
-  for (const WallFoot* foot : wallFeetAcross(t, s, ownFeet)) {
-    across.insert(across.end(), foot->footColumns.begin(), foot->footColumns.end());
-    own.ringAround = foot->ring && own.ringAround == 0 ? static_cast<int>(foot->footColumns.size()) : -1;
-  }
-  own.ringAround = std::max(own.ringAround, 0);  // one ring across: as many quads round; more: from the size
-  double aligned = 0;                            // the reach alignFootAcross had (0: it put no rim node across)
+  if (wallsAcross.size() == 1 && wallsAcross[0]->ring) own.ringAround = static_cast<int>(across.size());
+  double aligned = 0;  // the reach alignFootAcross had (0: it put no rim node across)
   // the sheet's quads made to carry the footprints of the walls standing on it
   const QuadEdit carryFootprints = [&](const CadSolid& c, QuadStage& stage) {
     if (const double reach = meanEdge(stage.quads) / c.unit;
@@ -616,7 +609,7 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
     if (aligned > 0) snapFootColumnsAcross(mesh, stage.quads, ownFeet, across, c.unit, kAcrossReach * aligned);
   };
   auto [piece, isColumn] = pieceHexes(t.cut.pieces[s], t.columns[s] != 0, s > 0, !footprint.quads.empty(), own,
-                                      carryFootprints, snapAcross, cutFaces, columnSize, columnFeetUnder(t, s), boxes);
+                                      carryFootprints, snapAcross, cutFaces, columnSize, columnFeet, boxes);
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty()) {
     const double reach = wallShare * piece.report.thickness + merged.shift;
