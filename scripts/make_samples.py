@@ -2089,6 +2089,90 @@ STEP_README_NOTES = [
 ]
 
 
+# ---------------------------------------------------------------------------
+# Narrow air gaps (written to the subfolder gaps/): a sheet folded back over
+# itself, the air between its two legs no wider than about the sheet is thick
+# (an open hem of sheet metal, a spring clip).
+# ---------------------------------------------------------------------------
+
+HEM_L, HEM_W, HEM_LEG = 100.0, 40.0, 20.0   # the sheet [0, 100] x [0, 40]; the leg folded back over x 80...100
+
+
+def hem_volume(t, ri, leg=HEM_LEG, length=HEM_L, width=HEM_W):
+    return width * ((length + leg) * t + 0.5 * math.pi * ((ri + t) ** 2 - ri ** 2))
+
+
+def hem(t, ri, leg=HEM_LEG, length=HEM_L, width=HEM_W, split=False):
+    """A sheet t thick, z 0...t, folded back at x = length round a half ring of
+    inner radius ri: the leg over x length - leg ... length, z t + 2 ri ... 2 t +
+    2 ri, the air between 2 ri wide. With `split` the sheet is fused from two
+    boxes (x 0...50, 50...length) and the leg from two (split at its middle),
+    not unified: their faces split there."""
+    ro = ri + t
+    ring = occ.cut([(3, occ.addCylinder(length, 0, ro, 0, width, 0, ro))],
+                   [(3, occ.addCylinder(length, 0, ro, 0, width, 0, ri))])[0]
+    ring = occ.intersect(ring, [(3, occ.addBox(length, -1, -1, ro + 1, width + 2, 2 * ro + 2))])[0]
+    cuts = [0.0, 50.0, length] if split else [0.0, length]
+    sheet = [occ.addBox(a, 0, 0, b - a, width, t) for a, b in zip(cuts, cuts[1:])]
+    legs = [length - leg, length - leg / 2, length] if split else [length - leg, length]
+    back = [occ.addBox(a, 0, t + 2 * ri, b - a, width, t) for a, b in zip(legs, legs[1:])]
+    fuse_volumes(sheet + back + [tag for _, tag in ring], unify=not split)
+    return hem_volume(t, ri, leg, length, width)
+
+
+def hem_open():
+    return hem(1.0, 0.5), dict(dims="sheet 100 × 40 × 1 folded back at x = 100 round R0.5 inside: a leg 20 long "
+                                    "over it, the air between 1.0 wide (as thick as the sheet)", wall="1")
+
+
+def hem_narrow():
+    return hem(1.0, 0.3), dict(dims="as hem_open, folded round R0.3: the air 0.6 wide", wall="1")
+
+
+def hem_thick():
+    return hem(2.0, 0.75), dict(dims="as hem_open, 2 thick, folded round R0.75: the air 1.5 wide", wall="2")
+
+
+def hem_split():
+    return hem(1.0, 0.5, split=True), dict(dims="hem_open fused from boxes not unified: the sheet's faces split at "
+                                                "x = 50, the leg's at x = 90", wall="1")
+
+
+def hem_metres():
+    volume = hem(1.0, 0.5)
+    occ.dilate(occ.getEntities(3), 0, 0, 0, 1e-3, 1e-3, 1e-3)
+    # Gmsh's mass of the half ring in metres is 9e-4 off its exact volume (its integration's absolute tolerance).
+    return volume * 1e-9, dict(dims="hem_open scaled by 1e-3 (in metres, written as mm)", wall="0.001",
+                               volume_tolerance=2e-3)
+
+
+def spring_clip():
+    return hem(1.5, 0.6, leg=30.0, length=30.0, width=20.0), dict(
+        dims="two legs 30 × 20 × 1.5 joined by a half ring R0.6 inside: the air between them 1.2 wide", wall="1.5")
+
+
+GAP_PARTS = [
+    ("hem_open", hem_open),
+    ("hem_narrow", hem_narrow),
+    ("hem_thick", hem_thick),
+    ("hem_split", hem_split),
+    ("hem_metres", hem_metres),
+    ("spring_clip", spring_clip),
+]
+
+GAP_README_HEAD = [
+    "# HexLayer sample parts: narrow air gaps",
+    "",
+    "Small single-solid STEP files (AP214, units mm unless named metres): a",
+    "sheet folded back over itself, the air between its two legs no wider",
+    "than about the sheet is thick (open hems of sheet metal: the air as wide",
+    "as the sheet, 0.6 of it, 0.75 of it on a sheet 2 thick, the faces split, in",
+    "metres; a spring clip).",
+]
+
+GAP_README_NOTES = ["Made by `scripts/make_samples.py` (`--only gaps` writes this folder alone;"] + STEP_README_NOTES[1:]
+
+
 def make_subfolder(outdir, folder, parts, head, notes):
     """Write `parts` (name, builder) to OUTPUT_DIR/folder with a README.md of
     their own, between `head` and `notes`."""
@@ -2107,8 +2191,8 @@ def main(argv):
     only = None
     if len(argv) >= 3 and argv[-2] == "--only":
         only, argv = argv[-1], argv[:-2]
-    if len(argv) > 2 or only not in (None, "many", "steps"):
-        sys.exit("usage: make_samples.py [OUTPUT_DIR] [--only many|steps]")
+    if len(argv) > 2 or only not in (None, "many", "steps", "gaps"):
+        sys.exit("usage: make_samples.py [OUTPUT_DIR] [--only many|steps|gaps]")
     outdir = argv[1] if len(argv) == 2 else os.path.join(repo_root, "Resources", "samples")
     os.makedirs(outdir, exist_ok=True)
 
@@ -2121,6 +2205,9 @@ def main(argv):
         if only == "steps":
             make_subfolder(outdir, "steps", STEP_PARTS, STEP_README_HEAD, STEP_README_NOTES)
             return 0
+        if only == "gaps":
+            make_subfolder(outdir, "gaps", GAP_PARTS, GAP_README_HEAD, GAP_README_NOTES)
+            return 0
         rows = []
         for name, builder in PARTS:
             print(name)
@@ -2129,6 +2216,7 @@ def main(argv):
         make_subfolder(outdir, "rims", RIM_PARTS, RIM_README_HEAD, RIM_README_NOTES)
         make_subfolder(outdir, "junctions", JUNCTION_PARTS, JUNCTION_README_HEAD, JUNCTION_README_NOTES)
         make_subfolder(outdir, "steps", STEP_PARTS, STEP_README_HEAD, STEP_README_NOTES)
+        make_subfolder(outdir, "gaps", GAP_PARTS, GAP_README_HEAD, GAP_README_NOTES)
         for name, builder in BENT_BOX_PARTS:
             print(name)
             rows.append(make_part(name, builder, outdir))

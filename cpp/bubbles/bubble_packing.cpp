@@ -36,6 +36,7 @@ double bubbleForce(double w) {
 
 namespace {
 
+constexpr double kLeastGapDiameter = 0.8;       // x the face's thickness: the least diameter a narrow air gap asks for
 constexpr double kSmallestFaceThickness = 0.1;  // a face's thickness for its bubbles, at least, of the part's
 // A seam of a wall is packed at the wall's bubble size where a face beside it is narrower than this x the wall (a ring
 // half the wall wide round a hole): wider faces keep their curved edges' nodes (a boss's foot circle on the plate).
@@ -65,6 +66,13 @@ double maxEdgeCurvature(const BRepAdaptor_Curve& curve) {
   }
   return k;
 }
+
+// Largest bubble diameter on a wall facing the solid across a narrow air gap (a hem folded back over its sheet, the
+// legs of a narrow U): the gap, so that the Delaunay tets join the wall's nodes to those across the wall, not to those
+// across the gap (the sampling must be finer than the gap for the tets to follow the medial surface, §4), but not below
+// kLeastGapDiameter x the wall's thickness (the nodes would come nearer to the rim than half the wall).
+// [in] gap: FaceSide::airGap; [in] thickness: the face's.
+double gapLimit(double gap, double thickness) { return std::max(gap, kLeastGapDiameter * thickness); }
 
 // Largest bubble diameter that still follows a curve or surface of this curvature.
 double curvatureLimit(double curvature, const BubbleOptions& o) {
@@ -313,6 +321,8 @@ std::vector<SurfaceNode> packBubbles(const CadSolid& cad, const WallSides& sides
     // tunnels of a zero-radius bend) would ask for millions of bubbles.
     const double thickness = std::max(sides.faces[f].thickness, kSmallestFaceThickness * sides.thickness);
     faceDiameter[f] = std::min(o.diameterOverThickness * thickness, curvatureLimit(curvature, o));
+    if (const double gap = sides.faces[f].airGap; gap > 0)
+      faceDiameter[f] = std::min(faceDiameter[f], gapLimit(gap, thickness));
   }
   Packing pack(o.diameterOverThickness * sides.thickness);
   packVertices(cad, sides, faceDiameter, pack);

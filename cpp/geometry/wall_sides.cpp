@@ -39,6 +39,7 @@ constexpr double kMaxJunctionAreaShare = 0.02;
 // point: 1/1.3 takes walls inclined to each other by up to about 40 degrees (a taper, a wedge) and leaves
 // out rim faces that meet the walls more steeply (a 45 degree chamfer or oblique cut, a plane cutting a shell).
 constexpr double kMiddleClearance = 1 / 1.3;
+constexpr double kAirGapReach = 1.5;  // x the wall's thickness: the air gaps looked for (wider ones are no matter)
 // A face is a wall face when the rays crossing the wall stand for at least this share of its area, and it
 // is at least this share of the wall wide (2 x area / perimeter).
 constexpr double kMinWallShare = 0.5, kMinWallWidth = 0.25;
@@ -90,6 +91,7 @@ struct FaceRays {
   double sampledArea = 0;          // of all samples, hit or not
   std::vector<RayMark> marks;      // every sample
   Vec3 meanNormal = Vec3::Zero();  // area-weighted outward normal
+  double airGap = 0;               // the narrowest gap in front of the wall (airGapAhead), 0: none
 };
 
 // Whether the inward ray from p (unit direction `inward`, first hit at `length`) crosses the wall from
@@ -102,7 +104,17 @@ bool crossesWall(const BoundaryTriangles& boundary, const Vec3& p, const Vec3& i
   return boundary.noTriangleWithin(p + 0.5 * length * inward, kMiddleClearance * 0.5 * length);
 }
 
-// Casts rays from the face's samples inward and records how far the boundary is and which face it is.
+// How far the solid is in front of a wall sample, across the air (a hem folded back over its sheet, the legs of a
+// narrow U, a slot between two walls): the outward ray's first hit within kAirGapReach x the wall's thickness there.
+// [in] rays; [in] p, outward: the sample and its unit normal; [in] thickness: its inward ray's length; [in] skip.
+// Returns the distance, 0 if none.
+double airGapAhead(RayCaster& rays, const Vec3& p, const Vec3& outward, double thickness, double skip) {
+  const std::optional<RayHit> hit = rays.nearest(p, outward, skip, kAirGapReach * thickness);
+  return hit ? hit->w : 0;
+}
+
+// Casts rays from the face's samples inward and records how far the boundary is and which face it is; from the
+// samples whose ray crosses the wall, outward too (airGapAhead).
 FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, RayCaster& rays, int f) {
   const TopoDS_Shape& face = cad.faces(f + 1);
   const double spacing = std::sqrt(std::max(triangulatedArea(face), 1e-30) / kRaysPerFace);
@@ -116,8 +128,10 @@ FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, 
     if (!hit) continue;
     const Ray ray{hit->w, hit->face, s.area};
     out.all.push_back(ray);
-    if (crossesWall(boundary, s.point, -s.normal, ray.length))
-      out.crossing.push_back(ray), out.marks.back().crossing = true;
+    if (!crossesWall(boundary, s.point, -s.normal, ray.length)) continue;
+    out.crossing.push_back(ray), out.marks.back().crossing = true;
+    if (const double gap = airGapAhead(rays, s.point, s.normal, ray.length, skip); gap > 0)
+      out.airGap = out.airGap > 0 ? std::min(out.airGap, gap) : gap;
   }
   return out;
 }
@@ -369,6 +383,7 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
     fs.wallShare = crossingArea / std::max(hits.sampledArea, 1e-300);
     fs.thickness = weightedMedian(hits.crossing.empty() ? hits.all : hits.crossing);
     fs.opposite = dominantHit(hits.crossing);
+    fs.airGap = hits.airGap;
     // Top = "wall" for now; a face narrower than a quarter of the wall (a sliver along a bend) carries no bubble.
     fs.side = fs.wallShare >= kMinWallShare && fs.width >= kMinWallWidth * fs.thickness ? Side::Top : Side::Lateral;
     fs.marks = std::move(hits.marks);

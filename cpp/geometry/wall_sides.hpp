@@ -35,6 +35,7 @@ struct FaceSide {
   double area = 0;
   int opposite = -1;           // 0-based index of the face most rays crossing the wall hit, -1 if none
   double wallShare = 0;        // share of the face's area whose inward rays cross the wall (a wall face: >= 0.5)
+  double airGap = 0;           // the narrowest air gap in front of the face's wall, up to 1.5 x its thickness (0: none)
   std::vector<RayMark> marks;  // its samples (mixed_faces.hpp splits a face that is partly wall, partly rim)
 };
 
@@ -70,6 +71,9 @@ struct WallSides {
 //    whose rays land across the wall where that wall's do (or on a face on the same surface), at the wall's thickness,
 //    is a wall face too, though most of its rays pass a rim on the way: a wall split into a narrow ring round a hole
 //    (a top face split round a hole, a boss's bore bottom over a hole through the plate).
+//  - A wall face's samples whose rays cross the wall also cast a ray outward: the nearest solid within 1.5 x the wall
+//    there, across the air, is the face's airGap (a hem folded back over its sheet, the legs of a narrow U), which
+//    the bubble packing's spacing must stay under.
 //  - Walls whose rays cross to a wall that the relations put on their own side (over 2 % of the wall
 //    area) are where the sheet branches: they are listed in ownSideFaces (see ownSideError).
 // [in] cad: the prepared solid; [in] boundary: its triangles (built here if not given). Throws geometryError when the

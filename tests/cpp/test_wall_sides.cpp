@@ -239,3 +239,34 @@ TEST(WallSides, ALowRibsPieceHasWallsWhenItsFootIsACut) {
       EXPECT_EQ(findSheets(cad, w).size(), 1u);
     }
 }
+
+// An open hem (Resources/samples/gaps/hem_narrow: a 1 mm sheet folded back round R0.3, the air between the legs 0.6
+// wide): the sheet's inner face, the leg's and the fold's inside face the solid across the air, 0.6 walls away; the
+// outer faces face nothing within 1.5 walls. The same in metres.
+TEST(WallSides, AWallFacingTheSolidAcrossANarrowGapMeasuresTheGap) {
+  for (const char* part : {"hem_narrow", "hem_metres"}) {
+    SCOPED_TRACE(part);
+    const CadSolid cad = readSample(std::string("Resources/samples/gaps/") + part + ".step");
+    const WallSides w = classifyWallSides(cad);
+    const double gap = std::string(part) == "hem_narrow" ? 0.6 : 1.0;  // hem_metres is hem_open: the air 1.0 wide
+    int facing = 0, outer = 0;
+    for (int f = 0; f < cad.faces.Extent(); ++f) {
+      const FaceSide& fs = w.faces[f];
+      if (fs.side == Side::Lateral) continue;
+      // in walls: the sheet z 0...1, the leg 1 + gap ... 2 + gap, the fold round x 100, z 1 + gap / 2
+      const Vec3 c = faceCentre(cad, f) / w.thickness;
+      const bool fold = c.x() > 100;  // the fold's inside: its centroid 2 x its radius / pi from the axis
+      const bool inside =
+          fold ? std::hypot(c.x() - 100, c.z() - 1 - 0.5 * gap) < 0.5 : c.z() > 0.5 && c.z() < 1.5 + gap;
+      if (inside) {
+        EXPECT_NEAR(fs.airGap / w.thickness, gap, 0.02) << "Face" << f + 1 << " at " << c.transpose();
+        ++facing;
+      } else {
+        EXPECT_EQ(fs.airGap, 0.0) << "Face" << f + 1 << " at " << c.transpose();
+        ++outer;
+      }
+    }
+    EXPECT_EQ(facing, 3);
+    EXPECT_EQ(outer, 3);
+  }
+}

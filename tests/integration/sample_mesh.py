@@ -1,5 +1,5 @@
 """Meshing a bundled sample part with the CLI and checking its hexes with tools of this folder, not the mesher's
-report (shared by the scripts that test the sample folders: rims, thickness steps)."""
+report (shared by the scripts that test the sample folders: rims, thickness steps, air gaps)."""
 import os
 import subprocess
 import sys
@@ -7,10 +7,11 @@ import tempfile
 import unittest
 
 import harness
+from cad import face_distances, opened, surface_euler_characteristic
 from inp import hex_arrays, read_inp
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from hex_geometry import hex_scaled_jacobians, hex_volumes  # noqa: E402
+from hex_geometry import boundary_euler_characteristic, hex_scaled_jacobians, hex_volumes  # noqa: E402
 
 
 def mesh_sample(folder, part, layers, tmp):
@@ -43,6 +44,20 @@ def check_hexes(test, gmsh, x, hexes, quality, allowed, label, exact_volume=None
     test.assertLessEqual(abs(error), allowed, f"volume {100 * error:+.2f} %, allowed {100 * allowed:.2f} %")
     print(f"{label}: {len(hexes)} hexes, SJ min {sj.min():.3f} avg {sj.mean():.3f}, volume {100 * error:+.2f} % "
           f"(allowed {100 * allowed:.2f} %)")
+
+
+def check_sample(test, folder, part, layers, quality, allowed, wall):
+    """Resources/samples/FOLDER/PART.step meshed with `layers` layers (mesh_sample) and checked: its hexes
+    (check_hexes: `quality`, `allowed`), every boundary node within 1e-6 mm of the CAD face it is grouped on, the part's
+    topology (Gmsh's triangles of about `wall` mm). A part named ...metres is in metres: the distances scaled by 1e-3."""
+    step, x, hexes, index, sets = mesh_sample(folder, part, layers, test.tmp.name)
+    scale = 1e-3 if part.endswith("metres") else 1.0
+    with opened(step) as gmsh:  # the CAD as Gmsh's OpenCASCADE reads it, not as hexlayer does
+        check_hexes(test, gmsh, x, hexes, quality, allowed, f"{part}, {layers} layers")
+        for face, worst in face_distances(gmsh, x, index, sets).items():
+            test.assertLessEqual(worst, 1e-6 * scale, f"Face{face}: a node {worst:.2e} off it")
+    test.assertEqual(boundary_euler_characteristic(hexes), surface_euler_characteristic(step, wall * scale),
+                     "the part's topology")
 
 
 class MeshTest(unittest.TestCase):

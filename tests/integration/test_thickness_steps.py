@@ -12,15 +12,8 @@ volume Gmsh's OpenCASCADE computes (the thin part's volume: a mesh that ran the 
 
 Run by CTest as: /usr/bin/python3 test_thickness_steps.py --hexlayer PATH --source DIR
 """
-import os
-import sys
-
 import harness
-from cad import face_distances, opened, surface_euler_characteristic
-from sample_mesh import MeshTest, check_hexes, mesh_sample
-
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from hex_geometry import boundary_euler_characteristic  # noqa: E402
+from sample_mesh import MeshTest, check_sample
 
 # Measured: the least minimum 0.53 (step_one_side: its 1.5 step over one row of 3 mm quads), averages 0.992-0.999;
 # volumes -0.45 % (step_both_sides: the step's hexes slope) to +1.24 % (tube_band: its band two quads long).
@@ -31,14 +24,7 @@ LAYERS = (2, 3)
 
 class ThicknessSteps(MeshTest):
     def check(self, part, layers):
-        step, x, hexes, index, sets = mesh_sample("steps", part, layers, self.tmp.name)
-        scale = 1e-3 if part.endswith("metres") else 1.0
-        with opened(step) as gmsh:  # the CAD as Gmsh's OpenCASCADE reads it, not as hexlayer does
-            check_hexes(self, gmsh, x, hexes, (0.5, 0.99), 0.015, f"{part}, {layers} layers")
-            for face, worst in face_distances(gmsh, x, index, sets).items():
-                self.assertLessEqual(worst, 1e-6 * scale, f"Face{face}: a node {worst:.2e} off it")
-        self.assertEqual(boundary_euler_characteristic(hexes), surface_euler_characteristic(step, 2.0 * scale),
-                         "the part's topology")
+        check_sample(self, "steps", part, layers, (0.5, 0.99), 0.015, 2.0)
 
     def test_every_step(self):
         self.check_each(PARTS, LAYERS)
