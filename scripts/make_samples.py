@@ -2046,6 +2046,32 @@ def diaphragm():
         wall="3 / 1")
 
 
+def step_one_side_short():
+    # A plate 60 x 80, 2 thick for x <= 40, 1 thick (z 1...2, the top flush) beyond: a short thin end.
+    fuse_volumes([occ.addBox(0, 0, 0, 40, 80, 2), occ.addBox(40, 0, 1, 20, 80, 1)])
+    return 40 * 80 * 2 + 20 * 80 * 1, dict(dims="60 × 80 plate, 2 thick for x ≤ 40, 1 thick (z 1…2) beyond: a step of "
+                                                "1 in one face, the thin end 20 long", wall="2 / 1")
+
+
+def pocket_one_side():
+    # A rectangular pocket 40 x 30, 1 deep, milled into the top of a 100 x 60 x 2 plate.
+    plate = occ.addBox(0, 0, 0, 100, 60, 2)
+    one_volume(occ.cut([(3, plate)], [(3, occ.addBox(30, 15, 1, 40, 30, 2))])[0])
+    return 100 * 60 * 2 - 40 * 30 * 1, dict(dims="100 × 60 × 2 plate, a pocket 40 × 30 (x 30…70, y 15…45) 1 deep in "
+                                                 "its top", wall="2 / 1")
+
+
+def box_lip():
+    # An open box 80 x 60 x 25, walls and floor 2 thick, its walls 1 thick (the inner half cut away) over the top 12:
+    # the lip of a molded housing's half.
+    box = occ.cut([(3, occ.addBox(0, 0, 0, 80, 60, 25))], [(3, occ.addBox(2, 2, 2, 76, 56, 30))])[0]
+    one_volume(occ.cut(box, [(3, occ.addBox(1, 1, 13, 78, 58, 13))])[0])
+    inside = 76 * 56
+    return 80 * 60 * 25 - inside * 23 - (78 * 58 - inside) * 12, dict(
+        dims="open box 80 × 60 × 25, walls and floor 2 thick; the walls 1 thick (the inner half cut away) over the "
+             "top 12: a lip", wall="2 / 1")
+
+
 def tube_band():
     # A tube R30 outside, wall 3, 60 long, 1.5 thick (R27.75...R29.25) for z 20...40.
     whole = tube(30.0, 3.0, 0.0, 60.0)
@@ -2068,6 +2094,9 @@ STEP_PARTS = [
     ("groove_both_sides", groove_both_sides),
     ("diaphragm", diaphragm),
     ("tube_band", tube_band),
+    ("step_one_side_short", step_one_side_short),
+    ("pocket_one_side", pocket_one_side),
+    ("box_lip", box_lip),
 ]
 
 STEP_README_HEAD = [
@@ -2077,7 +2106,8 @@ STEP_README_HEAD = [
     "wall goes on thinner past a step in one or both of its faces: a plate",
     "milled thinner from both sides (steps equal, unequal, on one side, the",
     "step oblique, faces split, in metres), a groove across a plate, a round",
-    "diaphragm, a thinner band round a tube.",
+    "diaphragm, a thinner band round a tube; steps in one face: a plate's short",
+    "thin end, a pocket milled into a plate, the lip round an open box's walls.",
 ]
 
 STEP_README_NOTES = [

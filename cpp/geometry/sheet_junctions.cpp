@@ -114,7 +114,14 @@ void joinCoplanarSheets(const CadSolid& cad, const WallSides& sides, UnionFind& 
 
 }  // namespace
 
-std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides, double highest) {
+namespace {
+
+// A thickness step (thicknessSteps): its side (a lateral face), the thinner wall's face and the thicker one's.
+struct Step {
+  int side = -1, thin = -1, thick = -1;
+};
+
+std::vector<Step> stepsOf(const CadSolid& cad, const WallSides& sides, double highest) {
   const int n = static_cast<int>(sides.faces.size());
   auto isWall = [&](int f) { return sides.faces[f].side != Side::Lateral; };
   struct Meeting {
@@ -128,18 +135,33 @@ std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallS
     if (const auto [wall, side] = isWall(e.a) ? std::pair(e.a, e.b) : std::pair(e.b, e.a);
         isWall(wall) && !isWall(side))
       (e.concave ? concave : convex)[side].push_back({wall, e.edge});
-  std::vector<std::pair<int, int>> steps;
+  std::vector<Step> steps;
   for (int r = 0; r < n; ++r)
     for (const Meeting& a : concave[r])
       for (const Meeting& b : convex[r]) {
         const FaceSide &thin = sides.faces[a.wall], &thick = sides.faces[b.wall], &side = sides.faces[r];
         if (thin.side == thick.side && side.width < highest * thin.thickness &&
             thick.thickness > thin.thickness + 0.5 * side.width && normal(a).dot(normal(b)) > kStepCos)
-          steps.emplace_back(std::min(a.wall, b.wall), std::max(a.wall, b.wall));
+          steps.push_back({r, a.wall, b.wall});
       }
+  return steps;
+}
+
+}  // namespace
+
+std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides, double highest) {
+  std::vector<std::pair<int, int>> steps;
+  for (const Step& s : stepsOf(cad, sides, highest))
+    steps.emplace_back(std::min(s.thin, s.thick), std::max(s.thin, s.thick));
   std::sort(steps.begin(), steps.end());
   steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
   return steps;
+}
+
+std::vector<char> thicknessStepSides(const CadSolid& cad, const WallSides& sides) {
+  std::vector<char> side(sides.faces.size(), 0);
+  for (const Step& s : stepsOf(cad, sides, kStepWalls)) side[s.side] = 1;
+  return side;
 }
 
 std::string sheetPlace(const CadSolid& cad, const Sheet& s) {

@@ -50,6 +50,10 @@ inline constexpr double kStepWalls = 1.05;
 std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides,
                                                 double highest = kStepWalls);
 
+// The sides of the thickness steps the sweep takes (thicknessSteps at kStepWalls): lateral faces that bound no rim of
+// the chordal surface, which runs on across them. [in] cad, sides. Returns per face (0-based) 1 if it is one.
+std::vector<char> thicknessStepSides(const CadSolid& cad, const WallSides& sides);
+
 // "(x, y, z)": the sheet's centre in the input's units (CadSolid::unit), for messages.
 std::string sheetPlace(const CadSolid& cad, const Sheet& s);
 

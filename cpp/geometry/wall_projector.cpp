@@ -84,13 +84,15 @@ std::optional<FacePoint> WallProjector::project(Side side, const Vec3& p) const 
   return nearest(faces_[sideIndex(side)], p);
 }
 
-bool WallProjector::reaches(Side side, const Vec3& p, double reach) const {
+bool WallProjector::reaches(Side side, const Vec3& p, double reach, const std::vector<char>& leftOut) const {
   const PieceSet& set = faces_[sideIndex(side)];
   CadFaceProbe* own = probe();
   std::unique_ptr<CadFaceProbe> local;  // off the counted threads: one for this query
   if (!own) local = std::make_unique<CadFaceProbe>(*cadFaces_), own = local.get();
   auto near = [&](int i) {
-    return mayBeWithin(p, boxOf(pieces_[i].box), reach) && own->distance(pieces_[i].face, p) <= reach;
+    const int f = pieces_[i].face;
+    return !(f < static_cast<int>(leftOut.size()) && leftOut[f]) && mayBeWithin(p, boxOf(pieces_[i].box), reach) &&
+           own->distance(f, p) <= reach;
   };
   if (!set.tree) return std::any_of(set.pieces.begin(), set.pieces.end(), near);
   bool found = false;

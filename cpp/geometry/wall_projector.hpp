@@ -40,8 +40,8 @@ class WallProjector {
 
   // True if a face of the `side` wall is within `reach` of p: the distance of project(side, p), as
   // BRepExtrema_DistShapeShape measures it (CadFaceProbe::distance), without its nearest point.
-  // [in] reach: >= 0.
-  bool reaches(Side side, const Vec3& p, double reach) const;
+  // [in] reach: >= 0; [in] leftOut: per face (0-based), 1 if it is not looked at (empty: none).
+  bool reaches(Side side, const Vec3& p, double reach, const std::vector<char>& leftOut = {}) const;
 
   // The point nearest to p on the one face `face` (0-based in CadSolid::faces); nullopt if it has no side.
   std::optional<FacePoint> projectOntoFace(int face, const Vec3& p) const;

@@ -896,8 +896,9 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   r.chordal = countChordal(cut);
   const WallProjector walls(cad, sides, boxes);
   r.chordal.rim = clock.run("chordal_rim", [&] {
+    const std::vector<char> stepSides = thicknessStepSides(cad, sides);  // no rim: the chordal surface runs across
     const std::size_t tears = fillTears(
-        cut, [&](const Vec3& p) { return walls.reaches(Side::Lateral, p, sides.thickness); },
+        cut, [&](const Vec3& p) { return walls.reaches(Side::Lateral, p, sides.thickness, stepSides); },
         kMaxTear * sides.thickness);
     RimSnapStats snapped = snapRimBetweenWallEdges(
         cut, [&](const Vec3& p) { return walls.rimMiddle(p); }, sides.thickness);

@@ -11,6 +11,7 @@
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <Bnd_Box.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -18,6 +19,7 @@
 #include <gp_Trsf.hxx>
 
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "geometry/cad_solid.hpp"
@@ -320,4 +322,29 @@ TEST(SheetJunctions, APlatesDiscInsideATubeFusedThroughItIsThePlates) {
   }
   const CadSolid grid = plateWith({{gp_Pnt(0, 12, 1), gp_Pnt(60, 2, 6)}, {gp_Pnt(29, 0, 1), gp_Pnt(2, 40, 6)}}, 1);
   EXPECT_EQ(findSheets(grid, classifyWallSides(grid)).size(), 5u) << "the plate and four rib segments";
+}
+
+// The sides of the steps the sweep takes: a plate 3 thick going on 1.5 thick past a step in one face (z0 1.5: the top
+// flush) has one, the face x = 30, z 0...1.5; past steps in both faces two, x = 30 below and above the thin wall; a
+// step higher than the thin wall none. At scales 1e-3, 1, 1e3.
+TEST(SheetJunctions, AThicknessStepsSideIsNamed) {
+  for (const double s : {1e-3, 1.0, 1e3})
+    for (const auto& [z0, thick, count] : {std::tuple{1.5, 3.0, 1}, {0.75, 3.0, 2}, {2.25, 6.0, 0}}) {
+      const CadSolid cad = steppedPlate(thick, z0, 1.5, s);
+      const WallSides sides = classifyWallSides(cad);
+      const std::vector<char> stepSides = thicknessStepSides(cad, sides);
+      ASSERT_EQ(stepSides.size(), static_cast<std::size_t>(cad.faces.Extent()));
+      int found = 0;
+      for (int f = 0; f < cad.faces.Extent(); ++f) {
+        if (!stepSides[f]) continue;
+        ++found;
+        EXPECT_EQ(sides.faces[f].side, Side::Lateral) << s << " " << z0 << ": Face" << f + 1;
+        Bnd_Box box;
+        BRepBndLib::Add(cad.faces(f + 1), box);
+        double x0, y0, z0b, x1, y1, z1;
+        box.Get(x0, y0, z0b, x1, y1, z1);
+        EXPECT_NEAR(0.5 * (x0 + x1), 30 * s * cad.unit, 1e-6 * s * cad.unit) << s << " " << z0 << ": Face" << f + 1;
+      }
+      EXPECT_EQ(found, count) << s << " " << z0;
+    }
 }
