@@ -39,7 +39,8 @@ constexpr double kMaxJunctionAreaShare = 0.02;
 // point: 1/1.3 takes walls inclined to each other by up to about 40 degrees (a taper, a wedge) and leaves
 // out rim faces that meet the walls more steeply (a 45 degree chamfer or oblique cut, a plane cutting a shell).
 constexpr double kMiddleClearance = 1 / 1.3;
-constexpr double kAirGapReach = 1.5;  // x the wall's thickness: the air gaps looked for (wider ones are no matter)
+constexpr double kMinSplitShare = 0.25;  // a wall split into pieces: the least share of a piece's rays crossing it
+constexpr double kAirGapReach = 1.5;     // x the wall's thickness: the air gaps looked for (wider ones are no matter)
 // A face is a wall face when the rays crossing the wall stand for at least this share of its area, and it
 // is at least this share of the wall wide (2 x area / perimeter).
 constexpr double kMinWallShare = 0.5, kMinWallWidth = 0.25;
@@ -159,6 +160,28 @@ bool onSurfaceOf(const CadSolid& cad, const WallSides& w, int f, int g) {
     if (onOther.NbPoints() == 0 || onOther.LowerDistance() > kOnSurface * cad.diagonal) return false;
   }
   return true;
+}
+
+// Lateral faces that are pieces of a wall split along a line: on the surface of a wall face they meet in a smooth edge,
+// facing as it does (kExtensionTurn), at least a quarter wall wide, a quarter of their rays crossing the wall
+// (kMinSplitShare), and the two faces' rays together crossing it as a wall's do (kMinWallShare). A wall split a wall or
+// two from where it bends sharply into another (a wall standing on a flange's end, split just under it) leaves a strip
+// whose rays near the bend run into the other wall: about half of them cross. [in] cad; [in] w: the first
+// classification; [in] meanNormal: per face. Returns the faces, ascending.
+std::vector<int> splitWallPieces(const CadSolid& cad, const WallSides& w, const std::vector<Vec3>& meanNormal) {
+  std::set<int> found;
+  for (const SheetJoin& j : w.sheetJoins)
+    for (auto [f, g] : {std::pair{j.a, j.b}, std::pair{j.b, j.a}}) {
+      const FaceSide &fs = w.faces[f], &wall = w.faces[g];
+      const double together =
+          (fs.wallShare * fs.area + wall.wallShare * wall.area) / std::max(fs.area + wall.area, 1e-300);
+      if (!j.smooth || fs.side != Side::Lateral || wall.side == Side::Lateral || fs.wallShare < kMinSplitShare ||
+          together < kMinWallShare || fs.width < kMinWallWidth * fs.thickness ||
+          angleBetween(meanNormal[f], meanNormal[g]) > kExtensionTurn)
+        continue;
+      if (onSurfaceOf(cad, w, f, g)) found.insert(f);
+    }
+  return {found.begin(), found.end()};
 }
 
 // Lateral faces that carry a wall on: on the surface of a wall face they meet in a smooth edge (a wall face split
@@ -403,6 +426,7 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
   w.bendRounds = findBendRounds(cad, w, across);
   for (int f : w.bendRounds) w.faces[f].side = Side::Top, w.faces[f].thickness = w.thickness;
   for (int f : wallExtensions(cad, w, landing, meanNormal)) w.faces[f].side = Side::Top;
+  for (int f : splitWallPieces(cad, w, meanNormal)) w.faces[f].side = Side::Top;
   std::vector<std::pair<int, int>> rootParity = solveSides(cad, w, across);
   w.obliqueRims = obliqueRimFaces(cad, w);
   if (!w.obliqueRims.empty()) {  // sides again without them

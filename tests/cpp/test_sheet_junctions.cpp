@@ -348,3 +348,38 @@ TEST(SheetJunctions, AThicknessStepsSideIsNamed) {
       EXPECT_EQ(found, count) << s << " " << z0;
     }
 }
+
+// An open tray 80 x 60 x 20 (walls and floor 1.5) with a flange 10 wide all round its top, its walls' inner faces split
+// at z 17 (cut again by a box there, as CAD systems split faces): the strips above, under the bend's corner, have half
+// their rays running into the flange. They are pieces of the walls: one sheet, no wall standing on the flange. At
+// scales 1e-3, 1, 1e3.
+TEST(SheetJunctions, AWallSplitJustUnderItsBendIsWallInEveryPiece) {
+  for (const double s : {1e-3, 1.0, 1e3}) {
+    TopoDS_Shape tray = BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 80, 60, 20).Shape(),
+                                         BRepPrimAPI_MakeBox(gp_Pnt(-10, -10, 18.5), 100, 80, 1.5).Shape())
+                            .Shape();
+    tray = BRepAlgoAPI_Cut(tray, BRepPrimAPI_MakeBox(gp_Pnt(1.5, 1.5, 1.5), 77, 57, 25).Shape()).Shape();
+    ShapeUpgrade_UnifySameDomain unify(tray, true, true, false);  // the flange's top one face, as CAD exports it
+    unify.Build();
+    tray = BRepAlgoAPI_Cut(unify.Shape(), BRepPrimAPI_MakeBox(gp_Pnt(1.5, 1.5, 17), 77, 57, 5).Shape()).Shape();
+    gp_Trsf scaling;
+    scaling.SetScale(gp_Pnt(0, 0, 0), s);
+    TopExp_Explorer solid(BRepBuilderAPI_Transform(tray, scaling, true).Shape(), TopAbs_SOLID);
+    ASSERT_TRUE(solid.More());
+    const CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()));
+    const WallSides sides = classifyWallSides(cad);
+    int strips = 0;
+    for (int f = 0; f < cad.faces.Extent(); ++f) {
+      Bnd_Box box;
+      BRepBndLib::Add(cad.faces(f + 1), box);
+      double x0, y0, z0, x1, y1, z1;
+      box.Get(x0, y0, z0, x1, y1, z1);
+      const double unit = s * cad.unit;
+      if (z0 < 16.9 * unit || z1 > 20.1 * unit || z1 - z0 < 2.9 * unit) continue;  // the strips: z 17...20
+      ++strips;
+      EXPECT_NE(sides.faces[f].side, Side::Lateral) << s << ": Face" << f + 1 << ", share " << sides.faces[f].wallShare;
+    }
+    EXPECT_EQ(strips, 4) << s;
+    EXPECT_EQ(findSheets(cad, sides).size(), 1u) << s;
+  }
+}
