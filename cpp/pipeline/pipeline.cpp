@@ -832,6 +832,22 @@ MeshResult meshWithoutFootFillets(const CadSolid& cad, FootFillets& fillets, con
   return out;
 }
 
+// The part as walls standing on walls (issue 18: junction meshing, the fillets at the walls' feet smoothed over), or
+// none if it is one sheet without such fillets. [in,out] cad, sides: as meshJunctions and meshWithoutFootFillets;
+// [in] o; [in,out] result, clock. Throws their errors.
+std::optional<MeshResult> meshAsSheets(CadSolid& cad, WallSides& sides, const MeshOptions& o, MeshResult& result,
+                                       StageClock& clock) {
+  if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1) {
+    if (std::optional<FootFillets> smooth =
+            clock.run("foot_fillets", [&] { return removeFootFillets(cad, sides, sheets); }))
+      return meshWithoutFootFillets(cad, *smooth, o, result, clock);
+    return meshJunctions(cad, sides, mergeCrossingRibs(cad, sides, sheets), o, result, clock);
+  }
+  if (std::optional<FootFillets> smooth = clock.run("foot_fillets", [&] { return removeRootFillets(cad, sides); }))
+    return meshWithoutFootFillets(cad, *smooth, o, result, clock);
+  return std::nullopt;
+}
+
 }  // namespace
 
 void validateOptions(const MeshOptions& o) {
@@ -869,16 +885,22 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   r.facesSplit = clock.run("mixed_faces", [&] { return splitMixedFaces(cad, sides); });
   if (!o.dropJunctions && sides.ownSideFaces.empty()) {
     // a wall butting on walls of its sheet stands on them (with --drop-junctions it stays mitred: it is no sheet to
-    // leave out under which the others' chordal surface runs on)
-    r.facesSplit += clock.run("butt_joints", [&] { return splitButtJoints(cad, sides); });
-    if (const std::vector<Sheet> sheets = findSheets(cad, sides); sheets.size() > 1) {
-      if (std::optional<FootFillets> smooth =
-              clock.run("foot_fillets", [&] { return removeFootFillets(cad, sides, sheets); }))
-        return meshWithoutFootFillets(cad, *smooth, o, result, clock);
-      return meshJunctions(cad, sides, mergeCrossingRibs(cad, sides, sheets), o, result, clock);
+    // leave out under which the others' chordal surface runs on); where the part so cut is refused (a gusset's slope
+    // in a box's corner makes the floor and the wall butt on each other), it is meshed as it was
+    const CadSolid whole = cad;
+    const WallSides wholeSides = sides;
+    const MeshResult before = result;
+    const std::size_t butts = clock.run("butt_joints", [&] { return splitButtJoints(cad, sides); });
+    r.facesSplit += butts;
+    std::optional<MeshResult> sheets;
+    try {
+      sheets = meshAsSheets(cad, sides, o, result, clock);
+    } catch (const Error& e) {
+      if (butts == 0 || e.code() != ExitCode::UnsupportedGeometry) throw;
+      cad = whole, sides = wholeSides, result = before;
+      sheets = meshAsSheets(cad, sides, o, result, clock);
     }
-    if (std::optional<FootFillets> smooth = clock.run("foot_fillets", [&] { return removeRootFillets(cad, sides); }))
-      return meshWithoutFootFillets(cad, *smooth, o, result, clock);
+    if (sheets) return std::move(*sheets);
   }
   const double leftOut = handleJunctions(cad, sides, o.dropJunctions, r.junctions);
   r.thickness = sides.thickness;
@@ -914,7 +936,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   qo.tryBudget = o.quadTryBudget, qo.stageBudget = o.quadStageBudget;
   qo.ringAround = o.ringAround;
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
-  if (edit) edit(cad, stage);
+  if (edit) clock.run("footprints", [&] { return edit(cad, stage), 0; });  // the walls' feet carried into the quads
   const QuadMesh& quads = stage.quads;
   if (qo.adaptive) r.memory = requireMemoryOfQuads(o, quads.quads.size());
   r.chordal.fairingIterations = stage.fairingIterations;

@@ -67,15 +67,20 @@ PlaneLine planeLine(const MapLocator& locate, const Eigen::Vector2d& from, const
   return {from, to.uv, quadsAlong(x, size)};
 }
 
+// Where (a fractional sample index) a measure accumulated at evenly spaced samples reaches j / m of its total.
+double sharePlace(const std::vector<double>& measure, int j, int m) {
+  const double target = measure.back() * j / m;
+  const int last = static_cast<int>(measure.size()) - 1;
+  const int s =
+      std::clamp(static_cast<int>(std::lower_bound(measure.begin(), measure.end(), target) - measure.begin()), 1, last);
+  const double g = (target - measure[s - 1]) / std::max(measure[s] - measure[s - 1], 1e-300);
+  return s - 1 + g;
+}
+
 // The point of the line after j of its m quads, all needing the same share of it.
 Eigen::Vector2d linePoint(const PlaneLine& line, int j, int m) {
   if (j >= m) return line.to;
-  const double target = line.quads.back() * j / m;
-  const int last = static_cast<int>(line.quads.size()) - 1;
-  const int s = std::clamp(
-      static_cast<int>(std::lower_bound(line.quads.begin(), line.quads.end(), target) - line.quads.begin()), 1, last);
-  const double g = (target - line.quads[s - 1]) / std::max(line.quads[s] - line.quads[s - 1], 1e-300);
-  return line.from + (line.to - line.from) * (s - 1 + g) / (line.quads.size() - 1);
+  return line.from + (line.to - line.from) * sharePlace(line.quads, j, m) / (line.quads.size() - 1);
 }
 
 // Points of a loop (counter-clockwise, from its corner 0) for a box's boundary walk: sides[k] points
@@ -810,6 +815,68 @@ void numberFirst(BlockGrid& grid, const std::vector<int>& first) {
   grid.nodes = std::move(nodes);
 }
 
+// A side of a block: its nodes in the grid, from its first corner to its last.
+struct BlockSide {
+  std::vector<int> node;
+  int cells() const { return static_cast<int>(node.size()) - 1; }
+};
+
+BlockSide reversed(BlockSide side) {
+  std::reverse(side.node.begin(), side.node.end());
+  return side;
+}
+
+// A block from its four sides (counter-clockwise, side k from corner k to k + 1; opposite sides with as many cells):
+// its inner nodes by transfinite (Coons) interpolation of the sides' nodes, put on the surface, then its quads.
+// [in,out] grid; [in] onSurface: the surface's point nearest to a point; [in] side.
+void addCoonsBlock(BlockGrid& grid, const std::function<Vec3(const Vec3&)>& onSurface,
+                   const std::array<BlockSide, 4>& side) {
+  const int n0 = side[0].cells(), n1 = side[1].cells();
+  auto boundary = [&](int i, int j) -> int {
+    if (j == 0) return side[0].node[i];
+    if (i == n0) return side[1].node[j];
+    if (j == n1) return side[2].node[n0 - i];
+    return side[3].node[n1 - j];
+  };
+  auto x = [&](int i, int j) { return grid.nodes[boundary(i, j)]; };
+  std::vector<int> id((n0 + 1) * (n1 + 1));
+  for (int i = 0; i <= n0; ++i)
+    for (int j = 0; j <= n1; ++j) {
+      if (i == 0 || j == 0 || i == n0 || j == n1) {
+        id[i * (n1 + 1) + j] = boundary(i, j);
+        continue;
+      }
+      const double u = static_cast<double>(i) / n0, v = static_cast<double>(j) / n1;
+      const Vec3 p =
+          (1 - v) * x(i, 0) + v * x(i, n1) + (1 - u) * x(0, j) + u * x(n0, j) -
+          ((1 - u) * (1 - v) * x(0, 0) + u * (1 - v) * x(n0, 0) + u * v * x(n0, n1) + (1 - u) * v * x(0, n1));
+      id[i * (n1 + 1) + j] = static_cast<int>(grid.nodes.size());
+      grid.nodes.push_back(onSurface(p));
+    }
+  auto at = [&](int i, int j) { return id[i * (n1 + 1) + j]; };
+  for (int i = 0; i < n0; ++i)
+    for (int j = 0; j < n1; ++j) grid.quads.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+  ++grid.blocks;
+}
+
+// The segment from node `first` to node `last` of the grid as a side of m cells, each needing as many quads of the
+// target size, its inner nodes put on the surface and added to the grid. [in,out] grid.
+BlockSide spoke(BlockGrid& grid, const std::function<Vec3(const Vec3&)>& onSurface, int first, int last, int m,
+                const SizeField& size) {
+  const Vec3 a = grid.nodes[first], b = grid.nodes[last];
+  const int samples = kRadialSamples * m;
+  std::vector<Vec3> line;
+  for (int k = 0; k <= samples; ++k) line.push_back(a + (b - a) * k / samples);
+  const std::vector<double> quads = quadsAlong(line, size);
+  BlockSide side{{first}};
+  for (int j = 1; j < m; ++j) {
+    side.node.push_back(static_cast<int>(grid.nodes.size()));
+    grid.nodes.push_back(onSurface(a + (b - a) * sharePlace(quads, j, m) / samples));
+  }
+  side.node.push_back(last);
+  return side;
+}
+
 }  // namespace
 
 BlockGrid oGrid(const SurfaceMap& map, const SizeField& size) {
@@ -824,6 +891,63 @@ BlockGrid oGrid(const SurfaceMap& map, const SizeField& size) {
   addCells(grid, locate, lines, std::vector<char>(core.n0 * core.n1, 0));
   grid.blocks = 1;
   addRing(grid, locate, lines, core, loopPoints(map, map.rim, map.corners, core.sides(), size), true, size);
+  return grid;
+}
+
+BlockGrid triangleGrid(const SurfaceMap& map, const SizeField& size,
+                       const std::function<Vec3(const Vec3&)>& onSurface) {
+  if (map.empty() || map.boundary != MapBoundary::Square || !map.holes.empty() || map.sideMiddle < 0) return {};
+  const std::vector<double> quads = quadsAlongLoop(map, map.rim, size);
+  const double around = quads.back();
+  // corners A, B, C (k = 0, 1, 2) counter-clockwise after the side's middle; side k runs from corner k to k + 1
+  std::array<double, 3> at;  // the measure at each corner
+  std::array<Vec3, 3> corner;
+  for (int k = 0; k < 3; ++k) {
+    const int p = map.corners[(map.sideMiddle + 1 + k) % 4];
+    at[k] = quads[p], corner[k] = map.points[map.rim[p]];
+  }
+  auto span = [&](int k) { return std::fmod(at[(k + 1) % 3] - at[k] + around, around); };
+  // The blocks meet at the incircle's centre and touch the sides where it does (each block a kite, right-angled at
+  // the touch points): t[k], corner k's tangent length (t_A = (c + b - a) / 2), in quads of the target size.
+  std::array<double, 3> t;
+  for (int k = 0; k < 3; ++k) t[k] = 0.5 * (span(k) + span((k + 2) % 3) - span((k + 1) % 3));
+  // x[j]: the cells of the spoke to side j's touch point, which the grid also puts on the rim from side j - 1's touch
+  // point to corner j (t[j] long) and from corner j + 1 to side j + 1's touch point (t[j + 1] long): their geometric
+  // mean, so that the cells on either are as much longer and shorter than the target size
+  std::array<int, 3> x;
+  for (int j = 0; j < 3; ++j) x[j] = count(std::sqrt(std::max(t[j], 0.0) * std::max(t[(j + 1) % 3], 0.0)));
+  BlockGrid grid;  // the rim's nodes first, from A round it: side k from corner k to its touch point, then on
+  std::array<int, 3> first, touch;
+  for (int k = 0; k < 3; ++k) {
+    const int before = x[(k + 2) % 3], after = x[(k + 1) % 3];  // cells from corner k to the touch point, and on
+    first[k] = static_cast<int>(grid.nodes.size());
+    for (int i = 0; i < before; ++i)
+      grid.nodes.push_back(loopPoint(map, map.rim, quads, std::fmod(at[k] + t[k] * i / before, around)).x);
+    touch[k] = static_cast<int>(grid.nodes.size());
+    for (int i = 0; i < after; ++i)
+      grid.nodes.push_back(
+          loopPoint(map, map.rim, quads, std::fmod(at[k] + t[k] + (span(k) - t[k]) * i / after, around)).x);
+  }
+  const int rim = static_cast<int>(grid.nodes.size());
+  auto rimSide = [&](int from, int cellCount) {
+    BlockSide side;
+    for (int i = from; i <= from + cellCount; ++i) side.node.push_back(i % rim);
+    return side;
+  };
+  std::array<double, 3> opposite;  // side lengths, for the incentre (I = (a A + b B + c C) / (a + b + c))
+  for (int k = 0; k < 3; ++k) opposite[k] = (corner[(k + 2) % 3] - corner[(k + 1) % 3]).norm();
+  const Vec3 centre = (opposite[0] * corner[0] + opposite[1] * corner[1] + opposite[2] * corner[2]) /
+                      (opposite[0] + opposite[1] + opposite[2]);
+  const int o = static_cast<int>(grid.nodes.size());
+  grid.nodes.push_back(onSurface(centre));
+  std::array<BlockSide, 3> out;  // from the centre to each side's touch point
+  for (int j = 0; j < 3; ++j) out[j] = spoke(grid, onSurface, o, touch[j], x[j], size);
+  // block k: its corner, the touch point after it, the centre, the touch point before it
+  for (int k = 0; k < 3; ++k) {
+    const int before = (k + 2) % 3;
+    addCoonsBlock(grid, onSurface,
+                  {rimSide(first[k], x[before]), reversed(out[k]), out[before], rimSide(touch[before], x[k])});
+  }
   return grid;
 }
 

@@ -23,6 +23,15 @@ struct BlockGrid {
 // from a side of the core out to a quarter of the rim. Empty for any other map.
 BlockGrid oGrid(const SurfaceMap& map, const SizeField& size);
 
+// Grid of a triangle (a disc whose rim has three sharp corners, mapped onto the square with the middle of its longest
+// side as the fourth corner: SurfaceMap::sideMiddle): three blocks, each from a corner to the centre, split at a point
+// of each side (the centre the mean of the three), so that each corner keeps its angle in one quad and no quad has a
+// side's straight angle (the square grid puts one at the fourth corner). Each block's cells as its sides need them
+// (opposite sides alike: a spoke's as the two sides' parts across it), its spokes straight and its inside by
+// transfinite interpolation in space, put on the surface by onSurface (the surface's point nearest to a point). Empty
+// for any other map, or a triangle with holes.
+BlockGrid triangleGrid(const SurfaceMap& map, const SizeField& size, const std::function<Vec3(const Vec3&)>& onSurface);
+
 // Grid of a surface mapped onto the square: n0 x n1 quads, and around each hole a pocket of four
 // blocks, from the sides of a box of grid cells in to the quarters of the hole. Empty for any other
 // map, or if two pockets meet or one reaches the rim.

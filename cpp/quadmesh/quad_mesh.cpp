@@ -550,7 +550,8 @@ SizeField creaseSize(const ChordalLocator& chordal, const QuadMeshOptions& o) {
 
 // The structured block grids of the chordal surface (block_grids.hpp): a grid with a pocket round each hole (where
 // the pockets would meet or reach the rim, the shared grid round all the holes), and if its rim has no four sharp
-// corners, an O-grid too (if it is a disc), and a ring grid if it has two rims (a tube, a ring). Each is a disc with
+// corners, an O-grid too (if it is a disc; if it is a triangle, the triangle grid), and a ring grid if it has two rims
+// (a tube, a ring). Each is a disc with
 // the map's holes: none is made where that is not the topology the quads must have (a pinhole the quads close).
 // [in] chordal; [in] square: its map onto the square; [in] o; [in] chordalEuler. Returns the tries.
 std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const SurfaceMap& square, const QuadMeshOptions& o,
@@ -564,6 +565,8 @@ std::vector<QuadMesh> blockGridQuads(const ChordalLocator& chordal, const Surfac
     addBlockGrid(tries, sharedGrid(square, size), QuadLayout::SharedGrid);
   if (!square.empty() && !square.sharpCorners && square.holes.empty())
     addBlockGrid(tries, oGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Circle), size), QuadLayout::OGrid);
+  addBlockGrid(tries, triangleGrid(square, size, [&](const Vec3& p) { return chordal.locate(p).point; }),
+               QuadLayout::TriangleGrid);
   if (!square.empty() && square.holes.size() == 1)
     addBlockGrid(tries, ringGrid(mapToPlane(chordal.surface(), o.size, MapBoundary::Annulus), size, o.ringAround),
                  QuadLayout::Ring);

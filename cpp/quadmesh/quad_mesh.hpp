@@ -26,7 +26,7 @@ struct QuadTries {
 // How the quads were laid out: by Gmsh on its patches (some of them structured, the rest
 // unstructured), or as structured block grids in a map of the surface (block_grids.hpp: holedGrid, sharedGrid,
 // oGrid, ringGrid), or one grid per patch between its creases (patch_grids.hpp).
-enum class QuadLayout { Gmsh, Grid, SharedGrid, OGrid, Ring, PatchGrid };
+enum class QuadLayout { Gmsh, Grid, SharedGrid, OGrid, Ring, PatchGrid, TriangleGrid };
 
 struct QuadMesh {
   std::vector<Vec3> nodes;                // on the chordal surface

@@ -95,6 +95,8 @@ const char* layoutName(QuadLayout layout) {
       return "ring";
     case QuadLayout::PatchGrid:
       return "patch-grid";
+    case QuadLayout::TriangleGrid:
+      return "triangle-grid";
     default:
       return "gmsh";
   }

@@ -151,27 +151,56 @@ std::size_t evenRimLoops(QuadMesh& q, const std::function<bool(const Vec3&)>& mu
 bool pillowFlatCorners(QuadMesh& q) {
   std::vector<int> rim = longestRimLoop(q);
   std::vector<std::vector<int>> corners(q.nodes.size());  // per node, the other corners of its quads (with repeats)
-  for (const auto& quad : q.quads)
-    for (int k = 0; k < 4; ++k)
-      for (int l = 1; l < 4; ++l) corners[quad[k]].push_back(quad[(k + l) % 4]);
+  std::vector<int> quadOf(q.nodes.size(), -1);            // per node, one quad it is in
+  for (int e = 0; e < static_cast<int>(q.quads.size()); ++e)
+    for (int k = 0; k < 4; ++k) {
+      quadOf[q.quads[e][k]] = e;
+      for (int l = 1; l < 4; ++l) corners[q.quads[e][k]].push_back(q.quads[e][(k + l) % 4]);
+    }
   if (!hasFlatCorner(q, rim, corners)) return false;
   orientLikeItsQuads(q, rim);
-  std::vector<char> onRim(q.nodes.size(), 0);
-  for (int n : rim) onRim[n] = 1;
-  const int first = static_cast<int>(q.nodes.size());
-  std::vector<Vec3> inward;
-  for (int n : rim) {
-    q.nodes.push_back(q.nodes[n]);
+  // The ring's loop: the rim, but round the quad of each sharp corner (in one quad, kept as it is) along its inner
+  // edges, from the rim node before the corner through the quad's inner corner to the one after.
+  const std::size_t n = rim.size();
+  std::vector<char> kept(q.quads.size(), 0), onRim(q.nodes.size(), 0);
+  for (int c : rim) onRim[c] = 1;
+  std::vector<int> loop = rim;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int c = rim[i], a = rim[(i + n - 1) % n], b = rim[(i + 1) % n];
+    if (corners[c].size() != 3 || angleBetween(q.nodes[a] - q.nodes[c], q.nodes[b] - q.nodes[c]) >= kKeptCorner)
+      continue;
+    const std::array<int, 4>& quad = q.quads[quadOf[c]];
+    const int k = static_cast<int>(std::find(quad.begin(), quad.end(), c) - quad.begin());
+    const int x = quad[(k + 2) % 4];
+    const bool neighbours =
+        (quad[(k + 1) % 4] == a && quad[(k + 3) % 4] == b) || (quad[(k + 1) % 4] == b && quad[(k + 3) % 4] == a);
+    if (!neighbours || onRim[x] || kept[quadOf[a]] || kept[quadOf[b]]) continue;
+    kept[quadOf[c]] = 1, loop[i] = x;
+  }
+  if (std::set<int>(loop.begin(), loop.end()).size() != n) loop = rim, kept.assign(q.quads.size(), 0);
+  std::vector<char> onLoop(q.nodes.size(), 0);
+  for (int c : loop) onLoop[c] = 1;
+  std::vector<Vec3> inward;  // each loop node moves half way to the mean of the corners off the loop of its quads
+  for (int c : loop) {
     Vec3 inner = Vec3::Zero();
     int count = 0;
-    for (int m : corners[n])
-      if (!onRim[m]) inner += q.nodes[m], ++count;
-    inward.push_back(count ? 0.5 * (q.nodes[n] + inner / count) : q.nodes[n]);
+    for (int e = 0; e < static_cast<int>(q.quads.size()); ++e)
+      if (!kept[e] && std::find(q.quads[e].begin(), q.quads[e].end(), c) != q.quads[e].end())
+        for (int m : q.quads[e])
+          if (!onLoop[m]) inner += q.nodes[m], ++count;
+    inward.push_back(count ? Vec3(0.5 * (q.nodes[c] + inner / count)) : q.nodes[c]);
   }
-  for (std::size_t i = 0; i < rim.size(); ++i) {
-    const int j = static_cast<int>((i + 1) % rim.size());
-    q.quads.push_back({rim[j], rim[i], first + static_cast<int>(i), first + j});
-    q.nodes[rim[i]] = inward[i];
+  const int first = static_cast<int>(q.nodes.size());
+  std::vector<int> copy(q.nodes.size(), -1);
+  for (std::size_t i = 0; i < n; ++i) copy[loop[i]] = first + static_cast<int>(i), q.nodes.push_back(q.nodes[loop[i]]);
+  for (std::size_t e = 0; e < q.quads.size(); ++e)  // the kept quads on the loop's copies, outside the ring
+    if (kept[e])
+      for (int& c : q.quads[e])
+        if (copy[c] >= 0) c = copy[c];
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    q.quads.push_back({loop[j], loop[i], first + static_cast<int>(i), first + static_cast<int>(j)});
+    q.nodes[loop[i]] = inward[i];
   }
   return true;
 }

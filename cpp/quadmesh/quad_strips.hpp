@@ -48,8 +48,12 @@ std::size_t evenRimLoops(QuadMesh& q, const std::function<bool(const Vec3&)>& mu
 // the copy stays on the rim, the node moves half way towards the mean of the corners of its quads off the rim, and a
 // quad joins each rim edge to its copy. Every corner becomes an inner node of three quads (about 120 degrees each),
 // every outer rim node lies in two. Pillowed only if a corner's quad is flatter than kFlatCorner there (one quad is
-// nearer square below it than a third of the angle would be: 135 - 90 = 90 - 135 / 3).
+// nearer square below it than a third of the angle would be: 135 - 90 = 90 - 135 / 3). An acute corner (sharper than
+// kKeptCorner, in one quad: a gusset's 45-degree tip, whose halves would be 22.5 degrees) keeps its quad: the ring
+// runs round it, along its two inner edges (a square corner is split: 45-degree halves are better than the ring's
+// quads round a kept one).
 constexpr double kFlatCorner = 135 * M_PI / 180;
+constexpr double kKeptCorner = 75 * M_PI / 180;
 // [in,out] q: its outer rim (the longest rim loop) pillowed if a corner on it is flat. Returns whether it was.
 bool pillowFlatCorners(QuadMesh& q);
 

@@ -88,9 +88,6 @@ std::vector<double> rimTurning(const std::vector<int>& loop, const std::vector<d
   return turn;
 }
 
-// The rim's four corners, ascending along it: its four sharpest corners (turning more than
-// kSharpCorner, the most within `window`) if it has four or more (then `sharp`), else the diagonal
-// extremes of its principal axes (a rounded rectangle's arcs, a circle's 45° points).
 // The point of a loop halfway (by arc length) along the longest stretch between consecutive corners (positions in
 // the loop, ascending). [in] corners; [in] length: arcLength of the loop.
 int longestSideMiddle(const std::vector<int>& corners, const std::vector<double>& length) {
@@ -125,8 +122,13 @@ std::vector<int> turningPeaks(const std::vector<double>& turn, const std::vector
   return peaks;
 }
 
+// The rim's four corners, ascending along it: its four sharpest corners (turning more than
+// kSharpCorner, the most within `window`) if it has four or more (then `sharp`), else the diagonal
+// extremes of its principal axes (a rounded rectangle's arcs, a circle's 45° points); three sharp corners (a
+// triangle) and the middle of its longest side, then the middle's position is `middle` (else -1).
 std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<int>& loop,
-                              const std::vector<double>& length, double window, bool& sharp) {
+                              const std::vector<double>& length, double window, bool& sharp, int& middle) {
+  middle = -1;
   const std::vector<double> turn = rimTurning(loop, length, chordal.vertices, chordal.normals, window);
   std::vector<int> peaks = turningPeaks(turn, length, window);
   std::array<int, 4> corners{};
@@ -151,7 +153,7 @@ std::array<int, 4> rimCorners(const ChordalSurface& chordal, const std::vector<i
     std::copy(peaks.begin(), peaks.begin() + 4, corners.begin());
   } else if (peaks.size() == 3) {  // a triangle: its corners, and the middle of its longest side
     std::copy(peaks.begin(), peaks.end(), corners.begin());
-    corners[3] = longestSideMiddle(peaks, length);
+    corners[3] = middle = longestSideMiddle(peaks, length);
   } else {
     std::vector<Vec3> points;
     for (int p : loop) points.push_back(chordal.vertices[p]);
@@ -548,8 +550,12 @@ SurfaceMap mapToPlane(const ChordalSurface& chordal, double window, MapBoundary 
   if (boundary == MapBoundary::Annulus) return mapAnnulus(std::move(map), std::move(loops));
   std::vector<int> outer = loops[0];
   if (outer.size() < 8) return {};
-  const std::array<int, 4> at = rimCorners(chordal, outer, arcLength(outer, map.points), window, map.sharpCorners);
+  int middle = -1;
+  const std::array<int, 4> at =
+      rimCorners(chordal, outer, arcLength(outer, map.points), window, map.sharpCorners, middle);
   if (std::adjacent_find(at.begin(), at.end()) != at.end()) return {};
+  for (int k = 0; k < 4; ++k)
+    if (at[k] == middle) map.sideMiddle = k;
   std::rotate(outer.begin(), outer.begin() + at[0], outer.end());  // the rim starts at a corner
   map.rim = outer;
   for (int k = 0; k < 4; ++k) map.corners[k] = at[k] - at[0];

@@ -33,6 +33,7 @@ struct SurfaceMap {
   std::vector<std::vector<int>> holes;  // the other rim loops
   MapBoundary boundary = MapBoundary::Circle;
   bool sharpCorners = false;  // the four corners are the rim's sharpest, all sharp
+  int sideMiddle = -1;        // a triangle (a rim with three sharp corners): the corner that halves its longest side
   double innerRadius = 0;     // Annulus: the rectangle runs from log(innerRadius) to 0
   bool empty() const { return triangles.empty(); }
 };

@@ -75,6 +75,21 @@ SquareRim evenRim(const SurfaceMap& map, int n0, int n1) {
   return rim;
 }
 
+// A flat triangle a, b, c (counter-clockwise seen from +z) cut into n^2 triangles.
+ChordalSurface triangle(const Vec3& a, const Vec3& b, const Vec3& c, int n) {
+  ChordalSurface s;
+  auto v = [&](int i, int j) { return i * (n + 1) - i * (i - 1) / 2 + j; };  // i + j <= n
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) s.vertices.push_back(a + (b - a) * i / n + (c - a) * j / n);
+  s.normals.assign(s.vertices.size(), Vec3::UnitZ());
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; i + j < n; ++j) {
+      s.facets.push_back({v(i, j), v(i + 1, j), v(i, j + 1), -1});
+      if (i + j + 1 < n) s.facets.push_back({v(i + 1, j), v(i + 1, j + 1), v(i, j + 1), -1});
+    }
+  return s;
+}
+
 }  // namespace
 
 TEST(BlockGrids, GridWithAPocketRoundTheHole) {
@@ -132,6 +147,41 @@ TEST(BlockGrids, OGridOfADisc) {
   for (const Vec3& p : g.nodes) EXPECT_LE(p.norm(), 10 + 1e-9);
   EXPECT_TRUE(
       oGrid(mapToPlane(rectangle(20, 10, {{8, 12, 3, 7}}), 1.0, MapBoundary::Circle), unit).empty());  // has a hole
+}
+
+// A triangle gets three blocks, one per corner (each corner one quad's), where the square grid puts a straight angle
+// at the middle of its longest side; equilateral, right isosceles and obtuse, at 1e-3, 1 and 1e3.
+TEST(BlockGrids, TriangleGridOfATriangle) {
+  const auto flat = [](const Vec3& p) { return Vec3(p.x(), p.y(), 0); };
+  const std::vector<std::array<Vec3, 3>> triangles{{Vec3(0, 0, 0), Vec3(20, 0, 0), Vec3(10, 10 * std::sqrt(3.0), 0)},
+                                                   {Vec3(0, 0, 0), Vec3(20, 0, 0), Vec3(0, 20, 0)},
+                                                   {Vec3(0, 0, 0), Vec3(30, 0, 0), Vec3(8, 9, 0)}};
+  // its smallest corner caps a quad's scaled Jacobian at its sine: sin 60° = 0.87, sin 45° = 0.71, sin 22.2° = 0.378
+  const std::vector<double> worst{0.8, 0.6, 0.37};
+  for (double scale : {1e-3, 1.0, 1e3})
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      const auto& [a, b, c] = triangles[t];
+      const SurfaceMap map = mapToPlane(triangle(a * scale, b * scale, c * scale, 24), scale, MapBoundary::Square);
+      ASSERT_GE(map.sideMiddle, 0) << t;
+      const SizeField size = [&](const Vec3&) { return 2 * scale; };
+      const BlockGrid g = triangleGrid(map, size, flat);
+      ASSERT_FALSE(g.empty()) << t;
+      EXPECT_EQ(g.blocks, 3u);
+      EXPECT_EQ(euler(g), 1);
+      const Quality q = quality(g);
+      const double area = 0.5 * (b - a).cross(c - a).norm() * scale * scale;
+      EXPECT_NEAR(q.area, area, 1e-3 * area) << t;
+      EXPECT_GT(q.worst, worst[t]) << t << " scale " << scale;
+      EXPECT_GT(q.worst, quality(holedGrid(map, size)).worst + 0.1) << t;
+      for (const Vec3& corner : {a, b, c}) {  // a node, in one quad
+        int quads = 0;
+        for (const auto& quad : g.quads)
+          for (int n : quad) quads += (g.nodes[n] - corner * scale).norm() < 1e-9 * scale;
+        EXPECT_EQ(quads, 1) << t;
+      }
+    }
+  EXPECT_LT(mapToPlane(rectangle(20, 10), 1.0, MapBoundary::Square).sideMiddle, 0);  // four corners
+  EXPECT_TRUE(triangleGrid(mapToPlane(rectangle(20, 10), 1.0, MapBoundary::Square), unit, flat).empty());
 }
 
 TEST(BlockGrids, PocketsThatMeetAreRefused) {

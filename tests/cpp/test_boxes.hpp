@@ -2,8 +2,11 @@
 // models it, shared by test_junction_cut.cpp and test_junction_mesh.cpp.
 #pragma once
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -50,5 +53,15 @@ inline std::vector<Box> boxWithEndWall(double height, double thickness = 2) {
 // An L-bracket: a plate 80 x 60 x 2 and a flange 2 thick, 40 high and 30 wide at its end x = 0, its outside flush with
 // the plate's end face.
 inline std::vector<Box> narrowFlangeBracket() { return {{0, 0, 0, 80, 60, 2}, {0, 15, 0, 2, 30, 40}}; }
+
+// The solid with a triangular gusset fused into it: the triangle corner, corner + legA, corner + legB, extruded by
+// `thickness` (a vector); scaled by s.
+inline TopoDS_Solid withGusset(const TopoDS_Solid& solid, const gp_Pnt& corner, const gp_Vec& legA, const gp_Vec& legB,
+                               const gp_Vec& thickness, double s) {
+  const TopoDS_Wire triangle =
+      BRepBuilderAPI_MakePolygon(corner, corner.Translated(legA), corner.Translated(legB), true).Wire();
+  const TopoDS_Shape gusset = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(triangle).Face(), thickness);
+  return scaled(BRepAlgoAPI_Fuse(solid, gusset).Shape(), s);
+}
 
 }  // namespace hexlayer::test_boxes

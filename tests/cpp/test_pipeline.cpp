@@ -170,6 +170,21 @@ TEST(Pipeline, ProgressStartsAndEndsEveryStage) {
 // wall's top meets the side walls), the same in metres, and a flange 30 wide at the end of a plate 60 wide. All hex,
 // the end wall or flange one T junction standing on the walls it butts on, SJ min >= 0.3 and avg >= 0.95 (measured
 // 0.44 / 0.987 and 0.47 / 0.986 in metres, the flange 0.70 / 0.996), the volume within 2 %, validated.
+// A triangular gusset in the corner between a box's floor and its long wall: its slope meets both in inside edges, so
+// each butts on the other (butt_joints.hpp) and the part so cut has pieces that are no sheet's; it is meshed as it
+// was, the gusset standing on the floor and the wall (refused before: "no piece holds the sheet ... after the cut").
+TEST(Pipeline, AGussetInTheCornerOfABoxIsMeshedWhereItsButtJointsCannotCut) {
+  for (double s : {1.0, 1e-3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const TopoDS_Solid box = test_boxes::boxes(test_boxes::boxWithEndWall(40), 1);
+    const MeshResult r = expectMeshedAllHex(
+        test_boxes::withGusset(box, gp_Pnt(49, 2, 2), gp_Vec(0, 15, 0), gp_Vec(0, 0, 15), gp_Vec(2, 0, 0), s), 0.3,
+        0.95, 0.02);
+    ASSERT_EQ(r.report.junctions.size(), 1u);
+    EXPECT_EQ(r.report.junctions[0].kind, "T");
+  }
+}
+
 TEST(Pipeline, AWallEndingPartWayUpTheWallsItMeetsIsMeshedAllHexButtingOnThem) {
   for (double s : {1.0, 1e-3}) {
     SCOPED_TRACE("x " + std::to_string(s));

@@ -2,7 +2,8 @@
 // quad; halved, the grid stays all quads and conformal with one more node on each rim end; a ring of quads with an
 // odd number round has its inner loop (the one that must be even) made even by a strip to the outer loop, both loops
 // by one strip if both must be, none if the strip would cross a blocked quad; a grid on a disc (its corners on the
-// circle, flat) is pillowed, the same grid on the square (sharp corners) is not. Also on
+// circle, flat) is pillowed, the same grid on the square (sharp corners) is not, and on a half disc over a trapezoid
+// the ring runs round the quads of its two acute corners. Also on
 // copies scaled by 1e-3 and 1e3 (only the nodes' positions scale).
 #include <gtest/gtest.h>
 
@@ -106,6 +107,44 @@ TEST(QuadStrips, AGridWithItsCornersOnACircleIsPillowedOneOnASquareIsNot) {
     }
     for (int corner : {0, n, n * (n + 1), n * (n + 1) + n}) EXPECT_EQ(at[corner], 3) << "a corner now inside";
     EXPECT_GT(worstQuad(disc), flattest + 0.05) << "no quad flatter than a corner's was, before any smoothing";
+  }
+}
+
+// A grid on a half disc over a trapezoid: two corners on the half circle (flat), two acute ones below (60 degrees).
+// Pillowed, the ring runs round the acute corners' quads (each corner still in one quad, at 60 degrees), along the
+// rim elsewhere.
+TEST(QuadStrips, PillowingKeepsTheQuadsOfAcuteCorners) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    const int n = 6;
+    QuadMesh d = grid(n, n, s);
+    for (Vec3& p : d.nodes) {
+      const double x = 2 * p.x() / (n * s) - 1, y = 2 * p.y() / (n * s) - 1;
+      const double widening = 1 / std::tan(M_PI / 3);  // the sides below lean out: 60-degree corners
+      p = s * (y > 0 ? Vec3(x * std::sqrt(1 - y * y / 2), y * std::sqrt(1 - x * x / 2), 0)
+                     : Vec3(x * (1 - widening * y), y, 0));
+    }
+    const std::size_t nodes = d.nodes.size(), quads = d.quads.size();
+    const std::array<int, 2> acute{0, n};  // the corners below
+    const QuadMesh before = d;
+    auto cornerQuad = [](const QuadMesh& q, int corner) {  // the corners of the (last) quad at `corner`, in order
+      std::array<Vec3, 4> p;
+      for (const auto& quad : q.quads)
+        if (std::find(quad.begin(), quad.end(), corner) != quad.end())
+          for (int k = 0; k < 4; ++k) p[k] = q.nodes[quad[k]];
+      return p;
+    };
+    ASSERT_TRUE(pillowFlatCorners(d));
+    EXPECT_EQ(d.nodes.size(), nodes + 4 * n);
+    EXPECT_EQ(d.quads.size(), quads + 4 * n);
+    EXPECT_EQ(rimEdges(d), 4 * n) << "conformal, one orientation, the rim as long";
+    const std::vector<int> at = quadsAt(d);
+    for (int corner : acute) {
+      EXPECT_EQ(at[corner], 1) << "an acute corner keeps its one quad";
+      const std::array<Vec3, 4> was = cornerQuad(before, corner), is = cornerQuad(d, corner);
+      for (int k = 0; k < 4; ++k) EXPECT_LT((is[k] - was[k]).norm(), 1e-12 * s) << "its quad where it was";
+    }
+    for (int corner : {n * (n + 1), n * (n + 1) + n}) EXPECT_EQ(at[corner], 3) << "a flat corner now inside";
+    EXPECT_GT(worstQuad(d), 0.3);
   }
 }
 
