@@ -404,6 +404,9 @@ CadSolid stageSolid(const TopoDS_Solid& solid, const std::vector<char>& cutFaces
   return cad;
 }
 
+// A column's hexes below this scaled Jacobian are refused (meshColumn).
+constexpr double kWorstColumnHex = 0.1;
+
 // A piece standing on a sheet that is no sheet but a column (column_piece.hpp: a pin, a post, a block): its foot's
 // quads (column_foot.hpp) swept up its axis (column_sweep.hpp), about as many layers as its height holds quads; the
 // boundary nodes given CAD faces, not grouped (the joined part is). [in] solid, given, cutFaces: as meshSolid's for a
@@ -438,6 +441,17 @@ std::optional<MeshResult> meshColumn(const TopoDS_Solid& solid, const MeshOption
   result.quadMesh = foot.quads;
   r.quadMesh = countQuadMesh(foot.quads);
   measureSolid(result, cad, sides, o, 0, clock);
+  // Caps at different heights over the foot (a boss's blind bore from its top, a ledge) give sweep columns of different
+  // heights side by side, whose hexes shear across the step where the foot's quads do not follow its outline.
+  const double worst = result.scaledJacobian.empty()
+                           ? 1.0
+                           : *std::min_element(result.scaledJacobian.begin(), result.scaledJacobian.end());
+  if (worst < kWorstColumnHex) {
+    std::ostringstream msg;
+    msg << std::setprecision(2) << "column: its hexes shear across a step inside it (a blind bore from its top, a "
+        << "ledge: scaled Jacobian " << worst << "), whose outline its foot's quads do not follow yet";
+    throw geometryError(msg.str());
+  }
   return result;
 }
 

@@ -3,8 +3,10 @@
 // timed); the same box drawn in metres meshed into the same hexes, scaled; every stage's start and end as progress.
 #include <gtest/gtest.h>
 
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <GProp_GProps.hxx>
 
 #include <algorithm>
@@ -182,6 +184,28 @@ TEST(Pipeline, AGussetInTheCornerOfABoxIsMeshedWhereItsButtJointsCannotCut) {
         0.95, 0.02);
     ASSERT_EQ(r.report.junctions.size(), 1u);
     EXPECT_EQ(r.report.junctions[0].kind, "T");
+  }
+}
+
+// A boss on a plate whose blind bore from its top stops 2 above the plate (a solid bottom): a column, whose sweep
+// columns under the bore stop at its bottom and those round it at the top; the foot's quads do not follow the bore's
+// outline, so hexes would shear across it (scaled Jacobian 0.003, written before): refused, saying so.
+TEST(Pipeline, AColumnWithABlindBoreOverItsFootIsRefused) {
+  for (double s : {1.0, 1e-3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const gp_Ax2 axis(gp_Pnt(30, 20, 1), gp_Dir(0, 0, 1)), bore(gp_Pnt(30, 20, 4), gp_Dir(0, 0, 1));
+    const TopoDS_Shape boss = BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(axis, 4.5, 20).Shape(),
+                                              BRepPrimAPI_MakeCylinder(bore, 1.8, 30).Shape());
+    const TopoDS_Solid part =
+        test_boxes::scaled(BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60, 40, 2).Shape(), boss).Shape(), s);
+    try {
+      meshSolid(part, MeshOptions{});
+      ADD_FAILURE() << "meshed";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::UnsupportedGeometry);
+      EXPECT_NE(std::string(e.what()).find("shear across a step inside it (a blind bore"), std::string::npos)
+          << e.what();
+    }
   }
 }
 
