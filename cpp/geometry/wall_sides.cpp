@@ -162,6 +162,25 @@ bool onSurfaceOf(const CadSolid& cad, const WallSides& w, int f, int g) {
   return true;
 }
 
+// Lateral faces f beside a wall face g in a smooth edge (a sheet join: a wall face split there), at least a quarter
+// wall wide, facing as g does (kExtensionTurn), for which also(f, g), and on g's surface. [in] cad, w; [in]
+// meanNormal: per face; [in] also. Returns the faces, ascending.
+template <class Also>
+std::vector<int> smoothWallNeighbours(const CadSolid& cad, const WallSides& w, const std::vector<Vec3>& meanNormal,
+                                      Also also) {
+  std::set<int> found;
+  for (const SheetJoin& j : w.sheetJoins)
+    for (auto [f, g] : {std::pair{j.a, j.b}, std::pair{j.b, j.a}}) {
+      const FaceSide &fs = w.faces[f], &wall = w.faces[g];
+      if (!j.smooth || fs.side != Side::Lateral || wall.side == Side::Lateral ||
+          fs.width < kMinWallWidth * fs.thickness || angleBetween(meanNormal[f], meanNormal[g]) > kExtensionTurn ||
+          !also(f, g))
+        continue;
+      if (onSurfaceOf(cad, w, f, g)) found.insert(f);
+    }
+  return {found.begin(), found.end()};
+}
+
 // Lateral faces that are pieces of a wall split along a line: on the surface of a wall face they meet in a smooth edge,
 // facing as it does (kExtensionTurn), at least a quarter wall wide, a quarter of their rays crossing the wall
 // (kMinSplitShare), and the two faces' rays together crossing it as a wall's do (kMinWallShare). A wall split a wall or
@@ -169,19 +188,12 @@ bool onSurfaceOf(const CadSolid& cad, const WallSides& w, int f, int g) {
 // whose rays near the bend run into the other wall: about half of them cross. [in] cad; [in] w: the first
 // classification; [in] meanNormal: per face. Returns the faces, ascending.
 std::vector<int> splitWallPieces(const CadSolid& cad, const WallSides& w, const std::vector<Vec3>& meanNormal) {
-  std::set<int> found;
-  for (const SheetJoin& j : w.sheetJoins)
-    for (auto [f, g] : {std::pair{j.a, j.b}, std::pair{j.b, j.a}}) {
-      const FaceSide &fs = w.faces[f], &wall = w.faces[g];
-      const double together =
-          (fs.wallShare * fs.area + wall.wallShare * wall.area) / std::max(fs.area + wall.area, 1e-300);
-      if (!j.smooth || fs.side != Side::Lateral || wall.side == Side::Lateral || fs.wallShare < kMinSplitShare ||
-          together < kMinWallShare || fs.width < kMinWallWidth * fs.thickness ||
-          angleBetween(meanNormal[f], meanNormal[g]) > kExtensionTurn)
-        continue;
-      if (onSurfaceOf(cad, w, f, g)) found.insert(f);
-    }
-  return {found.begin(), found.end()};
+  return smoothWallNeighbours(cad, w, meanNormal, [&](int f, int g) {
+    const FaceSide &fs = w.faces[f], &wall = w.faces[g];
+    const double together =
+        (fs.wallShare * fs.area + wall.wallShare * wall.area) / std::max(fs.area + wall.area, 1e-300);
+    return fs.wallShare >= kMinSplitShare && together >= kMinWallShare;
+  });
 }
 
 // Lateral faces that carry a wall on: on the surface of a wall face they meet in a smooth edge (a wall face split
@@ -195,19 +207,13 @@ std::vector<int> splitWallPieces(const CadSolid& cad, const WallSides& w, const 
 // ascending.
 std::vector<int> wallExtensions(const CadSolid& cad, const WallSides& w, const std::vector<int>& landing,
                                 const std::vector<Vec3>& meanNormal) {
-  std::set<int> found;
-  for (const SheetJoin& j : w.sheetJoins)
-    for (auto [f, g] : {std::pair{j.a, j.b}, std::pair{j.b, j.a}}) {
-      const FaceSide &fs = w.faces[f], &wall = w.faces[g];
-      const int lands = landing[f], across = wall.opposite;
-      if (!j.smooth || fs.side != Side::Lateral || wall.side == Side::Lateral || lands < 0 || lands == f ||
-          across < 0 || fs.width < kMinWallWidth * fs.thickness || fs.width >= w.thickness ||
-          angleBetween(meanNormal[f], meanNormal[g]) > kExtensionTurn ||
-          std::abs(fs.thickness - w.thickness) > kExtensionThickness * w.thickness)
-        continue;
-      if (onSurfaceOf(cad, w, f, g) && (lands == across || onSurfaceOf(cad, w, lands, across))) found.insert(f);
-    }
-  return {found.begin(), found.end()};
+  return smoothWallNeighbours(cad, w, meanNormal, [&](int f, int g) {
+    const FaceSide& fs = w.faces[f];
+    const int lands = landing[f], across = w.faces[g].opposite;
+    return lands >= 0 && lands != f && across >= 0 && fs.width < w.thickness &&
+           !(std::abs(fs.thickness - w.thickness) > kExtensionThickness * w.thickness) &&
+           (lands == across || onSurfaceOf(cad, w, lands, across));
+  });
 }
 
 // Union-find whose links carry a parity: 0 = same side, 1 = opposite sides.

@@ -151,12 +151,13 @@ std::size_t evenRimLoops(QuadMesh& q, const std::function<bool(const Vec3&)>& mu
 bool pillowFlatCorners(QuadMesh& q) {
   std::vector<int> rim = longestRimLoop(q);
   std::vector<std::vector<int>> corners(q.nodes.size());  // per node, the other corners of its quads (with repeats)
-  std::vector<int> quadOf(q.nodes.size(), -1);            // per node, one quad it is in
+  std::vector<std::vector<int>> quadsAt(q.nodes.size());  // per node, its quads, ascending
   for (int e = 0; e < static_cast<int>(q.quads.size()); ++e)
     for (int k = 0; k < 4; ++k) {
-      quadOf[q.quads[e][k]] = e;
+      quadsAt[q.quads[e][k]].push_back(e);
       for (int l = 1; l < 4; ++l) corners[q.quads[e][k]].push_back(q.quads[e][(k + l) % 4]);
     }
+  auto quadOf = [&](int node) { return quadsAt[node].back(); };  // its last quad
   if (!hasFlatCorner(q, rim, corners)) return false;
   orientLikeItsQuads(q, rim);
   // The ring's loop: the rim, but round the quad of each sharp corner (in one quad, kept as it is) along its inner
@@ -169,13 +170,13 @@ bool pillowFlatCorners(QuadMesh& q) {
     const int c = rim[i], a = rim[(i + n - 1) % n], b = rim[(i + 1) % n];
     if (corners[c].size() != 3 || angleBetween(q.nodes[a] - q.nodes[c], q.nodes[b] - q.nodes[c]) >= kKeptCorner)
       continue;
-    const std::array<int, 4>& quad = q.quads[quadOf[c]];
+    const std::array<int, 4>& quad = q.quads[quadOf(c)];
     const int k = static_cast<int>(std::find(quad.begin(), quad.end(), c) - quad.begin());
     const int x = quad[(k + 2) % 4];
     const bool neighbours =
         (quad[(k + 1) % 4] == a && quad[(k + 3) % 4] == b) || (quad[(k + 1) % 4] == b && quad[(k + 3) % 4] == a);
-    if (!neighbours || onRim[x] || kept[quadOf[a]] || kept[quadOf[b]]) continue;
-    kept[quadOf[c]] = 1, loop[i] = x;
+    if (!neighbours || onRim[x] || kept[quadOf(a)] || kept[quadOf(b)]) continue;
+    kept[quadOf(c)] = 1, loop[i] = x;
   }
   if (std::set<int>(loop.begin(), loop.end()).size() != n) loop = rim, kept.assign(q.quads.size(), 0);
   std::vector<char> onLoop(q.nodes.size(), 0);
@@ -184,8 +185,8 @@ bool pillowFlatCorners(QuadMesh& q) {
   for (int c : loop) {
     Vec3 inner = Vec3::Zero();
     int count = 0;
-    for (int e = 0; e < static_cast<int>(q.quads.size()); ++e)
-      if (!kept[e] && std::find(q.quads[e].begin(), q.quads[e].end(), c) != q.quads[e].end())
+    for (int e : quadsAt[c])
+      if (!kept[e])
         for (int m : q.quads[e])
           if (!onLoop[m]) inner += q.nodes[m], ++count;
     inward.push_back(count ? Vec3(0.5 * (q.nodes[c] + inner / count)) : q.nodes[c]);
