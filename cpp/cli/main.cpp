@@ -2,8 +2,11 @@
 // uniform|adaptive]
 // [--min-size H] [--max-size H] [--order 1|2] [--shell] [--report R] [--force] [--quiet]`, `hexlayer --version`
 #include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <Standard_Failure.hxx>
+#include <csignal>
+#include <cstring>
 
 #include <fstream>
 #include <iomanip>
@@ -22,6 +25,20 @@
 namespace {
 
 using hexlayer::ExitCode;
+
+// A crash in a library (OpenCASCADE's healing has been seen to dereference null on some faces) ends the run with a
+// line that says so and the internal-error exit code, not a bare signal: only async-signal-safe calls here.
+void crashed(int signal) {
+  const char* name = signal == SIGSEGV  ? "segmentation fault"
+                     : signal == SIGBUS ? "bus error"
+                     : signal == SIGFPE ? "arithmetic exception"
+                                        : "illegal instruction";
+  const char head[] = "hexlayer: internal error: crashed (", tail[] = "); please report it with the input file\n";
+  [[maybe_unused]] ssize_t w = write(STDERR_FILENO, head, sizeof head - 1);
+  w = write(STDERR_FILENO, name, std::strlen(name));
+  w = write(STDERR_FILENO, tail, sizeof tail - 1);
+  _exit(static_cast<int>(ExitCode::Internal));
+}
 
 // The running stage is drawn at most this often (seconds): a few times a second.
 constexpr double kProgressInterval = 0.25;
@@ -171,6 +188,7 @@ int runMesh(MeshCommand& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL}) std::signal(signal, crashed);
   CLI::App app{"HexLayer: layered all-hex meshes of thin-section CAD solids (Hex-Layer method)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("hexlayer ") + hexlayer::kVersion);

@@ -1,6 +1,7 @@
 // Polygons in the plane.
 #pragma once
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -35,6 +36,36 @@ inline std::vector<double> meanValueWeights(const std::vector<std::vector<Eigen:
   }
   for (double& wi : w) wi /= sum;
   return w;
+}
+
+// Even-odd rule: whether q is inside the polygon p (its corners in order).
+inline bool insidePolygon(const std::vector<Eigen::Vector2d>& p, const Eigen::Vector2d& q) {
+  bool inside = false;
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
+    if ((p[i].y() > q.y()) != (p[j].y() > q.y()) &&
+        q.x() < p[j].x() + (p[i].x() - p[j].x()) * (q.y() - p[j].y()) / (p[i].y() - p[j].y()))
+      inside = !inside;
+  return inside;
+}
+
+// Loops in the plane sorted into regions: a counter-clockwise loop is a region's outer loop, a clockwise one a hole of
+// the smallest outer loop round its first corner, but one through that corner (a loop that is one region's outer loop
+// and, reversed, a hole of the region round it). [in] loops: disjoint, each its corners in order. Returns per loop the
+// index of the outer loop it is a hole of: -1 for an outer loop, -2 for a hole that none is round.
+inline std::vector<int> holesOfLoops(const std::vector<std::vector<Eigen::Vector2d>>& loops) {
+  std::vector<double> area;
+  for (const auto& loop : loops) area.push_back(polygonArea(loop));
+  std::vector<int> of(loops.size(), -1);
+  for (std::size_t h = 0; h < loops.size(); ++h) {
+    if (area[h] > 0) continue;
+    of[h] = -2;
+    const Eigen::Vector2d& p = loops[h].front();
+    for (std::size_t s = 0; s < loops.size(); ++s)
+      if (area[s] > 0 && std::find(loops[s].begin(), loops[s].end(), p) == loops[s].end() &&
+          insidePolygon(loops[s], p) && (of[h] < 0 || area[s] < area[of[h]]))
+        of[h] = static_cast<int>(s);
+  }
+  return of;
 }
 
 }  // namespace hexlayer

@@ -4,6 +4,9 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Poly_Triangulation.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <gp_Pln.hxx>
 
@@ -91,6 +94,44 @@ Vec3 sidesAxis(const CadSolid& cad, int foot, const Vec3& footNormal) {
   return axis->dot(footNormal) >= std::cos(kSameAxis) ? footNormal : *axis;
 }
 
+// The column's ledges (ColumnPiece::ledges), lowest first. [in] cad; [in] c: its foot, axis, origin, sides, caps and
+// height found; [in] top: per face, its farthest point along the axis over the foot's plane.
+std::vector<ColumnLedge> findLedges(const CadSolid& cad, const ColumnPiece& c, const std::vector<double>& top) {
+  TopTools_IndexedDataMapOfShapeListOfShape faceOfEdge;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, faceOfEdge);
+  const double drop = kLedgeDrop * c.height;
+  std::vector<ColumnLedge> ledges;
+  for (int f : c.caps) {
+    const TopoDS_Face& face = TopoDS::Face(cad.faces(f + 1));
+    const std::optional<gp_Pln> plane = planeOf(face, kPlanarFoot * cad.diagonal);
+    if (!plane) continue;
+    const Vec3 normal = toVec(gp_Pnt(plane->Axis().Direction().XYZ()));
+    const double height = (toVec(plane->Location()) - c.origin).dot(c.axis);
+    if (std::abs(normal.dot(c.axis)) < 1 - kSquareFoot || height > c.height - drop) continue;
+    auto rises = [&](const TopoDS_Shape& edge) {
+      for (const TopoDS_Shape& other : faceOfEdge.FindFromKey(edge))
+        if (const int o = cad.faces.FindIndex(other) - 1;
+            o != f && std::find(c.sides.begin(), c.sides.end(), o) != c.sides.end() && top[o] > height + drop)
+          return true;
+      return false;
+    };
+    ColumnLedge ledge{f, height, {}, false};
+    for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
+      int edges = 0, rising = 0;
+      for (TopExp_Explorer e(w.Current(), TopAbs_EDGE); e.More(); e.Next()) ++edges, rising += rises(e.Current());
+      if (rising == edges)
+        ledge.steps.push_back(TopoDS::Wire(w.Current()));
+      else
+        ledge.partial |= rising > 0;
+    }
+    if (!ledge.steps.empty() || ledge.partial) ledges.push_back(std::move(ledge));
+  }
+  std::sort(ledges.begin(), ledges.end(), [](const ColumnLedge& a, const ColumnLedge& b) {
+    return a.height < b.height || (a.height == b.height && a.face < b.face);
+  });
+  return ledges;
+}
+
 }  // namespace
 
 std::optional<ColumnPiece> columnPiece(const CadSolid& cad) {
@@ -116,14 +157,16 @@ std::optional<ColumnPiece> columnPiece(const CadSolid& cad) {
   c.origin = plane && !c.footOffPlane ? toVec(plane->Location())
                                       : toVec(BRepAdaptor_Surface(foot).Value(0.5 * (u0 + u1), 0.5 * (v0 + v1)));
   const double square = std::sin(kMaxColumnDraft), base = c.origin.dot(c.axis);
+  std::vector<double> top(cad.faces.Extent(), 0);  // per face, its farthest point over the foot's plane
   for (int f = 0; f < cad.faces.Extent(); ++f) {
     if (f == c.foot) continue;
     const std::optional<FaceReach> r = faceReach(TopoDS::Face(cad.faces(f + 1)), c.axis);
     if (!r || r->lowest < -square) return std::nullopt;  // it looks back at the foot: an overhang
     (r->highest <= square ? c.sides : c.caps).push_back(f);
-    c.height = std::max(c.height, r->top - base);
+    top[f] = r->top - base, c.height = std::max(c.height, top[f]);
   }
   if (c.caps.empty() || c.sides.empty() || !(c.height > 0)) return std::nullopt;
+  c.ledges = findLedges(cad, c, top);
   return c;
 }
 

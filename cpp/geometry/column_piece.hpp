@@ -3,6 +3,8 @@
 // line along its axis (its foot's normal) runs from the foot to its cap inside it: its hexes are its foot's quads
 // swept along the axis (column_sweep.hpp), as a sheet's are its chordal surface's swept across its wall.
 #pragma once
+#include <TopoDS_Wire.hxx>
+
 #include <optional>
 #include <vector>
 
@@ -12,6 +14,16 @@
 
 namespace hexlayer {
 
+// A ledge: a flat cap square to the axis, below the column's top, from whose edges a side rises (a blind bore's bottom,
+// a shoulder, a counterbore's floor). The column's hexes under it stop there, those beside it go on up
+// (column_sweep.hpp); the foot's quads follow the outline of every step (column_foot.hpp).
+struct ColumnLedge {
+  int face = -1;                   // the cap (0-based in CadSolid::faces)
+  double height = 0;               // over the foot's plane, along the axis
+  std::vector<TopoDS_Wire> steps;  // its wires a rising side shares all of: a step's closed outline
+  bool partial = false;            // a wire of it a rising side shares part of (a step that runs to the column's side)
+};
+
 struct ColumnPiece {
   int foot = -1;               // the face the column stands on (0-based in CadSolid::faces): a cut face
   std::vector<int> sides;      // the faces along the axis: every normal within kMaxColumnDraft of square to it
@@ -20,10 +32,13 @@ struct ColumnPiece {
   Vec3 origin = Vec3::Zero();  // a point of the foot's plane (square to the axis; through the foot's middle if off it)
   double height = 0;           // the column's reach along the axis from the foot's plane
   bool footOffPlane = false;   // the foot is curved or tilted to the axis: its nodes are put on it along the axis
+  std::vector<ColumnLedge> ledges;  // lowest first; none for a column whose caps all end it
 };
 
 // A side may lean this far (radians) from the axis (a draft, a cone); a cap's normals as far below square to it.
 inline constexpr double kMaxColumnDraft = 0.35;  // 20 degrees
+// Of the column's height: a cap this much or more below its top, with a side rising from it, is a ledge.
+inline constexpr double kLedgeDrop = 1e-3;
 
 // [in] cad: a piece cut off the part (CadSolid::cutInput: its cut faces), prepared (its faces triangulated).
 // The axis is the foot's normal at its middle, or the direction the sides run in if that is over a degree off it (a
@@ -33,7 +48,9 @@ inline constexpr double kMaxColumnDraft = 0.35;  // 20 degrees
 // face's normals (at its
 // triangulation's nodes) face the axis's way or square to it within kMaxColumnDraft (no face looks back at the foot:
 // no overhang, so every line up the axis from the foot leaves the column through a cap), with at least one cap;
-// nullopt otherwise.
+// nullopt otherwise. Its ledges: the caps that are planes square to the axis (as the foot's plane), lower than its
+// height by more than kLedgeDrop of it, one of whose edges a side shares that reaches higher (by as much): a rising
+// side.
 std::optional<ColumnPiece> columnPiece(const CadSolid& cad);
 
 // A column's faces as a sheet's walls (what the sweep projects onto): its foot the bottom, its caps the top, its sides

@@ -412,6 +412,7 @@ std::optional<TopoDS_Face> faceOn(const SurfaceEdges& on, const TopoDS_Wire& wir
     if (!face.IsDone()) continue;
     ShapeFix_Face fix(face.Face());
     fix.SetPrecision(tolerance);
+    fix.FixPeriodicDegeneratedMode() = 0;  // OpenCASCADE 7.6's crashes on a cone's face cut round (a drafted boss)
     fix.Perform();
     if (areaOf(fix.Face()) > 0 && BRepCheck_Analyzer(fix.Face()).IsValid()) return fix.Face();
   }

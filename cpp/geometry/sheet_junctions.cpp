@@ -147,6 +147,34 @@ std::vector<Step> stepsOf(const CadSolid& cad, const WallSides& sides, double hi
   return steps;
 }
 
+// A sheet that stands on one column alone (a pin's narrower part on its shoulder, a boss's wall on its solid base: it
+// meets no other sheet in a concave edge, the column's faces in some) is part of that column, whose ledge it stands on
+// (column_piece.hpp): its faces join the column's, its area and volume are added. The base sheet (the first) stays.
+// [in] cad; [in,out] sheets: findSheets's, the columns last.
+void joinSheetsOnColumns(const CadSolid& cad, std::vector<Sheet>& sheets) {
+  std::vector<int> owner(cad.faces.Extent(), -1);
+  for (std::size_t s = 0; s < sheets.size(); ++s)
+    for (int f : sheets[s].faces) owner[f] = static_cast<int>(s);
+  std::vector<std::set<int>> meets(sheets.size());
+  for (const FacePairEdge& c : concaveEdges(cad))
+    if (const int a = owner[c.a], b = owner[c.b]; a >= 0 && b >= 0 && a != b) meets[a].insert(b), meets[b].insert(a);
+  std::vector<char> joined(sheets.size(), 0);
+  for (std::size_t s = 1; s < sheets.size(); ++s) {
+    if (sheets[s].column || meets[s].size() != 1) continue;
+    Sheet& column = sheets[*meets[s].begin()];
+    if (!column.column) continue;
+    column.faces.insert(column.faces.end(), sheets[s].faces.begin(), sheets[s].faces.end());
+    std::sort(column.faces.begin(), column.faces.end());
+    column.centre = (column.area * column.centre + sheets[s].area * sheets[s].centre) / (column.area + sheets[s].area);
+    column.area += sheets[s].area, column.volume += sheets[s].volume;
+    joined[s] = 1;
+  }
+  std::vector<Sheet> kept;
+  for (std::size_t s = 0; s < sheets.size(); ++s)
+    if (!joined[s]) kept.push_back(std::move(sheets[s]));
+  sheets = std::move(kept);
+}
+
 }  // namespace
 
 std::vector<std::pair<int, int>> thicknessSteps(const CadSolid& cad, const WallSides& sides, double highest) {
@@ -202,6 +230,7 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
   if (sheets.empty()) return sheets;
   const std::vector<Sheet> columns = standingColumns(cad, sides);
   sheets.insert(sheets.end(), columns.begin(), columns.end());
+  joinSheetsOnColumns(cad, sheets);
   return sheets;
 }
 

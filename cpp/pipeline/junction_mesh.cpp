@@ -221,14 +221,12 @@ std::size_t snapFootColumnsAcross(HexMesh& piece, const QuadMesh& quads, std::ve
 }
 
 WallFoot columnFoot(const HexMesh& column, const QuadMesh& quads) {
-  const int stride = column.layers + 1;
   WallFoot foot;
   foot.column = true;
   foot.footprint.quads = quads.quads;
-  for (std::size_t q = 0; q < quads.nodes.size(); ++q) {
-    foot.wallNode.push_back(static_cast<int>(q) * stride);
-    foot.footprint.nodes.push_back(column.nodes[q * stride]);
-  }
+  for (std::size_t n = 0; n < column.nodes.size(); ++n)  // each quad node's column in turn, its foot first
+    if (column.nodeLayer[n] == 0)
+      foot.wallNode.push_back(static_cast<int>(n)), foot.footprint.nodes.push_back(column.nodes[n]);
   return foot;
 }
 

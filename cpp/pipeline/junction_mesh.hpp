@@ -80,8 +80,8 @@ std::size_t snapFootColumnsAcross(HexMesh& piece, const QuadMesh& quads, std::ve
 // quads between the columns. Throws geometryError if there is none.
 WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet);
 
-// [in] column: hexes swept from `quads` up a column (column_sweep.hpp, sweep.hpp's layout). Returns the footprint:
-// the quads themselves, their nodes the columns' first (layer 0) nodes.
+// [in] column: hexes swept from `quads` up a column (column_sweep.hpp: each quad node's column in turn). Returns the
+// footprint: the quads themselves, their nodes the columns' first (layer 0) nodes.
 WallFoot columnFoot(const HexMesh& column, const QuadMesh& quads);
 
 // Per node of the sheet's hexes, the standing walls' node it is, or -1: for every footprint node f the end of the

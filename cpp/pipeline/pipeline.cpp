@@ -425,7 +425,7 @@ std::optional<MeshResult> meshColumn(const TopoDS_Solid& solid, const MeshOption
   if (!column) return std::nullopt;
   r.size = size * cad.unit, r.sizeSource = "the sheet's wall thickness";
   const ColumnFoot foot = clock.run("quad_mesh", [&] {
-    for (FootprintQuads other : across) {  // a column across the sheet: its foot's quads
+    for (FootprintQuads other : column->ledges.empty() ? across : std::vector<FootprintQuads>{}) {  // one across
       for (Vec3& p : other.nodes) p *= cad.unit;
       if (std::optional<ColumnFoot> taken = columnFootAcross(cad, *column, other, r.size)) return *taken;
     }
@@ -434,8 +434,8 @@ std::optional<MeshResult> meshColumn(const TopoDS_Solid& solid, const MeshOption
   const WallSides sides = columnSides(cad, *column);
   r.thickness = sides.thickness;
   const WallProjector walls(cad, sides, boxes);
-  const int layers = std::max(1, static_cast<int>(std::lround(column->height / r.size)));
-  result.mesh = clock.run("sweep", [&] { return sweepColumn(cad, foot, *column, walls, layers); });
+  const ColumnTiers tiers = columnTiers(*column, r.size);
+  result.mesh = clock.run("sweep", [&] { return sweepColumn(cad, foot, *column, walls, tiers); });
   if (o.order == 2) r.quadratic = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });
   groupByCadFace(result.mesh, cad, walls, r, /*group=*/false);
   result.quadMesh = foot.quads;

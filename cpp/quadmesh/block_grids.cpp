@@ -653,17 +653,6 @@ std::vector<Eigen::Vector2d> cornerPlaces(const GridHole& hole, const std::array
   return at;
 }
 
-// Whether a point lies inside a polygon (even-odd rule).
-bool inside(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p) {
-  bool in = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
-    if ((polygon[i].y() > p.y()) != (polygon[j].y() > p.y()) &&
-        p.x() < polygon[j].x() +
-                    (polygon[i].x() - polygon[j].x()) * (p.y() - polygon[j].y()) / (polygon[i].y() - polygon[j].y()))
-      in = !in;
-  return in;
-}
-
 // Whether each side of a rectilinear hole still spans one grid cell at least (merged lines may not close it).
 bool sidesOpen(const GridHole& hole, const std::array<AxisLines, 2>& axis) {
   const int m = static_cast<int>(hole.corners.size());
@@ -701,7 +690,7 @@ bool leaveOutHoles(const std::vector<GridHole>& holes, const std::array<AxisLine
       for (int v = lo[1]; v < hi[1]; ++v) {
         const Eigen::Vector2d centre(0.5 * (axis[0].at[u] + axis[0].at[u + 1]),
                                      0.5 * (axis[1].at[v] + axis[1].at[v + 1]));
-        if (inside(polygon, centre) && !take(u, v)) return false;
+        if (insidePolygon(polygon, centre) && !take(u, v)) return false;
       }
   }
   return true;

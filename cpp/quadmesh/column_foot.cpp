@@ -19,8 +19,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <limits>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "core/error.hpp"
 #include "core/polygon.hpp"
@@ -29,8 +32,9 @@
 namespace hexlayer {
 namespace {
 
-constexpr double kOnOutline = 1e-2;  // of the quad size: an outline node this near the foot's edges lies on them
-constexpr double kStraight = 1e-9;   // an edge whose chord is this much shorter than it, relative, or less is straight
+constexpr double kOnOutline = 1e-2;    // of the quad size: an outline node this near the foot's edges lies on them
+constexpr double kGoodStepQuad = 0.6;  // a stepped foot whose worst quad is this good is kept (bestSteppedQuads)
+constexpr double kStraight = 1e-9;  // an edge whose chord is this much shorter than it, relative, or less is straight
 
 // One edge of a wire in the wire's order: its curve, run from `first` to `last` (reversed where the wire runs it
 // backwards), its length and how many segments it gets.
@@ -58,6 +62,15 @@ std::vector<WireEdge> wireEdges(const TopoDS_Wire& wire, const TopoDS_Face& face
   return edges;
 }
 
+// The loop given `more` segments than it has: the edge with the longest segments gets one more, in turn. [in,out]
+// edges; [in] more.
+void moreSegments(std::vector<WireEdge>& edges, int more) {
+  for (int k = 0; k < more; ++k)
+    ++std::max_element(edges.begin(), edges.end(), [](const WireEdge& a, const WireEdge& b) {
+        return a.length / a.segments < b.length / b.segments;
+      })->segments;
+}
+
 // The loop's count made kMinRoundLoop or more where it is not all straight, and even: the edge with the longest
 // segments gets one more, in turn.
 void evenLoop(std::vector<WireEdge>& edges) {
@@ -67,12 +80,7 @@ void evenLoop(std::vector<WireEdge>& edges) {
     return n;
   };
   const bool round = std::any_of(edges.begin(), edges.end(), [](const WireEdge& e) { return !e.straight; });
-  while ((round && count() < kMinRoundLoop) || count() % 2 != 0) {
-    auto longest = std::max_element(edges.begin(), edges.end(), [](const WireEdge& a, const WireEdge& b) {
-      return a.length / a.segments < b.length / b.segments;
-    });
-    ++longest->segments;
-  }
+  while ((round && count() < kMinRoundLoop) || count() % 2 != 0) moreSegments(edges, 1);
 }
 
 // The loop's points: each edge's start and the points dividing it evenly by arc length (its end is the next's start).
@@ -141,6 +149,125 @@ std::vector<std::vector<int>> boundaryLoops(const QuadMesh& quads) {
   return loops;
 }
 
+// Where p is on the foot along the axis: on its plane, or on its face if it is off its plane. [in] surface: the
+// foot's; [in] column, p.
+Vec3 downToFoot(const Handle(Geom_Surface) & surface, const ColumnPiece& column, const Vec3& p) {
+  return column.footOffPlane ? alongAxisOnto(surface, p, column.axis)
+                             : Vec3(p - (p - column.origin).dot(column.axis) * column.axis);
+}
+
+// The steps' outlines on the foot (ColumnLedge::steps: where a side rises from a ledge), each divided as the foot's
+// loops are and put on the foot along the axis, counter-clockwise in its plane. [in] cad, column, foot (its plane's
+// axes), size; [in] more: segments each loop gets beyond those (moreSegments); [in] surface: the foot's; [in,out]
+// points, at: each loop's points appended, on the foot and in its plane. Returns the loops. Throws geometryError for a
+// ledge that a rising side shares part of a wire of.
+std::vector<std::vector<int>> stepLoops(const CadSolid& cad, const ColumnPiece& column, const ColumnFoot& foot,
+                                        double size, int more, const Handle(Geom_Surface) & surface,
+                                        std::vector<Vec3>& points, std::vector<Eigen::Vector2d>& at) {
+  std::vector<std::vector<int>> loops;
+  for (const ColumnLedge& ledge : column.ledges) {
+    if (ledge.partial)
+      throw geometryError(
+          "column: a step in it runs out to its side (a ledge part way round), which is not meshed yet");
+    const TopoDS_Face& face = TopoDS::Face(cad.faces(ledge.face + 1));
+    for (const TopoDS_Wire& wire : ledge.steps) {
+      std::vector<WireEdge> edges = wireEdges(wire, face, size);
+      evenLoop(edges);
+      moreSegments(edges, more);
+      std::vector<int> loop;
+      std::vector<Eigen::Vector2d> flat;
+      for (const Vec3& p : loopPoints(edges)) {
+        loop.push_back(static_cast<int>(points.size()));
+        points.push_back(downToFoot(surface, column, p)), flat.push_back(onFootPlane(foot, column, p));
+        at.push_back(flat.back());
+      }
+      if (polygonArea(flat) < 0) std::reverse(loop.begin(), loop.end());
+      loops.push_back(loop);
+    }
+  }
+  return loops;
+}
+
+// The foot's quads where steps divide it: every region between the loops filled on its own (quadsInPolygon), the
+// loops' nodes shared. [in] at: every loop's points; [in] loops: the foot's (the outer loop counter-clockwise first,
+// the holes clockwise); [in] steps: counter-clockwise; [in] server. Returns the quads, their first at.size() nodes at.
+QuadMesh quadsInSteppedFoot(const std::vector<Eigen::Vector2d>& at, const std::vector<std::vector<int>>& loops,
+                            const std::vector<std::vector<int>>& steps, ForkServer* server) {
+  std::vector<std::vector<int>> all = loops;  // each step once round each way: a region's outer loop and a hole
+  for (const std::vector<int>& step : steps) all.push_back(step), all.emplace_back(step.rbegin(), step.rend());
+  std::vector<std::vector<Eigen::Vector2d>> flat;
+  for (const std::vector<int>& loop : all) {
+    flat.emplace_back();
+    for (int n : loop) flat.back().push_back(at[n]);
+  }
+  const std::vector<int> holeOf = holesOfLoops(flat);
+  QuadMesh quads;
+  for (const Eigen::Vector2d& p : at) quads.nodes.emplace_back(p.x(), p.y(), 0);
+  for (std::size_t r = 0; r < all.size(); ++r) {
+    if (holeOf[r] != -1) continue;
+    std::vector<std::vector<int>> region{all[r]};
+    for (std::size_t h = 0; h < all.size(); ++h)
+      if (holeOf[h] == static_cast<int>(r)) region.push_back(all[h]);
+    const QuadMesh q = quadsInPolygon(at, region, server);
+    const int first = static_cast<int>(quads.nodes.size()) - static_cast<int>(at.size());
+    quads.nodes.insert(quads.nodes.end(), q.nodes.begin() + static_cast<long>(at.size()), q.nodes.end());
+    for (std::array<int, 4> quad : q.quads) {
+      for (int& n : quad) n += n < static_cast<int>(at.size()) ? 0 : first;
+      quads.quads.push_back(quad);
+    }
+  }
+  return quads;
+}
+
+// The foot's quads where steps divide it, of several divisions of the steps' loops, tried in turn: as the size asks
+// (`steps`), with as many nodes as a loop of the foot has where that is up to twice as many (a ring between loops of
+// one count is a row of near squares), and with two and four more (Gmsh can leave triangles between loops of other
+// counts): the first whose worst quad is kGoodStepQuad or better, else the one whose worst quad is best. [in] cad,
+// column, foot, size, surface: as stepLoops's; [in,out] steps: its loops as the size asks, then the kept division's;
+// [in,out] points, at: the foot's loops' points, then those of `steps`, which the kept division's replace; [in] server.
+// Throws the first division's error if none fills the foot with quads.
+QuadMesh bestSteppedQuads(const CadSolid& cad, const ColumnPiece& column, const ColumnFoot& foot, double size,
+                          const Handle(Geom_Surface) & surface, std::vector<std::vector<int>>& steps,
+                          std::vector<Vec3>& points, std::vector<Eigen::Vector2d>& at, ForkServer* server) {
+  std::size_t stepPoints = 0;
+  for (const std::vector<int>& step : steps) stepPoints += step.size();
+  const std::size_t footPoints = points.size() - stepPoints;
+  const int natural = static_cast<int>(steps.front().size());
+  std::vector<int> tries{0};
+  for (const std::vector<int>& loop : foot.loops)
+    if (const int m = static_cast<int>(loop.size()); m > natural && m <= 2 * natural) tries.push_back(m - natural);
+  tries.push_back(2), tries.push_back(4);
+  QuadMesh best;
+  double bestWorst = -std::numeric_limits<double>::infinity();
+  std::vector<Vec3> bestPoints;
+  std::vector<Eigen::Vector2d> bestAt;
+  std::vector<std::vector<int>> bestSteps;
+  std::exception_ptr first;
+  std::set<int> tried;
+  for (const int more : tries) {
+    if (!tried.insert(more).second) continue;
+    std::vector<Vec3> p = points;
+    std::vector<Eigen::Vector2d> a = at;
+    std::vector<std::vector<int>> loops = steps;
+    if (more > 0) {
+      p.resize(footPoints), a.resize(footPoints);
+      loops = stepLoops(cad, column, foot, size, more, surface, p, a);
+    }
+    try {
+      QuadMesh q = quadsInSteppedFoot(a, foot.loops, loops, server);
+      if (const double worst = worstInPlane(q.nodes, q.quads); worst > bestWorst)
+        best = std::move(q), bestWorst = worst, bestPoints = std::move(p), bestAt = std::move(a),
+        bestSteps = std::move(loops);
+      if (bestWorst >= kGoodStepQuad) break;
+    } catch (const Error&) {
+      if (!first) first = std::current_exception();
+    }
+  }
+  if (best.quads.empty()) std::rethrow_exception(first);
+  points = std::move(bestPoints), at = std::move(bestAt), steps = std::move(bestSteps);
+  return best;
+}
+
 }  // namespace
 
 std::optional<ColumnFoot> columnFootAcross(const CadSolid& cad, const ColumnPiece& column, const FootprintQuads& other,
@@ -205,12 +332,15 @@ ColumnFoot columnFootQuads(const CadSolid& cad, const ColumnPiece& column, doubl
   for (std::size_t l = 0; l < foot.loops.size(); ++l)
     if ((static_cast<long>(l) == outer) != (area[l] > 0)) std::reverse(foot.loops[l].begin(), foot.loops[l].end());
   std::rotate(foot.loops.begin(), foot.loops.begin() + outer, foot.loops.begin() + outer + 1);
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+  foot.steps = stepLoops(cad, column, foot, size, 0, surface, points, at);
   try {
-    foot.quads = quadsInPolygon(at, foot.loops, server);
+    foot.quads = foot.steps.empty()
+                     ? quadsInPolygon(at, foot.loops, server)
+                     : bestSteppedQuads(cad, column, foot, size, surface, foot.steps, points, at, server);
   } catch (const Error& e) {  // its message speaks of a gap round a wall's foot
     throw geometryError(std::string("column: its foot was not filled with quads (") + e.what() + ")");
   }
-  const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
   for (std::size_t n = 0; n < foot.quads.nodes.size(); ++n) {
     const Vec3 p = foot.quads.nodes[n];
     const Vec3 inPlane = column.origin + p.x() * foot.e1 + p.y() * foot.e2;

@@ -19,6 +19,7 @@ namespace hexlayer {
 struct ColumnFoot {
   QuadMesh quads;                             // on the foot, counter-clockwise seen from up the axis
   std::vector<std::vector<int>> loops;        // the outline: the outer loop counter-clockwise, then the holes clockwise
+  std::vector<std::vector<int>> steps;        // the steps' outlines (column_piece.hpp's ledges), counter-clockwise
   Vec3 e1 = Vec3::Zero(), e2 = Vec3::Zero();  // the plane's axes (e1 x e2 = the column's axis), from its origin
 };
 

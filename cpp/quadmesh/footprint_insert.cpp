@@ -54,16 +54,6 @@ Vec3 areaVector(const std::vector<Vec3>& nodes, const Quad& q) {
   return (nodes[q[2]] - nodes[q[0]]).cross(nodes[q[3]] - nodes[q[1]]);
 }
 
-// Even-odd rule: whether q is inside the polygon.
-bool insidePolygon(const std::vector<Eigen::Vector2d>& p, const Eigen::Vector2d& q) {
-  bool inside = false;
-  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
-    if ((p[i].y() > q.y()) != (p[j].y() > q.y()) &&
-        q.x() < p[j].x() + (p[i].x() - p[j].x()) * (q.y() - p[j].y()) / (p[i].y() - p[j].y()))
-      inside = !inside;
-  return inside;
-}
-
 // Distance from p to the segment ab, and where its nearest point is along it (0 at a, 1 at b).
 std::pair<double, double> toSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const double t = nearestOnSegment(a, b, p);
@@ -420,22 +410,16 @@ std::vector<Eigen::Vector2d> inPlane(const Nodes& nodes, const GapMap& map, cons
 // The loops sorted into surfaces: counter-clockwise ones are outer loops (the gap on the left), each clockwise one a
 // hole of the smallest outer loop round it.
 std::vector<Surface> surfacesOf(const Nodes& nodes, const GapMap& map, const std::vector<Loop>& loops) {
-  std::vector<std::size_t> outer, holes;
-  std::vector<double> area(loops.size());
-  for (std::size_t k = 0; k < loops.size(); ++k) {
-    area[k] = polygonArea(inPlane(nodes, map, loops[k]));
-    (area[k] > 0 ? outer : holes).push_back(k);
-  }
+  std::vector<std::vector<Eigen::Vector2d>> flat;
+  for (const Loop& loop : loops) flat.push_back(inPlane(nodes, map, loop));
+  const std::vector<int> holeOf = holesOfLoops(flat);
   std::vector<Surface> surfaces;
-  for (std::size_t k : outer) surfaces.push_back({loops[k]});
-  for (std::size_t h : holes) {
-    int best = -1;
-    const Eigen::Vector2d p = map.at(nodes.at[loops[h].front()]);
-    for (std::size_t s = 0; s < outer.size(); ++s)
-      if (insidePolygon(inPlane(nodes, map, loops[outer[s]]), p) && (best < 0 || area[outer[s]] < area[outer[best]]))
-        best = static_cast<int>(s);
-    if (best < 0) throw geometryError("junction: a loop of the gap round a wall's foot lies outside it");
-    surfaces[best].push_back(loops[h]);
+  std::vector<int> surfaceOf(loops.size(), -1);
+  for (std::size_t k = 0; k < loops.size(); ++k)
+    if (holeOf[k] == -1) surfaceOf[k] = static_cast<int>(surfaces.size()), surfaces.push_back({loops[k]});
+  for (std::size_t h = 0; h < loops.size(); ++h) {
+    if (holeOf[h] == -2) throw geometryError("junction: a loop of the gap round a wall's foot lies outside it");
+    if (holeOf[h] >= 0) surfaces[surfaceOf[holeOf[h]]].push_back(loops[h]);
   }
   return surfaces;
 }
@@ -784,16 +768,6 @@ WedgeCut cutAcuteCorners(const std::vector<Eigen::Vector2d>& at, const std::vect
   return cut;
 }
 
-// The worst scaled Jacobian of the quads in the plane z = 0, negative for a clockwise one (turned over) or a bow tie.
-double worstInPlane(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads) {
-  double worst = 1;
-  for (const Quad& q : quads) {
-    const std::array<Vec3, 4> c{nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]};
-    worst = std::min(worst, quadScaledJacobian(c, Vec3::UnitZ()));
-  }
-  return worst;
-}
-
 // The ways of splitting a hexagon (corners h, counter-clockwise) into quads: along each of its three long diagonals
 // into two, and round the node `centre` into three, from an even or from an odd corner.
 std::vector<std::vector<Quad>> hexagonSplits(const std::array<int, 6>& h, int centre) {
@@ -1066,6 +1040,15 @@ std::vector<int> alikeNodes(const std::vector<Vec3>& at, const std::vector<int>&
 }
 
 }  // namespace
+
+double worstInPlane(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads) {
+  double worst = 1;
+  for (const Quad& q : quads) {
+    const std::array<Vec3, 4> c{nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]};
+    worst = std::min(worst, quadScaledJacobian(c, Vec3::UnitZ()));
+  }
+  return worst;
+}
 
 FootprintQuads onChordalSurface(FootprintQuads footprint, const ChordalLocator& chordal) {
   std::vector<Vec3> normal(footprint.nodes.size(), Vec3::Zero());

@@ -63,6 +63,10 @@ struct FootprintInsertion {
 FootprintInsertion insertFootprints(const QuadMesh& sheet, const FootprintQuads& footprint,
                                     const ChordalLocator& chordal, double size, ForkServer* server = nullptr);
 
+// [in] nodes: in the plane z = 0; [in] quads. Returns the quads' worst scaled Jacobian, negative for a clockwise one
+// (turned over) or a bow tie.
+double worstInPlane(const std::vector<Vec3>& nodes, const std::vector<std::array<int, 4>>& quads);
+
 // Quads filling a polygon in the plane (with holes), every boundary node fixed, as the gaps round feet are filled:
 // Gmsh's 2D algorithms side by side, Blossom's recombination, the one whose worst quad is best (the first of equals).
 // A column's foot (column_sweep.hpp). [in] at: the loops' points; [in] loops: the outer loop counter-clockwise, then

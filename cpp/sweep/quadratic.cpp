@@ -113,25 +113,32 @@ MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const st
   const SweepColumns col = sweepColumns(mesh);
   MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size()),
                    std::vector<int>(t.edges.size(), -1)};
-  auto isWall = [&](int layer) { return layer == 0 || layer == mesh.layers; };
+  // a wall edge: in the bottom or top layer, or between two sweep lines' tops (a column's ledge, lower than its top)
+  std::vector<char> wall(t.edges.size(), 0);
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [a, b] = t.edges[e];
     const int ka = mesh.nodeLayer[a], kb = mesh.nodeLayer[b];
     const bool cap = onCap(mesh, a) || onCap(mesh, b);  // on a rim cap: neither a wall nor a layer
     mid.layer[e] = ka == kb && !cap ? ka : -1;
+    wall[e] = mid.layer[e] >= 0 && (ka == 0 || ka == mesh.layers || (col.top[a] == a && col.top[b] == b));
     if (mid.layer[e] < 0)
       mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
-    else if (isWall(ka)) {
+    else if (wall[e]) {
       const FacePoint p = wallMidNode(mesh.nodes[a], mesh.nodes[b], ka == 0 ? Side::Bottom : Side::Top, project, stats);
       mid.position[e] = p.point, mid.face[e] = p.face;
     }
   }
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [a, b] = t.edges[e];
-    if (mid.layer[e] < 0 || isWall(mid.layer[e])) continue;
-    const Vec3& below = mid.position[t.index.at(edgeKey(col.bottom[a], col.bottom[b]))];
-    const Vec3& above = mid.position[t.index.at(edgeKey(col.top[a], col.top[b]))];
-    mid.position[e] = below + 0.5 * (col.fraction[a] + col.fraction[b]) * (above - below);
+    if (mid.layer[e] < 0 || wall[e]) continue;
+    const auto below = t.index.find(edgeKey(col.bottom[a], col.bottom[b]));
+    const auto above = t.index.find(edgeKey(col.top[a], col.top[b]));
+    if (below == t.index.end() || above == t.index.end()) {  // columns of other heights (a column's step): its middle
+      mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
+      continue;
+    }
+    const Vec3 &from = mid.position[below->second], &to = mid.position[above->second];
+    mid.position[e] = from + 0.5 * (col.fraction[a] + col.fraction[b]) * (to - from);
   }
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     if (!rim[e]) continue;
@@ -139,7 +146,7 @@ MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const st
     ++stats.rimNodes;
     // An inner layer's rim edge joins two nodes on the rim faces: its node starts from their midpoint, not from
     // the walls' (which cut across a rim that bulges between the walls: a chamfer on both sides, a round).
-    const bool inner = mid.layer[e] > 0 && !isWall(mid.layer[e]);
+    const bool inner = mid.layer[e] > 0 && !wall[e];
     const Vec3 start = inner ? Vec3(0.5 * (mesh.nodes[a] + mesh.nodes[b])) : mid.position[e];
     const FacePoint p = projectIfClose({start, mid.face[e]}, (mesh.nodes[b] - mesh.nodes[a]).norm(), Side::Lateral,
                                        project, stats.rimProjected, stats.maxProjectionMove);

@@ -1,6 +1,7 @@
 // Columns (column_piece.hpp, column_foot.hpp, column_sweep.hpp): a cone and a square post cut off at their feet are
 // columns, swept from their feet's quads to their tops; a pin under a wider head is none; a pin below a plate takes
-// the foot of the pin above, a wider one does not. At scales 1e-3, 1 and 1e3.
+// the foot of the pin above, a wider one does not; a boss with a blind bore and a pin with a shoulder (ledges) are
+// swept in tiers, each foot quad's hexes up to the cap above it. At scales 1e-3, 1 and 1e3.
 #include <gtest/gtest.h>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
@@ -13,6 +14,7 @@
 #include <TopoDS.hxx>
 
 #include <cmath>
+#include <map>
 
 #include "core/polygon.hpp"
 #include "geometry/column_piece.hpp"
@@ -78,7 +80,7 @@ TEST(ColumnSweep, AConesHexesFillItFromItsFootToItsTop) {
     for (int n : foot.loops[0]) EXPECT_NEAR(std::hypot(foot.quads.nodes[n].x(), foot.quads.nodes[n].y()), r0, 1e-9 * s);
     const WallSides sides = columnSides(cone, c);
     const WallProjector walls(cone, sides);
-    const HexMesh mesh = sweepColumn(cone, foot, c, walls, 10);
+    const HexMesh mesh = sweepColumn(cone, foot, c, walls, ColumnTiers{{c.height}, {10}});
     EXPECT_EQ(mesh.hexes.size(), foot.quads.quads.size() * 10);
     for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
     for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
@@ -117,7 +119,7 @@ TEST(ColumnSweep, APinsCurvedFootOnATubeIsSweptFromTheTube) {
     auto onTube = [&](const Vec3& p) { return std::hypot(p.y(), p.z() + 40 * s) - 40 * s; };
     for (const Vec3& p : foot.quads.nodes) EXPECT_NEAR(onTube(p), 0, 1e-6 * s);
     const WallProjector walls(cad, columnSides(cad, *c));
-    const HexMesh mesh = sweepColumn(cad, foot, *c, walls, 10);
+    const HexMesh mesh = sweepColumn(cad, foot, *c, walls, ColumnTiers{{c->height}, {10}});
     for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
     for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
       if (mesh.nodeLayer[n] == 10) EXPECT_NEAR(mesh.nodes[n].z(), 10 * s, 1e-9 * s);
@@ -161,11 +163,73 @@ TEST(ColumnSweep, APinOrPostUprightOnASlopeRunsAlongItsSides) {
         const ColumnFoot foot = columnFootQuads(cad, *c, 1.0 * s, nullptr);
         for (const Vec3& p : foot.quads.nodes) EXPECT_NEAR(slope.dot(p), 0, 1e-9 * s);
         const WallProjector walls(cad, columnSides(cad, *c));
-        const HexMesh mesh = sweepColumn(cad, foot, *c, walls, 10);
+        const HexMesh mesh = sweepColumn(cad, foot, *c, walls, ColumnTiers{{c->height}, {10}});
         for (std::size_t k = 0; k < mesh.hexes.size(); ++k) EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3);
         for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
           if (mesh.nodeLayer[n] == 10) EXPECT_NEAR(mesh.nodes[n].z(), 10 * s, 1e-9 * s);
       }
+}
+
+// A boss R4.5, 20 high, with a blind bore R1.8 from its top down to 2 over its foot (a screw boss), and a pin R3
+// standing on a wider one R5 10 high (a shoulder), each cut off at its foot: the bore's bottom and the shoulder are
+// ledges; the foot's quads follow the step's circle (no quad across it); the hexes under the bore's bottom and the
+// shoulder stop at their height, the others reach the top; the hexes fill the part (its volume but the circles'
+// polygons' shortfall), none poor, the column conformal (every inner hex face in two hexes).
+TEST(ColumnSweep, ABlindBoreAndAShoulderAreLedgesTheHexesUnderThemStopThere) {
+  for (double s : {1e-3, 1.0, 1e3})
+    for (const bool bore : {true, false}) {
+      const double ledge = bore ? 2 : 10, step = bore ? 1.8 : 3;
+      const TopoDS_Shape shape =
+          bore ? BRepAlgoAPI_Cut(
+                     BRepPrimAPI_MakeCylinder(4.5 * s, 20 * s).Shape(),
+                     BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 2 * s), gp_Dir(0, 0, 1)), 1.8 * s, 30 * s).Shape())
+                     .Shape()
+               : BRepAlgoAPI_Fuse(
+                     BRepPrimAPI_MakeCylinder(5 * s, 10 * s).Shape(),
+                     BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 5 * s), gp_Dir(0, 0, 1)), 3 * s, 15 * s).Shape())
+                     .Shape();
+      const CadSolid cad = withFootAtZ0(shape);
+      const std::optional<ColumnPiece> c = columnPiece(cad);
+      ASSERT_TRUE(c) << s << " " << bore;
+      ASSERT_EQ(c->ledges.size(), 1u);
+      EXPECT_NEAR(c->ledges[0].height, ledge * s, 1e-9 * s);
+      EXPECT_EQ(c->ledges[0].steps.size(), 1u);
+      const ColumnTiers tiers = columnTiers(*c, 1.0 * s);
+      EXPECT_EQ(tiers.layers, (std::vector<int>{static_cast<int>(ledge), static_cast<int>(20 - ledge)}));
+      const ColumnFoot foot = columnFootQuads(cad, *c, 1.0 * s, nullptr);
+      auto radius = [&](const Vec3& p) { return std::hypot(p.x(), p.y()); };
+      for (const auto& q : foot.quads.quads) {  // on one side of the step's circle
+        int in = 0, out = 0;
+        for (int n : q)
+          in += radius(foot.quads.nodes[n])<step * s*(1 - 1e-6), out += radius(foot.quads.nodes[n])> step * s *
+                (1 + 1e-6);
+        EXPECT_TRUE(in == 0 || out == 0) << s << " " << bore;
+      }
+      const WallProjector walls(cad, columnSides(cad, *c));
+      const HexMesh mesh = sweepColumn(cad, foot, *c, walls, tiers);
+      auto faceKey = [&](std::size_t k, int f) {
+        std::array<int, 4> key;
+        for (int c4 = 0; c4 < 4; ++c4) key[c4] = mesh.hexes[k][kHexFaces[f][c4]];
+        std::sort(key.begin(), key.end());
+        return key;
+      };
+      std::map<std::array<int, 4>, int> faces;
+      for (std::size_t k = 0; k < mesh.hexes.size(); ++k) {
+        EXPECT_GT(hexScaledJacobian(hexCorners(mesh, k)), 0.3) << s << " " << bore;
+        for (int f = 0; f < 6; ++f) ++faces[faceKey(k, f)];
+      }
+      for (const auto& [key, count] : faces) EXPECT_LE(count, 2);
+      for (std::size_t k = 0; k < mesh.hexes.size(); ++k) {  // a column's top hex (its top face in no other hex)
+        if (faces[faceKey(k, 1)] != 1) continue;
+        Vec3 middle = Vec3::Zero();
+        double top = -1e300;
+        for (const Vec3& p : hexCorners(mesh, k)) middle += p / 8, top = std::max(top, p.z());
+        const bool under = bore ? radius(middle) < step * s : radius(middle) > step * s;
+        EXPECT_NEAR(top, (under ? ledge : 20) * s, 1e-6 * s) << s << " " << bore;
+      }
+      const double volume = bore ? M_PI * (4.5 * 4.5 * 20 - 1.8 * 1.8 * 18) : M_PI * (25 * 10 + 9 * 10);
+      EXPECT_NEAR(meshVolume(mesh) / (volume * s * s * s), 1, 0.04) << s << " " << bore;
+    }
 }
 
 TEST(MeanValueWeights, ReproduceLinearFunctionsInAPolygonWithAHole) {

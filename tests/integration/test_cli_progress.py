@@ -10,6 +10,7 @@ import json
 import os
 import pty
 import re
+import signal
 import subprocess
 import tempfile
 import unittest
@@ -31,6 +32,21 @@ class Version(unittest.TestCase):
         done = subprocess.run([harness.args.hexlayer, "--version"], capture_output=True, text=True, timeout=60)
         self.assertEqual(done.returncode, 0, done.stderr)
         self.assertEqual(done.stdout.strip(), "hexlayer " + version)
+
+
+class Crash(unittest.TestCase):
+    def test_a_crash_is_an_internal_error_that_says_so(self):
+        """A signal that would kill the run (a library's null dereference) gives a line and exit code 5."""
+        with tempfile.TemporaryDirectory() as tmp:
+            run = subprocess.Popen([harness.args.hexlayer, "mesh", sample("plate_holes.step"), "-o",
+                                    os.path.join(tmp, "crash.inp"), "--machine"], stderr=subprocess.PIPE, text=True)
+            for line in run.stderr:
+                if line.startswith("@running"):
+                    run.send_signal(signal.SIGSEGV)
+                    break
+            rest = run.stderr.read()
+            self.assertEqual(run.wait(timeout=600), 5)
+            self.assertIn("hexlayer: internal error: crashed (segmentation fault)", rest)
 
 
 class Progress(MeshTest):
