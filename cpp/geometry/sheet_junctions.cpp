@@ -6,6 +6,7 @@
 #include <Bnd_OBB.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <gp_Pln.hxx>
 
@@ -17,6 +18,7 @@
 #include <sstream>
 
 #include "core/union_find.hpp"
+#include "geometry/column_piece.hpp"
 #include "geometry/face_sampling.hpp"
 #include "geometry/sheet_edges.hpp"
 
@@ -147,22 +149,43 @@ std::vector<Step> stepsOf(const CadSolid& cad, const WallSides& sides, double hi
   return steps;
 }
 
-// A sheet that stands on one column alone (a pin's narrower part on its shoulder, a boss's wall on its solid base: it
-// meets no other sheet in a concave edge, the column's faces in some) is part of that column, whose ledge it stands on
+// A sheet that stands on one column's top alone (a pin's narrower part on its shoulder: it meets no other sheet in a
+// concave edge, and the column's faces only where they face up the column, within kMaxColumnDraft of its axis, the
+// outward normal of the wall it stands on at its feet) is part of that column, whose ledge it stands on
 // (column_piece.hpp): its faces join the column's, its area and volume are added. The base sheet (the first) stays.
 // [in] cad; [in,out] sheets: findSheets's, the columns last.
 void joinSheetsOnColumns(const CadSolid& cad, std::vector<Sheet>& sheets) {
   std::vector<int> owner(cad.faces.Extent(), -1);
   for (std::size_t s = 0; s < sheets.size(); ++s)
     for (int f : sheets[s].faces) owner[f] = static_cast<int>(s);
+  auto normal = [&](int face, int edge) {
+    return normalAtEdge(TopoDS::Face(cad.faces(face + 1)), TopoDS::Edge(cad.edges(edge + 1)));
+  };
+  const std::vector<FacePairEdge> concave = concaveEdges(cad);
   std::vector<std::set<int>> meets(sheets.size());
-  for (const FacePairEdge& c : concaveEdges(cad))
+  for (const FacePairEdge& c : concave)
     if (const int a = owner[c.a], b = owner[c.b]; a >= 0 && b >= 0 && a != b) meets[a].insert(b), meets[b].insert(a);
+  // per column, the sum of the outward normals of the walls it stands on (of the sheets that meet others too)
+  std::vector<Vec3> axis(sheets.size(), Vec3::Zero());
+  for (const FacePairEdge& c : concave)
+    if (const int a = owner[c.a], b = owner[c.b]; a >= 0 && b >= 0 && sheets[a].column != sheets[b].column) {
+      const int wall = sheets[a].column ? b : a;
+      if (wall == 0 || meets[wall].size() > 1) axis[sheets[a].column ? a : b] += normal(wall == a ? c.a : c.b, c.edge);
+    }
+  auto onTop = [&](int s, int column) {  // every concave edge of s with the column on a face of it facing up
+    const Vec3 up = axis[column].normalized();
+    return std::all_of(concave.begin(), concave.end(), [&](const FacePairEdge& c) {
+      const int a = owner[c.a], b = owner[c.b];
+      if (!((a == s && b == column) || (a == column && b == s))) return true;
+      return normal(a == column ? c.a : c.b, c.edge).dot(up) >= std::cos(kMaxColumnDraft);
+    });
+  };
   std::vector<char> joined(sheets.size(), 0);
   for (std::size_t s = 1; s < sheets.size(); ++s) {
     if (sheets[s].column || meets[s].size() != 1) continue;
-    Sheet& column = sheets[*meets[s].begin()];
-    if (!column.column) continue;
+    const int c = *meets[s].begin();
+    if (!sheets[c].column || axis[c].isZero() || !onTop(static_cast<int>(s), c)) continue;
+    Sheet& column = sheets[c];
     column.faces.insert(column.faces.end(), sheets[s].faces.begin(), sheets[s].faces.end());
     std::sort(column.faces.begin(), column.faces.end());
     column.centre = (column.area * column.centre + sheets[s].area * sheets[s].centre) / (column.area + sheets[s].area);

@@ -224,7 +224,9 @@ WallFoot columnFoot(const HexMesh& column, const QuadMesh& quads) {
   WallFoot foot;
   foot.column = true;
   foot.footprint.quads = quads.quads;
-  for (std::size_t n = 0; n < column.nodes.size(); ++n)  // each quad node's column in turn, its foot first
+  int corners = 0;  // the hexes' corner nodes come first, their mid-edge nodes (order 2) after them
+  for (const auto& hex : column.hexes) corners = std::max(corners, *std::max_element(hex.begin(), hex.end()) + 1);
+  for (int n = 0; n < corners; ++n)  // each quad node's column in turn, its foot first
     if (column.nodeLayer[n] == 0)
       foot.wallNode.push_back(static_cast<int>(n)), foot.footprint.nodes.push_back(column.nodes[n]);
   return foot;
