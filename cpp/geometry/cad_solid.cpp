@@ -347,7 +347,7 @@ std::optional<gp_Cylinder> cylinderOf(const TopoDS_Shape& face, double tolerance
                      r);
 }
 
-Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {
+Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v, double* length) {
   // The surface's derivatives, placed as the face is, crossed and turned with the face's orientation (as
   // BRepGProp_Face does, without its adaptor's parameter bounds: those walk every edge of the face).
   TopLoc_Location place;
@@ -359,6 +359,7 @@ Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v) {
   gp_Vec n = du.Crossed(dv);
   if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
   const double len = n.Magnitude();
+  if (length) *length = len;
   if (!(len > 0)) return Vec3::Zero();
   return Vec3(n.X(), n.Y(), n.Z()) / len;
 }

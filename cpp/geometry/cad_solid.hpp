@@ -87,7 +87,9 @@ void triangulateFaces(const TopoDS_Shape& shape, double deflection);
 inline Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // Unit outward normal of face `f` at parameter (u, v), respecting the face orientation.
-Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v);
+// [out] length: if given, |du x dv| there (about 0 near a pole: a cone's apex, where a parameter just past it turns the
+// normal over).
+Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v, double* length = nullptr);
 
 // The outward normal of `face` at the middle of its edge `edge` (zero if the edge has no curve on the face).
 // [in] face, edge.

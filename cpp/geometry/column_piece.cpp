@@ -1,5 +1,6 @@
 #include "geometry/column_piece.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -28,6 +29,8 @@ constexpr double kSquareFoot = 1e-9;
 constexpr double kSameAxis = 1.0 * M_PI / 180, kMaxSideLean = M_PI / 6, kMaxFootTilt = M_PI / 4;
 // Of the greatest eigenvalue: a second least eigenvalue of the sides' normals' n n^T this small leaves the axis free.
 constexpr double kFreeAxis = 1e-3;
+// Of the face's greatest |du x dv| at its triangulation's nodes: a node whose is no greater lies at a pole.
+constexpr double kPole = 1e-6;
 
 // The range of n . axis over the face's outward normals at the nodes of its triangulation (BRepMesh's, at their
 // (u, v): a B-spline face's triangles can lean far from its surface), and its farthest point along the axis; nullopt
@@ -41,13 +44,17 @@ std::optional<FaceReach> faceReach(const TopoDS_Face& face, const Vec3& axis) {
   const Handle(Poly_Triangulation) t = BRep_Tool::Triangulation(face, at);
   if (t.IsNull() || !t->HasUVNodes() || t->NbNodes() == 0) return std::nullopt;
   FaceReach r;
+  std::vector<Vec3> normal(t->NbNodes());
+  std::vector<double> length(t->NbNodes());
   for (int i = 1; i <= t->NbNodes(); ++i) {
     const gp_Pnt p = t->Node(i).Transformed(at.Transformation());
     r.top = std::max(r.top, Vec3(p.X(), p.Y(), p.Z()).dot(axis));
-    const Vec3 n = outwardNormal(face, t->UVNode(i).X(), t->UVNode(i).Y());
-    if (n.isZero()) continue;  // a pole (a cone's apex): no normal
-    r.lowest = std::min(r.lowest, n.dot(axis)), r.highest = std::max(r.highest, n.dot(axis));
+    normal[i - 1] = outwardNormal(face, t->UVNode(i).X(), t->UVNode(i).Y(), &length[i - 1]);
   }
+  const double pole = kPole * *std::max_element(length.begin(), length.end());
+  for (int i = 0; i < t->NbNodes(); ++i)
+    if (length[i] > pole)  // not at a pole (a cone's apex): no normal there, or one turned over just past it
+      r.lowest = std::min(r.lowest, normal[i].dot(axis)), r.highest = std::max(r.highest, normal[i].dot(axis));
   if (r.lowest > r.highest) return std::nullopt;
   return r;
 }
@@ -94,37 +101,60 @@ Vec3 sidesAxis(const CadSolid& cad, int foot, const Vec3& footNormal) {
   return axis->dot(footNormal) >= std::cos(kSameAxis) ? footNormal : *axis;
 }
 
+// The heights over the foot's plane of the edge's ends and middle: their least and greatest. [in] c, edge.
+std::pair<double, double> edgeHeights(const ColumnPiece& c, const TopoDS_Shape& edge) {
+  const BRepAdaptor_Curve curve(TopoDS::Edge(edge));
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const double t : {0.0, 0.5, 1.0}) {
+    const double h =
+        (toVec(curve.Value((1 - t) * curve.FirstParameter() + t * curve.LastParameter())) - c.origin).dot(c.axis);
+    low = std::min(low, h), high = std::max(high, h);
+  }
+  return {low, high};
+}
+
 // The column's ledges (ColumnPiece::ledges), lowest first. [in] cad; [in] c: its foot, axis, origin, sides, caps and
 // height found; [in] top: per face, its farthest point along the axis over the foot's plane.
 std::vector<ColumnLedge> findLedges(const CadSolid& cad, const ColumnPiece& c, const std::vector<double>& top) {
   TopTools_IndexedDataMapOfShapeListOfShape faceOfEdge;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, faceOfEdge);
   const double drop = kLedgeDrop * c.height;
+  auto rises = [&](int f, const TopoDS_Shape& edge, double height) {  // a side beside it reaches higher
+    for (const TopoDS_Shape& other : faceOfEdge.FindFromKey(edge))
+      if (const int o = cad.faces.FindIndex(other) - 1;
+          o != f && std::find(c.sides.begin(), c.sides.end(), o) != c.sides.end() && top[o] > height + drop)
+        return true;
+    return false;
+  };
+  auto isSeam = [&](int f, const TopoDS_Shape& edge) {  // the face's own seam: no other face beside it
+    const TopTools_ListOfShape& faces = faceOfEdge.FindFromKey(edge);
+    return std::all_of(faces.begin(), faces.end(),
+                       [&](const TopoDS_Shape& other) { return cad.faces.FindIndex(other) - 1 == f; });
+  };
   std::vector<ColumnLedge> ledges;
   for (int f : c.caps) {
     const TopoDS_Face& face = TopoDS::Face(cad.faces(f + 1));
-    const std::optional<gp_Pln> plane = planeOf(face, kPlanarFoot * cad.diagonal);
-    if (!plane) continue;
-    const Vec3 normal = toVec(gp_Pnt(plane->Axis().Direction().XYZ()));
-    const double height = (toVec(plane->Location()) - c.origin).dot(c.axis);
-    if (std::abs(normal.dot(c.axis)) < 1 - kSquareFoot || height > c.height - drop) continue;
-    auto rises = [&](const TopoDS_Shape& edge) {
-      for (const TopoDS_Shape& other : faceOfEdge.FindFromKey(edge))
-        if (const int o = cad.faces.FindIndex(other) - 1;
-            o != f && std::find(c.sides.begin(), c.sides.end(), o) != c.sides.end() && top[o] > height + drop)
-          return true;
-      return false;
-    };
-    ColumnLedge ledge{f, height, {}, false};
+    ColumnLedge ledge{f, -std::numeric_limits<double>::infinity(), {}, false};
+    double low = std::numeric_limits<double>::infinity();  // the steps' edges' least height
     for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
       int edges = 0, rising = 0;
-      for (TopExp_Explorer e(w.Current(), TopAbs_EDGE); e.More(); e.Next()) ++edges, rising += rises(e.Current());
-      if (rising == edges)
-        ledge.steps.push_back(TopoDS::Wire(w.Current()));
+      double wireLow = std::numeric_limits<double>::infinity(), wireHigh = -wireLow;
+      for (TopExp_Explorer e(w.Current(), TopAbs_EDGE); e.More(); e.Next()) {
+        if (BRep_Tool::Degenerated(TopoDS::Edge(e.Current())) || isSeam(f, e.Current())) continue;  // a cone's apex
+        const auto [a, b] = edgeHeights(c, e.Current());
+        ++edges, rising += rises(f, e.Current(), b), wireLow = std::min(wireLow, a), wireHigh = std::max(wireHigh, b);
+      }
+      if (rising == edges && wireHigh - wireLow <= drop)  // a step round a level outline
+        ledge.steps.push_back(TopoDS::Wire(w.Current())), low = std::min(low, wireLow),
+                                                          ledge.height = std::max(ledge.height, wireHigh);
       else
         ledge.partial |= rising > 0;
     }
-    if (!ledge.steps.empty() || ledge.partial) ledges.push_back(std::move(ledge));
+    // a ledge's steps at one height, no higher than its top's lowest edge (it stays under its tier's top)
+    if (ledge.steps.empty() && !ledge.partial) continue;
+    if (!ledge.steps.empty() && (ledge.height - low > drop || top[f] > ledge.height + drop)) ledge.partial = true;
+    if (ledge.steps.empty()) ledge.height = top[f];
+    ledges.push_back(std::move(ledge));
   }
   std::sort(ledges.begin(), ledges.end(), [](const ColumnLedge& a, const ColumnLedge& b) {
     return a.height < b.height || (a.height == b.height && a.face < b.face);

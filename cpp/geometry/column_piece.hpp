@@ -14,14 +14,15 @@
 
 namespace hexlayer {
 
-// A ledge: a flat cap square to the axis, below the column's top, from whose edges a side rises (a blind bore's bottom,
-// a shoulder, a counterbore's floor). The column's hexes under it stop there, those beside it go on up
-// (column_sweep.hpp); the foot's quads follow the outline of every step (column_foot.hpp).
+// A ledge: a cap below the column's top from whose edges a side rises, all round an outline at one height (a blind
+// bore's bottom, flat or a drill point's cone; a shoulder; a counterbore's floor). The column's hexes under it stop
+// there, those beside it go on up (column_sweep.hpp); the foot's quads follow the outline of every step
+// (column_foot.hpp).
 struct ColumnLedge {
   int face = -1;                   // the cap (0-based in CadSolid::faces)
-  double height = 0;               // over the foot's plane, along the axis
+  double height = 0;               // its steps' outlines' over the foot's plane, along the axis (no point of it higher)
   std::vector<TopoDS_Wire> steps;  // its wires a rising side shares all of: a step's closed outline
-  bool partial = false;            // a wire of it a rising side shares part of (a step that runs to the column's side)
+  bool partial = false;            // no ledge the sweep takes (a step that runs to the column's side): refused
 };
 
 struct ColumnPiece {
@@ -48,9 +49,9 @@ inline constexpr double kLedgeDrop = 1e-3;
 // face's normals (at its
 // triangulation's nodes) face the axis's way or square to it within kMaxColumnDraft (no face looks back at the foot:
 // no overhang, so every line up the axis from the foot leaves the column through a cap), with at least one cap;
-// nullopt otherwise. Its ledges: the caps that are planes square to the axis (as the foot's plane), lower than its
-// height by more than kLedgeDrop of it, one of whose edges a side shares that reaches higher (by as much): a rising
-// side.
+// nullopt otherwise. Its ledges: the caps one of whose edges a side shares that reaches higher by more than
+// kLedgeDrop of its height (a rising side); a wire all of whose edges rise, level within as much, is a step; a ledge
+// with a wire part of whose edges rise, or steps at two heights, or rising over its steps is `partial`.
 std::optional<ColumnPiece> columnPiece(const CadSolid& cad);
 
 // A column's faces as a sheet's walls (what the sweep projects onto): its foot the bottom, its caps the top, its sides

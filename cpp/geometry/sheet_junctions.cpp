@@ -43,7 +43,8 @@ Vec3 faceCentre(const TopoDS_Shape& face, double area) {
 
 // The faces as a column: their area, centre and the volume they enclose with a plane through `origin` closing them,
 // V = 1/3 * sum over the faces of (x - origin) . n dA (the divergence theorem; the closing plane adds nothing), from
-// one sampling. [in] cad, sides, faces, origin.
+// one sampling: negative where the faces are a dent below the plane (a drill point's cone at a blind bore's bottom:
+// their outward normals face what they enclose). [in] cad, sides, faces, origin.
 Sheet columnOf(const CadSolid& cad, const WallSides& sides, const std::vector<int>& faces, const Vec3& origin) {
   Sheet column;
   column.faces = faces, column.column = true;
@@ -55,7 +56,7 @@ Sheet columnOf(const CadSolid& cad, const WallSides& sides, const std::vector<in
     column.area += sides.faces[f].area, column.centre += centre;
   }
   column.centre /= std::max(column.area, 1e-30);
-  column.volume = std::abs(volume);
+  column.volume = volume;
   return column;
 }
 
@@ -289,7 +290,8 @@ std::vector<Sheet> standingColumns(const CadSolid& cad, const WallSides& sides) 
       if (candidate[f] && uf.find(f) == root) faces.push_back(f);
     if (smallFeature(cad, sides, faces)) continue;
     Sheet column = columnOf(cad, sides, faces, at);
-    if (column.volume <= kStandsOut * column.area * sides.thickness) continue;  // at the wall's level: a bore's floor
+    // at the wall's level (a bore's floor) or below it (a dent: a drill point's cone)
+    if (column.volume <= kStandsOut * column.area * sides.thickness) continue;
     columns.push_back(std::move(column));
   }
   std::stable_sort(columns.begin(), columns.end(), [](const Sheet& a, const Sheet& b) { return a.area > b.area; });

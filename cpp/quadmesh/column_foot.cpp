@@ -14,6 +14,7 @@
 #include <Geom_Surface.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 
@@ -46,9 +47,16 @@ struct WireEdge {
 };
 
 std::vector<WireEdge> wireEdges(const TopoDS_Wire& wire, const TopoDS_Face& face, double size) {
+  TopTools_IndexedMapOfShape seen, twice;  // a seam runs in the wire both ways
+  for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next())
+    if (seen.Contains(e.Current()))
+      twice.Add(e.Current());
+    else
+      seen.Add(e.Current());
   std::vector<WireEdge> edges;
   for (BRepTools_WireExplorer e(wire, face); e.More(); e.Next()) {
     const TopoDS_Edge& edge = e.Current();
+    if (BRep_Tool::Degenerated(edge) || twice.Contains(edge)) continue;  // a cone's apex, its seam: no outline
     WireEdge w{BRepAdaptor_Curve(edge)};
     w.first = w.curve.FirstParameter(), w.last = w.curve.LastParameter();
     if (edge.Orientation() == TopAbs_REVERSED) std::swap(w.first, w.last);
@@ -168,7 +176,7 @@ std::vector<std::vector<int>> stepLoops(const CadSolid& cad, const ColumnPiece& 
   for (const ColumnLedge& ledge : column.ledges) {
     if (ledge.partial)
       throw geometryError(
-          "column: a step in it runs out to its side (a ledge part way round), which is not meshed yet");
+          "column: a step in it runs out to its side, or round a ledge not level all round, which is not meshed yet");
     const TopoDS_Face& face = TopoDS::Face(cad.faces(ledge.face + 1));
     for (const TopoDS_Wire& wire : ledge.steps) {
       std::vector<WireEdge> edges = wireEdges(wire, face, size);

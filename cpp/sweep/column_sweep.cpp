@@ -96,10 +96,12 @@ struct NodeColumn {
   std::vector<FacePoint> tierTop;  // per tier up to `high`, where it crosses that tier's top (the last: its end)
 };
 
-// The node columns of a column with ledges. [in] cad, foot, column, walls, tiers, outline; [in] quadTier: per quad.
+// The node columns of a column with ledges. [in] cad, foot, column, walls, tiers, outline; [in] quadTier: per quad;
+// [in,out] rays: the column's.
 std::vector<NodeColumn> steppedColumns(const CadSolid& cad, const ColumnFoot& foot, const ColumnPiece& column,
                                        const WallProjector& walls, const ColumnTiers& tiers,
-                                       const std::vector<char>& outline, const std::vector<int>& quadTier) {
+                                       const std::vector<char>& outline, const std::vector<int>& quadTier,
+                                       RayCaster& rays) {
   const QuadMesh& q = foot.quads;
   const int last = static_cast<int>(tiers.top.size()) - 1;
   std::vector<NodeColumn> c(q.nodes.size(), NodeColumn{last, 0, {}});
@@ -139,6 +141,8 @@ std::vector<NodeColumn> steppedColumns(const CadSolid& cad, const ColumnFoot& fo
       at = top[n];
     else if (onLoop[n])
       at = walls.projectOntoRimEdges(Side::Top, end);  // a side's top edge
+    else                                               // inside a ledge (a drill point's cone, or flat): up the axis
+      at = capAbove(rays, column, from, 2 * cad.diagonal);
     c[n].tierTop.push_back(at ? *at : onSide(walls, Side::Top, end));
   }
   return c;
@@ -175,7 +179,7 @@ HexMesh sweepColumn(const CadSolid& cad, const ColumnFoot& foot, const ColumnPie
   } else {
     RayCaster rays(cad, 1e-7 * cad.diagonal);
     quadTier = quadTiers(rays, q, column, tiers, 2 * cad.diagonal);
-    columns = steppedColumns(cad, foot, column, walls, tiers, outline, quadTier);
+    columns = steppedColumns(cad, foot, column, walls, tiers, outline, quadTier, rays);
   }
   HexMesh mesh;
   mesh.layers = first.back();

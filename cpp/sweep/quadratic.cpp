@@ -113,14 +113,15 @@ MidEdgeNodes placeMidEdgeNodes(const HexMesh& mesh, const EdgeTable& t, const st
   const SweepColumns col = sweepColumns(mesh);
   MidEdgeNodes mid{std::vector<Vec3>(t.edges.size()), std::vector<int>(t.edges.size()),
                    std::vector<int>(t.edges.size(), -1)};
-  // a wall edge: in the bottom or top layer, or between two sweep lines' tops (a column's ledge, lower than its top)
+  // a wall edge: in the bottom or top layer, or from a sweep line's top in its layer (on a column's ledge, lower than
+  // its top: to another line's top, or to a step's line where it crosses the ledge's rim)
   std::vector<char> wall(t.edges.size(), 0);
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [a, b] = t.edges[e];
     const int ka = mesh.nodeLayer[a], kb = mesh.nodeLayer[b];
     const bool cap = onCap(mesh, a) || onCap(mesh, b);  // on a rim cap: neither a wall nor a layer
     mid.layer[e] = ka == kb && !cap ? ka : -1;
-    wall[e] = mid.layer[e] >= 0 && (ka == 0 || ka == mesh.layers || (col.top[a] == a && col.top[b] == b));
+    wall[e] = mid.layer[e] >= 0 && (ka == 0 || ka == mesh.layers || col.top[a] == a || col.top[b] == b);
     if (mid.layer[e] < 0)
       mid.position[e] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
     else if (wall[e]) {

@@ -3,6 +3,7 @@
 // outside round (bend_rounds.hpp).
 #include <gtest/gtest.h>
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBndLib.hxx>
@@ -10,6 +11,7 @@
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <Bnd_Box.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
@@ -18,6 +20,7 @@
 #include <gp_Ax2.hxx>
 #include <gp_Trsf.hxx>
 
+#include <cmath>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -248,6 +251,40 @@ TEST(SheetJunctions, StepsHolesPocketsAndNubsAreNoColumns) {
   const WallSides sides = classifyWallSides(cad);
   EXPECT_TRUE(standingColumns(cad, sides).empty());
   EXPECT_EQ(findSheets(cad, sides).size(), 1u);
+}
+
+// A screw boss whose blind bore ends in a 118-degree drill point: the point's cone is a dent under the bore's floor
+// (the volume it closes with the plane of its rim is negative), no column of its own (one was found, standing on the
+// bore's wall, and refused). A pin R3 on a wider pin R5 (a shoulder) is one column: the narrower part, a sheet that
+// stands on the wider's top alone, joins it. At scales 1e-3, 1, 1e3.
+TEST(SheetJunctions, ADrillPointIsNoColumnAPinOnAShoulderIsOne) {
+  for (const double s : {1e-3, 1.0, 1e3}) {
+    gp_Trsf scaling;
+    scaling.SetScale(gp_Pnt(0, 0, 0), s);
+    auto scaled = [&](const TopoDS_Shape& shape) { return BRepBuilderAPI_Transform(shape, scaling, true).Shape(); };
+    const TopoDS_Shape bore = BRepAlgoAPI_Fuse(
+        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, 5), gp_Dir(0, 0, 1)), 1.8, 30).Shape(),
+        BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(30, 20, 5), gp_Dir(0, 0, -1)), 1.8, 0, 1.8 / std::tan(59 * M_PI / 180))
+            .Shape());
+    const TopoDS_Shape boss =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, 1), gp_Dir(0, 0, 1)), 4.5, 20).Shape(), bore);
+    const CadSolid drilled = solidOf(scaled(BRepAlgoAPI_Fuse(plate(), boss).Shape()));
+    const WallSides drilledSides = classifyWallSides(drilled);
+    for (const Sheet& column : standingColumns(drilled, drilledSides))
+      for (int f : column.faces)
+        EXPECT_NE(BRepAdaptor_Surface(TopoDS::Face(drilled.faces(f + 1))).GetType(), GeomAbs_Cone) << s;
+    const TopoDS_Shape pins =
+        BRepAlgoAPI_Fuse(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, 1), gp_Dir(0, 0, 1)), 5, 9).Shape(),
+                         BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, 9), gp_Dir(0, 0, 1)), 3, 11).Shape());
+    const CadSolid shouldered = solidOf(scaled(BRepAlgoAPI_Fuse(plate(), pins).Shape()));
+    const std::vector<Sheet> sheets = findSheets(shouldered, classifyWallSides(shouldered));
+    ASSERT_EQ(sheets.size(), 2u) << s;
+    EXPECT_TRUE(sheets[1].column);
+    int cylinders = 0;
+    for (int f : sheets[1].faces)
+      cylinders += BRepAdaptor_Surface(TopoDS::Face(shouldered.faces(f + 1))).GetType() == GeomAbs_Cylinder;
+    EXPECT_EQ(cylinders, 2) << s;
+  }
 }
 
 namespace {

@@ -293,24 +293,35 @@ def write_column(path, shape, scale, turn):
 def write_stepped_column(path, shape, scale, turn):
     """Writes test_stepped_columns_twins's part as STEP: a 60 x 40 x 2 plate with a column at (30, 20) whose caps lie
     at two heights (column_piece.hpp's ledges): "blind" (a screw boss R4.5 to z = 21, its blind bore R1.8 from z = 4
-    up: its floor 2 over the plate), "draft" (the boss and bore drafted: cones R5 -> R4.2 and R1.6 -> R1.9), "shoulder"
-    (a pin R3 to z = 20 on a pin R5 to z = 10); "box": an open box 100 x 70 x 30, wall 2, with a blind boss at each
-    corner 12 from its sides. Scaled and turned (turned_and_scaled); returns its volume."""
+    up: its floor 2 over the plate), "draft" (the boss and bore drafted: cones R5 -> R4.2 and R1.6 -> R1.9), "drill"
+    (the bore from z = 5 down to a 118-degree drill point), "shoulder" (a pin R3 to z = 20 on a pin R5 to z = 10);
+    "shell": the blind boss 12 high on the top of a half tube (R40 outside, wall 2), its bore's floor 3 over the tube;
+    "box": an open box 100 x 70 x 30, wall 2, with a blind boss at each corner 12 from its sides. Scaled and turned
+    (turned_and_scaled); returns its volume."""
     with modelling() as (gmsh, occ):
+        z0, high, floor = 1, 20, 4
         if shape == "box":
             base = occ.cut([(3, occ.addBox(0, 0, 0, 100, 70, 30))], [(3, occ.addBox(2, 2, 2, 96, 66, 30))])[0]
             places = ((12, 12), (88, 12), (12, 58), (88, 58))
+        elif shape == "shell":
+            tube = occ.cut([(3, occ.addCylinder(0, 0, 0, 60, 0, 0, 40))], [(3, occ.addCylinder(0, 0, 0, 60, 0, 0, 38))])
+            base = occ.intersect(tube[0], [(3, occ.addBox(0, -50, 0, 60, 100, 50))])[0]
+            places, z0, high, floor = ((30, 0),), 39, 12, 43
         else:
             base, places = [(3, occ.addBox(0, 0, 0, 60, 40, 2))], ((30, 20),)
         columns = []
         for x, y in places:
-            if shape == "shoulder":
+            if shape == "drill":
+                tip = occ.addCone(x, y, 5, 0, 0, -1.8 / np.tan(59 * np.pi / 180), 1.8, 0)
+                bore = occ.fuse([(3, occ.addCylinder(x, y, 5, 0, 0, 30, 1.8))], [(3, tip)])[0]
+                columns += occ.cut([(3, occ.addCylinder(x, y, 1, 0, 0, 20, 4.5))], bore)[0]
+            elif shape == "shoulder":
                 columns += [(3, occ.addCylinder(x, y, 1, 0, 0, 9, 5)), (3, occ.addCylinder(x, y, 9, 0, 0, 11, 3))]
             elif shape == "draft":
                 boss, bore = occ.addCone(x, y, 1, 0, 0, 20, 5, 4.2), occ.addCone(x, y, 4, 0, 0, 17, 1.6, 1.9)
                 columns += occ.cut([(3, boss)], [(3, bore)])[0]
             else:
-                boss, bore = occ.addCylinder(x, y, 1, 0, 0, 20, 4.5), occ.addCylinder(x, y, 4, 0, 0, 30, 1.8)
+                boss, bore = occ.addCylinder(x, y, z0, 0, 0, high, 4.5), occ.addCylinder(x, y, floor, 0, 0, 30, 1.8)
                 columns += occ.cut([(3, boss)], [(3, bore)])[0]
         occ.fuse(base, columns)
         return turned_and_scaled(gmsh, path, scale, turn)
@@ -802,11 +813,14 @@ class JunctionMeshing(unittest.TestCase):
     def test_stepped_columns_twins(self):
         """Columns whose caps lie at two heights (column_piece.hpp's ledges: refused before, their hexes sheared
         across the step): a screw boss with a blind bore whose floor is 2 over the plate, the boss and bore drafted, a
-        pin on a wider pin (a shoulder: two sheets before, the narrower standing on the wider's top, refused); the boss
+        bore ending in a drill point's cone (a dent under the step: no column of its own), the boss on a half tube (its
+        foot curved), a pin on a wider pin (a shoulder: two sheets before, the narrower standing on the wider's top,
+        refused); the boss
         in metres and turned 30 degrees about a skew axis, the shoulder in metres; an open box with a blind boss in
         each corner; 2 layers, and 3 at order 2 (the box at order 1: test_corner_gussets_in_a_box_twins says why)."""
         for name, shape, scale, turn, kinds in (
                 ("stepped_blind", "blind", 1.0, 0.0, ["column"]), ("stepped_draft", "draft", 1.0, 0.0, ["column"]),
+                ("stepped_drill", "drill", 1.0, 0.0, ["column"]), ("stepped_shell", "shell", 1.0, 0.0, ["column"]),
                 ("stepped_shoulder", "shoulder", 1.0, 0.0, ["column"]),
                 ("stepped_blind_metres", "blind", 1e-3, 0.0, ["column"]),
                 ("stepped_blind_turned", "blind", 1.0, 30.0, ["column"]),
