@@ -44,9 +44,9 @@ std::vector<int> quadTiers(RayCaster& rays, const QuadMesh& q, const ColumnPiece
     for (int n : q.quads[k]) middle += 0.25 * q.nodes[n];
     const std::optional<FacePoint> cap = capAbove(rays, column, middle, reach);
     for (const ColumnLedge& ledge : column.ledges)
-      if (cap && cap->face == ledge.face)
-        tier[k] = static_cast<int>(std::lower_bound(tiers.top.begin(), tiers.top.end() - 1, ledge.height) -
-                                   tiers.top.begin());
+      if (cap && cap->face == ledge.face)  // the tier whose top is nearest the ledge's (ledges as high are one tier)
+        for (int i = 0; i < last; ++i)
+          if (std::abs(tiers.top[i] - ledge.height) < std::abs(tiers.top[tier[k]] - ledge.height)) tier[k] = i;
   }
   return tier;
 }
