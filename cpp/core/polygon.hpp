@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace hexlayer {
@@ -50,22 +51,29 @@ inline bool insidePolygon(const std::vector<Eigen::Vector2d>& p, const Eigen::Ve
 
 // Loops in the plane sorted into regions: a counter-clockwise loop is a region's outer loop, a clockwise one a hole of
 // the smallest outer loop round its first corner, but one through that corner (a loop that is one region's outer loop
-// and, reversed, a hole of the region round it). [in] loops: disjoint, each its corners in order. Returns per loop the
-// index of the outer loop it is a hole of: -1 for an outer loop, -2 for a hole that none is round.
-inline std::vector<int> holesOfLoops(const std::vector<std::vector<Eigen::Vector2d>>& loops) {
+// and, reversed, a hole of the region round it). [in] loops: disjoint, each its corners in order. Returns per region
+// its outer loop's index, then its holes', the regions in their outer loops' order and the holes in theirs; nullopt if
+// a hole lies in no outer loop.
+inline std::optional<std::vector<std::vector<std::size_t>>> loopRegions(
+    const std::vector<std::vector<Eigen::Vector2d>>& loops) {
   std::vector<double> area;
   for (const auto& loop : loops) area.push_back(polygonArea(loop));
-  std::vector<int> of(loops.size(), -1);
+  std::vector<std::vector<std::size_t>> regions;
+  std::vector<std::size_t> regionOf(loops.size());
+  for (std::size_t k = 0; k < loops.size(); ++k)
+    if (area[k] > 0) regionOf[k] = regions.size(), regions.push_back({k});
   for (std::size_t h = 0; h < loops.size(); ++h) {
     if (area[h] > 0) continue;
-    of[h] = -2;
+    int outer = -1;
     const Eigen::Vector2d& p = loops[h].front();
     for (std::size_t s = 0; s < loops.size(); ++s)
       if (area[s] > 0 && std::find(loops[s].begin(), loops[s].end(), p) == loops[s].end() &&
-          insidePolygon(loops[s], p) && (of[h] < 0 || area[s] < area[of[h]]))
-        of[h] = static_cast<int>(s);
+          insidePolygon(loops[s], p) && (outer < 0 || area[s] < area[outer]))
+        outer = static_cast<int>(s);
+    if (outer < 0) return std::nullopt;
+    regions[regionOf[outer]].push_back(h);
   }
-  return of;
+  return regions;
 }
 
 }  // namespace hexlayer

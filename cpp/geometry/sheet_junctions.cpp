@@ -154,15 +154,15 @@ std::vector<Step> stepsOf(const CadSolid& cad, const WallSides& sides, double hi
 // concave edge, and the column's faces only where they face up the column, within kMaxColumnDraft of its axis, the
 // outward normal of the wall it stands on at its feet) is part of that column, whose ledge it stands on
 // (column_piece.hpp): its faces join the column's, its area and volume are added. The base sheet (the first) stays.
-// [in] cad; [in,out] sheets: findSheets's, the columns last.
-void joinSheetsOnColumns(const CadSolid& cad, std::vector<Sheet>& sheets) {
+// [in] cad; [in] concave: its concave edges (concaveEdges); [in,out] sheets: findSheets's, the columns last.
+void joinSheetsOnColumns(const CadSolid& cad, const std::vector<FacePairEdge>& concave, std::vector<Sheet>& sheets) {
+  if (std::none_of(sheets.begin(), sheets.end(), [](const Sheet& s) { return s.column; })) return;
   std::vector<int> owner(cad.faces.Extent(), -1);
   for (std::size_t s = 0; s < sheets.size(); ++s)
     for (int f : sheets[s].faces) owner[f] = static_cast<int>(s);
   auto normal = [&](int face, int edge) {
     return normalAtEdge(TopoDS::Face(cad.faces(face + 1)), TopoDS::Edge(cad.edges(edge + 1)));
   };
-  const std::vector<FacePairEdge> concave = concaveEdges(cad);
   std::vector<std::set<int>> meets(sheets.size());
   for (const FacePairEdge& c : concave)
     if (const int a = owner[c.a], b = owner[c.b]; a >= 0 && b >= 0 && a != b) meets[a].insert(b), meets[b].insert(a);
@@ -197,6 +197,48 @@ void joinSheetsOnColumns(const CadSolid& cad, std::vector<Sheet>& sheets) {
   for (std::size_t s = 0; s < sheets.size(); ++s)
     if (!joined[s]) kept.push_back(std::move(sheets[s]));
   sheets = std::move(kept);
+}
+
+// standingColumns with the solid's concave edges given (concaveEdges). [in] cad, sides, concave.
+std::vector<Sheet> standingColumnsAt(const CadSolid& cad, const WallSides& sides,
+                                     const std::vector<FacePairEdge>& concave) {
+  const int n = static_cast<int>(sides.faces.size());
+  auto isWall = [&](int f) { return sides.faces[f].side != Side::Lateral; };
+  std::vector<char> candidate(n, 0);  // lateral, no cut face, meets no wall in a smooth or convex edge
+  for (int f = 0; f < n; ++f) candidate[f] = !isWall(f) && !isCutFace(cad, f);
+  for (const SheetJoin& j : sides.sheetJoins)
+    if (isWall(j.a) != isWall(j.b)) candidate[isWall(j.a) ? j.b : j.a] = 0;
+  UnionFind uf(n);
+  const std::vector<std::set<int>> next = faceNeighbours(cad);
+  for (int f = 0; f < n; ++f)
+    for (int g : next[f])
+      if (candidate[f] && candidate[g]) uf.unite(f, g);
+  std::map<int, Vec3> foot;  // per group root standing on a wall: a point of its first concave edge with one
+  for (const FacePairEdge& c : concave)
+    if (isWall(c.a) != isWall(c.b))
+      if (const int f = isWall(c.a) ? c.b : c.a; candidate[f])
+        foot.emplace(uf.find(f), edgeMiddle(cad.edges(c.edge + 1)));
+  // or through a fillet at its foot (smooth with a wall, concave, of a radius below the wall's thickness), which the
+  // pipeline removes before the cut (foot_fillets.hpp)
+  for (const SheetJoin& j : sides.sheetJoins)
+    if (const int f = isWall(j.a) ? j.b : j.a; j.smooth && isWall(j.a) != isWall(j.b))
+      if (const std::optional<double> r = filletRadius(cad.faces(f + 1)); r && *r < sides.thickness)
+        for (int g : next[f])
+          if (candidate[g])
+            foot.emplace(uf.find(g), faceCentre(cad.faces(f + 1), sides.faces[f].area) / sides.faces[f].area);
+  std::vector<Sheet> columns;
+  for (const auto& [root, at] : foot) {
+    std::vector<int> faces;
+    for (int f = 0; f < n; ++f)
+      if (candidate[f] && uf.find(f) == root) faces.push_back(f);
+    if (smallFeature(cad, sides, faces)) continue;
+    Sheet column = columnOf(cad, sides, faces, at);
+    // at the wall's level (a bore's floor) or below it (a dent: a drill point's cone)
+    if (column.volume <= kStandsOut * column.area * sides.thickness) continue;
+    columns.push_back(std::move(column));
+  }
+  std::stable_sort(columns.begin(), columns.end(), [](const Sheet& a, const Sheet& b) { return a.area > b.area; });
+  return columns;
 }
 
 }  // namespace
@@ -252,50 +294,15 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
   for (const auto& [root, faces] : byRoot) sheets.push_back(sheetOf(cad, sides, faces));
   std::stable_sort(sheets.begin(), sheets.end(), [](const Sheet& a, const Sheet& b) { return a.area > b.area; });
   if (sheets.empty()) return sheets;
-  const std::vector<Sheet> columns = standingColumns(cad, sides);
+  const std::vector<FacePairEdge> concave = concaveEdges(cad);
+  const std::vector<Sheet> columns = standingColumnsAt(cad, sides, concave);
   sheets.insert(sheets.end(), columns.begin(), columns.end());
-  joinSheetsOnColumns(cad, sheets);
+  joinSheetsOnColumns(cad, concave, sheets);
   return sheets;
 }
 
 std::vector<Sheet> standingColumns(const CadSolid& cad, const WallSides& sides) {
-  const int n = static_cast<int>(sides.faces.size());
-  auto isWall = [&](int f) { return sides.faces[f].side != Side::Lateral; };
-  std::vector<char> candidate(n, 0);  // lateral, no cut face, meets no wall in a smooth or convex edge
-  for (int f = 0; f < n; ++f) candidate[f] = !isWall(f) && !isCutFace(cad, f);
-  for (const SheetJoin& j : sides.sheetJoins)
-    if (isWall(j.a) != isWall(j.b)) candidate[isWall(j.a) ? j.b : j.a] = 0;
-  UnionFind uf(n);
-  const std::vector<std::set<int>> next = faceNeighbours(cad);
-  for (int f = 0; f < n; ++f)
-    for (int g : next[f])
-      if (candidate[f] && candidate[g]) uf.unite(f, g);
-  std::map<int, Vec3> foot;  // per group root standing on a wall: a point of its first concave edge with one
-  for (const FacePairEdge& c : concaveEdges(cad))
-    if (isWall(c.a) != isWall(c.b))
-      if (const int f = isWall(c.a) ? c.b : c.a; candidate[f])
-        foot.emplace(uf.find(f), edgeMiddle(cad.edges(c.edge + 1)));
-  // or through a fillet at its foot (smooth with a wall, concave, of a radius below the wall's thickness), which the
-  // pipeline removes before the cut (foot_fillets.hpp)
-  for (const SheetJoin& j : sides.sheetJoins)
-    if (const int f = isWall(j.a) ? j.b : j.a; j.smooth && isWall(j.a) != isWall(j.b))
-      if (const std::optional<double> r = filletRadius(cad.faces(f + 1)); r && *r < sides.thickness)
-        for (int g : next[f])
-          if (candidate[g])
-            foot.emplace(uf.find(g), faceCentre(cad.faces(f + 1), sides.faces[f].area) / sides.faces[f].area);
-  std::vector<Sheet> columns;
-  for (const auto& [root, at] : foot) {
-    std::vector<int> faces;
-    for (int f = 0; f < n; ++f)
-      if (candidate[f] && uf.find(f) == root) faces.push_back(f);
-    if (smallFeature(cad, sides, faces)) continue;
-    Sheet column = columnOf(cad, sides, faces, at);
-    // at the wall's level (a bore's floor) or below it (a dent: a drill point's cone)
-    if (column.volume <= kStandsOut * column.area * sides.thickness) continue;
-    columns.push_back(std::move(column));
-  }
-  std::stable_sort(columns.begin(), columns.end(), [](const Sheet& a, const Sheet& b) { return a.area > b.area; });
-  return columns;
+  return standingColumnsAt(cad, sides, concaveEdges(cad));
 }
 
 std::vector<int> wallSheetOfFaces(const std::vector<Sheet>& sheets, std::size_t faces) {

@@ -208,14 +208,13 @@ QuadMesh quadsInSteppedFoot(const std::vector<Eigen::Vector2d>& at, const std::v
     flat.emplace_back();
     for (int n : loop) flat.back().push_back(at[n]);
   }
-  const std::vector<int> holeOf = holesOfLoops(flat);
   QuadMesh quads;
   for (const Eigen::Vector2d& p : at) quads.nodes.emplace_back(p.x(), p.y(), 0);
-  for (std::size_t r = 0; r < all.size(); ++r) {
-    if (holeOf[r] != -1) continue;
-    std::vector<std::vector<int>> region{all[r]};
-    for (std::size_t h = 0; h < all.size(); ++h)
-      if (holeOf[h] == static_cast<int>(r)) region.push_back(all[h]);
+  const auto regions = loopRegions(flat);
+  if (!regions) throw geometryError("column: a step's outline lies outside its foot");
+  for (const std::vector<std::size_t>& loopsOf : *regions) {
+    std::vector<std::vector<int>> region;
+    for (std::size_t k : loopsOf) region.push_back(all[k]);
     const QuadMesh q = quadsInPolygon(at, region, server);
     const int first = static_cast<int>(quads.nodes.size()) - static_cast<int>(at.size());
     quads.nodes.insert(quads.nodes.end(), q.nodes.begin() + static_cast<long>(at.size()), q.nodes.end());

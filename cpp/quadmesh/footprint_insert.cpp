@@ -412,14 +412,12 @@ std::vector<Eigen::Vector2d> inPlane(const Nodes& nodes, const GapMap& map, cons
 std::vector<Surface> surfacesOf(const Nodes& nodes, const GapMap& map, const std::vector<Loop>& loops) {
   std::vector<std::vector<Eigen::Vector2d>> flat;
   for (const Loop& loop : loops) flat.push_back(inPlane(nodes, map, loop));
-  const std::vector<int> holeOf = holesOfLoops(flat);
+  const auto regions = loopRegions(flat);
+  if (!regions) throw geometryError("junction: a loop of the gap round a wall's foot lies outside it");
   std::vector<Surface> surfaces;
-  std::vector<int> surfaceOf(loops.size(), -1);
-  for (std::size_t k = 0; k < loops.size(); ++k)
-    if (holeOf[k] == -1) surfaceOf[k] = static_cast<int>(surfaces.size()), surfaces.push_back({loops[k]});
-  for (std::size_t h = 0; h < loops.size(); ++h) {
-    if (holeOf[h] == -2) throw geometryError("junction: a loop of the gap round a wall's foot lies outside it");
-    if (holeOf[h] >= 0) surfaces[surfaceOf[holeOf[h]]].push_back(loops[h]);
+  for (const std::vector<std::size_t>& region : *regions) {
+    surfaces.emplace_back();
+    for (std::size_t k : region) surfaces.back().push_back(loops[k]);
   }
   return surfaces;
 }
