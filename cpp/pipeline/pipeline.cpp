@@ -660,8 +660,13 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   // smoothed after the sweep, and in a bend its chordal facets are coarser than the wall), then is the foot's node.
   MeshOptions piece = o;
   piece.force = true;
-  for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s)
-    meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.5, o.size > 0 ? o.size : sides.thickness, boxes);
+  for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s) try {
+      meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.5, o.size > 0 ? o.size : sides.thickness, boxes);
+    } catch (const Error& e) {  // the part was read and checked: a piece that is no valid solid is the cut's doing
+      if (e.code() != ExitCode::BadInput) throw;
+      throw geometryError("the cut at the junctions gave a piece that is no valid solid (" + std::string(e.what()) +
+                          "), as where a boss is merged into a box's wall: such a cut is not made yet");
+    }
   return t;
 }
 

@@ -32,6 +32,7 @@ Run by CTest as: /usr/bin/python3 test_junction_meshing.py --hexlayer PATH --sou
 import contextlib
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -484,6 +485,17 @@ def write_box_gussets(path, scale, turn):
         return turned_and_scaled(gmsh, path, scale, turn)
 
 
+def write_box_wall_boss(path, scale, turn):
+    """Writes test_boss_merged_into_a_wall_is_refused_by_name's part as STEP: an open box 100 x 70 x 30, walls and
+    floor 2, and a boss R4 with a bore R1.5 standing on the floor at (50, 4.5), its side fused into the long wall y = 0..2
+    (a boss merged into a box's wall). Scaled and turned (turned_and_scaled); returns its volume."""
+    with modelling() as (gmsh, occ):
+        box, _ = occ.cut([(3, occ.addBox(0, 0, 0, 100, 70, 30))], [(3, occ.addBox(2, 2, 2, 96, 66, 30))])
+        boss, _ = occ.fuse(box, [(3, occ.addCylinder(50, 4.5, 1, 0, 0, 24, 4))])
+        occ.cut(boss, [(3, occ.addCylinder(50, 4.5, 2, 0, 0, 30, 1.5))])
+        return turned_and_scaled(gmsh, path, scale, turn)
+
+
 def write_sample_twin(part, path, scale, turn):
     """Writes a junction sample turned and scaled (turned_and_scaled); returns its volume."""
     import gmsh
@@ -902,6 +914,29 @@ class JunctionMeshing(unittest.TestCase):
             for layers, order in runs:
                 with self.subTest(part=name, layers=layers, order=order):
                     self.check_part(name, step, layers, order, ["ring"] * (4 if shape == "two" else 2))
+
+    def test_boss_merged_into_a_wall_is_refused_by_name(self):
+        """A boss whose side is fused into a box's wall (write_box_wall_boss) is not a sheet standing on the box: the
+        cut at its foot leaves no closed solid. It is refused (exit 4) with the cut named and the boss's place, in
+        millimetres, in metres and turned 30 degrees about a skew axis, not meshed wrong nor failed by a piece's read
+        check ("the solid's shell is not closed" alone, before)."""
+        for name, scale, turn in (("box_wall_boss", 1.0, 0.0), ("box_wall_boss_metres", 1e-3, 0.0),
+                                  ("box_wall_boss_turned", 1.0, 30.0)):
+            with self.subTest(part=name):
+                step = os.path.join(self.tmp.name, name + ".step")
+                write_box_wall_boss(step, scale, turn)
+                done = subprocess.run([harness.args.hexlayer, "mesh", step, "-o",
+                                       os.path.join(self.tmp.name, name + ".inp"), "--quiet"],
+                                      capture_output=True, text=True, timeout=600)
+                self.assertEqual(done.returncode, 4, done.stderr[-2000:])
+                self.assertIn("the cut at the junctions gave a piece that is no valid solid", done.stderr)
+                self.assertIn("a boss is merged into a box's wall", done.stderr)
+                if not turn:  # the boss named at its place: by the wall (y < 10) about its axis (x = 50)
+                    place = re.search(r"\): \(([-\d.e]+), ([-\d.e]+), ([-\d.e]+)\)", done.stderr)
+                    self.assertIsNotNone(place, done.stderr[-2000:])
+                    x, y = float(place.group(1)) / scale, float(place.group(2)) / scale
+                    self.assertLess(abs(x - 50), 5)
+                    self.assertLess(y, 10)
 
     def test_ribs_on_plates(self):
         for part in PARTS:
