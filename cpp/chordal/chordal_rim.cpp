@@ -135,9 +135,28 @@ std::size_t dropRimSpikes(ChordalSurface& s) {
   return dropped;
 }
 
+// Whether the rim cycle (in the facets' direction) is a hole of the surface round material (fillTears). [in] s, cycle,
+// inMaterial.
+bool holeRoundMaterial(const ChordalSurface& s, const std::vector<int>& cycle, const InMaterial& inMaterial) {
+  Vec3 middle = Vec3::Zero();
+  for (int v : cycle) middle += s.vertices[v];
+  middle /= static_cast<double>(cycle.size());
+  if (!inMaterial(middle) ||  // a hole's middle is air: asked first, the facets' walk below is over all of them
+      !std::all_of(cycle.begin(), cycle.end(), [&](int v) { return inMaterial(0.5 * (middle + s.vertices[v])); }))
+    return false;
+  Vec3 turn = Vec3::Zero();  // the cycle's area vector
+  for (std::size_t i = 0; i < cycle.size(); ++i)
+    turn += (s.vertices[cycle[i]] - middle).cross(s.vertices[cycle[(i + 1) % cycle.size()]] - middle);
+  const std::set<int> on(cycle.begin(), cycle.end());
+  Vec3 normal = Vec3::Zero();  // of the facets round it
+  for (const auto& f : s.facets)
+    if (std::any_of(f.begin(), f.end(), [&](int v) { return v >= 0 && on.count(v) > 0; })) normal += areaVector(s, f);
+  return turn.dot(normal) < 0;
+}
+
 }  // namespace
 
-std::size_t fillTears(ChordalSurface& s, const NearRim& nearRim, double maxLength) {
+std::size_t fillTears(ChordalSurface& s, const NearRim& nearRim, const InMaterial& inMaterial, double maxLength) {
   const RimLoops loops = rimLoops(s);
   const RimWalk walk = rimWalk(s);
   std::vector<std::vector<int>> members(loops.length.size());
@@ -149,10 +168,11 @@ std::size_t fillTears(ChordalSurface& s, const NearRim& nearRim, double maxLengt
     if (loops.length[loop] > maxLength || ring.size() < 3) continue;
     if (std::any_of(ring.begin(), ring.end(), [&](int v) { return walk.next[v] < 0; })) continue;  // a vertex twice
     const auto near = std::count_if(ring.begin(), ring.end(), [&](int v) { return nearRim(s.vertices[v]); });
-    if (2 * near >= static_cast<long>(ring.size())) continue;  // the part's own rim or hole, along its lateral faces
-    std::vector<int> cycle{ring[0]};                           // in the facets' direction along the rim
+    std::vector<int> cycle{ring[0]};  // in the facets' direction along the rim
     while (cycle.size() <= ring.size() && walk.next[cycle.back()] != ring[0]) cycle.push_back(walk.next[cycle.back()]);
     if (cycle.size() != ring.size()) continue;
+    // along lateral faces: the part's own rim or hole, unless material is all round it
+    if (2 * near >= static_cast<long>(ring.size()) && !holeRoundMaterial(s, cycle, inMaterial)) continue;
     for (std::size_t i = 1; i + 1 < cycle.size(); ++i)  // the rim edges taken the other way: facing as the rest
       s.facets.push_back({cycle[0], cycle[i + 1], cycle[i], -1}), ++s.triangles;
     ++filled;

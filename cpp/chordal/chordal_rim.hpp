@@ -32,14 +32,20 @@ struct RimSnapStats {
 // Whether a point lies near the lateral faces ω_l (the part's rims, holes' walls included).
 using NearRim = std::function<bool(const Vec3& p)>;
 
+// Whether a point lies inside the part's material (not within its boundary's tolerance of a face).
+using InMaterial = std::function<bool(const Vec3& p)>;
+
 // Fills the tears of the chordal surface: rim loops no longer than maxLength fewer than half of whose vertices are near
 // a lateral face. A hole or rim of the part runs along its lateral faces; a small loop in a wall is where tets spanning
 // a sharp inside corner were dropped as outside (their centre in the corner's empty side), and the quads would carry it
 // into the mesh as a hole the part does not have (on a wall lower than a few thicknesses some of its vertices are
-// near the wall's rim: the spike drops then opened it into a notch). Each is closed by a fan of triangles from
-// one of its vertices, turned as its neighbours. [in,out] chordal: before its normals and radius are computed;
-// [in] nearRim, maxLength. Returns the number of loops filled.
-std::size_t fillTears(ChordalSurface& chordal, const NearRim& nearRim, double maxLength);
+// near the wall's rim: the spike drops then opened it into a notch). A loop with half its vertices or more near a
+// lateral face is a tear too where it is a hole of the surface (walked the facets' way, it turns against their
+// normal) round material: its middle, and the points halfway from it to each vertex, inside the part (a facet or two
+// missing under a lip's rim, 1 to 2 walls above its step: a hole's middle is air). Each is closed by a fan of
+// triangles from one of its vertices, turned as its neighbours. [in,out] chordal: before its normals and radius are
+// computed; [in] nearRim, inMaterial, maxLength. Returns the number of loops filled.
+std::size_t fillTears(ChordalSurface& chordal, const NearRim& nearRim, const InMaterial& inMaterial, double maxLength);
 
 // [in,out] chordal: its rim vertices moved (normals and radius are computed afterwards);
 // [in] middle: the point between the walls' rim edges; [in] reach: the longest move (about the wall thickness).

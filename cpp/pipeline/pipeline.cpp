@@ -940,7 +940,7 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
     const std::vector<char> stepSides = thicknessStepSides(cad, sides);  // no rim: the chordal surface runs across
     const std::size_t tears = fillTears(
         cut, [&](const Vec3& p) { return walls.reaches(Side::Lateral, p, sides.thickness, stepSides); },
-        kMaxTear * sides.thickness);
+        [&](const Vec3& p) { return boundary->classify(p) == Containment::kInside; }, kMaxTear * sides.thickness);
     RimSnapStats snapped = snapRimBetweenWallEdges(
         cut, [&](const Vec3& p) { return walls.rimMiddle(p); }, sides.thickness);
     snapped.tearsFilled = tears;

@@ -94,6 +94,9 @@ TEST(ChordalRim, ANarrowSpikeIsDropped) {
   EXPECT_EQ(s.vertices, straight.vertices);
 }
 
+// No point inside the part's material: fillTears' loops along lateral faces are all the part's rims or holes.
+const auto noMaterial = [](const Vec3&) { return false; };
+
 // A strip 8 x 6 of unit quads (all rows at integer heights) without the square at (3, 3) and without the one at
 // (6, 1): two rim loops 4 long besides the outer rim (28 long). Of the lateral faces only the outer rim's line
 // y = 0 is "near" (nearRim: y < 1.5): the tear in the middle is filled with two triangles facing +z like the quads,
@@ -103,10 +106,10 @@ TEST(ChordalRim, ATearAwayFromTheLateralFacesIsFilled) {
   ChordalSurface s = stripWithTearAndHole();
   const auto nearRim = [](const Vec3& p) { return p.y() < 1.5; };
   ChordalSurface unchanged = s;
-  EXPECT_EQ(fillTears(unchanged, nearRim, 3.9), 0u) << "the tear is 4 long";
+  EXPECT_EQ(fillTears(unchanged, nearRim, noMaterial, 3.9), 0u) << "the tear is 4 long";
   EXPECT_EQ(unchanged.facets.size(), s.facets.size());
   const std::size_t facets = s.facets.size();
-  EXPECT_EQ(fillTears(s, nearRim, 5), 1u);
+  EXPECT_EQ(fillTears(s, nearRim, noMaterial, 5), 1u);
   ASSERT_EQ(s.facets.size(), facets + 2);
   EXPECT_EQ(rimLoops(s).length.size(), 2u) << "the outer rim and the hole beside it";
   for (const auto& [edge, uses] : facetEdgeUses(s)) EXPECT_LE(uses, 2) << edge.first << " " << edge.second;
@@ -124,7 +127,32 @@ TEST(ChordalRim, ATearWithAVertexNearTheRimIsFilled) {
   ChordalSurface s = stripWithTearAndHole();
   const auto nearRim = [](const Vec3& p) { return p.y() < 1.5 || (p - Vec3(3, 3, 0)).norm() < 0.1; };
   const std::size_t facets = s.facets.size();
-  EXPECT_EQ(fillTears(s, nearRim, 5), 1u);
+  EXPECT_EQ(fillTears(s, nearRim, noMaterial, 5), 1u);
   EXPECT_EQ(s.facets.size(), facets + 2);
   EXPECT_EQ(rimLoops(s).length.size(), 2u) << "the outer rim and the hole beside it";
+}
+
+// The same strip, every vertex near a lateral face (a wall 1 to 2 walls high: a lip), the part's material everywhere
+// but in the square (6, 1)-(7, 2) and beyond the strip: the tear at (3, 3) has material all round it and is filled; the
+// hole at (6, 1) has air in its middle and stays; the outer rim, though within the bound and round material, turns
+// with the facets (no hole of the surface) and stays.
+TEST(ChordalRim, ALoopAlongTheRimWithMaterialAllRoundIsATear) {
+  ChordalSurface s = stripWithTearAndHole();
+  const auto nearRim = [](const Vec3&) { return true; };
+  const auto inMaterial = [](const Vec3& p) {
+    const bool hole = p.x() > 6 && p.x() < 7 && p.y() > 1 && p.y() < 2;
+    return !hole && p.x() > 0 && p.x() < 8 && p.y() > 0 && p.y() < 6;
+  };
+  ChordalSurface unchanged = s;
+  EXPECT_EQ(fillTears(unchanged, nearRim, noMaterial, 100), 0u) << "no material: every loop is the part's";
+  const std::size_t facets = s.facets.size();
+  EXPECT_EQ(fillTears(s, nearRim, inMaterial, 100), 1u);
+  ASSERT_EQ(s.facets.size(), facets + 2);
+  EXPECT_EQ(rimLoops(s).length.size(), 2u) << "the outer rim and the hole beside it";
+  for (std::size_t f = facets; f < s.facets.size(); ++f) {
+    Vec3 middle = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) middle += s.vertices[s.facets[f][k]] / 3;
+    EXPECT_NEAR(middle.x(), 3.5, 0.5);
+    EXPECT_NEAR(middle.y(), 3.5, 0.5);
+  }
 }
