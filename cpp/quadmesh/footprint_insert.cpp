@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <limits>
 #include <map>
@@ -38,7 +39,8 @@ constexpr double kTinyEdge = 0.3;       // of the quad size: a rim node of the g
 constexpr int kMaxStrip = 20;           // quads between two leftover triangles that are paired (quad_completion)
 constexpr double kGmshSeconds = 120;    // a gap's Gmsh run (it takes milliseconds)
 constexpr int kGapAlgorithms[] = {6, 5, 1};  // Gmsh's 2D algorithms tried: frontal-Delaunay, Delaunay, MeshAdapt
-constexpr double kGoodGap = 0.3;             // scaled Jacobian of the gap's worst quad that needs no wider gap
+constexpr double kGoodGap = 0.3;             // scaled Jacobian of a gap's worst quad that needs no other way:
+                                             // no acute corners cut off (gapQuads), no wider gap
 constexpr int kAlongNormal = 4;              // steps of a footprint node onto the chordal surface along a normal
 constexpr int kSmoothing = 10;               // iterations of the gap's quads (as the quad stage's)
 constexpr double kAcute = 70 * M_PI / 180;   // a boundary corner of the gap below this gets a quad of its own
@@ -908,8 +910,9 @@ std::pair<std::vector<Quad>, double> rimRing(Nodes& nodes, const GapMap& map, co
 
 // A gap ready for Gmsh: the nodes so far, its map and surfaces, the ways to mesh it (as it is, and with its acute
 // corners cut off: cutAcuteCorners), each way's mesh sizes at its points, and its tries: every way with each of Gmsh's
-// algorithms (kGapAlgorithms), taken in this order. (Finer mesh sizes at the points are not tried: every boundary edge
-// is one segment, and Gmsh 4.8 sizes the inside from those, not from the points'.)
+// algorithms (kGapAlgorithms), in this order (gapQuads runs the second way only where the first is poor). (Finer mesh
+// sizes at the points are not tried: every boundary edge is one segment, and Gmsh 4.8 sizes the inside from those, not
+// from the points'.)
 struct GapTries {
   struct Try {
     std::size_t way;
@@ -942,18 +945,17 @@ GapTries gapTries(const std::vector<Vec3>& at, const GapMap& map, std::vector<Su
   return g;
 }
 
-// The gaps' quads on the sheet: of each gap's tries (gapTries), the one whose worst quad, smoothed, is best. The tries
-// of all gaps run in their order, as many children at once as there are threads and one more, which runs while this
-// process smooths the quads of the tries taken (on one thread, one child): the next started once a try's quads are
-// in, before they are smoothed, also a later gap's. [in,out] gaps; [in] chordal; [in] server: forks the Gmsh runs
-// (null: this process); [in] meshed(g, quads, worst): called with each gap's quads (their first nodes gaps[g].at)
-// and their worst quad's scaled Jacobian, in the gaps' order. Throws geometryError for the first gap, in their order,
-// that no try gives unfolded quads.
+// The gaps' quads on the sheet: of each gap's tries (gapTries), the one whose worst quad, smoothed, is best (the first
+// on a tie). A gap's tries with its acute corners cut off (its second way) are run only if the best of the gap as it
+// is has its worst quad below kGoodGap: which tries run depends on their quads alone, not on the threads. The tries run
+// in the gaps' order, as many children at once as there are threads and one more, which runs while this process
+// smooths the quads of the tries taken (on one thread, one child): the next started once a try's quads are in, before
+// they are smoothed, also a later gap's; a gap's second way is started first once it is found needed.
+// [in,out] gaps; [in] chordal; [in] server: forks the Gmsh runs (null: this process); [in] meshed(g, quads, worst):
+// called with each gap's quads (their first nodes gaps[g].at) and their worst quad's scaled Jacobian, in the gaps'
+// order. Throws geometryError for the first gap, in their order, that no try gives unfolded quads.
 void gapQuads(std::vector<GapTries>& gaps, const ChordalLocator& chordal, ForkServer* server,
               const std::function<void(std::size_t, QuadMesh, double)>& meshed) {
-  std::vector<std::pair<std::size_t, std::size_t>> order;  // (gap, try)
-  for (std::size_t g = 0; g < gaps.size(); ++g)
-    for (std::size_t k = 0; k < gaps[g].tries.size(); ++k) order.emplace_back(g, k);
   struct StopLeft {  // a child not waited for (an exception) is not left running
     std::vector<GapTries>& gaps;
     ~StopLeft() {
@@ -961,37 +963,62 @@ void gapQuads(std::vector<GapTries>& gaps, const ChordalLocator& chordal, ForkSe
         for (GapTries::Try& t : g.tries) stopChild(t.gmsh.child);
     }
   } stopLeft{gaps};
-  const std::size_t running = static_cast<std::size_t>(threadCount() > 1 ? threadCount() + 1 : 1);
-  auto start = [&](std::size_t i) {
-    GapTries& g = gaps[order[i].first];
-    GapTries::Try& t = g.tries[order[i].second];
-    t.gmsh = startGapQuads(server, g.ways[t.way].at, g.spacing[t.way], g.ways[t.way].surfaces, t.algorithm);
+  struct Taken {  // a gap's tries taken so far
+    QuadMesh best;
+    double worst = 0;
+    std::string failure = "its quads are folded";
+    std::size_t left = 0;  // tries started and not yet taken
   };
-  for (std::size_t i = 0; i < std::min(running, order.size()); ++i) start(i);
-  QuadMesh best;
-  double bestWorst = 0;
-  std::string failure = "its quads are folded";
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    GapTries& g = gaps[order[i].first];
-    GapTries::Try& t = g.tries[order[i].second];
+  std::vector<Taken> taken(gaps.size());
+  using Run = std::pair<std::size_t, std::size_t>;  // (gap, try)
+  std::deque<Run> waiting, running;
+  auto wayTries = [&](std::size_t g, std::size_t way) {
+    std::vector<Run> runs;
+    for (std::size_t k = 0; k < gaps[g].tries.size(); ++k)
+      if (gaps[g].tries[k].way == way) runs.emplace_back(g, k);
+    taken[g].left += runs.size();
+    return runs;
+  };
+  for (std::size_t g = 0; g < gaps.size(); ++g)
+    for (const Run& r : wayTries(g, 0)) waiting.push_back(r);
+  const std::size_t children = static_cast<std::size_t>(threadCount() > 1 ? threadCount() + 1 : 1);
+  auto startWaiting = [&] {
+    for (; running.size() < children && !waiting.empty(); waiting.pop_front()) {
+      GapTries& g = gaps[waiting.front().first];
+      GapTries::Try& t = g.tries[waiting.front().second];
+      t.gmsh = startGapQuads(server, g.ways[t.way].at, g.spacing[t.way], g.ways[t.way].surfaces, t.algorithm);
+      running.push_back(waiting.front());
+    }
+  };
+  std::size_t reported = 0;
+  for (startWaiting(); !running.empty(); startWaiting()) {
+    const auto [gi, k] = running.front();
+    running.pop_front();
+    GapTries& g = gaps[gi];
+    Taken& gap = taken[gi];
     std::optional<QuadMesh> made;
     try {
-      made = finishGapQuads(t.gmsh);
+      made = finishGapQuads(g.tries[k].gmsh);
     } catch (const Error& e) {
-      failure = e.what();
+      gap.failure = e.what();
     }
-    if (i + running < order.size()) start(i + running);
+    startWaiting();
     if (made) try {
         double tried = 0;
-        QuadMesh q = gapTry(g.at, *g.map, chordal, g.surfaces, g.ways[t.way], std::move(*made), tried);
-        if (tried > bestWorst) best = std::move(q), bestWorst = tried;
+        QuadMesh q = gapTry(g.at, *g.map, chordal, g.surfaces, g.ways[g.tries[k].way], std::move(*made), tried);
+        if (tried > gap.worst) gap.best = std::move(q), gap.worst = tried;
       } catch (const Error& e) {
-        failure = e.what();
+        gap.failure = e.what();
       }
-    if (order[i].second + 1 < g.tries.size()) continue;  // the gap's last try taken: its best
-    if (best.quads.empty()) throw geometryError("junction: the gap round a wall's foot was not meshed: " + failure);
-    meshed(order[i].first, std::move(best), bestWorst);
-    best = {}, bestWorst = 0, failure = "its quads are folded";
+    if (--gap.left == 0 && g.tries[k].way == 0 && g.ways.size() > 1 && gap.worst < kGoodGap) {
+      const std::vector<Run> cut = wayTries(gi, 1);
+      waiting.insert(waiting.begin(), cut.begin(), cut.end());
+    }
+    for (; reported < gaps.size() && taken[reported].left == 0; ++reported) {
+      if (taken[reported].best.quads.empty())
+        throw geometryError("junction: the gap round a wall's foot was not meshed: " + taken[reported].failure);
+      meshed(reported, std::move(taken[reported].best), taken[reported].worst);
+    }
   }
 }
 
