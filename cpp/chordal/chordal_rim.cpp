@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -14,6 +15,8 @@ namespace {
 constexpr double kMinAreaShare = 0.5;  // a facet may not shrink below this share of its area
 constexpr double kMaxAlongRim = 0.5;   // share of a rim vertex's move that may run along the rim
 constexpr double kMinMove = 0.1;       // share of the reach below which a rim vertex stays: it is on its rim
+constexpr double kRoundMaterialTears =
+    3;  // of fillTears' maxLength: the longest loop with material all round it filled
 
 // Area vector of a facet (half the cross product of its diagonals for a quad): its normal times its area.
 Vec3 areaVector(const ChordalSurface& s, const std::array<int, 4>& f) {
@@ -154,25 +157,49 @@ bool holeRoundMaterial(const ChordalSurface& s, const std::vector<int>& cycle, c
   return turn.dot(normal) < 0;
 }
 
+// The first vertex of a rim cycle from which a fan of triangles closes it without an edge the surface has already (a
+// chord of the loop between two of its vertices that facets elsewhere join: a fan along it would put that edge in
+// four facets). [in] cycle; [in] edges: facetEdgeUses's. Returns its place in the cycle; none if every vertex has one.
+std::optional<std::size_t> fanApex(const std::vector<int>& cycle,
+                                   const std::vector<std::pair<std::pair<int, int>, int>>& edges) {
+  auto isEdge = [&](int a, int b) {
+    const std::pair<int, int> e = std::minmax(a, b);
+    const auto it = std::lower_bound(edges.begin(), edges.end(), std::make_pair(e, 0));
+    return it != edges.end() && it->first == e;
+  };
+  const std::size_t n = cycle.size();
+  for (std::size_t a = 0; a < n; ++a) {
+    bool free = true;
+    for (std::size_t i = 2; i + 1 < n && free; ++i) free = !isEdge(cycle[a], cycle[(a + i) % n]);
+    if (free) return a;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::size_t fillTears(ChordalSurface& s, const NearRim& nearRim, const InMaterial& inMaterial, double maxLength) {
   const RimLoops loops = rimLoops(s);
   const RimWalk walk = rimWalk(s);
+  const std::vector<std::pair<std::pair<int, int>, int>> edges = facetEdgeUses(s);
   std::vector<std::vector<int>> members(loops.length.size());
   for (std::size_t v = 0; v < s.vertices.size(); ++v)
     if (loops.loopOf[v] >= 0) members[loops.loopOf[v]].push_back(static_cast<int>(v));
   std::size_t filled = 0;
   for (std::size_t loop = 0; loop < members.size(); ++loop) {
     const std::vector<int>& ring = members[loop];
-    if (loops.length[loop] > maxLength || ring.size() < 3) continue;
+    const bool longer = loops.length[loop] > maxLength;  // a tear only where material is all round it
+    if (loops.length[loop] > kRoundMaterialTears * maxLength || ring.size() < 3) continue;
     if (std::any_of(ring.begin(), ring.end(), [&](int v) { return walk.next[v] < 0; })) continue;  // a vertex twice
     const auto near = std::count_if(ring.begin(), ring.end(), [&](int v) { return nearRim(s.vertices[v]); });
     std::vector<int> cycle{ring[0]};  // in the facets' direction along the rim
     while (cycle.size() <= ring.size() && walk.next[cycle.back()] != ring[0]) cycle.push_back(walk.next[cycle.back()]);
     if (cycle.size() != ring.size()) continue;
     // along lateral faces: the part's own rim or hole, unless material is all round it
-    if (2 * near >= static_cast<long>(ring.size()) && !holeRoundMaterial(s, cycle, inMaterial)) continue;
+    if ((longer || 2 * near >= static_cast<long>(ring.size())) && !holeRoundMaterial(s, cycle, inMaterial)) continue;
+    const std::optional<std::size_t> apex = fanApex(cycle, edges);
+    if (!apex) continue;
+    std::rotate(cycle.begin(), cycle.begin() + static_cast<long>(*apex), cycle.end());
     for (std::size_t i = 1; i + 1 < cycle.size(); ++i)  // the rim edges taken the other way: facing as the rest
       s.facets.push_back({cycle[0], cycle[i + 1], cycle[i], -1}), ++s.triangles;
     ++filled;

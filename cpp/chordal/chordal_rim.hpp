@@ -42,9 +42,13 @@ using InMaterial = std::function<bool(const Vec3& p)>;
 // near the wall's rim: the spike drops then opened it into a notch). A loop with half its vertices or more near a
 // lateral face is a tear too where it is a hole of the surface (walked the facets' way, it turns against their
 // normal) round material: its middle, and the points halfway from it to each vertex, inside the part (a facet or two
-// missing under a lip's rim, 1 to 2 walls above its step: a hole's middle is air). Each is closed by a fan of
-// triangles from one of its vertices, turned as its neighbours. [in,out] chordal: before its normals and radius are
-// computed; [in] nearRim, inMaterial, maxLength. Returns the number of loops filled.
+// missing under a lip's rim, 1 to 2 walls above its step: a hole's middle is air). A loop longer than maxLength, up to
+// 3 times it, is a tear only where it is such a hole round material (a lip half as thick as the wall it stands on has
+// bubbles twice as dense on its own face as on the face it shares with the wall: a few facets missing over its step, a
+// loop several walls long). Each is closed by a fan of triangles from the first of its vertices from which no triangle
+// repeats an edge the surface has (a loop passing both ends of one), turned as its neighbours; a loop with none stays.
+// [in,out] chordal: before its normals and radius are computed; [in] nearRim, inMaterial, maxLength. Returns the number
+// of loops filled.
 std::size_t fillTears(ChordalSurface& chordal, const NearRim& nearRim, const InMaterial& inMaterial, double maxLength);
 
 // [in,out] chordal: its rim vertices moved (normals and radius are computed afterwards);

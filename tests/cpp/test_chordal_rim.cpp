@@ -36,17 +36,19 @@ std::optional<Vec3> onLine(const Vec3& p) {
   return Vec3(p.x(), 0, p.z());
 }
 
-// A strip 8 x 6 (rim y = 0) without the quads at (3, 3) (a tear) and (6, 1) (a hole beside the rim).
-ChordalSurface stripWithTearAndHole() {
+// A strip 8 x 6 (rim y = 0) without the unit quads whose first corners are `gone`.
+ChordalSurface stripWithout(const std::vector<Vec3>& gone) {
   ChordalSurface s = strip(std::vector<double>(9, 0.0), 6);
   s.facets.erase(std::remove_if(s.facets.begin(), s.facets.end(),
                                 [&](const std::array<int, 4>& f) {
-                                  const Vec3& corner = s.vertices[f[0]];
-                                  return corner == Vec3(3, 3, 0) || corner == Vec3(6, 1, 0);
+                                  return std::find(gone.begin(), gone.end(), s.vertices[f[0]]) != gone.end();
                                 }),
                  s.facets.end());
   return s;
 }
+
+// A strip 8 x 6 (rim y = 0) without the quads at (3, 3) (a tear) and (6, 1) (a hole beside the rim).
+ChordalSurface stripWithTearAndHole() { return stripWithout({Vec3(3, 3, 0), Vec3(6, 1, 0)}); }
 
 }  // namespace
 
@@ -155,4 +157,41 @@ TEST(ChordalRim, ALoopAlongTheRimWithMaterialAllRoundIsATear) {
     EXPECT_NEAR(middle.x(), 3.5, 0.5);
     EXPECT_NEAR(middle.y(), 3.5, 0.5);
   }
+}
+
+// The same strip: the tear at (3, 3), 4 long, is longer than a bound of 3, so it is filled only if the part's material
+// is all round it (a hole of the part is air in its middle), and not beyond 3 times the bound (a bound of 1): a tear
+// several walls long where facets of a thin lip are missing above its step.
+TEST(ChordalRim, ALongerLoopIsATearOnlyWithMaterialAllRound) {
+  const auto nearRim = [](const Vec3& p) { return p.y() < 1.5; };
+  const auto inMaterial = [](const Vec3& p) {
+    const bool hole = p.x() > 6 && p.x() < 7 && p.y() > 1 && p.y() < 2;
+    return !hole && p.x() > 0 && p.x() < 8 && p.y() > 0 && p.y() < 6;
+  };
+  ChordalSurface s = stripWithTearAndHole();
+  EXPECT_EQ(fillTears(s, nearRim, noMaterial, 3), 0u) << "longer than the bound, no material round it";
+  EXPECT_EQ(fillTears(s, nearRim, inMaterial, 1), 0u) << "longer than 3 times the bound";
+  const std::size_t facets = s.facets.size();
+  EXPECT_EQ(fillTears(s, nearRim, inMaterial, 3), 1u);
+  EXPECT_EQ(s.facets.size(), facets + 2);
+  EXPECT_EQ(rimLoops(s).length.size(), 2u) << "the outer rim and the hole beside it";
+}
+
+// A tear whose loop passes a vertex on each side of an edge the surface has: the strip without the squares at (3, 3)
+// and (4, 3), a triangle standing in the gap on the edge from (3, 3) to (4, 3) (its tip (3.5, 3.5) on the loop). A fan
+// from (3, 3), the loop's first vertex, would join it to (4, 3) again (that edge in four facets, which Gmsh refuses:
+// `one edge is incident to 4 triangles`); the fan starts at another vertex, every edge is in two facets at most.
+TEST(ChordalRim, AFanDoesNotRepeatAnEdgeTheSurfaceHas) {
+  ChordalSurface s = stripWithout({Vec3(3, 3, 0), Vec3(4, 3, 0)});
+  const int tip = static_cast<int>(s.vertices.size());
+  s.vertices.emplace_back(3.5, 3.5, 0);
+  s.facets.push_back({3 * 9 + 3, 3 * 9 + 4, tip, -1}), ++s.triangles;
+  s.tetEdge.push_back({0, 0});
+  const std::size_t facets = s.facets.size();
+  EXPECT_EQ(fillTears(
+                s, [](const Vec3& p) { return p.y() < 1.5; }, noMaterial, 7),
+            1u);
+  EXPECT_EQ(s.facets.size(), facets + 5) << "7 vertices round the tear";
+  for (const auto& [edge, uses] : facetEdgeUses(s)) EXPECT_LE(uses, 2) << edge.first << " " << edge.second;
+  EXPECT_EQ(rimLoops(s).length.size(), 1u) << "the outer rim alone";
 }

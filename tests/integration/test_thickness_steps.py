@@ -75,13 +75,20 @@ class ThicknessSteps(MeshTest):
         high): the inner half of the wall kept (4 high; and turned 30 degrees about a skew axis), the outer half kept (2
         and 4 high; 2 high in metres). Each had a facet or two of its chordal surface missing a wall or two over
         the step, near the lip's rim face, which fillTears took for the part's own hole (the quads ran round it: exit
-        6, 14 to 155 hexes inverted); now a loop with material all round it is a tear. 2 layers: every hex positive,
-        scaled Jacobian min >= 0.2 and avg >= 0.9, volume within 2 %, the part's topology. (The outer half 2 high turned
-        is still refused: `could not quad-mesh the chordal surface`, Gmsh's patches fail.)"""
+        6, 14 to 155 hexes inverted); now a loop with material all round it is a tear. The outer half kept 5 and 8 high
+        (8 also in metres and turned): loops of missing facets over the step several walls long (5 high: the mesh
+        written with a hole, its average 0.88) and a tear's fan repeating an edge of the surface (8 high: `one edge is
+        incident to 4 triangles`, exit 4); now a loop up to 3 tear lengths round material is a tear, and its fan
+        starts where it repeats no edge. 2 layers: every hex positive, scaled Jacobian min >= 0.2 and avg >= 0.9,
+        volume within 2 %, the part's topology. (Still refused: the outer half 2 high turned, `could not quad-mesh the
+        chordal surface`; the outer half 3, 6 and 10 high, a notch or hexes inverted at a corner of the lip.)"""
         for name, height, outer, scale, turn in (("lip_inner_4", 4, False, 1.0, 0), ("lip_outer_2", 2, True, 1.0, 0),
                                                  ("lip_outer_4", 4, True, 1.0, 0),
                                                  ("lip_outer_2_metres", 2, True, 1e-3, 0),
-                                                 ("lip_inner_4_turned", 4, False, 1.0, 30)):
+                                                 ("lip_inner_4_turned", 4, False, 1.0, 30),
+                                                 ("lip_outer_5", 5, True, 1.0, 0), ("lip_outer_8", 8, True, 1.0, 0),
+                                                 ("lip_outer_8_metres", 8, True, 1e-3, 0),
+                                                 ("lip_outer_8_turned", 8, True, 1.0, 30)):
             with self.subTest(part=name):
                 step = os.path.join(self.tmp.name, name + ".step")
                 write_lipped_box(step, height, outer, scale, turn)
