@@ -15,8 +15,8 @@ namespace {
 constexpr double kMinAreaShare = 0.5;  // a facet may not shrink below this share of its area
 constexpr double kMaxAlongRim = 0.5;   // share of a rim vertex's move that may run along the rim
 constexpr double kMinMove = 0.1;       // share of the reach below which a rim vertex stays: it is on its rim
-constexpr double kRoundMaterialTears =
-    3;  // of fillTears' maxLength: the longest loop with material all round it filled
+// of fillTears' maxLength: the longest loop with material all round it filled
+constexpr double kRoundMaterialTears = 3;
 
 // Area vector of a facet (half the cross product of its diagonals for a quad): its normal times its area.
 Vec3 areaVector(const ChordalSurface& s, const std::array<int, 4>& f) {
@@ -181,7 +181,7 @@ std::optional<std::size_t> fanApex(const std::vector<int>& cycle,
 std::size_t fillTears(ChordalSurface& s, const NearRim& nearRim, const InMaterial& inMaterial, double maxLength) {
   const RimLoops loops = rimLoops(s);
   const RimWalk walk = rimWalk(s);
-  const std::vector<std::pair<std::pair<int, int>, int>> edges = facetEdgeUses(s);
+  std::optional<std::vector<std::pair<std::pair<int, int>, int>>> edges;  // measured once a loop is to be filled
   std::vector<std::vector<int>> members(loops.length.size());
   for (std::size_t v = 0; v < s.vertices.size(); ++v)
     if (loops.loopOf[v] >= 0) members[loops.loopOf[v]].push_back(static_cast<int>(v));
@@ -197,7 +197,8 @@ std::size_t fillTears(ChordalSurface& s, const NearRim& nearRim, const InMateria
     if (cycle.size() != ring.size()) continue;
     // along lateral faces: the part's own rim or hole, unless material is all round it
     if ((longer || 2 * near >= static_cast<long>(ring.size())) && !holeRoundMaterial(s, cycle, inMaterial)) continue;
-    const std::optional<std::size_t> apex = fanApex(cycle, edges);
+    if (!edges) edges = facetEdgeUses(s);  // before any fill: the surface's own edges
+    const std::optional<std::size_t> apex = fanApex(cycle, *edges);
     if (!apex) continue;
     std::rotate(cycle.begin(), cycle.begin() + static_cast<long>(*apex), cycle.end());
     for (std::size_t i = 1; i + 1 < cycle.size(); ++i)  // the rim edges taken the other way: facing as the rest

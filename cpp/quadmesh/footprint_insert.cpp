@@ -967,7 +967,7 @@ void gapQuads(std::vector<GapTries>& gaps, const ChordalLocator& chordal, ForkSe
     QuadMesh best;
     double worst = 0;
     std::string failure = "its quads are folded";
-    std::size_t left = 0;  // tries started and not yet taken
+    std::size_t left = 0;  // tries queued or running, not yet taken
   };
   std::vector<Taken> taken(gaps.size());
   using Run = std::pair<std::size_t, std::size_t>;  // (gap, try)

@@ -99,6 +99,12 @@ TEST(ChordalRim, ANarrowSpikeIsDropped) {
 // No point inside the part's material: fillTears' loops along lateral faces are all the part's rims or holes.
 const auto noMaterial = [](const Vec3&) { return false; };
 
+// The part's material on the strip of stripWithTearAndHole but in its hole's square (6, 1)-(7, 2).
+const auto materialBesideTheHole = [](const Vec3& p) {
+  const bool hole = p.x() > 6 && p.x() < 7 && p.y() > 1 && p.y() < 2;
+  return !hole && p.x() > 0 && p.x() < 8 && p.y() > 0 && p.y() < 6;
+};
+
 // A strip 8 x 6 of unit quads (all rows at integer heights) without the square at (3, 3) and without the one at
 // (6, 1): two rim loops 4 long besides the outer rim (28 long). Of the lateral faces only the outer rim's line
 // y = 0 is "near" (nearRim: y < 1.5): the tear in the middle is filled with two triangles facing +z like the quads,
@@ -141,14 +147,10 @@ TEST(ChordalRim, ATearWithAVertexNearTheRimIsFilled) {
 TEST(ChordalRim, ALoopAlongTheRimWithMaterialAllRoundIsATear) {
   ChordalSurface s = stripWithTearAndHole();
   const auto nearRim = [](const Vec3&) { return true; };
-  const auto inMaterial = [](const Vec3& p) {
-    const bool hole = p.x() > 6 && p.x() < 7 && p.y() > 1 && p.y() < 2;
-    return !hole && p.x() > 0 && p.x() < 8 && p.y() > 0 && p.y() < 6;
-  };
   ChordalSurface unchanged = s;
   EXPECT_EQ(fillTears(unchanged, nearRim, noMaterial, 100), 0u) << "no material: every loop is the part's";
   const std::size_t facets = s.facets.size();
-  EXPECT_EQ(fillTears(s, nearRim, inMaterial, 100), 1u);
+  EXPECT_EQ(fillTears(s, nearRim, materialBesideTheHole, 100), 1u);
   ASSERT_EQ(s.facets.size(), facets + 2);
   EXPECT_EQ(rimLoops(s).length.size(), 2u) << "the outer rim and the hole beside it";
   for (std::size_t f = facets; f < s.facets.size(); ++f) {
@@ -164,15 +166,11 @@ TEST(ChordalRim, ALoopAlongTheRimWithMaterialAllRoundIsATear) {
 // several walls long where facets of a thin lip are missing above its step.
 TEST(ChordalRim, ALongerLoopIsATearOnlyWithMaterialAllRound) {
   const auto nearRim = [](const Vec3& p) { return p.y() < 1.5; };
-  const auto inMaterial = [](const Vec3& p) {
-    const bool hole = p.x() > 6 && p.x() < 7 && p.y() > 1 && p.y() < 2;
-    return !hole && p.x() > 0 && p.x() < 8 && p.y() > 0 && p.y() < 6;
-  };
   ChordalSurface s = stripWithTearAndHole();
   EXPECT_EQ(fillTears(s, nearRim, noMaterial, 3), 0u) << "longer than the bound, no material round it";
-  EXPECT_EQ(fillTears(s, nearRim, inMaterial, 1), 0u) << "longer than 3 times the bound";
+  EXPECT_EQ(fillTears(s, nearRim, materialBesideTheHole, 1), 0u) << "longer than 3 times the bound";
   const std::size_t facets = s.facets.size();
-  EXPECT_EQ(fillTears(s, nearRim, inMaterial, 3), 1u);
+  EXPECT_EQ(fillTears(s, nearRim, materialBesideTheHole, 3), 1u);
   EXPECT_EQ(s.facets.size(), facets + 2);
   EXPECT_EQ(rimLoops(s).length.size(), 2u) << "the outer rim and the hole beside it";
 }

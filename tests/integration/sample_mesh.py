@@ -14,20 +14,26 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from hex_geometry import boundary_euler_characteristic, hex_scaled_jacobians, hex_volumes  # noqa: E402
 
 
-def mesh_sample(folder, part, layers, tmp):
-    """Resources/samples/FOLDER/PART.step meshed with `layers` layers into TMP; returns the STEP path and the .inp's
-    hexes as hex_arrays gives them (x, hexes, index) and its sets. Raises AssertionError with the CLI's exit code and
-    message if it fails, or if an element is not an 8-node hex."""
-    step = os.path.join(harness.args.source, "Resources", "samples", folder, part + ".step")
-    out = os.path.join(tmp, f"{part}_{layers}.inp")
+def mesh_step(step, layers, out):
+    """STEP meshed with `layers` layers into the .inp OUT; returns its hexes as hex_arrays gives them (x, hexes, index)
+    and its sets. Raises AssertionError with the CLI's exit code and message if it fails, or if an element is not an
+    8-node hex."""
+    label = f"{os.path.basename(step)}, {layers} layers"
     done = subprocess.run([harness.args.hexlayer, "mesh", step, "-o", out, "--layers", str(layers), "--quiet"],
                           capture_output=True, text=True, timeout=600)
     if done.returncode != 0:
-        raise AssertionError(f"{part}, {layers} layers: exit {done.returncode}: {done.stderr[-2000:]}")
+        raise AssertionError(f"{label}: exit {done.returncode}: {done.stderr[-2000:]}")
     nodes, elements, sets = read_inp(out)
     if not elements or any(len(e) != 8 for _, e in elements):
-        raise AssertionError(f"{part}, {layers} layers: not every element an 8-node hex")
-    return (step, *hex_arrays(nodes, elements), sets)
+        raise AssertionError(f"{label}: not every element an 8-node hex")
+    return (*hex_arrays(nodes, elements), sets)
+
+
+def mesh_sample(folder, part, layers, tmp):
+    """Resources/samples/FOLDER/PART.step meshed with `layers` layers into TMP (mesh_step); returns the STEP path, then
+    what mesh_step returns."""
+    step = os.path.join(harness.args.source, "Resources", "samples", folder, part + ".step")
+    return (step, *mesh_step(step, layers, os.path.join(tmp, f"{part}_{layers}.inp")))
 
 
 def check_hexes(test, gmsh, x, hexes, quality, allowed, label, exact_volume=None):

@@ -15,12 +15,10 @@ Run by CTest as: /usr/bin/python3 test_thickness_steps.py --hexlayer PATH --sour
 """
 import math
 import os
-import subprocess
 
 import harness
 from cad import opened, surface_euler_characteristic
-from inp import hex_arrays, read_inp
-from sample_mesh import MeshTest, boundary_euler_characteristic, check_hexes, check_sample
+from sample_mesh import MeshTest, boundary_euler_characteristic, check_hexes, check_sample, mesh_step
 
 
 def write_lipped_box(path, height, outer, scale, turn):
@@ -92,13 +90,7 @@ class ThicknessSteps(MeshTest):
             with self.subTest(part=name):
                 step = os.path.join(self.tmp.name, name + ".step")
                 write_lipped_box(step, height, outer, scale, turn)
-                out = os.path.join(self.tmp.name, name + ".inp")
-                done = subprocess.run([harness.args.hexlayer, "mesh", step, "-o", out, "--quiet"],
-                                      capture_output=True, text=True, timeout=600)
-                self.assertEqual(done.returncode, 0, done.stderr[-2000:])
-                nodes, elements, _ = read_inp(out)
-                self.assertTrue(elements and all(len(e) == 8 for _, e in elements))
-                x, hexes = hex_arrays(nodes, elements)[:2]
+                x, hexes = mesh_step(step, 2, os.path.join(self.tmp.name, name + ".inp"))[:2]
                 with opened(step) as gmsh:
                     check_hexes(self, gmsh, x, hexes, (0.2, 0.9), 0.02, f"{name}, 2 layers")
                 self.assertEqual(boundary_euler_characteristic(hexes), surface_euler_characteristic(step, 2 * scale),
