@@ -180,7 +180,9 @@ int runMesh(MeshCommand& c) {
   const hexlayer::MeshMeasures& m = result.report.mesh;
   for (const hexlayer::ValidationFailure& f : m.failures)  // only with --force: else meshFile threw
     std::cerr << "hexlayer: warning: validation failed (written because of --force): " << f.message << std::endl;
-  if (!m.sameTopologyAsCad())
+  const bool topologyFailed = std::any_of(m.failures.begin(), m.failures.end(),
+                                          [](const hexlayer::ValidationFailure& f) { return f.check == "topology"; });
+  if (!m.sameTopologyAsCad() && !topologyFailed)  // a failed one is said above: a hole the part does not have
     std::cerr << "hexlayer: warning: " << topologyMessage(m, result.report.quadMesh) << std::endl;
   return 0;
 }

@@ -231,13 +231,14 @@ MeshMeasures measureMesh(const HexMesh& mesh, std::vector<double>& scaledJacobia
   return m;
 }
 
-// One solid's mesh measured and validated against the CAD's volume and Euler characteristic.
-// [out] scaledJacobian: of every hex.
-MeshMeasures measureSolidMesh(const HexMesh& mesh, double cadVolume, long cadEuler,
+// One solid's mesh measured and validated against the CAD's volume and Euler characteristic (its topology: not when
+// junctions were left out, which may open or close holes). [out] scaledJacobian: of every hex.
+MeshMeasures measureSolidMesh(const HexMesh& mesh, double cadVolume, long cadEuler, bool junctionsLeftOut,
                               std::vector<double>& scaledJacobian) {
   MeshMeasures m = measureMesh(mesh, scaledJacobian);
   m.cadVolume = cadVolume, m.cadEuler = cadEuler;
-  m.failures = validateMesh(mesh, m.quality, m.boundary, cadVolume);
+  m.failures = validateMesh(mesh, m.quality, m.boundary, cadVolume,
+                            junctionsLeftOut ? std::nullopt : std::optional<long>(cadEuler));
   return m;
 }
 
@@ -374,7 +375,7 @@ void measureSolid(MeshResult& result, const CadSolid& cad, const WallSides& side
   const double unit3 = cad.unit * cad.unit * cad.unit;
   const long cadEuler = eulerCharacteristic(cad);
   r.mesh = clock.run("quality", [&] {
-    return measureSolidMesh(result.mesh, (cad.volume - leftOut) / unit3, cadEuler, result.scaledJacobian);
+    return measureSolidMesh(result.mesh, (cad.volume - leftOut) / unit3, cadEuler, leftOut > 0, result.scaledJacobian);
   });
   r.junctionsLeftOut = leftOut / unit3;  // the mesh's CAD volume is the part's without them
   if (o.aspect > 0) r.aspectRatioHit = aspectHit(result.mesh, o.aspect);

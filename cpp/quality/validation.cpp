@@ -68,17 +68,28 @@ std::optional<ValidationFailure> checkVolume(const QualityReport& q, double cadV
   return ValidationFailure{"volume", 1, std::nullopt, s.str()};
 }
 
+// Only on a watertight boundary: an open one's Euler characteristic says nothing of its holes.
+std::optional<ValidationFailure> checkTopology(const BoundaryCheck& b, std::optional<long> cadEuler) {
+  const long apart = cadEuler ? *cadEuler - b.eulerCharacteristic : 0;  // chi = 2 - 2 genus per closed shell
+  if (apart <= 0 || b.openEdges + b.nonManifoldEdges + b.inconsistentlyOrientedEdges > 0) return std::nullopt;
+  const std::size_t holes = static_cast<std::size_t>((apart + 1) / 2);
+  std::ostringstream s;
+  s << "topology: the mesh has " << holes << " hole(s) the part does not have (its boundary's Euler characteristic "
+    << b.eulerCharacteristic << ", the part's " << *cadEuler << ")";
+  return ValidationFailure{"topology", holes, std::nullopt, s.str()};
+}
+
 }  // namespace
 
 std::vector<ValidationFailure> validateMesh(const HexMesh& mesh, const QualityReport& q, const BoundaryCheck& b,
-                                            double cadVolume) {
+                                            double cadVolume, std::optional<long> cadEuler) {
   std::vector<ValidationFailure> failures;
   if (mesh.hexes.empty()) return {{"hexes", 0, std::nullopt, "hexes: the mesh has no hex"}};
   for (auto f : {checkHexes(mesh),
                  q.inverted == 0 ? std::nullopt
                                  : std::optional(failure("inverted", q.inverted, q.worstAt,
                                                          "inverted hexes (scaled Jacobian <= 0), the worst")),
-                 checkConformal(mesh), checkWatertight(mesh, b), checkVolume(q, cadVolume)})
+                 checkConformal(mesh), checkWatertight(mesh, b), checkVolume(q, cadVolume), checkTopology(b, cadEuler)})
     if (f) failures.push_back(*f);
   return failures;
 }

@@ -1,7 +1,9 @@
 // Validation of a finished hex mesh (quality/validation.hpp): the checks that refuse a mesh (inverted hexes,
-// conformity, watertight boundary, volume against the CAD, repeated nodes), each named with its place.
+// conformity, watertight boundary, volume against the CAD, repeated nodes, a hole the part does not have), each named
+// with its place.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,8 +19,8 @@ using hexlayer::test_hex_blocks::singleHex;
 
 namespace {
 
-std::vector<ValidationFailure> validate(const HexMesh& m, double cadVolume) {
-  return validateMesh(m, measureQuality(m), checkBoundary(m), cadVolume);
+std::vector<ValidationFailure> validate(const HexMesh& m, double cadVolume, std::optional<long> cadEuler = {}) {
+  return validateMesh(m, measureQuality(m), checkBoundary(m), cadVolume, cadEuler);
 }
 
 // The failure of that check in `failures` (which must outlive the pointer), or nullptr.
@@ -90,4 +92,34 @@ TEST(Validation, EmptyMeshFails) {
   const auto failures = validate(HexMesh{}, 1.0);
   ASSERT_EQ(failures.size(), 1u);
   EXPECT_EQ(failures[0].check, "hexes");
+}
+
+// A ring of 8 hexes (3 x 3 without the middle one): its boundary is a torus (Euler characteristic 0). Where the part is
+// a ring too it passes; where the part is a plain block (2) the mesh has a hole the part does not have: refused. A
+// block where the part is a ring fills the part's hole: not refused here (the CLI warns).
+TEST(Validation, AHoleThePartDoesNotHaveIsRefused) {
+  const HexMesh full = block({0, 1, 2, 3}, {0, 1, 2, 3}, {0, 1});
+  HexMesh ring = full;
+  ring.hexes.erase(ring.hexes.begin() + 4);  // the middle one of the 3 x 3
+  ASSERT_EQ(checkBoundary(ring).eulerCharacteristic, 0);
+  EXPECT_TRUE(validate(ring, 8.0, 0).empty());
+  EXPECT_TRUE(validate(ring, 8.0).empty());  // no Euler characteristic given: not compared
+  const auto failures = validate(ring, 8.0, 2);
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].check, "topology");
+  EXPECT_EQ(failures[0].count, 1u);
+  EXPECT_FALSE(failures[0].at);
+  EXPECT_EQ(failures[0].message,
+            "topology: the mesh has 1 hole(s) the part does not have (its boundary's Euler characteristic 0, the "
+            "part's 2)");
+  EXPECT_TRUE(validate(full, 9.0, 0).empty());
+}
+
+// An open boundary's Euler characteristic counts no hole: only the watertight check fails.
+TEST(Validation, AnOpenBoundaryIsNotCountedAsAHole) {
+  HexMesh m = block({0, 1, 2}, {0, 1}, {0, 1});
+  m.hexes.push_back(m.hexes[1]);
+  const auto failures = validate(m, 3.0, 100);
+  EXPECT_NE(find(failures, "watertight"), nullptr);
+  EXPECT_EQ(find(failures, "topology"), nullptr);
 }
