@@ -162,15 +162,10 @@ bool holeRoundMaterial(const ChordalSurface& s, const std::vector<int>& cycle, c
 // four facets). [in] cycle; [in] edges: facetEdgeUses's. Returns its place in the cycle; none if every vertex has one.
 std::optional<std::size_t> fanApex(const std::vector<int>& cycle,
                                    const std::vector<std::pair<std::pair<int, int>, int>>& edges) {
-  auto isEdge = [&](int a, int b) {
-    const std::pair<int, int> e = std::minmax(a, b);
-    const auto it = std::lower_bound(edges.begin(), edges.end(), std::make_pair(e, 0));
-    return it != edges.end() && it->first == e;
-  };
   const std::size_t n = cycle.size();
   for (std::size_t a = 0; a < n; ++a) {
     bool free = true;
-    for (std::size_t i = 2; i + 1 < n && free; ++i) free = !isEdge(cycle[a], cycle[(a + i) % n]);
+    for (std::size_t i = 2; i + 1 < n && free; ++i) free = !isFacetEdge(edges, cycle[a], cycle[(a + i) % n]);
     if (free) return a;
   }
   return std::nullopt;

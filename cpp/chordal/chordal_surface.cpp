@@ -348,12 +348,25 @@ void computeNormalsAndRadius(ChordalSurface& s, const TetMesh& m) {
   }
 }
 
+bool isFacetEdge(const std::vector<std::pair<std::pair<int, int>, int>>& edges, int a, int b) {
+  const std::pair<int, int> e = std::minmax(a, b);
+  const auto it = std::lower_bound(edges.begin(), edges.end(), std::make_pair(e, 0));
+  return it != edges.end() && it->first == e;
+}
+
 std::vector<std::array<int, 3>> chordalTriangles(const ChordalSurface& chordal) {
+  const bool quads = std::any_of(chordal.facets.begin(), chordal.facets.end(), [](const auto& f) { return f[3] >= 0; });
+  const auto edges = quads ? facetEdgeUses(chordal) : std::vector<std::pair<std::pair<int, int>, int>>{};
   std::vector<std::array<int, 3>> triangles;
   triangles.reserve(chordal.facets.size() * 2);
   for (const auto& f : chordal.facets) {
-    triangles.push_back({f[0], f[1], f[2]});
-    if (f[3] >= 0) triangles.push_back({f[0], f[2], f[3]});
+    if (f[3] < 0) {
+      triangles.push_back({f[0], f[1], f[2]});
+    } else if (!isFacetEdge(edges, f[0], f[2]) || isFacetEdge(edges, f[1], f[3])) {
+      triangles.push_back({f[0], f[1], f[2]}), triangles.push_back({f[0], f[2], f[3]});
+    } else {
+      triangles.push_back({f[0], f[1], f[3]}), triangles.push_back({f[1], f[2], f[3]});
+    }
   }
   return triangles;
 }

@@ -46,6 +46,9 @@ RimLoops rimLoops(const ChordalSurface& chordal);
 // sorted by edge.
 std::vector<std::pair<std::pair<int, int>, int>> facetEdgeUses(const ChordalSurface& chordal);
 
+// Whether a and b are the ends of an edge in `edges` (facetEdgeUses's, sorted).
+bool isFacetEdge(const std::vector<std::pair<std::pair<int, int>, int>>& edges, int a, int b);
+
 // Unit average normal n̄ at every vertex (Eq. 2), zero where the facet normals around it cancel.
 std::vector<Vec3> vertexNormals(const ChordalSurface& chordal);
 
@@ -78,7 +81,9 @@ std::size_t dropUnusedVertices(ChordalSurface& chordal);
 // [in,out] chordal. Returns the number of facets dropped.
 std::size_t dropPinchedFacets(ChordalSurface& chordal);
 
-// The facets as triangles, each quad split on its diagonal from corner 0 (two triangles, in facet order).
+// The facets as triangles, in facet order, each quad split on its diagonal from corner 0 (0-1-2, 0-2-3), or from corner
+// 1 (0-1-3, 1-2-3) where the first diagonal is an edge of the surface: a triangle beside the quad on that edge (a fold
+// the tets leave) would give the edge four triangles, which Gmsh's parametrization refuses.
 std::vector<std::array<int, 3>> chordalTriangles(const ChordalSurface& chordal);
 
 // Area of the chordal surface (a quad facet as the two triangles (0,1,2) and (0,2,3)).

@@ -436,3 +436,20 @@ TEST(ChordalSurface, RimLoopsAreTheOuterRimAndTheHole) {
   EXPECT_EQ(filled.length.size(), 1u);
   for (int v : {5, 6, 9, 10}) EXPECT_EQ(filled.loopOf[v], -1) << "inside once the hole is filled";
 }
+
+// Two unit squares side by side are split from their corner 0; a fold the tets left (a triangle standing on the first
+// square's diagonal 0-2, up out of the plane) makes that square split from its corner 1, so that no edge is in more
+// than two triangles (Gmsh's parametrization refuses an edge in four).
+TEST(ChordalSurface, AQuadIsSplitOnADiagonalTheSurfaceHasNot) {
+  ChordalSurface s = flatSurface({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}, {0.5, 0.5, 1}},
+                                 {{0, 1, 2, 3}, {1, 4, 5, 2}});
+  using Triangles = std::vector<std::array<int, 3>>;
+  EXPECT_EQ(chordalTriangles(s), (Triangles{{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}}));
+  s.facets.push_back({0, 2, 6, -1});
+  const Triangles split = chordalTriangles(s);
+  EXPECT_EQ(split, (Triangles{{0, 1, 3}, {1, 2, 3}, {1, 4, 5}, {1, 5, 2}, {0, 2, 6}}));
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& t : split)
+    for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+  for (const auto& [edge, n] : uses) EXPECT_LE(n, 2) << edge.first << "-" << edge.second;
+}
