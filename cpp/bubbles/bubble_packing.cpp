@@ -38,7 +38,6 @@ namespace {
 
 constexpr double kLeastGapDiameter = 0.8;       // x the face's thickness: the least diameter a narrow air gap asks for
 constexpr double kSmallestFaceThickness = 0.1;  // a face's thickness for its bubbles, at least, of the part's
-constexpr double kThinPartBubbles = 0.5;  // a face's thinner part sizes its bubbles down to this x its median thickness
 // A seam of a wall is packed at the wall's bubble size where a face beside it is narrower than this x the wall (a ring
 // half the wall wide round a hole): wider faces keep their curved edges' nodes (a boss's foot circle on the plate).
 constexpr double kNarrowSeamFace = 0.75;
@@ -308,15 +307,6 @@ void packFaces(const CadSolid& cad, const WallSides& sides, const std::vector<do
   }
 }
 
-// The thickness a face's bubbles are sized for (§4): where the wall is thinner over a part of the face (a lip along a
-// box's wall, the wall's half cut away), that part's, down to kThinPartBubbles x the face's median. Sized for the
-// median, the face's bubbles are sparser than those of the thin part's other side: the tets between them span the
-// box's inside corners through the air, are dropped as outside and tear the chordal surface over the lip.
-double bubbleThickness(const FaceSide& face) {
-  if (!(face.thinnest > 0)) return face.thickness;
-  return std::min(face.thickness, std::max(face.thinnest, kThinPartBubbles * face.thickness));
-}
-
 }  // namespace
 
 std::vector<SurfaceNode> packBubbles(const CadSolid& cad, const WallSides& sides, const BubbleOptions& o) {
@@ -329,7 +319,7 @@ std::vector<SurfaceNode> packBubbles(const CadSolid& cad, const WallSides& sides
     // Bubble diameter above the wall thickness (§4), small enough to follow the face's curvature, and not
     // below kSmallestFaceThickness x the part's wall: a face whose rays cross a sliver of the solid (the 0.002 mm
     // tunnels of a zero-radius bend) would ask for millions of bubbles.
-    const double thickness = std::max(bubbleThickness(sides.faces[f]), kSmallestFaceThickness * sides.thickness);
+    const double thickness = std::max(sides.faces[f].thickness, kSmallestFaceThickness * sides.thickness);
     faceDiameter[f] = std::min(o.diameterOverThickness * thickness, curvatureLimit(curvature, o));
     if (const double gap = sides.faces[f].airGap; gap > 0)
       faceDiameter[f] = std::min(faceDiameter[f], gapLimit(gap, thickness));

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hexlayer {
@@ -36,6 +37,18 @@ inline double median(std::vector<double> values) {
   if (values.empty()) return 0;
   std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
   return values[values.size() / 2];
+}
+
+// The value below which `share` of the weight lies (0.5: the weighted median); 0 for none. [in] weighted: (value,
+// weight) pairs, a copy, reordered.
+inline double weightedQuantile(std::vector<std::pair<double, double>> weighted, double share) {
+  if (weighted.empty()) return 0;
+  std::sort(weighted.begin(), weighted.end());
+  double total = 0, acc = 0;
+  for (const auto& [value, weight] : weighted) total += weight;
+  for (const auto& [value, weight] : weighted)
+    if ((acc += weight) >= share * total) return value;
+  return weighted.back().first;
 }
 
 // Which side of the thin wall a surface point belongs to (paper §3: ω_t, ω_b, ω_l).

@@ -53,6 +53,11 @@ constexpr double kKnotSlack = 0.05;   // a knot is taken if it misplaces at most
 constexpr double kFlushFar = 1.5;     // a flush rim's sample: farther than this many walls from every face across
 constexpr double kFlushRay = 4;       // a flush rim's sample: its inward ray runs along a wall farther than this
 constexpr double kFlushShare = 0.5;   // a flush rim piece: at least this share of its area so far
+// A wall face thinner over a part of it (a box's wall whose outer half is cut away over its top: a lid's lip) is split
+// where the thickness steps: each piece then gets bubbles for its own thickness (bubble_packing.cpp).
+constexpr double kThinPart = 0.1;       // the thin piece: at least this share of the face's crossing sample area
+constexpr double kThinStep = 0.75;      // the thin piece's thickest (90th percentile) below this x the other's thinnest
+constexpr double kThinMisplaced = 0.1;  // at most this share of the thin piece's area on the wrong side of the line
 
 // The knots of the face's surface along u (alongV lines sit on them) or v: where a B-spline skin joins a flat
 // to a round, its curvature jumps at a knot.
@@ -365,7 +370,93 @@ bool isFlat(const TopoDS_Face& face) {
   return GeomLib_IsPlanarSurface(BRep_Tool::Surface(face), 10 * BRep_Tool::Tolerance(face)).IsPlanar();
 }
 
+// A crossing sample's parameter along a split line's normal (alongV: u) and its ray's length and area.
+struct Thickness {
+  double at, length, area;
+};
+
+// The piece of the samples on one side of `at` (below: coordinate < at): its (length, area) pairs.
+std::vector<std::pair<double, double>> sideOf(const std::vector<Thickness>& samples, double at, bool below) {
+  std::vector<std::pair<double, double>> out;
+  for (const Thickness& t : samples)
+    if ((t.at < at) == below) out.emplace_back(t.length, t.area);
+  return out;
+}
+
+// If the samples below (or above) `at` are a thin piece and the rest a thick one (the thin piece at least kThinPart
+// of the area and at most 1 - kThinPart, its 90th percentile under kThinStep x the thick piece's 10th: a step, not a
+// taper), the sample area on the wrong side (thicker than halfway between the two pieces' medians in the thin piece,
+// thinner in the thick one), if at most kThinMisplaced of the thin piece's area.
+std::optional<double> thinPieceBy(const std::vector<Thickness>& samples, double total, double at, bool below) {
+  const auto thin = sideOf(samples, at, below), thick = sideOf(samples, at, !below);
+  double thinArea = 0;
+  for (const auto& [length, area] : thin) thinArea += area;
+  if (thinArea < kThinPart * total || thinArea > (1 - kThinPart) * total) return std::nullopt;
+  if (!(weightedQuantile(thin, 0.9) < kThinStep * weightedQuantile(thick, 0.1))) return std::nullopt;
+  const double halfway = 0.5 * (weightedQuantile(thin, 0.5) + weightedQuantile(thick, 0.5));
+  double misplaced = 0;
+  for (const auto& [length, area] : thin) misplaced += length > halfway ? area : 0;
+  for (const auto& [length, area] : thick) misplaced += length < halfway ? area : 0;
+  if (misplaced > kThinMisplaced * thinArea) return std::nullopt;
+  return misplaced;
+}
+
+// A wall face whose samples part along a parameter line into a thin piece and a thick one (thinPieceBy): of the
+// kLines lines per direction, one that misplaces the least area, the middle one of those that misplace as little on
+// the same side of the same direction (the samples' rows leave a gap at the step). [in] cad, fs, f.
+std::optional<FaceSplit> thinPartSplit(const CadSolid& cad, const FaceSide& fs, int f) {
+  const TopoDS_Face face = TopoDS::Face(cad.faces(f + 1));
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  struct Line {
+    double misplaced;
+    bool alongV, below;
+    double at;
+  };
+  std::vector<Line> lines;
+  for (const bool alongV : {true, false}) {
+    std::vector<Thickness> samples;
+    double total = 0;
+    for (const RayMark& m : fs.marks)
+      if (m.crossing && m.length > 0) samples.push_back({alongV ? m.u : m.v, m.length, m.area}), total += m.area;
+    const double lo = alongV ? u0 : v0, hi = alongV ? u1 : v1;
+    for (const bool below : {true, false})
+      for (int i = 1; i < kLines; ++i) {
+        const double at = lo + (hi - lo) * i / kLines;
+        if (const std::optional<double> misplaced = thinPieceBy(samples, total, at, below))
+          lines.push_back({*misplaced, alongV, below, at});
+      }
+  }
+  if (lines.empty()) return std::nullopt;
+  const Line least = *std::min_element(lines.begin(), lines.end(),
+                                       [](const Line& a, const Line& b) { return a.misplaced < b.misplaced; });
+  std::vector<double> as;
+  for (const Line& l : lines)
+    if (l.misplaced == least.misplaced && l.alongV == least.alongV && l.below == least.below) as.push_back(l.at);
+  return FaceSplit{f, least.alongV, as[as.size() / 2]};
+}
+
 }  // namespace
+
+// Whether the face's crossing samples are far enough apart in thickness to hold a thin and a thick piece: with each
+// piece at least kThinPart of the face and 90 % of it beyond the step, over 5 % of the face lies below the thin
+// piece's 90th percentile and over 5 % above the thick one's 10th. A wall of one thickness (most) is let go here.
+bool thicknessSpread(const FaceSide& fs) {
+  std::vector<std::pair<double, double>> lengths;
+  for (const RayMark& m : fs.marks)
+    if (m.crossing && m.length > 0) lengths.emplace_back(m.length, m.area);
+  return weightedQuantile(lengths, 0.05) < kThinStep * weightedQuantile(lengths, 0.95);
+}
+
+std::vector<FaceSplit> findThinParts(const CadSolid& cad, const WallSides& sides) {
+  std::vector<FaceSplit> splits;
+  for (int f = 0; f < static_cast<int>(sides.faces.size()); ++f) {
+    const FaceSide& fs = sides.faces[f];
+    if (fs.side == Side::Lateral || fs.marks.size() < kMinMarks || !thicknessSpread(fs)) continue;
+    if (std::optional<FaceSplit> s = thinPartSplit(cad, fs, f)) splits.push_back(*s);
+  }
+  return splits;
+}
 
 std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& sides) {
   std::vector<FaceSplit> splits;
@@ -409,6 +500,43 @@ int sameFace(const CadSolid& from, const CadSolid& to, int f) {
   return -1;
 }
 
+// How many faces of `in` lie on the surface of face f of `from` and come from its input face: its pieces.
+int piecesOf(const CadSolid& from, int f, const CadSolid& in) {
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(from.faces(f + 1)));
+  int pieces = 0;
+  for (int g = 0; g < in.faces.Extent(); ++g)
+    pieces +=
+        inputFaceOf(in, g) == inputFaceOf(from, f) && BRep_Tool::Surface(TopoDS::Face(in.faces(g + 1))) == surface;
+  return pieces;
+}
+
+// The splits of `from` whose face `to` still has whole (no more pieces on its surface than `from` had: OpenCASCADE
+// leaves one of two faces whole where their lines end at one point of the edge they share, as round a box's inside
+// corner), each with that face's index in `to`; only faces `to` has one piece of (found by sameFace).
+std::vector<FaceSplit> leftWhole(const CadSolid& from, const CadSolid& to, const std::vector<FaceSplit>& splits) {
+  std::vector<FaceSplit> whole;
+  for (FaceSplit s : splits)
+    if (piecesOf(from, s.face, to) == 1 && piecesOf(from, s.face, from) == 1)
+      s.face = sameFace(from, to, s.face), whole.push_back(s);
+  return whole;
+}
+
+// splitOnce, then the faces it left whole (leftWhole) one at a time, each with all of its lines. [in] cad, splits.
+CadSolid splitEach(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
+  CadSolid out = splitOnce(cad, splits);
+  for (std::size_t round = 0; round < splits.size() && out.faces.Extent() > 0; ++round) {
+    const std::vector<FaceSplit> whole = leftWhole(cad, out, splits);
+    if (whole.empty()) break;
+    std::vector<FaceSplit> one;
+    for (const FaceSplit& s : whole)
+      if (s.face == whole[0].face) one.push_back(s);
+    CadSolid more = splitOnce(out, one);
+    if (more.faces.Extent() == 0) break;
+    out = std::move(more);
+  }
+  return out;
+}
+
 }  // namespace
 
 CadSolid namedPieces(const CadSolid& cad, BRepBuilderAPI_MakeShape& split) {
@@ -438,6 +566,14 @@ CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
   return more.faces.Extent() > 0 ? more : out;
 }
 
+CadSolid splitThinParts(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
+  try {
+    return splitEach(cad, splits);
+  } catch (const Standard_Failure&) {
+    return {};
+  }
+}
+
 std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides) {
   std::size_t split = 0;
   for (int round = 0; round < kMaxSplitRounds; ++round) {  // a skin over a wall, its rim and the other wall: twice
@@ -448,6 +584,10 @@ std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides) {
     cad = std::move(pieces);
     sides = classifyWallSides(cad);
     split += splits.size();
+  }
+  if (const std::vector<FaceSplit> thin = findThinParts(cad, sides); !thin.empty()) {
+    CadSolid pieces = splitThinParts(cad, thin);
+    if (pieces.faces.Extent() > 0) cad = std::move(pieces), sides = classifyWallSides(cad), split += thin.size();
   }
   return split;
 }

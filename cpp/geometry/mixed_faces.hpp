@@ -38,9 +38,24 @@ CadSolid namedPieces(const CadSolid& cad, BRepBuilderAPI_MakeShape& split);
 // not split them.
 CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits);
 
+// [in] cad, sides (classifyWallSides, with its ray marks). Wall faces thinner over a part of them (a box's wall whose
+// outer half is cut away over its top: a lid's lip; the face inside is 2 walls thick below and 1 above): a parameter
+// line parts the face's crossing samples into a thin piece and a thick one, with a step between them (the thin
+// piece's 90th percentile under kThinStep x the thick one's 10th: not a taper), each at least kThinPart of the
+// face. Split there, each piece gets bubbles for its own thickness (bubble_packing.cpp): sized for the whole face's
+// median, the thick part's sparse bubbles made tets across the box's inside corners, dropped as outside, which tore
+// the chordal surface over the lip. One split per face.
+std::vector<FaceSplit> findThinParts(const CadSolid& cad, const WallSides& sides);
+
+// [in] cad, splits (findThinParts's). The solid with those faces split, as splitFaces, and each face OpenCASCADE
+// left whole (where two faces' lines end at one point of the edge they share, round a box's inside corner) split
+// again on its own; an empty solid if OpenCASCADE could not split them.
+CadSolid splitThinParts(const CadSolid& cad, const std::vector<FaceSplit>& splits);
+
 // Faces that are partly wall and partly rim split into pieces that are one or the other (findMixedFaces, splitFaces),
-// the sides measured again, for as many rounds as there are such faces (at most kMaxSplitRounds). [in,out] cad, sides.
-// Returns how many faces were split.
+// the sides measured again, for as many rounds as there are such faces (at most kMaxSplitRounds); then the wall faces
+// thinner over a part (findThinParts, splitThinParts), measured again. [in,out] cad, sides. Returns how many faces
+// were split.
 std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides);
 
 }  // namespace hexlayer

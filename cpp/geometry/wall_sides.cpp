@@ -57,26 +57,18 @@ constexpr int kSurfaceSamples = 8;  // of a face's ray samples, checked to lie o
 // gently curved wall, not a piece of a round that turns away from it.
 constexpr double kExtensionTurn = 10 * M_PI / 180;
 
-// A face's thinner parts: the share of its crossing rays' area below the length taken as the thickness there (a lip
-// along a wall: the wall's half cut away over a tenth of its height or more).
-constexpr double kThinShare = 0.1;
-
 struct Ray {
   double length;
   int hitFace;
   double weight;
 };
 
-// The length below which the rays of `share` of the weight lie (0.5: the weighted median); 0 without rays.
-double weightedQuantile(std::vector<Ray> rays, double share) {
-  if (rays.empty()) return 0;
-  std::sort(rays.begin(), rays.end(), [](const Ray& a, const Ray& b) { return a.length < b.length; });
-  const double total =
-      std::accumulate(rays.begin(), rays.end(), 0.0, [](double s, const Ray& r) { return s + r.weight; });
-  double acc = 0;
-  for (const Ray& r : rays)
-    if ((acc += r.weight) >= share * total) return r.length;
-  return rays.back().length;
+// The rays' weighted median length; 0 without rays.
+double weightedMedian(const std::vector<Ray>& rays) {
+  std::vector<std::pair<double, double>> weighted;
+  weighted.reserve(rays.size());
+  for (const Ray& r : rays) weighted.emplace_back(r.length, r.weight);
+  return weightedQuantile(std::move(weighted), 0.5);
 }
 
 double edgeLength(const TopoDS_Shape& edge) {
@@ -415,9 +407,7 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
     double crossingArea = 0;
     for (const Ray& r : hits.crossing) crossingArea += r.weight, across[f][r.hitFace] += r.weight;
     fs.wallShare = crossingArea / std::max(hits.sampledArea, 1e-300);
-    const std::vector<Ray>& measured = hits.crossing.empty() ? hits.all : hits.crossing;
-    fs.thickness = weightedQuantile(measured, 0.5);
-    fs.thinnest = weightedQuantile(measured, kThinShare);
+    fs.thickness = weightedMedian(hits.crossing.empty() ? hits.all : hits.crossing);
     fs.opposite = dominantHit(hits.crossing);
     fs.airGap = hits.airGap;
     // Top = "wall" for now; a face narrower than a quarter of the wall (a sliver along a bend) carries no bubble.
@@ -431,9 +421,9 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
     if (fs.thickness > 0) everywhere.push_back({fs.thickness, 0, fs.area});
   for (const FaceSide& fs : w.faces)
     if (fs.side != Side::Lateral) wallThickness.push_back({fs.thickness, 0, fs.area}), wallArea += fs.area;
-  w.thickness = weightedQuantile(wallThickness, 0.5);
+  w.thickness = weightedMedian(wallThickness);
   w.sheetAreaShare = wallArea / std::max(totalArea, 1e-30);
-  requireThin(w, cad, weightedQuantile(everywhere, 0.5));
+  requireThin(w, cad, weightedMedian(everywhere));
 
   w.sheetJoins = sheetJoins(cad);
   w.bendRounds = findBendRounds(cad, w, across);

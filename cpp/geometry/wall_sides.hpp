@@ -31,7 +31,6 @@ double faceWidth(const TopoDS_Shape& face);
 struct FaceSide {
   Side side = Side::Lateral;
   double thickness = 0;  // area-weighted median distance to the opposite wall along the inward normal
-  double thinnest = 0;   // the same distance's area-weighted 10th percentile: the face's thinner parts
   double width = 0;      // faceWidth: about the wall thickness for a lateral (rim) face
   double area = 0;
   int opposite = -1;           // 0-based index of the face most rays crossing the wall hit, -1 if none

@@ -141,3 +141,56 @@ TEST(MixedFaces, CurvedWallsAlongAnObliqueRimAreNotSplit) {
   const CadSolid cad = readSample("tests/data/bspline/cap_cut_by_plane_bspline.step");
   EXPECT_TRUE(findMixedFaces(cad, classifyWallSides(cad)).empty());
 }
+
+// An open box 60 x 40 x 20, walls and floor 2, the walls' outer half cut away over the top 4 (a lid's lip, 1 thick):
+// each wall's inner face (one plane from the floor to the top) is 2 thick below z = 16 and 1 above. It is split
+// along a line near z = 16, its upper piece then 1 thick and its lower 2; the box's other faces are not split. At
+// x1, 1e-3 and 1e3. (Split together, OpenCASCADE left three of the four faces whole: each line ends where its
+// neighbour's does, on the inside corner's edge; splitThinParts splits those one at a time.) A taper (the wedge plate,
+// 1 to 4 thick) is not split.
+TEST(MixedFaces, AWallFaceThinnerOverAPartIsSplitWhereTheThicknessSteps) {
+  for (const double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE(testing::Message() << "scale " << s);
+    const CadSolid cad = prepareSolid(test_boxes::boxes({{0, 0, 0, 60, 40, 2},
+                                                         {0, 0, 0, 60, 2, 16},
+                                                         {0, 38, 0, 60, 2, 16},
+                                                         {0, 0, 0, 2, 40, 16},
+                                                         {58, 0, 0, 2, 40, 16},
+                                                         {1, 1, 16, 58, 1, 4},
+                                                         {1, 38, 16, 58, 1, 4},
+                                                         {1, 1, 16, 1, 38, 4},
+                                                         {58, 1, 16, 1, 38, 4}},
+                                                        s));
+    EXPECT_TRUE(findMixedFaces(cad, classifyWallSides(cad)).empty()) << "no face partly wall, partly rim";
+    const std::vector<FaceSplit> splits = findThinParts(cad, classifyWallSides(cad));
+    ASSERT_EQ(splits.size(), 4u) << "the four walls' inner faces";
+    const CadSolid split = splitThinParts(cad, splits);
+    ASSERT_EQ(split.faces.Extent(), cad.faces.Extent() + 4);
+    EXPECT_NEAR(split.volume, cad.volume, 1e-9 * cad.volume);
+    const WallSides after = classifyWallSides(split);
+    int thin = 0, thick = 0;
+    for (const FaceSplit& f : splits) {
+      Bnd_Box bounds;
+      BRepBndLib::AddOptimal(cad.faces(f.face + 1), bounds, false, false);
+      double x0, y0, z0, x1, y1, z1;
+      bounds.Get(x0, y0, z0, x1, y1, z1);
+      EXPECT_NEAR(z0 / s, 2, 1e-3) << "an inner face, from the floor";
+      EXPECT_NEAR(z1 / s, 20, 1e-3);
+      for (int g = 0; g < split.faces.Extent(); ++g) {
+        if (inputFaceOf(split, g) != inputFaceOf(cad, f.face)) continue;
+        Bnd_Box piece;
+        BRepBndLib::AddOptimal(split.faces(g + 1), piece, false, false);
+        piece.Get(x0, y0, z0, x1, y1, z1);
+        const bool upper = z1 / s > 19.99;
+        EXPECT_NEAR((upper ? z0 : z1) / s, 16, 1.0) << "split near the step";
+        EXPECT_NEAR(after.faces[g].thickness / s, upper ? 1.0 : 2.0, 0.05);
+        ++(upper ? thin : thick);
+      }
+    }
+    EXPECT_EQ(thin, 4);
+    EXPECT_EQ(thick, 4);
+    EXPECT_TRUE(findThinParts(split, after).empty()) << "nothing more to split";
+  }
+  const CadSolid wedge = readSample("Resources/samples/wedge_plate.step");
+  EXPECT_TRUE(findThinParts(wedge, classifyWallSides(wedge)).empty()) << "a taper";
+}

@@ -21,10 +21,11 @@ from cad import opened, surface_euler_characteristic
 from sample_mesh import MeshTest, boundary_euler_characteristic, check_hexes, check_sample, mesh_step
 
 
-def write_lipped_box(path, height, outer, scale, turn, size=(80, 60, 25), wall=2):
+def write_lipped_box(path, height, outer, scale, turn, size=(80, 60, 25), wall=2, chamfer=False):
     """Writes test_short_lips_round_a_box's part as STEP: an open box `size` (80 x 60 x 25), walls and floor `wall`
-    thick, sharp edges, the walls' inner half (outer=False) or outer half (outer=True) cut away over the top `height`;
-    scaled by `scale` and turned `turn` degrees about the axis (1, 2, 3)."""
+    thick, sharp edges, the walls' inner half (outer=False) or outer half (outer=True) cut away over the top `height`
+    (the outer half's step chamfered 45 degrees if `chamfer`); scaled by `scale` and turned `turn` degrees about the
+    axis (1, 2, 3)."""
     import gmsh
     (x, y, z), t, h = size, wall, wall / 2
     gmsh.initialize()
@@ -32,7 +33,14 @@ def write_lipped_box(path, height, outer, scale, turn, size=(80, 60, 25), wall=2
         gmsh.option.setNumber("General.Terminal", 0)
         occ = gmsh.model.occ
         box, _ = occ.cut([(3, occ.addBox(0, 0, 0, x, y, z))], [(3, occ.addBox(t, t, t, x - 2 * t, y - 2 * t, z))])
-        if outer:  # a ring round the box's top outer half
+        if outer and chamfer:  # the ring's inside: the box's outline at the step's foot, the lip's h above it
+            def outline(d, at):
+                p = [occ.addPoint(px, py, at) for px, py in ((d, d), (x - d, d), (x - d, y - d), (d, y - d))]
+                return occ.addCurveLoop([occ.addLine(p[i], p[(i + 1) % 4]) for i in range(4)])
+            kept, _ = occ.fuse(occ.addThruSections([outline(0, z - height - h), outline(h, z - height)], makeRuled=True),
+                               [(3, occ.addBox(h, h, z - height, x - 2 * h, y - 2 * h, height + 1))])
+            ring, _ = occ.cut([(3, occ.addBox(-1, -1, z - height - h, x + 2, y + 2, height + h + 1))], kept)
+        elif outer:  # a ring round the box's top outer half
             ring, _ = occ.cut([(3, occ.addBox(-1, -1, z - height, x + 2, y + 2, height + 1))],
                               [(3, occ.addBox(h, h, z - 1 - height, x - 2 * h, y - 2 * h, height + 3))])
         else:
@@ -79,14 +87,16 @@ class ThicknessSteps(MeshTest):
         written with a hole, its average 0.88) and a tear's fan repeating an edge of the surface (8 high: `one edge is
         incident to 4 triangles`, exit 4); now a loop up to 3 tear lengths round material is a tear, and its fan
         starts where it repeats no edge. The outer half 3, 6 and 10 high (3 in metres, 5 turned), and a box
-        100 x 70 x 30, wall 2.5, its outer half 6 high: hexes inverted at the box's inside corners under the lip's top
+        100 x 70 x 30, wall 2.5, its outer half 6 high, and the outer half 5 high with its step chamfered 45 degrees
+        (in mm and metres): hexes inverted at the box's inside corners under the lip's top
         (exit 6), Gmsh's patches refused (exit 4) or its tries running for minutes; the wall's inner face, shared by the
         wall and the lip, had bubbles for the wall's thickness, twice as far apart as the lip's, and the tets spanning
-        the inside corners between them were dropped as outside. Now a face's bubbles follow its thinner parts (its
-        rays' 10th percentile, bubble_packing.cpp bubbleThickness). 2 layers: every hex positive, scaled Jacobian min
-        >= 0.2 and avg >= 0.9, volume within 2 %, the part's topology. The outer half 2 high turned: `could not quad-mesh
-        the chordal surface` (Gmsh: an edge in four triangles) where a quad's diagonal was an edge of a fold beside
-        it; a quad is now split on its other diagonal there (chordalTriangles)."""
+        the inside corners between them were dropped as outside. Now a wall face thinner over a part is split where
+        the thickness steps (mixed_faces.hpp findThinParts), each piece with bubbles for its own thickness. The outer
+        half 2 high turned: `could not quad-mesh the chordal surface` (Gmsh: an edge in four triangles) where a quad's
+        diagonal was an edge of a fold beside it; a quad is now split on its other diagonal there (chordalTriangles).
+        2 layers: every hex positive, scaled Jacobian min >= 0.2 and avg >= 0.9, volume within 2 %, the part's
+        topology."""
         BOX = ((80, 60, 25), 2)  # size and wall
         for name, height, outer, scale, turn, box in (
                 ("lip_inner_4", 4, False, 1.0, 0, BOX), ("lip_outer_2", 2, True, 1.0, 0, BOX),
@@ -97,7 +107,9 @@ class ThicknessSteps(MeshTest):
                 ("lip_outer_3_metres", 3, True, 1e-3, 0, BOX), ("lip_outer_6", 6, True, 1.0, 0, BOX),
                 ("lip_outer_10", 10, True, 1.0, 0, BOX), ("lip_outer_5_turned", 5, True, 1.0, 30, BOX),
                 ("lip_outer_2_turned", 2, True, 1.0, 30, BOX),
-                ("lip_outer_6_wall_2.5", 6, True, 1.0, 0, ((100, 70, 30), 2.5))):
+                ("lip_outer_6_wall_2.5", 6, True, 1.0, 0, ((100, 70, 30), 2.5)),
+                ("lip_outer_5_chamfered", 5, True, 1.0, 0, BOX + (True,)),
+                ("lip_outer_5_chamfered_metres", 5, True, 1e-3, 0, BOX + (True,))):
             with self.subTest(part=name):
                 step = os.path.join(self.tmp.name, name + ".step")
                 write_lipped_box(step, height, outer, scale, turn, *box)
