@@ -436,8 +436,6 @@ std::optional<FaceSplit> thinPartSplit(const CadSolid& cad, const FaceSide& fs, 
   return FaceSplit{f, least.alongV, as[as.size() / 2]};
 }
 
-}  // namespace
-
 // Whether the face's crossing samples are far enough apart in thickness to hold a thin and a thick piece: with each
 // piece at least kThinPart of the face and 90 % of it beyond the step, over 5 % of the face lies below the thin
 // piece's 90th percentile and over 5 % above the thick one's 10th. A wall of one thickness (most) is let go here.
@@ -447,6 +445,8 @@ bool thicknessSpread(const FaceSide& fs) {
     if (m.crossing && m.length > 0) lengths.emplace_back(m.length, m.area);
   return weightedQuantile(lengths, 0.05) < kThinStep * weightedQuantile(lengths, 0.95);
 }
+
+}  // namespace
 
 std::vector<FaceSplit> findThinParts(const CadSolid& cad, const WallSides& sides) {
   std::vector<FaceSplit> splits;
@@ -521,22 +521,6 @@ std::vector<FaceSplit> leftWhole(const CadSolid& from, const CadSolid& to, const
   return whole;
 }
 
-// splitOnce, then the faces it left whole (leftWhole) one at a time, each with all of its lines. [in] cad, splits.
-CadSolid splitEach(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
-  CadSolid out = splitOnce(cad, splits);
-  for (std::size_t round = 0; round < splits.size() && out.faces.Extent() > 0; ++round) {
-    const std::vector<FaceSplit> whole = leftWhole(cad, out, splits);
-    if (whole.empty()) break;
-    std::vector<FaceSplit> one;
-    for (const FaceSplit& s : whole)
-      if (s.face == whole[0].face) one.push_back(s);
-    CadSolid more = splitOnce(out, one);
-    if (more.faces.Extent() == 0) break;
-    out = std::move(more);
-  }
-  return out;
-}
-
 }  // namespace
 
 CadSolid namedPieces(const CadSolid& cad, BRepBuilderAPI_MakeShape& split) {
@@ -567,11 +551,18 @@ CadSolid splitFaces(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
 }
 
 CadSolid splitThinParts(const CadSolid& cad, const std::vector<FaceSplit>& splits) {
-  try {
-    return splitEach(cad, splits);
-  } catch (const Standard_Failure&) {
-    return {};
+  CadSolid out = splitOnce(cad, splits);
+  for (std::size_t round = 0; round < splits.size() && out.faces.Extent() > 0; ++round) {
+    const std::vector<FaceSplit> whole = leftWhole(cad, out, splits);
+    if (whole.empty()) break;
+    std::vector<FaceSplit> one;  // the first face left whole, with all of its lines
+    for (const FaceSplit& s : whole)
+      if (s.face == whole[0].face) one.push_back(s);
+    CadSolid more = splitOnce(out, one);
+    if (more.faces.Extent() == 0) break;
+    out = std::move(more);
   }
+  return out;
 }
 
 std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides) {
