@@ -71,7 +71,7 @@ std::optional<ValidationFailure> checkVolume(const QualityReport& q, double cadV
 // Only on a watertight boundary: an open one's Euler characteristic says nothing of its holes.
 std::optional<ValidationFailure> checkTopology(const BoundaryCheck& b, std::optional<long> cadEuler) {
   const long apart = cadEuler ? *cadEuler - b.eulerCharacteristic : 0;  // chi = 2 - 2 genus per closed shell
-  if (apart <= 0 || b.openEdges + b.nonManifoldEdges + b.inconsistentlyOrientedEdges > 0) return std::nullopt;
+  if (apart <= 0 || !b.watertight()) return std::nullopt;
   const std::size_t holes = static_cast<std::size_t>((apart + 1) / 2);
   std::ostringstream s;
   s << "topology: the mesh has " << holes << " hole(s) the part does not have (its boundary's Euler characteristic "
