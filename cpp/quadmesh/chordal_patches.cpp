@@ -15,6 +15,8 @@ namespace {
 
 constexpr int kSmallPatch = 12;  // triangles: a patch with fewer joins a neighbour (Gmsh would mesh it with slivers)
 constexpr int kCleaningRounds = 20;
+constexpr int kFitRounds = 10;
+constexpr double kFitMargin = 0.02;  // in the cosine of the angle to a patch's mean normal
 constexpr double kFlatSeed = 5;  // degrees: a triangle turning less than this to every neighbour seeds patches first
 
 // Triangle adjacency: across side j (corners j, j+1) the other triangle, or -1 on the rim.
@@ -256,6 +258,42 @@ void dissolveNarrowPatches(const std::vector<Vec3>& points, const std::vector<st
     if (label[t] >= 0) patch[t] = label[t];
 }
 
+// The patches' rims fitted to their normals (variational shape approximation's normal proxies, Cohen-Steiner et al.
+// 2004): round after round, a triangle on a patch's rim goes to the neighbouring patch whose mean normal (area
+// weighted) is nearer its own by more than kFitMargin, within the feature angle of it; the moves of a round are
+// decided together. Growing from a seed leaves a patch's rim wherever the normal cone ran out; a box's corner, where
+// three faces' bends meet, had one face's patch reach a quad into the floor. [in] points, triangles, across; [in]
+// normal: per triangle; [in] featureAngle: degrees; [in,out] patch. Returns the moves made.
+std::size_t fitRimsToNormals(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
+                             const Neighbours& across, const std::vector<Vec3>& normal, double featureAngle,
+                             std::vector<int>& patch) {
+  const double within = std::cos(featureAngle * M_PI / 180);
+  std::size_t moved = 0;
+  for (int round = 0; round < kFitRounds; ++round) {
+    std::map<int, Vec3> proxy;
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      const auto& c = triangles[t];
+      auto [it, added] = proxy.emplace(patch[t], Vec3::Zero());
+      it->second += (points[c[1]] - points[c[0]]).cross(points[c[2]] - points[c[0]]);
+    }
+    for (auto& [p, n] : proxy) n = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
+    std::vector<std::pair<int, int>> moves;
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+      if (normal[t].isZero()) continue;
+      int best = patch[t];
+      double nearest = normal[t].dot(proxy[patch[t]]) + kFitMargin;
+      for (int u : across[t])
+        if (u >= 0 && patch[u] != patch[t])
+          if (const double d = normal[t].dot(proxy[patch[u]]); d > nearest && d >= within) best = patch[u], nearest = d;
+      if (best != patch[t]) moves.emplace_back(t, best);
+    }
+    if (moves.empty()) break;
+    for (const auto& [t, p] : moves) patch[t] = p;
+    moved += moves.size();
+  }
+  return moved;
+}
+
 // The cleaning rounds of chordalPatches: small patches joined, pinches undone, pieces numbered apart.
 // [in] triangles, across, vt; [in,out] patch.
 void cleanPatches(const std::vector<std::array<int, 3>>& triangles, const Neighbours& across, const VertexTriangles& vt,
@@ -274,7 +312,8 @@ void cleanPatches(const std::vector<std::array<int, 3>>& triangles, const Neighb
 }  // namespace
 
 std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                             double featureAngle, double minWidth, PatchSeeds seeds) {
+                             double featureAngle, double minWidth, PatchSeeds seeds, PatchRims rims,
+                             std::size_t* fitted) {
   const Neighbours across = triangleNeighbours(triangles);
   const std::vector<Vec3> normal = triangleNormals(points, triangles);
   std::vector<int> patch =
@@ -283,6 +322,9 @@ std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<
   numberByFirstTriangle(patch);
   splitIntoPieces(across, patch);
   dissolveNarrowPatches(points, triangles, across, normal, patch, minWidth);
+  const std::size_t moved =
+      rims == PatchRims::FittedToNormals ? fitRimsToNormals(points, triangles, across, normal, featureAngle, patch) : 0;
+  if (fitted) *fitted = moved;
   cleanPatches(triangles, across, vertexTriangles(triangles, points.size()), patch);
   return patch;
 }

@@ -31,9 +31,16 @@ std::vector<int> chordalPatches(const std::vector<Vec3>& points, const std::vect
 // their neighbours (within 5 degrees) first, so that a rounded corner between two faces is shared out between them by
 // its normals instead of claimed by a patch grown from within it, whose normal cone ends anywhere on the faces
 // beside (a cut across a wall). Returns each triangle's patch.
+// [in] rims: as grown, or fitted to the patches' normals before the cleaning (each rim triangle round after round to
+// the neighbouring patch whose area-weighted mean normal is nearer its own, within featureAngle of it: variational
+// shape approximation's normal proxies), which puts a rim where the surface turns from one face to the next instead
+// of where a grown patch's normal cone ran out (at a box's corner, a wall's patch reaching a quad into the floor);
+// [out] fitted: if given, the triangles the fitting moved (0 as grown).
 enum class PatchSeeds { InOrder, FlatFirst };
+enum class PatchRims { AsGrown, FittedToNormals };
 std::vector<int> facePatches(const std::vector<Vec3>& points, const std::vector<std::array<int, 3>>& triangles,
-                             double featureAngle, double minWidth, PatchSeeds seeds = PatchSeeds::InOrder);
+                             double featureAngle, double minWidth, PatchSeeds seeds = PatchSeeds::InOrder,
+                             PatchRims rims = PatchRims::AsGrown, std::size_t* fitted = nullptr);
 
 // The curves between the patches and along the rim, for Gmsh's discrete model (made here, not by Gmsh's
 // createTopology, whose order depends on where its objects lie in memory: its meshes changed from run to run).

@@ -935,12 +935,15 @@ bool cutAtReflexCorner(PatchLayout& layout, Patches& patches, const std::vector<
 
 }  // namespace
 
-PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle, PatchSeeds seeds) {
+PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle, PatchSeeds seeds,
+                      PatchRims rims) {
   const std::vector<Vec3>& x = chordal.vertices;
   const std::vector<std::array<int, 3>> triangles = chordalTriangles(chordal);
   PatchLayout layout;
   layout.typical = typicalSize(x, triangles, size);
-  Patches patch{facePatches(x, triangles, featureAngle, layout.typical, seeds), 0};
+  std::size_t fitted = 0;
+  Patches patch{facePatches(x, triangles, featureAngle, layout.typical, seeds, rims, &fitted), 0};
+  if (rims == PatchRims::FittedToNormals && fitted == 0) return {};  // the faces as grown: their grid made already
   patch.count = patch.of.empty() ? 0 : 1 + *std::max_element(patch.of.begin(), patch.of.end());
   if (patch.count < 2) return {};
   layout.curves = cutAtSharpTurns(patchTopology(triangles, patch.of), x, layout.typical);

@@ -39,8 +39,10 @@ namespace hexlayer {
 struct PatchGrids {
   BlockGrid graded, even;
 };
-// [in] seeds: facePatches' (PatchSeeds::FlatFirst where the faces grown in index order give no grid).
+// [in] seeds, rims: facePatches' (PatchSeeds::FlatFirst where the faces grown in index order give no grid;
+// PatchRims::FittedToNormals where those as grown give no acceptable grid: no grid if the fitting moves no triangle,
+// the faces then being those as grown).
 PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle,
-                      PatchSeeds seeds = PatchSeeds::InOrder);
+                      PatchSeeds seeds = PatchSeeds::InOrder, PatchRims rims = PatchRims::AsGrown);
 
 }  // namespace hexlayer

@@ -643,12 +643,28 @@ void rankEvenPatchGrid(bool graded, PatchGrids& patch, const ChordalLocator& cho
   rankBlockGrids(even, chordal, o, chordalEuler, ranked);
 }
 
+// The patch grid of faces grown and rimmed as `seeds` and `rims` say (patchGrids), ranked: graded towards its creases,
+// and with even rows where that one is refused or outranked. [in] chordal, o, chordalEuler; [in] seeds, rims;
+// [in,out] ranked. Returns whether the faces gave a grid at all.
+bool rankPatchGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler, PatchSeeds seeds,
+                   PatchRims rims, Ranked& ranked) {
+  PatchGrids patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, seeds, rims);
+  const bool graded = !patch.graded.empty();
+  if (patch.even.empty()) return false;
+  std::vector<QuadMesh> tries;
+  addBlockGrid(tries, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);
+  rankBlockGrids(tries, chordal, o, chordalEuler, ranked);
+  rankEvenPatchGrid(graded, patch, chordal, o, chordalEuler, ranked);
+  return true;
+}
+
 // Structured block grids first, the patch grid (patch_grids.hpp) after them: where one has square enough quads, Gmsh
 // is not needed. Where the holed grid is refused, the shared grid round all the holes is tried in its place; where
-// the patch grid graded towards its creases is refused or outranked, the patch grid with even rows. Where the faces
-// grown in index order give no patch grid, those grown from their flat middles first (PatchSeeds::FlatFirst) may,
-// ranked after the others: their cuts may lie where the surface only curves (a tube's), so they refuse no grid that
-// crosses them.
+// the patch grid graded towards its creases is refused or outranked, the patch grid with even rows. Where the faces as
+// grown give no acceptable patch grid, those with their rims fitted to their normals (PatchRims::FittedToNormals)
+// may. Where the faces grown in index order give no patch grid, those grown from their flat middles first
+// (PatchSeeds::FlatFirst) may, ranked after the others: their cuts may lie where the surface only curves (a tube's), so
+// they refuse no grid that crosses them.
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
   SurfaceMap square;
@@ -657,7 +673,7 @@ Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, lo
   sideBySide({[&] { patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle); },
               [&] { square = mapToPlane(chordal.surface(), o.size, MapBoundary::Square); }});
   std::vector<QuadMesh> blocks = blockGridQuads(chordal, square, o, chordalEuler);
-  bool graded = !patch.graded.empty();
+  const bool graded = !patch.graded.empty();
   const bool none = patch.even.empty();
   addBlockGrid(blocks, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);
   if (rankBlockGrids(blocks, chordal, o, chordalEuler, ranked)) {
@@ -666,13 +682,9 @@ Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, lo
     rankBlockGrids(shared, chordal, o, chordalEuler, ranked);
   }
   rankEvenPatchGrid(graded, patch, chordal, o, chordalEuler, ranked);
-  if (!none) return ranked;
-  patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, PatchSeeds::FlatFirst);
-  graded = !patch.graded.empty();
-  std::vector<QuadMesh> flatFirst;
-  addBlockGrid(flatFirst, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);
-  rankBlockGrids(flatFirst, chordal, o, chordalEuler, ranked);
-  rankEvenPatchGrid(graded, patch, chordal, o, chordalEuler, ranked);
+  if (ranked.best.layout != QuadLayout::PatchGrid)
+    rankPatchGrid(chordal, o, chordalEuler, PatchSeeds::InOrder, PatchRims::FittedToNormals, ranked);
+  if (none) rankPatchGrid(chordal, o, chordalEuler, PatchSeeds::FlatFirst, PatchRims::AsGrown, ranked);
   return ranked;
 }
 

@@ -146,12 +146,18 @@ TEST(ChordalPatches, ABendsNarrowStripsGoToTheFacesBesideThem) {
   }
 }
 
-TEST(ChordalPatches, FlatFirstSeedsShareARoundBetweenItsFaces) {
-  // An L of two sheets 10 cells wide joined by a round of 8 cells (7 .. 85 degrees), 8 long, its triangles ordered so
-  // that the round's 52-degree cells come first (as a chordal surface's triangles may be). Grown in index order, the
-  // first patch is seeded in the round and takes it (but its 7-degree cells) and the far sheet, all within 40 degrees
-  // of 52: the cut lies where the round starts. Grown from the flat cells first, each sheet takes the round's cells
-  // within 40 degrees of its own normal (7 .. 38 and 52 .. 85): the cut lies in the round's middle, at any scale.
+// An L of two sheets 10 cells wide joined by a round of 8 cells (7 .. 85 degrees), 8 long, times scale, its triangles
+// ordered so that the round's 52-degree cells come first (as a chordal surface's triangles may be); `at`: per
+// triangle, its cell's turn in degrees.
+struct RoundL {
+  Triangles t;
+  std::vector<double> at;
+  int faceOf(const std::vector<int>& patch, double degrees) const {
+    return patch[std::find(at.begin(), at.end(), degrees) - at.begin()];
+  }
+};
+
+RoundL roundL(double scale) {
   const std::vector<double> round = {7, 18, 29, 38, 52, 63, 74, 85};
   std::vector<double> turn(10, 0.0);
   turn.insert(turn.end(), round.begin(), round.end());
@@ -165,26 +171,49 @@ TEST(ChordalPatches, FlatFirstSeedsShareARoundBetweenItsFaces) {
     return Vec3(profile[static_cast<int>(x)].x(), y, profile[static_cast<int>(x)].z());
   };
   const int nx = static_cast<int>(turn.size());
+  const Triangles t = grid(nx, 8, bent, scale);
+  std::vector<std::size_t> order(t.triangles.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_partition(order.begin(), order.end(), [&](std::size_t k) { return turn[(k / 2) % nx] == 52; });
+  RoundL l{{t.points, {}}, {}};
+  for (std::size_t k : order) l.t.triangles.push_back(t.triangles[k]), l.at.push_back(turn[(k / 2) % nx]);
+  return l;
+}
+
+// Whether the L's round is cut in its middle: two patches, the round's cells within 40 degrees of a sheet in its patch.
+void expectCutInTheRoundsMiddle(const RoundL& l, const std::vector<int>& patch, double scale) {
+  EXPECT_EQ(std::set<int>(patch.begin(), patch.end()).size(), 2u) << "scale " << scale;
+  for (std::size_t k = 0; k < l.at.size(); ++k)
+    EXPECT_EQ(patch[k], l.faceOf(patch, l.at[k] <= 40 ? 0 : 90)) << "cell at " << l.at[k] << " degrees";
+}
+
+TEST(ChordalPatches, FlatFirstSeedsShareARoundBetweenItsFaces) {
+  // Grown in index order, the first patch is seeded in the round and takes it (but its 7-degree cells) and the far
+  // sheet, all within 40 degrees of 52: the cut lies where the round starts. Grown from the flat cells first, each
+  // sheet takes the round's cells within 40 degrees of its own normal (7 .. 38 and 52 .. 85): the cut lies in the
+  // round's middle, at any scale.
   for (const double scale : {1.0, 1e-3, 1e3}) {
-    const Triangles t = grid(nx, 8, bent, scale);
-    std::vector<std::size_t> order(t.triangles.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_partition(order.begin(), order.end(), [&](std::size_t k) { return turn[(k / 2) % nx] == 52; });
-    Triangles reordered{t.points, {}};
-    std::vector<double> at;  // per triangle of `reordered`, its cell's turn
-    for (std::size_t k : order) reordered.triangles.push_back(t.triangles[k]), at.push_back(turn[(k / 2) % nx]);
-    auto faceOf = [&](const std::vector<int>& patch, double degrees) {
-      return patch[std::find(at.begin(), at.end(), degrees) - at.begin()];
-    };
-    const std::vector<int> inOrder = facePatches(reordered.points, reordered.triangles, 40, 0.5 * scale);
-    EXPECT_EQ(faceOf(inOrder, 18), faceOf(inOrder, 90)) << "scale " << scale;
-    EXPECT_EQ(faceOf(inOrder, 7), faceOf(inOrder, 0));
-    EXPECT_NE(faceOf(inOrder, 0), faceOf(inOrder, 90));
-    const std::vector<int> flat =
-        facePatches(reordered.points, reordered.triangles, 40, 0.5 * scale, PatchSeeds::FlatFirst);
-    EXPECT_EQ(std::set<int>(flat.begin(), flat.end()).size(), 2u) << "scale " << scale;
-    for (std::size_t k = 0; k < at.size(); ++k)
-      EXPECT_EQ(flat[k], faceOf(flat, at[k] <= 40 ? 0 : 90)) << "cell at " << at[k] << " degrees";
+    const RoundL l = roundL(scale);
+    const std::vector<int> inOrder = facePatches(l.t.points, l.t.triangles, 40, 0.5 * scale);
+    EXPECT_EQ(l.faceOf(inOrder, 18), l.faceOf(inOrder, 90)) << "scale " << scale;
+    EXPECT_EQ(l.faceOf(inOrder, 7), l.faceOf(inOrder, 0));
+    EXPECT_NE(l.faceOf(inOrder, 0), l.faceOf(inOrder, 90));
+    expectCutInTheRoundsMiddle(l, facePatches(l.t.points, l.t.triangles, 40, 0.5 * scale, PatchSeeds::FlatFirst),
+                               scale);
+  }
+}
+
+TEST(ChordalPatches, RimsFittedToTheNormalsShareARoundBetweenItsFaces) {
+  // The L grown in index order (its cut where the round starts, as above), its rims then fitted to the patches' mean
+  // normals: the round's cells at 18 .. 38 degrees, nearer the first sheet's mean normal than the other patch's, go to
+  // the first sheet a row at a time, those at 52 stay (more than 40 degrees from the first sheet): the cut lies in the
+  // round's middle, as from flat seeds, at any scale.
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    const RoundL l = roundL(scale);
+    const std::vector<int> fitted =
+        facePatches(l.t.points, l.t.triangles, 40, 0.5 * scale, PatchSeeds::InOrder, PatchRims::FittedToNormals);
+    expectCutInTheRoundsMiddle(l, fitted, scale);
+    EXPECT_TRUE(patchesConnected(l.t, fitted));
   }
 }
 
