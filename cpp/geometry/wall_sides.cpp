@@ -193,6 +193,27 @@ std::vector<int> splitWallPieces(const CadSolid& cad, const WallSides& w, const 
   });
 }
 
+// Lateral faces that are a short wall's: flat, a quarter of their rays crossing the wall (kMinSplitShare) to a wall
+// face whose normal is opposite theirs (within kExtensionTurn), at about its thickness (kExtensionThickness). A wall
+// about two thicknesses high between the floor it stands on and a ledge (a lid's lip cut out of its top) has fewer than
+// half its rays crossing: those from the floor's end and near the ledge run along a wall; taken for a rim, the wall's
+// inner face and its lip became a sheet standing on the floor (exit 4). A rim face turns away from the wall faces its
+// rays reach (a chamfer, an oblique cut) or is not flat (a round). [in] cad; [in] w: the first classification;
+// [in] meanNormal: per face. Returns the faces, ascending.
+std::vector<int> shortWallFaces(const CadSolid& cad, const WallSides& w, const std::vector<Vec3>& meanNormal) {
+  std::vector<int> found;
+  for (int f = 0; f < static_cast<int>(w.faces.size()); ++f) {
+    const FaceSide& fs = w.faces[f];
+    if (fs.side != Side::Lateral || fs.wallShare < kMinSplitShare || fs.opposite < 0) continue;
+    const FaceSide& across = w.faces[fs.opposite];
+    if (across.side == Side::Lateral || meanNormal[f].isZero() || meanNormal[fs.opposite].isZero()) continue;
+    if (meanNormal[f].normalized().dot(meanNormal[fs.opposite].normalized()) > -std::cos(kExtensionTurn)) continue;
+    if (std::abs(fs.thickness - across.thickness) > kExtensionThickness * across.thickness) continue;
+    if (planeOf(cad.faces(f + 1), kOnSurface * cad.diagonal)) found.push_back(f);
+  }
+  return found;
+}
+
 // Lateral faces that carry a wall on: on the surface of a wall face they meet in a smooth edge (a wall face split
 // there), facing as it does (kExtensionTurn), narrower than the wall is thick, their rays landing mostly on the face
 // that wall's rays cross to or on a face on its surface (split there too), at the wall's thickness
@@ -430,6 +451,7 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
   for (int f : w.bendRounds) w.faces[f].side = Side::Top, w.faces[f].thickness = w.thickness;
   for (int f : wallExtensions(cad, w, landing, meanNormal)) w.faces[f].side = Side::Top;
   for (int f : splitWallPieces(cad, w, meanNormal)) w.faces[f].side = Side::Top;
+  for (int f : shortWallFaces(cad, w, meanNormal)) w.faces[f].side = Side::Top;
   std::vector<std::pair<int, int>> rootParity = solveSides(cad, w, across);
   w.obliqueRims = obliqueRimFaces(cad, w);
   if (!w.obliqueRims.empty()) {  // sides again without them

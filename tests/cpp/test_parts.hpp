@@ -89,6 +89,18 @@ inline TopoDS_Solid bossOverAHole(double s) {
   return firstSolid(BRepAlgoAPI_Cut(BRepAlgoAPI_Fuse(plate, boss).Shape(), cylinder(2, -1, 4)).Shape());
 }
 
+// [in] s: the scale. An open box 40 x 45 x 12, walls and floor 2.5, the outer half of its walls cut away over the top
+// 3.9 (a lid's lip 1.25 thick): the walls' outer faces 8.1 high, the wall 2.2 thicknesses above the floor under the
+// ledge; all lengths times s.
+inline TopoDS_Solid shortWalledLippedBox(double s) {
+  auto block = [&](double x, double y, double z, double dx, double dy, double dz) {
+    return BRepPrimAPI_MakeBox(gp_Pnt(x * s, y * s, z * s), dx * s, dy * s, dz * s).Shape();
+  };
+  const TopoDS_Shape open = BRepAlgoAPI_Cut(block(0, 0, 0, 40, 45, 12), block(2.5, 2.5, 2.5, 35, 40, 10));
+  const TopoDS_Shape ring = BRepAlgoAPI_Cut(block(-1, -1, 8.1, 42, 47, 5), block(1.25, 1.25, 7, 37.5, 42.5, 7));
+  return firstSolid(BRepAlgoAPI_Cut(open, ring).Shape());
+}
+
 // [in] s: the scale. Points of plateWithManyHoles(s) on and near its edges and vertices: on the holes' rims, the
 // plate's edges and a corner, and 1e-12 .. 0.3 (times s) off them in and out.
 inline std::vector<Vec3> pointsNearEdges(double s) {

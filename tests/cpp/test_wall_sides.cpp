@@ -47,6 +47,18 @@ Vec3 faceCentre(const CadSolid& cad, int f) {
   return {c.X(), c.Y(), c.Z()};
 }
 
+// Calls check(cad, w, s) on part(s) (a solid at scale s) classified (w, with `faces` faces), at scales 1, 1e-3, 1e3.
+template <class Part, class Check>
+void atEachScale(Part part, std::size_t faces, Check check) {
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const CadSolid cad = prepareSolid(part(s));
+    const WallSides w = classifyWallSides(cad);
+    ASSERT_EQ(w.faces.size(), faces);
+    check(cad, w, s);
+  }
+}
+
 }  // namespace
 
 // A sample of the top crosses the wall unless the middle of its ray (1 below it) is nearer a side than
@@ -138,11 +150,7 @@ TEST(WallSides, SplitWallsAreWallsInEveryPiece) {
 // wall), are wall though most of their rays pass the hole on the way (wallExtensions): every face facing +-z is wall,
 // three on each side, the hole's wall and the four sides are rims. On copies scaled by 1e-3 and 1e3.
 TEST(WallSides, ANarrowRingOfASplitWallRoundAHoleIsWall) {
-  for (double s : {1.0, 1e-3, 1e3}) {
-    SCOPED_TRACE("x " + std::to_string(s));
-    const CadSolid cad = prepareSolid(test_parts::plateSplitRoundAHole(s));
-    const WallSides w = classifyWallSides(cad);
-    ASSERT_EQ(w.faces.size(), 11u);
+  atEachScale(test_parts::plateSplitRoundAHole, 11, [](const CadSolid& cad, const WallSides& w, double s) {
     EXPECT_EQ(count(w, Side::Top), 3);
     EXPECT_EQ(count(w, Side::Bottom), 3);
     for (int f = 0; f < static_cast<int>(w.faces.size()); ++f)
@@ -150,7 +158,23 @@ TEST(WallSides, ANarrowRingOfASplitWallRoundAHoleIsWall) {
           std::abs(surfaceOf(cad, f).Plane().Axis().Direction().Z()) > 0.99)
         EXPECT_NE(w.faces[f].side, Side::Lateral) << "face " << f;
     EXPECT_NEAR(w.thickness, 2 * s, 1e-6 * s);
-  }
+  });
+}
+
+// A short-walled box with a lid's lip (test_parts::shortWalledLippedBox): the walls' outer faces under the ledge cross
+// the wall on under half their area (0.47: the floor's end and the band near the ledge run along a wall), but they are
+// flat and face the walls' inner faces across the wall's thickness: walls (shortWallFaces), not rims, and the part is
+// one sheet; only the ledge and the lip's top are rims. On copies scaled by 1e-3 and 1e3.
+TEST(WallSides, AShortWallUnderALedgeIsAWall) {
+  atEachScale(test_parts::shortWalledLippedBox, 16, [](const CadSolid& cad, const WallSides& w, double s) {
+    for (int f = 0; f < static_cast<int>(w.faces.size()); ++f) {
+      const Vec3 c = faceCentre(cad, f) / s;
+      const bool rim = std::abs(c.z() - 8.1) < 1e-6 || std::abs(c.z() - 12) < 1e-6;
+      EXPECT_EQ(w.faces[f].side == Side::Lateral, rim) << "face " << f << " at " << c.transpose();
+      if (std::abs(c.x()) < 1e-6) EXPECT_LT(w.faces[f].wallShare, 0.5) << "the outer face under the ledge";
+    }
+    EXPECT_EQ(findSheets(cad, w).size(), 1u);
+  });
 }
 
 // A rib standing on a plate still branches the sheet: it is found (here as a second sheet), where it is.

@@ -127,6 +127,22 @@ class ThicknessSteps(MeshTest):
                                        ("small_lip_50x40", 1.0, 0, ((50, 40, 15), 1.5))):
             self.check_lipped_box(name, 3, True, scale, turn, box, (0.4, 0.95), 0.01)
 
+    def test_short_walls_under_a_lip(self):
+        """A box 40 x 45 x 12, walls and floor 2.5, the outer half of its walls cut away over the top 3.9: the walls'
+        outer faces under the ledge, 8.1 high (the wall 2.2 thicknesses above the floor), cross the wall on 0.47 of
+        their area and were taken for rims; the walls' inner faces and the lip became a sheet standing on the floor:
+        exit 4 (`no piece holds the sheet ... after the cut`). A flat face facing a wall face across the wall's
+        thickness is now a wall (wall_sides.cpp shortWallFaces). Twins: in metres (B-spline faces), turned 30
+        degrees, 60 long, the lip 3 high, a box 40 x 45 x 8 with walls 2 and a lip 2.6 high. 2 layers: every hex
+        positive, scaled Jacobian min >= 0.4 and avg >= 0.88 (the default quad size, a wall, is coarse for a box five
+        walls high: 0.892-0.914), volume within 2 %, the part's topology."""
+        SHORT = ((40, 45, 12), 2.5)
+        for name, height, scale, turn, box in (
+                ("short_walls", 3.9, 1.0, 0, SHORT), ("short_walls_metres", 3.9, 1e-3, 0, SHORT),
+                ("short_walls_turned", 3.9, 1.0, 30, SHORT), ("short_walls_60", 3.9, 1.0, 0, ((60, 45, 12), 2.5)),
+                ("short_walls_lip_3", 3.0, 1.0, 0, SHORT), ("short_walls_8_high", 2.6, 1.0, 0, ((40, 45, 8), 2.0))):
+            self.check_lipped_box(name, height, True, scale, turn, box, (0.4, 0.88), 0.02)
+
     def check_lipped_box(self, name, height, outer, scale, turn, box, quality, allowed):
         """write_lipped_box's part meshed with 2 layers: every hex positive, the scaled Jacobian's min and avg at least
         `quality`, the volume within `allowed`, the part's topology."""
