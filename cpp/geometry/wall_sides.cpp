@@ -193,22 +193,25 @@ std::vector<int> splitWallPieces(const CadSolid& cad, const WallSides& w, const 
   });
 }
 
-// Lateral faces that are a short wall's: flat, a quarter of their rays crossing the wall (kMinSplitShare) to a wall
-// face whose normal is opposite theirs (within kExtensionTurn), at about its thickness (kExtensionThickness). A wall
-// about two thicknesses high between the floor it stands on and a ledge (a lid's lip cut out of its top) has fewer than
-// half its rays crossing: those from the floor's end and near the ledge run along a wall; taken for a rim, the wall's
-// inner face and its lip became a sheet standing on the floor (exit 4). A rim face turns away from the wall faces its
-// rays reach (a chamfer, an oblique cut) or is not flat (a round). [in] cad; [in] w: the first classification;
-// [in] meanNormal: per face. Returns the faces, ascending.
+// Lateral faces that are a short wall's: flat, at least a quarter wall wide (kMinWallWidth, as every wall face), a
+// quarter of their rays crossing the wall (kMinSplitShare) to a wall face whose normal is opposite theirs (within
+// kExtensionTurn), at about its thickness (kExtensionThickness). A wall about two thicknesses high between the floor it
+// stands on and a ledge (a lid's lip cut out of its top) has fewer than half its rays crossing: those from the floor's
+// end and near the ledge run along a wall; taken for a rim, the wall's inner face and its lip became a sheet standing
+// on the floor (exit 4). A rim face turns away from the wall faces its rays reach (a chamfer, an oblique cut) or is not
+// flat (a round). [in] cad; [in] w: the first classification; [in] meanNormal: per face. Returns the faces, ascending.
 std::vector<int> shortWallFaces(const CadSolid& cad, const WallSides& w, const std::vector<Vec3>& meanNormal) {
   std::vector<int> found;
   for (int f = 0; f < static_cast<int>(w.faces.size()); ++f) {
     const FaceSide& fs = w.faces[f];
-    if (fs.side != Side::Lateral || fs.wallShare < kMinSplitShare || fs.opposite < 0) continue;
+    if (fs.side != Side::Lateral || fs.wallShare < kMinSplitShare || fs.width < kMinWallWidth * fs.thickness ||
+        fs.opposite < 0)
+      continue;
     const FaceSide& across = w.faces[fs.opposite];
-    if (across.side == Side::Lateral || meanNormal[f].isZero() || meanNormal[fs.opposite].isZero()) continue;
-    if (meanNormal[f].normalized().dot(meanNormal[fs.opposite].normalized()) > -std::cos(kExtensionTurn)) continue;
-    if (std::abs(fs.thickness - across.thickness) > kExtensionThickness * across.thickness) continue;
+    if (across.side == Side::Lateral || meanNormal[fs.opposite].isZero() ||
+        angleBetween(meanNormal[f], -meanNormal[fs.opposite]) > kExtensionTurn ||
+        std::abs(fs.thickness - across.thickness) > kExtensionThickness * across.thickness)
+      continue;
     if (planeOf(cad.faces(f + 1), kOnSurface * cad.diagonal)) found.push_back(f);
   }
   return found;

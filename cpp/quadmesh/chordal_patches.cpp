@@ -268,15 +268,15 @@ std::size_t fitRimsToNormals(const std::vector<Vec3>& points, const std::vector<
                              const Neighbours& across, const std::vector<Vec3>& normal, double featureAngle,
                              std::vector<int>& patch) {
   const double within = std::cos(featureAngle * M_PI / 180);
+  const int patches = patch.empty() ? 0 : 1 + *std::max_element(patch.begin(), patch.end());
   std::size_t moved = 0;
   for (int round = 0; round < kFitRounds; ++round) {
-    std::map<int, Vec3> proxy;
+    std::vector<Vec3> proxy(patches, Vec3::Zero());  // per patch, its area-weighted mean normal
     for (std::size_t t = 0; t < triangles.size(); ++t) {
       const auto& c = triangles[t];
-      auto [it, added] = proxy.emplace(patch[t], Vec3::Zero());
-      it->second += (points[c[1]] - points[c[0]]).cross(points[c[2]] - points[c[0]]);
+      proxy[patch[t]] += (points[c[1]] - points[c[0]]).cross(points[c[2]] - points[c[0]]);
     }
-    for (auto& [p, n] : proxy) n = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
+    for (Vec3& n : proxy) n = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
     std::vector<std::pair<int, int>> moves;
     for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
       if (normal[t].isZero()) continue;

@@ -645,17 +645,16 @@ void rankEvenPatchGrid(bool graded, PatchGrids& patch, const ChordalLocator& cho
 
 // The patch grid of faces grown and rimmed as `seeds` and `rims` say (patchGrids), ranked: graded towards its creases,
 // and with even rows where that one is refused or outranked. [in] chordal, o, chordalEuler; [in] seeds, rims;
-// [in,out] ranked. Returns whether the faces gave a grid at all.
-bool rankPatchGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler, PatchSeeds seeds,
+// [in,out] ranked.
+void rankPatchGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler, PatchSeeds seeds,
                    PatchRims rims, Ranked& ranked) {
   PatchGrids patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, seeds, rims);
+  if (patch.even.empty()) return;
   const bool graded = !patch.graded.empty();
-  if (patch.even.empty()) return false;
   std::vector<QuadMesh> tries;
   addBlockGrid(tries, graded ? std::move(patch.graded) : patch.even, QuadLayout::PatchGrid);
   rankBlockGrids(tries, chordal, o, chordalEuler, ranked);
   rankEvenPatchGrid(graded, patch, chordal, o, chordalEuler, ranked);
-  return true;
 }
 
 // Structured block grids first, the patch grid (patch_grids.hpp) after them: where one has square enough quads, Gmsh
