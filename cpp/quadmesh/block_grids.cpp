@@ -450,24 +450,54 @@ void mergeSides(std::vector<Station>& stations) {
   }
 }
 
+// Whether a pocket's side may move from `from` to `to`: its box stays kMinMargin beyond its hole (or moves away from
+// it) and, if it grows, runs into no other hole's box as the stations have them. [in] stations, holes, a; [in] pocket:
+// a station of stations[a]; [in] from, to.
+bool mayMovePocket(const std::array<std::vector<Station>, 2>& stations, const std::vector<GridHole>& holes, int a,
+                   const Station& pocket, double from, double to) {
+  const double margin = (to - pocket.hole0) * pocket.outward;  // its box beyond its hole, if moved
+  return margin >= std::min(kMinMargin, (from - pocket.hole0) * pocket.outward) &&
+         ((to - from) * pocket.outward <= 0 || !runsInto(holes, stations, a, pocket.hole, from, to));
+}
+
 // Pockets' sides within kSnap of another line (the rim, a side's, another pocket's: where the gaps between holes
-// are alike but for the chordal surface's noise) moved onto the nearest, if they stay kMinMargin beyond their hole
-// (or move away from it) and run into no other hole's box: no sliver of cells across the grid between them. In
-// order, each onto the others' places as they are by then. [in,out] stations: along axis a (the other's to test);
+// are alike but for the chordal surface's noise) moved onto one line, if each may (mayMovePocket): no sliver of cells
+// across the grid between them. First each onto the nearest rim or side line; then the pockets' sides left, in runs
+// along the axis each within kSnap of the run's first, onto the run's mean together (holes in a row, the boxes of
+// neighbours that meet half way: one line whatever the noise's order along it), a side that may not staying; then
+// each onto the nearest line as the lines are by then. [in,out] stations: along axis a (the other's to test);
 // [in] holes, a.
 void snapPockets(std::array<std::vector<Station>, 2>& stations, const std::vector<GridHole>& holes, int a) {
-  for (Station& pocket : stations[a]) {
-    if (pocket.kind != Station::Pocket) continue;
+  std::vector<Station>& along = stations[a];
+  auto snapToNearest = [&](Station& pocket, bool fixedOnly) {
     double best = pocket.at, nearest = kSnap;
-    for (const Station& line : stations[a]) {
+    for (const Station& line : along) {
       const double apart = std::abs(pocket.at - line.at);
-      const double margin = (line.at - pocket.hole0) * pocket.outward;  // its box beyond its hole, if moved
-      if (apart > 0 && apart < nearest && margin >= std::min(kMinMargin, (pocket.at - pocket.hole0) * pocket.outward) &&
-          !runsInto(holes, stations, a, pocket.hole, pocket.at, line.at))
+      if ((!fixedOnly || line.kind != Station::Pocket) && apart > 0 && apart < nearest &&
+          mayMovePocket(stations, holes, a, pocket, pocket.at, line.at))
         best = line.at, nearest = apart;
     }
+    const bool moved = best != pocket.at;
     pocket.at = best;
+    return moved;
+  };
+  std::vector<int> left;  // the pockets' sides not on a rim or side line
+  for (std::size_t s = 0; s < along.size(); ++s)
+    if (along[s].kind == Station::Pocket && !snapToNearest(along[s], true)) left.push_back(static_cast<int>(s));
+  std::stable_sort(left.begin(), left.end(), [&](int s, int t) { return along[s].at < along[t].at; });
+  for (std::size_t first = 0; first < left.size();) {
+    std::size_t next = first + 1;
+    while (next < left.size() && along[left[next]].at - along[left[first]].at <= kSnap) ++next;
+    std::vector<double> was;
+    double mean = 0;
+    for (std::size_t k = first; k < next; ++k)
+      was.push_back(along[left[k]].at), mean += was.back() / static_cast<double>(next - first);
+    for (std::size_t k = first; k < next; ++k) along[left[k]].at = mean;
+    for (std::size_t k = first; k < next; ++k)
+      if (!mayMovePocket(stations, holes, a, along[left[k]], was[k - first], mean)) along[left[k]].at = was[k - first];
+    first = next;
   }
+  for (int s : left) snapToNearest(along[s], false);
 }
 
 // Where the ray from `from` through `through` first crosses a loop of the plane: the position along the loop

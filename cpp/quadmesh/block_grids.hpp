@@ -62,7 +62,9 @@ BlockGrid holedGrid(const SurfaceMap& map, const SizeField& size, const SquareRi
 // holedGrid's pocket, its box one quad beyond the hole where there is room, else half way to the next hole, on the
 // rim if it would come within half a quad of it, its ring's nodes on the hole where spokes from the hole's centre
 // through the box's nodes cross it. Lines of sides that do not face each other (pieces of a side a notch splits,
-// holes in a row) within 0.35 quad are merged; a pocket's side within half a quad of another line is moved onto it.
+// holes in a row) within 0.35 quad are merged; a pocket's side within half a quad of a rim or side line is moved onto
+// it, the pockets' sides left within half a quad of each other (holes in a row, neighbours' boxes meeting half way)
+// onto their mean together.
 // [in] map: the square map; [in] size: the target size. Returns the grid (blocks: 1 and 4 per pocket); empty for
 // any other map, a surface without holes, or where two holes' extents overlap along both axes.
 BlockGrid sharedGrid(const SurfaceMap& map, const SizeField& size);

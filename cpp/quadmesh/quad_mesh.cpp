@@ -601,7 +601,8 @@ double farthestQuadCentre(const QuadMesh& q, const ChordalLocator& chordal) {
 // (kCutsCrease).
 // Another topology is refused before the try is finished (finishing keeps it: removing a doublet takes a node, two
 // edges and a quad), and the smoothing it would have cost is saved.
-// [in,out] blocks: the tries; [in,out] ranked. Returns whether the holed grid was refused.
+// [in,out] blocks: the tries; [in,out] ranked. Returns whether the holed grid was refused or its quads' mean is under
+// kStructuredMean (the pockets round off square cutouts that the shared grid's cells fit).
 bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal, const QuadMeshOptions& o,
                     long chordalEuler, Ranked& ranked) {
   std::vector<QuadScore> scores(blocks.size());
@@ -622,15 +623,18 @@ bool rankBlockGrids(std::vector<QuadMesh>& blocks, const ChordalLocator& chordal
   bool patchGrid = false;  // an acceptable patch grid: the grids whose quads cut its creases are not
   for (std::size_t i = 0; i < blocks.size(); ++i)
     patchGrid |= blocks[i].layout == QuadLayout::PatchGrid && acceptable(i);
-  bool holedRefused = false;
+  bool holedWanting = false;
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     const bool cutsCreases = patchGrid && blocks[i].layout != QuadLayout::PatchGrid && farthest[i] > kCutsCrease;
-    if (acceptable(i) && !cutsCreases)
+    const bool holed = blocks[i].layout == QuadLayout::Grid;
+    if (acceptable(i) && !cutsCreases) {
+      holedWanting |= holed && scores[i].mean < kStructuredMean;
       ranked.keep(blocks[i], scores[i]);
-    else
-      holedRefused |= blocks[i].layout == QuadLayout::Grid;
+    } else {
+      holedWanting |= holed;
+    }
   }
-  return holedRefused;
+  return holedWanting;
 }
 
 // Where the patch grid graded towards its creases lost or was refused, the one with even rows ranked.
@@ -658,12 +662,12 @@ void rankPatchGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long
 }
 
 // Structured block grids first, the patch grid (patch_grids.hpp) after them: where one has square enough quads, Gmsh
-// is not needed. Where the holed grid is refused, the shared grid round all the holes is tried in its place; where
-// the patch grid graded towards its creases is refused or outranked, the patch grid with even rows. Where the faces as
-// grown give no acceptable patch grid, those with their rims fitted to their normals (PatchRims::FittedToNormals)
-// may. Where the faces grown in index order give no patch grid, those grown from their flat middles first
-// (PatchSeeds::FlatFirst) may, ranked after the others: their cuts may lie where the surface only curves (a tube's), so
-// they refuse no grid that crosses them.
+// is not needed. Where the holed grid is refused or its quads' mean is under kStructuredMean, the shared grid round all
+// the holes is ranked too; where the patch grid graded towards its creases is refused or outranked, the patch grid
+// with even rows. Where the faces as grown give no acceptable patch grid, those with their rims fitted to their normals
+// (PatchRims::FittedToNormals) may. Where the faces grown in index order give no patch grid, those grown from their
+// flat middles first (PatchSeeds::FlatFirst) may, ranked after the others: their cuts may lie where the surface only
+// curves (a tube's), so they refuse no grid that crosses them.
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
   SurfaceMap square;

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <utility>
+
+#include "core/point_grid.hpp"
 
 namespace hexlayer {
 namespace {
@@ -37,6 +40,62 @@ bool isCrease(double curvature, double radius) { return curvature * 2 * radius >
 // quad edge is a pinhole between facets, not a hole: it is left alone.
 constexpr double kEdgesRoundLoop = 8;
 
+// Quads across a gap of the chordal surface between two stretches of its rim facing each other (a ligament between
+// holes, a hole near the rim, a slot): fewer, and a quad spans the gap, its nodes on both rims.
+constexpr double kQuadsAcrossGap = 2;
+// Two rim points face each other across the surface where the chord between them leaves each within this angle of
+// the direction into the surface there (cos 25 degrees): not two points beside each other on a rim, nor round a
+// convex corner (45 degrees at a right angle), nor across the air between two sheets (the chord leaves the surface).
+constexpr double kFacing = 0.9;
+
+// The unit direction into the surface at each rim vertex, in the plane of its rim facets: the mean of its rim edges'
+// directions, each across its edge towards its facet's centre; zero off the rim. [in] s. Returns one per vertex.
+std::vector<Vec3> intoSurface(const ChordalSurface& s) {
+  std::map<std::pair<int, int>, int> rimEdges;
+  for (const auto& [edge, uses] : facetEdgeUses(s))
+    if (uses == 1) rimEdges.emplace(edge, 0);
+  std::vector<Vec3> into(s.vertices.size(), Vec3::Zero());
+  for (const auto& f : s.facets) {
+    const int corners = f[3] < 0 ? 3 : 4;
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < corners; ++k) centre += s.vertices[f[k]] / corners;
+    for (int k = 0; k < corners; ++k) {
+      const int a = f[k], b = f[(k + 1) % corners];
+      if (!rimEdges.count({std::min(a, b), std::max(a, b)})) continue;
+      const Vec3 along = (s.vertices[b] - s.vertices[a]).normalized();
+      Vec3 across = centre - 0.5 * (s.vertices[a] + s.vertices[b]);
+      across -= across.dot(along) * along;
+      if (across.norm() > 0) into[a] += across.normalized(), into[b] += across.normalized();
+    }
+  }
+  for (Vec3& v : into)
+    if (v.norm() > 0) v.normalize();
+  return into;
+}
+
+// The gap across the surface at each rim vertex (the nearest rim vertex facing it, kFacing) if under reach[i];
+// infinity elsewhere. [in] s; [in] reach: per vertex, the farthest gap that matters. Returns one per vertex.
+std::vector<double> gapsAcross(const ChordalSurface& s, const std::vector<double>& reach) {
+  const std::vector<Vec3> into = intoSurface(s);
+  std::vector<double> gap(s.vertices.size(), INFINITY);
+  double cell = 0;
+  for (std::size_t i = 0; i < into.size(); ++i)
+    if (into[i].norm() > 0) cell = std::max(cell, reach[i]);
+  PointGrid rim(cell);
+  for (std::size_t i = 0; i < into.size(); ++i)
+    if (into[i].norm() > 0) rim.insert(static_cast<int>(i), s.vertices[i]);
+  for (std::size_t i = 0; i < into.size(); ++i) {
+    if (into[i].norm() == 0) continue;
+    rim.forEachNear(s.vertices[i], reach[i], [&](int j, const Vec3& q) {
+      const Vec3 chord = q - s.vertices[i];
+      const double length = chord.norm();
+      if (length > 0 && into[i].dot(chord) > kFacing * length && -into[j].dot(chord) > kFacing * length)
+        gap[i] = std::min(gap[i], length);
+    });
+  }
+  return gap;
+}
+
 }  // namespace
 
 std::vector<double> chordalCurvature(const ChordalSurface& s) {
@@ -67,6 +126,11 @@ std::vector<double> adaptiveSizes(const ChordalSurface& s, const SizingOptions& 
     if (const int loop = loops.loopOf[i]; loop >= 0 && loops.length[loop] >= lo)  // a hole's rim
       h[i] = std::min(h[i], std::max(lo, loops.length[loop] / kEdgesRoundLoop));
   }
+  std::vector<double> reach(h.size());  // a gap wider than kQuadsAcrossGap quads needs nothing
+  for (size_t i = 0; i < h.size(); ++i) reach[i] = kQuadsAcrossGap * h[i];
+  const std::vector<double> gap = gapsAcross(s, reach);
+  for (size_t i = 0; i < h.size(); ++i)
+    if (std::isfinite(gap[i])) h[i] = std::min(h[i], std::max(lo, gap[i] / kQuadsAcrossGap));
   limitGradation(s, facetEdges(s), o.gradation, h);
   return h;
 }

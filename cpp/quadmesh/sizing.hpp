@@ -20,8 +20,9 @@ struct SizingOptions {
 // thicknesses wide everywhere), at most turnPerQuad / curvature where the surface bends no tighter than its wall
 // is thick (a crease is not refined: sizing.cpp's isCrease), within [minSize, maxSize], at most an eighth of the rim
 // loop a rim vertex lies on (a hole keeps eight quad edges round it: fewer, and the quad mesh closes a small hole;
-// not below minSize, and a loop shorter than minSize is a pinhole, left alone), then smoothed so that neighbours
-// differ by at most gradation x their distance.
+// not below minSize, and a loop shorter than minSize is a pinhole, left alone), at most half the gap across the
+// surface to the rim facing a rim vertex (a ligament between holes, a hole near the rim, a slot: two quads across it;
+// not below minSize), then smoothed so that neighbours differ by at most gradation x their distance.
 std::vector<double> adaptiveSizes(const ChordalSurface& chordal, const SizingOptions& options);
 
 // Curvature of the chordal surface at every vertex: the mean over its edges of the angle between

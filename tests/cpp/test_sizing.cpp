@@ -14,12 +14,15 @@ using namespace hexlayer;
 
 namespace {
 
-// A flat strip of unit quads along x (n quads, 1 wide) with radius r(x) and normal +z.
+// How wide the strips are: the gap across them (two quads across a gap) holds no size of these tests.
+constexpr double kWide = 1e3;
+
+// A flat strip of quads along x (n quads, 1 long, kWide wide) with radius r(x) and normal +z.
 ChordalSurface strip(int n, double (*radius)(double)) {
   ChordalSurface s;
   for (int j = 0; j <= 1; ++j)
     for (int i = 0; i <= n; ++i) {
-      s.vertices.emplace_back(i, j, 0);
+      s.vertices.emplace_back(i, j * kWide, 0);
       s.normals.push_back(Vec3::UnitZ());
       s.radius.push_back(radius(i));
     }
@@ -131,6 +134,38 @@ TEST(Sizing, AHolesRimKeepsEightQuadEdgesRoundIt) {
       EXPECT_LE(h[i], scale * (1 + 0.3 * alongEdges) + 1e-9 * scale) << "graded from the hole's rim";
       EXPECT_GT(h[i], scale * (0.99 + 0.3 * std::max(0.0, fromHole - 1.5))) << "no smaller than the grading asks";
     }
+  }
+}
+
+// A 30 x 12 plate of unit quads with a 4 x 2 hole 1 above its rim y = 0 (x 10..14, y 1..3), a wall asking for quads
+// of 4: across the ligament 1 wide between the hole and the rim, two quads (0.5: the hole's rim alone holds 12 / 8 =
+// 1.5, 1.8 a quad below it); a convex corner of the plate, whose rims meet but do not face each other, is held by the
+// grading only. The same plate and another one 1 above it (two sheets across the air: the rims face each other along
+// the normal, not across a surface): the sizes of one plate alone. At scales 1e-3, 1 and 1e3.
+TEST(Sizing, AGapAcrossTheSurfaceHoldsTwoQuadsAcrossIt) {
+  for (const double scale : {1e-3, 1.0, 1e3}) {
+    ChordalSurface s = test_flat_surfaces::rectangle(30, 12, {{10, 14, 1, 3}});
+    for (Vec3& v : s.vertices) v *= scale;
+    s.radius.assign(s.vertices.size(), 0.5 * scale);
+    const SizingOptions o{4.0 * scale, 0.25 * scale, 16 * scale, 0.3, 0.5};
+    const std::vector<double> h = adaptiveSizes(s, o);
+    for (size_t i = 0; i < h.size(); ++i) {
+      const Vec3 p = s.vertices[i] / scale;
+      if (p.x() >= 11 && p.x() <= 13 && (p.y() == 0 || p.y() == 1))
+        EXPECT_NEAR(h[i], 0.5 * scale, 1e-9 * scale) << "x " << p.x() << " y " << p.y() << " scale " << scale;
+      if (p.x() == 0 && p.y() == 0) EXPECT_NEAR(h[i], (0.5 + 0.3 * 11) * scale, 1e-9 * scale) << "graded only";
+    }
+    ChordalSurface two = s;
+    const int n = static_cast<int>(s.vertices.size());
+    for (int v = 0; v < n; ++v)
+      two.vertices.push_back(s.vertices[v] + Vec3(0, 0, scale)), two.normals.push_back(s.normals[v]),
+          two.radius.push_back(s.radius[v]);
+    for (auto f : s.facets) {
+      for (int& v : f) v += v >= 0 ? n : 0;
+      two.facets.push_back(f);
+    }
+    const std::vector<double> both = adaptiveSizes(two, o);
+    for (int v = 0; v < 2 * n; ++v) EXPECT_NEAR(both[v], h[v % n], 1e-9 * scale) << "vertex " << v;
   }
 }
 

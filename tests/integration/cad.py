@@ -7,6 +7,7 @@ U-channel of shared/parts/real and on tests/data/robustness/t_junction.step (51,
 """
 import collections
 import contextlib
+import math
 import re
 
 import numpy as np
@@ -37,6 +38,20 @@ def cad_volume(step):
             gmsh.model.occ.addVolume([gmsh.model.occ.addSurfaceLoop([t for _, t in gmsh.model.getEntities(2)])])
             gmsh.model.occ.synchronize()
         return sum(gmsh.model.occ.getMass(3, tag) for _, tag in gmsh.model.getEntities(3))
+
+
+def write_placed(gmsh, path, scale=1.0, turn=0.0, axis=(1, 2, 3)):
+    """The model's solids (Gmsh's OpenCASCADE, built) turned `turn` degrees about `axis` through the origin, scaled by
+    `scale` (Gmsh's dilate, which makes the faces B-splines) and written to `path`."""
+    occ = gmsh.model.occ
+    occ.synchronize()
+    volumes = gmsh.model.getEntities(3)
+    if turn:
+        occ.rotate(volumes, 0, 0, 0, *axis, math.radians(turn))
+    if scale != 1:
+        occ.dilate(volumes, 0, 0, 0, scale, scale, scale)
+    occ.synchronize()
+    gmsh.write(path)
 
 
 def junctions_named(message):

@@ -14,13 +14,13 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from hex_geometry import boundary_euler_characteristic, hex_scaled_jacobians, hex_volumes  # noqa: E402
 
 
-def mesh_step(step, layers, out):
-    """STEP meshed with `layers` layers into the .inp OUT; returns its hexes as hex_arrays gives them (x, hexes, index)
-    and its sets. Raises AssertionError with the CLI's exit code and message if it fails, or if an element is not an
-    8-node hex."""
+def mesh_step(step, layers, out, report=None):
+    """STEP meshed with `layers` layers into the .inp OUT (and its JSON report into `report` if given); returns its
+    hexes as hex_arrays gives them (x, hexes, index) and its sets. Raises AssertionError with the CLI's exit code and
+    message if it fails, or if an element is not an 8-node hex."""
     label = f"{os.path.basename(step)}, {layers} layers"
-    done = subprocess.run([harness.args.hexlayer, "mesh", step, "-o", out, "--layers", str(layers), "--quiet"],
-                          capture_output=True, text=True, timeout=600)
+    done = subprocess.run([harness.args.hexlayer, "mesh", step, "-o", out, "--layers", str(layers), "--quiet",
+                           *(["--report", report] if report else [])], capture_output=True, text=True, timeout=600)
     if done.returncode != 0:
         raise AssertionError(f"{label}: exit {done.returncode}: {done.stderr[-2000:]}")
     nodes, elements, sets = read_inp(out)

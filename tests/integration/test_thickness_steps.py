@@ -13,11 +13,10 @@ volume Gmsh's OpenCASCADE computes (the thin part's volume: a mesh that ran the 
 
 Run by CTest as: /usr/bin/python3 test_thickness_steps.py --hexlayer PATH --source DIR
 """
-import math
 import os
 
 import harness
-from cad import opened, surface_euler_characteristic
+from cad import opened, surface_euler_characteristic, write_placed
 from sample_mesh import MeshTest, boundary_euler_characteristic, check_hexes, check_sample, mesh_step
 
 
@@ -46,14 +45,7 @@ def write_lipped_box(path, height, outer, scale, turn, size=(80, 60, 25), wall=2
         else:
             ring = [(3, occ.addBox(h, h, z - height, x - 2 * h, y - 2 * h, height + 1))]
         occ.cut(box, ring)
-        occ.synchronize()
-        volumes = gmsh.model.getEntities(3)
-        if turn:
-            occ.rotate(volumes, 0, 0, 0, 1, 2, 3, math.radians(turn))
-        if scale != 1:
-            occ.dilate(volumes, 0, 0, 0, scale, scale, scale)
-        occ.synchronize()
-        gmsh.write(path)
+        write_placed(gmsh, path, scale, turn)
     finally:
         gmsh.finalize()
 
