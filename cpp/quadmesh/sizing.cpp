@@ -44,9 +44,33 @@ constexpr double kEdgesRoundLoop = 8;
 // holes, a hole near the rim, a slot): fewer, and a quad spans the gap, its nodes on both rims.
 constexpr double kQuadsAcrossGap = 2;
 // Two rim points face each other across the surface where the chord between them leaves each within this angle of
-// the direction into the surface there (cos 25 degrees): not two points beside each other on a rim, nor round a
-// convex corner (45 degrees at a right angle), nor across the air between two sheets (the chord leaves the surface).
+// the direction into the surface there (cos 25 degrees): not two points beside each other on a rim, nor across the
+// air between two sheets (the chord leaves the surface).
 constexpr double kFacing = 0.9;
+// Two points of one rim loop face each other only if the loop between them is this many times their chord at least:
+// not round a convex corner (1.41 at a right angle) nor across the tip of a gusset (2.6 at 45 degrees; refined, its
+// triangle grid's nodes left the gusset's faces), but across a slot deeper than it is wide.
+constexpr double kAcrossArc = 3;
+
+// Where each rim vertex lies along its rim loop: the length of the loop's edges walked from its first vertex; 0 off
+// the rim. A vertex the rim passes twice gets the first pass's. [in] s. Returns one per vertex.
+std::vector<double> arcAlongRim(const ChordalSurface& s) {
+  std::vector<std::vector<int>> next(s.vertices.size());
+  for (const auto& [edge, uses] : facetEdgeUses(s))
+    if (uses == 1) next[edge.first].push_back(edge.second), next[edge.second].push_back(edge.first);
+  std::vector<double> arc(s.vertices.size(), 0);
+  std::vector<char> walked(s.vertices.size(), 0);
+  for (std::size_t start = 0; start < next.size(); ++start) {
+    if (next[start].empty() || walked[start]) continue;
+    walked[start] = 1;
+    for (int at = static_cast<int>(start), to = next[start].front(); to >= 0 && !walked[to];) {
+      arc[to] = arc[at] + (s.vertices[to] - s.vertices[at]).norm(), walked[to] = 1;
+      const auto ahead = std::find_if(next[to].begin(), next[to].end(), [&](int v) { return !walked[v]; });
+      at = to, to = ahead == next[to].end() ? -1 : *ahead;
+    }
+  }
+  return arc;
+}
 
 // The unit direction into the surface at each rim vertex, in the plane of its rim facets: the mean of its rim edges'
 // directions, each across its edge towards its facet's centre; zero off the rim. [in] s. Returns one per vertex.
@@ -73,10 +97,16 @@ std::vector<Vec3> intoSurface(const ChordalSurface& s) {
   return into;
 }
 
-// The gap across the surface at each rim vertex (the nearest rim vertex facing it, kFacing) if under reach[i];
-// infinity elsewhere. [in] s; [in] reach: per vertex, the farthest gap that matters. Returns one per vertex.
-std::vector<double> gapsAcross(const ChordalSurface& s, const std::vector<double>& reach) {
+// The gap across the surface at each rim vertex (the nearest rim vertex facing it: kFacing, kAcrossArc) if under
+// reach[i]; infinity elsewhere. [in] s; [in] loops: its rim loops; [in] reach: per vertex, the farthest gap that
+// matters. Returns one per vertex.
+std::vector<double> gapsAcross(const ChordalSurface& s, const RimLoops& loops, const std::vector<double>& reach) {
   const std::vector<Vec3> into = intoSurface(s);
+  const std::vector<double> arc = arcAlongRim(s);
+  auto alongLoop = [&](int i, int j) {  // the shorter way round the loop
+    const double apart = std::abs(arc[i] - arc[j]);
+    return std::min(apart, loops.length[loops.loopOf[i]] - apart);
+  };
   std::vector<double> gap(s.vertices.size(), INFINITY);
   double cell = 0;
   for (std::size_t i = 0; i < into.size(); ++i)
@@ -89,7 +119,9 @@ std::vector<double> gapsAcross(const ChordalSurface& s, const std::vector<double
     rim.forEachNear(s.vertices[i], reach[i], [&](int j, const Vec3& q) {
       const Vec3 chord = q - s.vertices[i];
       const double length = chord.norm();
-      if (length > 0 && into[i].dot(chord) > kFacing * length && -into[j].dot(chord) > kFacing * length)
+      const bool apart = loops.loopOf[j] != loops.loopOf[static_cast<int>(i)] ||
+                         alongLoop(static_cast<int>(i), j) >= kAcrossArc * length;
+      if (length > 0 && apart && into[i].dot(chord) > kFacing * length && -into[j].dot(chord) > kFacing * length)
         gap[i] = std::min(gap[i], length);
     });
   }
@@ -128,7 +160,7 @@ std::vector<double> adaptiveSizes(const ChordalSurface& s, const SizingOptions& 
   }
   std::vector<double> reach(h.size());  // a gap wider than kQuadsAcrossGap quads needs nothing
   for (size_t i = 0; i < h.size(); ++i) reach[i] = kQuadsAcrossGap * h[i];
-  const std::vector<double> gap = gapsAcross(s, reach);
+  const std::vector<double> gap = gapsAcross(s, loops, reach);
   for (size_t i = 0; i < h.size(); ++i)
     if (std::isfinite(gap[i])) h[i] = std::min(h[i], std::max(lo, gap[i] / kQuadsAcrossGap));
   limitGradation(s, facetEdges(s), o.gradation, h);

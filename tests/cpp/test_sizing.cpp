@@ -169,6 +169,27 @@ TEST(Sizing, AGapAcrossTheSurfaceHoldsTwoQuadsAcrossIt) {
   }
 }
 
+// A wedge 10 long whose sides meet at 45 degrees (a gusset's tip): its sides face each other across it by their
+// direction into it (22.5 degrees), but the rim between two points across it, round the tip, is only 2.6 times their
+// gap: the tip is not a gap, and every size is the loop's (its length over eight), as without the gap term.
+TEST(Sizing, AWedgesTipIsNoGap) {
+  for (const double scale : {1e-3, 1.0, 1e3}) {
+    ChordalSurface s;
+    const double half = M_PI / 8;
+    s.vertices.push_back(Vec3::Zero());
+    for (int k = 1; k <= 10; ++k)
+      s.vertices.push_back(k * scale * Vec3(std::cos(half), -std::sin(half), 0)),
+          s.vertices.push_back(k * scale * Vec3(std::cos(half), std::sin(half), 0));
+    s.facets.push_back({0, 1, 2, -1});
+    for (int k = 1; k < 10; ++k) s.facets.push_back({2 * k - 1, 2 * k + 1, 2 * k + 2, 2 * k});
+    s.normals.assign(s.vertices.size(), Vec3::UnitZ());
+    s.radius.assign(s.vertices.size(), 0.5 * scale);
+    const std::vector<double> h = adaptiveSizes(s, {4.0 * scale, 1.0 * scale, 16 * scale, 0.3, 0.5});
+    const double loop = (20 + 20 * std::sin(half)) * scale;
+    for (size_t i = 0; i < h.size(); ++i) EXPECT_NEAR(h[i], loop / 8, 1e-9 * scale) << "vertex " << i;
+  }
+}
+
 // A hole whose rim loop is shorter than the smallest quad edge is a pinhole between facets (closed by
 // buildChordalSurface's closePinholes, or too small for any quad): the sizes are not held down round it.
 TEST(Sizing, ALoopShorterThanTheSmallestQuadEdgeIsLeftAlone) {
