@@ -53,10 +53,12 @@ constexpr double kFacing = 0.9;
 constexpr double kAcrossArc = 3;
 
 // Where each rim vertex lies along its rim loop: the length of the loop's edges walked from its first vertex; 0 off
-// the rim. A vertex the rim passes twice gets the first pass's. [in] s. Returns one per vertex.
-std::vector<double> arcAlongRim(const ChordalSurface& s) {
+// the rim. A vertex the rim passes twice gets the first pass's. [in] s; [in] edges: its facetEdgeUses. Returns one
+// per vertex.
+std::vector<double> arcAlongRim(const ChordalSurface& s,
+                                const std::vector<std::pair<std::pair<int, int>, int>>& edges) {
   std::vector<std::vector<int>> next(s.vertices.size());
-  for (const auto& [edge, uses] : facetEdgeUses(s))
+  for (const auto& [edge, uses] : edges)
     if (uses == 1) next[edge.first].push_back(edge.second), next[edge.second].push_back(edge.first);
   std::vector<double> arc(s.vertices.size(), 0);
   std::vector<char> walked(s.vertices.size(), 0);
@@ -73,10 +75,11 @@ std::vector<double> arcAlongRim(const ChordalSurface& s) {
 }
 
 // The unit direction into the surface at each rim vertex, in the plane of its rim facets: the mean of its rim edges'
-// directions, each across its edge towards its facet's centre; zero off the rim. [in] s. Returns one per vertex.
-std::vector<Vec3> intoSurface(const ChordalSurface& s) {
+// directions, each across its edge towards its facet's centre; zero off the rim. [in] s; [in] edges: its
+// facetEdgeUses. Returns one per vertex.
+std::vector<Vec3> intoSurface(const ChordalSurface& s, const std::vector<std::pair<std::pair<int, int>, int>>& edges) {
   std::map<std::pair<int, int>, int> rimEdges;
-  for (const auto& [edge, uses] : facetEdgeUses(s))
+  for (const auto& [edge, uses] : edges)
     if (uses == 1) rimEdges.emplace(edge, 0);
   std::vector<Vec3> into(s.vertices.size(), Vec3::Zero());
   for (const auto& f : s.facets) {
@@ -101,8 +104,9 @@ std::vector<Vec3> intoSurface(const ChordalSurface& s) {
 // reach[i]; infinity elsewhere. [in] s; [in] loops: its rim loops; [in] reach: per vertex, the farthest gap that
 // matters. Returns one per vertex.
 std::vector<double> gapsAcross(const ChordalSurface& s, const RimLoops& loops, const std::vector<double>& reach) {
-  const std::vector<Vec3> into = intoSurface(s);
-  const std::vector<double> arc = arcAlongRim(s);
+  const auto edges = facetEdgeUses(s);  // sorted once for both
+  const std::vector<Vec3> into = intoSurface(s, edges);
+  const std::vector<double> arc = arcAlongRim(s, edges);
   auto alongLoop = [&](int i, int j) {  // the shorter way round the loop
     const double apart = std::abs(arc[i] - arc[j]);
     return std::min(apart, loops.length[loops.loopOf[i]] - apart);
