@@ -1,14 +1,22 @@
 #include "geometry/sheet_edges.hpp"
 
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepLProp_SLProps.hxx>
 #include <BRepOffset_Analyse.hxx>
 #include <BRepOffset_Interval.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Precision.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <set>
+#include <utility>
 
 namespace hexlayer {
 namespace {
@@ -42,12 +50,44 @@ void forEachFacePairEdge(const CadSolid& cad, Visit&& visit) {
   }
 }
 
+constexpr double kSameCurvature = 0.02;  // relative to the larger of the two; and 1e-6 / the part's diagonal
+
+// The mean curvature along the face's outward normal and the Gaussian curvature of `face` at parameter t of `edge`
+// (its pcurve on the face); none where undefined. [in] face, edge, t.
+std::optional<std::pair<double, double>> curvaturesAt(const TopoDS_Face& face, const TopoDS_Edge& edge, double t) {
+  double first, last;
+  const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+  if (pcurve.IsNull()) return std::nullopt;
+  const gp_Pnt2d uv = pcurve->Value(t);
+  const BRepAdaptor_Surface surface(face);
+  BRepLProp_SLProps props(surface, uv.X(), uv.Y(), 2, Precision::Confusion());
+  if (!props.IsCurvatureDefined()) return std::nullopt;
+  const double outward = face.Orientation() == TopAbs_REVERSED ? -1 : 1;
+  return std::make_pair(outward * props.MeanCurvature(), props.GaussianCurvature());
+}
+
 }  // namespace
+
+bool oneSurfaceAcross(const CadSolid& cad, const SheetJoin& j) {
+  if (!j.smooth || j.edge < 0) return false;
+  const TopoDS_Edge& edge = TopoDS::Edge(cad.edges(j.edge + 1));
+  double first, last;
+  BRep_Tool::Range(edge, first, last);
+  const double t = 0.5 * (first + last);
+  const auto a = curvaturesAt(TopoDS::Face(cad.faces(j.a + 1)), edge, t);
+  const auto b = curvaturesAt(TopoDS::Face(cad.faces(j.b + 1)), edge, t);
+  if (!a || !b) return false;
+  const double floor = 1e-6 / cad.diagonal;
+  auto same = [&](double x, double y, double least) {
+    return std::abs(x - y) <= kSameCurvature * std::max(std::abs(x), std::abs(y)) + least;
+  };
+  return same(a->first, b->first, floor) && same(a->second, b->second, floor * floor);
+}
 
 std::vector<SheetJoin> sheetJoins(const CadSolid& cad) {
   std::vector<SheetJoin> joins;
-  forEachFacePairEdge(cad, [&](int, int a, int b, auto has) {
-    if (!has(ChFiDS_Concave)) joins.push_back({a, b, !has(ChFiDS_Convex)});
+  forEachFacePairEdge(cad, [&](int edge, int a, int b, auto has) {
+    if (!has(ChFiDS_Concave)) joins.push_back({a, b, !has(ChFiDS_Convex), edge});
   });
   return joins;
 }

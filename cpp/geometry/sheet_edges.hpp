@@ -13,10 +13,17 @@ namespace hexlayer {
 struct SheetJoin {
   int a = -1, b = -1;   // 0-based faces, a < b
   bool smooth = false;  // tangent edge; else a convex sharp edge (a sharp bend, or a tapered wall's knife edge)
+  int edge = -1;        // 0-based in CadSolid::edges (-1: not from an edge)
 };
 
 // [in] cad: the solid. Returns the pairs of distinct faces sharing an edge that is smooth or convex.
 std::vector<SheetJoin> sheetJoins(const CadSolid& cad);
+
+// Whether faces a and b of smooth join j are one surface across its edge: at the edge's middle their mean curvatures
+// (along the outward normal) and Gaussian curvatures agree (G2), as where a CAD system split a cylinder, a cone or a
+// B-spline into faces; a fillet or a bend's round meets a plane with a step in curvature. [in] cad, j: from
+// sheetJoins. Returns false for a sharp join or where a curvature is undefined.
+bool oneSurfaceAcross(const CadSolid& cad, const SheetJoin& j);
 
 // A CAD edge between two faces (concave and sharp: where a rib, boss or flange may stand on a sheet).
 struct FacePairEdge {

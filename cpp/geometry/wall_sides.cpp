@@ -22,6 +22,7 @@
 
 #include "core/error.hpp"
 #include "core/threads.hpp"
+#include "core/union_find.hpp"
 #include "geometry/bend_rounds.hpp"
 #include "geometry/boundary_triangles.hpp"
 #include "geometry/face_sampling.hpp"
@@ -339,18 +340,35 @@ struct SideRelation {
   bool smooth = false;  // a smooth edge, which no other relation may undo
 };
 
+// Per face, its group of wall faces that are one surface split into faces (oneSurfaceAcross: a pin's round written
+// as two halves, a cylinder in quarters): the smallest face index of the group. Rays crossing from one face of
+// a group to another cross a bar the surface wraps round, as a whole pin's round face meets itself: no wall. [in] cad,
+// w: its sheetJoins and sides.
+std::vector<int> oneSurfaceGroups(const CadSolid& cad, const WallSides& w) {
+  UnionFind groups(w.faces.size());
+  for (const SheetJoin& j : w.sheetJoins)
+    if (w.faces[j.a].side != Side::Lateral && w.faces[j.b].side != Side::Lateral && oneSurfaceAcross(cad, j))
+      groups.unite(j.a, j.b);
+  std::vector<int> group(w.faces.size());
+  for (std::size_t f = 0; f < group.size(); ++f) group[f] = groups.find(static_cast<int>(f));
+  return group;
+}
+
 // The relations in the order they are trusted: smooth edges (a wall runs on through a bend's tangent edge),
-// then faces facing each other across the wall, most ray area first, then convex sharp edges (a sharp bend;
-// the knife edge of a tapered end, where the two faces face each other instead, gives way).
-std::vector<SideRelation> rankedRelations(const WallSides& w, const std::vector<std::map<int, double>>& across) {
+// then faces facing each other across the wall, most ray area first (not two faces of one surface:
+// oneSurfaceGroups), then convex sharp edges (a sharp bend; the knife edge of a tapered end, where the two faces
+// face each other instead, gives way).
+std::vector<SideRelation> rankedRelations(const CadSolid& cad, const WallSides& w,
+                                          const std::vector<std::map<int, double>>& across) {
   auto isWall = [&](int f) { return w.faces[f].side != Side::Lateral; };
+  const std::vector<int> group = oneSurfaceGroups(cad, w);
   std::vector<SideRelation> smooth, opposite, convex;
   for (const SheetJoin& j : w.sheetJoins)  // not across concave edges: a rib's walls are not the sheet's side
     if (isWall(j.a) && isWall(j.b)) (j.smooth ? smooth : convex).push_back({j.a, j.b, 0, 0, j.smooth});
   std::map<std::pair<int, int>, double> pairs;
   for (int f = 0; f < static_cast<int>(across.size()); ++f)
     for (const auto& [g, area] : across[f])
-      if (g != f && isWall(f) && isWall(g)) pairs[std::minmax(f, g)] += area;
+      if (group[g] != group[f] && isWall(f) && isWall(g)) pairs[std::minmax(f, g)] += area;
   for (const auto& [fg, area] : pairs) opposite.push_back({fg.first, fg.second, 1, area});
   std::stable_sort(opposite.begin(), opposite.end(),
                    [](const SideRelation& x, const SideRelation& y) { return x.weight > y.weight; });
@@ -367,7 +385,7 @@ std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, WallSides& w,
   const int n = static_cast<int>(w.faces.size());
   ParityUnionFind uf(n);
   std::vector<double> against(n, 0.0);  // per face, the ray area of its relations across the wall that failed
-  for (const SideRelation& r : rankedRelations(w, across)) {
+  for (const SideRelation& r : rankedRelations(cad, w, across)) {
     if (uf.unite(r.a, r.b, r.relation)) continue;
     if (r.relation == 1)
       against[r.a] += r.weight, against[r.b] += r.weight;

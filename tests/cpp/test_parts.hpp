@@ -4,6 +4,7 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
@@ -99,6 +100,23 @@ inline TopoDS_Solid shortWalledLippedBox(double s) {
   const TopoDS_Shape open = BRepAlgoAPI_Cut(block(0, 0, 0, 40, 45, 12), block(2.5, 2.5, 2.5, 35, 40, 10));
   const TopoDS_Shape ring = BRepAlgoAPI_Cut(block(-1, -1, 8.1, 42, 47, 5), block(1.25, 1.25, 7, 37.5, 42.5, 7));
   return firstSolid(BRepAlgoAPI_Cut(open, ring).Shape());
+}
+
+// [in] s: the scale; [in] pieces: faces of the pin's round; [in] tip: the pin's radius at its top. A 40 x 40 x 2 plate
+// with a solid pin at (20, 20) standing on it, R2 at its foot, `tip` at its top 10 above the plate (a cone if tip < 2),
+// fused from `pieces` wedges of it without unifying faces (as CAD systems write a round in halves or quarters), all
+// lengths times s.
+inline TopoDS_Solid plateWithSplitPin(double s, int pieces, double tip = 2) {
+  TopoDS_Shape part = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 40 * s, 40 * s, 2 * s).Shape();
+  const double angle = 2 * M_PI / pieces;
+  for (int k = 0; k < pieces; ++k) {  // the pin reaches 1 into the plate: 11 long from z = 1
+    const gp_Ax2 axis(gp_Pnt(20 * s, 20 * s, s), gp_Dir(0, 0, 1), gp_Dir(std::cos(k * angle), std::sin(k * angle), 0));
+    const TopoDS_Shape wedge =
+        tip < 2 ? BRepPrimAPI_MakeCone(axis, (2 + (2 - tip) / 10) * s, tip * s, 11 * s, angle).Shape()
+                : BRepPrimAPI_MakeCylinder(axis, 2 * s, 11 * s, angle).Shape();
+    part = BRepAlgoAPI_Fuse(part, wedge).Shape();
+  }
+  return firstSolid(part);
 }
 
 // [in] s: the scale. Points of plateWithManyHoles(s) on and near its edges and vertices: on the holes' rims, the

@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "geometry/cad_solid.hpp"
 #include "geometry/sheet_edges.hpp"
+#include "test_parts.hpp"
 
 using namespace hexlayer;
 
@@ -63,4 +65,23 @@ TEST(SheetEdges, ConcaveEdgesWhereARibStandsJoinNothing) {
     EXPECT_LT(c.a, c.b);
     for (const SheetJoin& j : joins) EXPECT_FALSE(j.a == c.a && j.b == c.b) << "an edge is concave or joins";
   }
+}
+
+// A pin's round written as 2 or 4 faces, a cylinder or a cone (test_parts::plateWithSplitPin), and its top disc so
+// split: every smooth join is between pieces of one surface (the rounds' seams, the discs' radii: 4 joins in
+// halves, 8 in quarters), at x1, 1e-3 and 1e3. The bends and half-round ends of an L-bracket (rims/lbracket_round_ends)
+// meet its planes smoothly with a step in curvature: none of its 8 smooth joins is.
+TEST(SheetEdges, ARoundWrittenInPiecesIsOneSurfaceAcrossItsSeams) {
+  for (double s : {1.0, 1e-3, 1e3})
+    for (const auto& [pieces, tip] : {std::pair{2, 2.0}, std::pair{4, 2.0}, std::pair{2, 1.0}, std::pair{4, 1.0}}) {
+      SCOPED_TRACE("x " + std::to_string(s) + ", " + std::to_string(pieces) + " pieces, tip " + std::to_string(tip));
+      const CadSolid cad = prepareSolid(test_parts::plateWithSplitPin(s, pieces, tip));
+      const std::vector<SheetJoin> joins = sheetJoins(cad);
+      EXPECT_EQ(count(joins, true), 2 * pieces);
+      for (const SheetJoin& j : joins) EXPECT_EQ(oneSurfaceAcross(cad, j), j.smooth) << j.a << " " << j.b;
+    }
+  const CadSolid bracket = readSample("Resources/samples/rims/lbracket_round_ends.step");
+  const std::vector<SheetJoin> joins = sheetJoins(bracket);
+  ASSERT_EQ(count(joins, true), 8);
+  for (const SheetJoin& j : joins) EXPECT_FALSE(oneSurfaceAcross(bracket, j)) << j.a << " " << j.b;
 }

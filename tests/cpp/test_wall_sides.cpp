@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "geometry/cad_solid.hpp"
@@ -175,6 +176,30 @@ TEST(WallSides, AShortWallUnderALedgeIsAWall) {
     }
     EXPECT_EQ(findSheets(cad, w).size(), 1u);
   });
+}
+
+// A pin standing on a plate, its round written as 2 or 4 faces (test_parts::plateWithSplitPin, a cylinder and a cone):
+// the pieces face each other across the pin, as a round of one face meets itself, which is no wall branching
+// (oneSurfaceGroups; before, they were all on one side facing each other: ownSideFaces, the part refused). As with a
+// round of one face, the pin is a sheet of its own standing on the plate: two sheets, the pin's every piece of its
+// round, on one side. At x1, 1e-3 and 1e3.
+TEST(WallSides, APinsRoundWrittenInPiecesIsNoBranch) {
+  for (const auto& [pieces, tip] : {std::pair{2, 2.0}, std::pair{4, 2.0}, std::pair{4, 1.0}}) {
+    SCOPED_TRACE(std::to_string(pieces) + " pieces, tip " + std::to_string(tip));
+    const int n = pieces;
+    const double r = tip;
+    const auto part = [n, r](double s) { return test_parts::plateWithSplitPin(s, n, r); };
+    atEachScale(part, 6 + 2 * static_cast<std::size_t>(n), [n, r](const CadSolid& cad, const WallSides& w, double s) {
+      EXPECT_TRUE(w.ownSideFaces.empty());
+      const std::vector<Sheet> sheets = findSheets(cad, w);
+      ASSERT_EQ(sheets.size(), 2u);
+      ASSERT_EQ(sheets[1].faces.size(), static_cast<std::size_t>(n));
+      for (int f : sheets[1].faces) {
+        EXPECT_EQ(w.faces[f].side, w.faces[sheets[1].faces[0]].side);
+        EXPECT_NEAR(faceCentre(cad, f).z() / s, r < 2 ? 58.0 / 9 : 7, 1e-6);  // the round's area centroid
+      }
+    });
+  }
 }
 
 // A rib standing on a plate still branches the sheet: it is found (here as a second sheet), where it is.

@@ -271,7 +271,8 @@ def write_column(path, shape, scale, turn):
     """Writes test_columns_twins's part as STEP: a 60 x 40 x 2 plate with a column standing on its top at (30, 20), 10
     high: "cone" (R2.2 at the foot to R1 at the top), "wide" (R4), "under" (R2, under the plate), "rim"
     (R2 at (4, 20), 2 from the plate's side), "two" (R1.5 at (15, 20) beside a rib 2 thick along x at y 30..32),
-    "domed" (R2, its tip a hemisphere, 10 high). Scaled and turned
+    "domed" (R2, its tip a hemisphere, 10 high), "halves" (R2, its round written as two faces), "cone_quarters" (the
+    cone, its round written as four faces: fused from wedges, faces not unified). Scaled and turned
     (turned_and_scaled); returns its volume."""
     import gmsh
     gmsh.initialize()
@@ -279,7 +280,17 @@ def write_column(path, shape, scale, turn):
     try:
         occ = gmsh.model.occ
         x = 4 if shape == "rim" else 30
+
+        def wedges(pieces, add):  # the round in pieces, their seams 0.3 rad off the axes
+            gmsh.option.setNumber("Geometry.OCCUnionUnify", 0)
+            tags = [add(2 * np.pi / pieces) for _ in range(pieces)]
+            for k, tag in enumerate(tags):
+                occ.rotate([(3, tag)], 30, 20, 0, 0, 0, 1, 0.3 + 2 * np.pi * k / pieces)
+            return tags
+
         tools = {"cone": lambda: [occ.addCone(30, 20, 1, 0, 0, 11, 2.2, 1.0)],
+                 "halves": lambda: wedges(2, lambda a: occ.addCylinder(30, 20, 1, 0, 0, 11, 2, angle=a)),
+                 "cone_quarters": lambda: wedges(4, lambda a: occ.addCone(30, 20, 1, 0, 0, 11, 2.2, 1.0, angle=a)),
                  "wide": lambda: [occ.addCylinder(30, 20, 1, 0, 0, 11, 4)],
                  "rim": lambda: [occ.addCylinder(x, 20, 1, 0, 0, 11, 2)],
                  "under": lambda: [occ.addCylinder(30, 20, 1, 0, 0, -11, 2)],
@@ -806,7 +817,9 @@ class JunctionMeshing(unittest.TestCase):
         """Columns (column_piece.hpp: no thin sheets, but every line up their axis runs from the foot to the top): a
         cone, a wide pin, a pin under the plate, a pin 2 from the plate's side, a pin beside a rib, a pin with a
         hemispherical tip (its inner nodes put on the dome up the axis); the cone in metres
-        (B-spline faces), turned 30 degrees about a skew axis, and both; 2 layers, and 3 at order 2. (A pin whose tip
+        (B-spline faces), turned 30 degrees about a skew axis, and both; a pin whose round is two faces and the cone's
+        in four, also in metres and turned (refused before as a wall branching: the pieces face each other across the
+        pin, wall_sides.cpp oneSurfaceGroups); 2 layers, and 3 at order 2. (A pin whose tip
         is rounded R0.5 meshes too, the round smoothed over as a fillet narrower than a quad is: no boundary quad is
         grouped with it, not checked here.)"""
         for name, shape, scale, turn, kinds in (
@@ -815,7 +828,10 @@ class JunctionMeshing(unittest.TestCase):
                 ("column_cone_metres", "cone", 1e-3, 0.0, ["column"]),
                 ("column_cone_turned", "cone", 1.0, 30.0, ["column"]),
                 ("column_cone_metres_turned", "cone", 1e-3, 30.0, ["column"]),
-                ("column_under", "under", 1.0, 0.0, ["column"]), ("column_domed", "domed", 1.0, 0.0, ["column"])):
+                ("column_under", "under", 1.0, 0.0, ["column"]), ("column_domed", "domed", 1.0, 0.0, ["column"]),
+                ("column_halves", "halves", 1.0, 0.0, ["column"]),
+                ("column_cone_quarters", "cone_quarters", 1.0, 0.0, ["column"]),
+                ("column_cone_quarters_metres_turned", "cone_quarters", 1e-3, 30.0, ["column"])):
             step = os.path.join(self.tmp.name, name + ".step")
             self.volumes[name] = write_column(step, shape, scale, turn)
             for layers, order in ((2, 1), (3, 2)):
