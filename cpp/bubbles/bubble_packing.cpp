@@ -19,12 +19,14 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "core/error.hpp"
 #include "core/point_grid.hpp"
 #include "core/threads.hpp"
 #include "geometry/cad_solid.hpp"
 #include "geometry/face_sampling.hpp"
+#include "geometry/sheet_edges.hpp"
 #include "geometry/uv_boundary.hpp"
 
 namespace hexlayer {
@@ -118,10 +120,42 @@ double diameterAround(const TopTools_ListOfShape& faces, const CadSolid& cad, co
   return d;
 }
 
-void packVertices(const CadSolid& cad, const WallSides& sides, const std::vector<double>& faceDiameter, Packing& pack) {
-  TopTools_IndexedDataMapOfShapeListOfShape vertexFaces;
+// The edges (0-based) inside a wall where the CAD system split one surface into faces (sheet_edges oneSurfaceAcross: a
+// tube's wall in quarters, a plate's top cut in two): no feature of the wall, packed by the faces' bubbles across
+// them as if the faces were one, not along them, nor their vertices. Not where the pipeline split a face (mixed_faces,
+// butt_joints: pieces of one input face, the line a step in thickness or a joint) nor along a cut face (a junction
+// piece's foot, whose rim the footprint follows). [in] cad, sides.
+std::set<int> oneSurfaceSeams(const CadSolid& cad, const WallSides& sides) {
+  std::set<int> seams;
+  for (const SheetJoin& j : sides.sheetJoins)
+    if (sides.faces[j.a].side != Side::Lateral && sides.faces[j.a].side == sides.faces[j.b].side &&
+        inputFaceOf(cad, j.a) != inputFaceOf(cad, j.b) && !isCutFace(cad, j.a) && !isCutFace(cad, j.b) &&
+        oneSurfaceAcross(cad, j))
+      seams.insert(j.edge);
+  return seams;
+}
+
+// Whether edge e (0-based) is packed: it bounds a top or bottom face, is no degenerate edge nor one of `seams`.
+bool packedEdge(const CadSolid& cad, const WallSides& sides, const TopTools_ListOfShape& faces, int e,
+                const std::set<int>& seams) {
+  return sideAround(faces, cad, sides) != Side::Lateral && !BRep_Tool::Degenerated(TopoDS::Edge(cad.edges(e + 1))) &&
+         !seams.count(e);
+}
+
+// A bubble on every vertex of a top or bottom face but those on seams only (oneSurfaceSeams: none of their edges
+// packed).
+void packVertices(const CadSolid& cad, const WallSides& sides, const std::vector<double>& faceDiameter,
+                  const std::set<int>& seams, Packing& pack) {
+  TopTools_IndexedDataMapOfShapeListOfShape vertexFaces, vertexEdges, edgeFaces;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_VERTEX, TopAbs_FACE, vertexFaces);
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_VERTEX, TopAbs_EDGE, vertexEdges);
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
   for (int v = 1; v <= cad.vertices.Extent(); ++v) {
+    const TopTools_ListOfShape& edges = vertexEdges.FindFromKey(cad.vertices(v));
+    if (!seams.empty() && std::none_of(edges.cbegin(), edges.cend(), [&](const TopoDS_Shape& e) {
+          return packedEdge(cad, sides, edgeFaces.FindFromKey(e), cad.edges.FindIndex(e) - 1, seams);
+        }))
+      continue;
     const TopTools_ListOfShape& faces = vertexFaces.FindFromKey(cad.vertices(v));
     SurfaceNode n;
     n.side = sideAround(faces, cad, sides);
@@ -148,16 +182,16 @@ bool seamInWall(const TopTools_ListOfShape& faces, const CadSolid& cad, const Wa
 }
 
 // 1D packing: with one diameter along the edge, the bubble system's equilibrium is equal
-// arc-length spacing between the two vertex bubbles, which is placed directly.
+// arc-length spacing between the two vertex bubbles, which is placed directly. Not along `seams`.
 void packEdges(const CadSolid& cad, const WallSides& sides, const std::vector<double>& faceDiameter,
-               const BubbleOptions& o, Packing& pack) {
+               const BubbleOptions& o, const std::set<int>& seams, Packing& pack) {
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
   for (int e = 1; e <= cad.edges.Extent(); ++e) {
     const TopoDS_Edge edge = TopoDS::Edge(cad.edges(e));
     const TopTools_ListOfShape& faces = edgeFaces.FindFromKey(edge);
     const Side side = sideAround(faces, cad, sides);
-    if (side == Side::Lateral || BRep_Tool::Degenerated(edge)) continue;
+    if (!packedEdge(cad, sides, faces, e - 1, seams)) continue;
     const BRepAdaptor_Curve curve(edge);
     const double length = GCPnts_AbscissaPoint::Length(curve);
     const double bend = seamInWall(faces, cad, sides) ? 0.0 : maxEdgeCurvature(curve);  // a seam is no feature
@@ -325,8 +359,9 @@ std::vector<SurfaceNode> packBubbles(const CadSolid& cad, const WallSides& sides
       faceDiameter[f] = std::min(faceDiameter[f], gapLimit(gap, thickness));
   }
   Packing pack(o.diameterOverThickness * sides.thickness);
-  packVertices(cad, sides, faceDiameter, pack);
-  packEdges(cad, sides, faceDiameter, o, pack);
+  const std::set<int> seams = oneSurfaceSeams(cad, sides);
+  packVertices(cad, sides, faceDiameter, seams, pack);
+  packEdges(cad, sides, faceDiameter, o, seams, pack);
   packFaces(cad, sides, faceDiameter, o, pack);
   return pack.nodes;
 }

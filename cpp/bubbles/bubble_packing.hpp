@@ -24,7 +24,8 @@ struct BubbleOptions {
   int relaxationSteps = 15;
 };
 
-// Packs bubbles on every edge bounding a top/bottom face, then on every top/bottom face.
+// Packs bubbles on every edge bounding a top/bottom face (not on a seam where a CAD system split one surface of a wall
+// into faces: those are packed as one face), then on every top/bottom face.
 std::vector<SurfaceNode> packBubbles(const CadSolid& cad, const WallSides& sides, const BubbleOptions& options);
 
 // Shimada's inter-bubble force as a function of w = distance / stable distance:
