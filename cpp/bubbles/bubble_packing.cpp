@@ -13,6 +13,7 @@
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -123,14 +124,28 @@ double diameterAround(const TopTools_ListOfShape& faces, const CadSolid& cad, co
 // The edges (0-based) inside a wall where the CAD system split one surface into faces (sheet_edges oneSurfaceAcross: a
 // tube's wall in quarters, a plate's top cut in two): no feature of the wall, packed by the faces' bubbles across
 // them as if the faces were one, not along them, nor their vertices. Not where the pipeline split a face (mixed_faces,
-// butt_joints: pieces of one input face, the line a step in thickness or a joint) nor along a cut face (a junction
-// piece's foot, whose rim the footprint follows). [in] cad, sides.
+// butt_joints: pieces of one input face, the line a step in thickness or a joint), nor along a cut face (a junction
+// piece's foot, whose rim the footprint follows), nor from a concave edge's end (a long wall's face split above a low
+// wall standing on it: the line on from its top, where the hexes turn). [in] cad, sides.
 std::set<int> oneSurfaceSeams(const CadSolid& cad, const WallSides& sides) {
+  std::set<int> junctionVertices;  // the vertices of concave edges (where a wall stands on another)
+  for (const FacePairEdge& c : concaveEdges(cad)) {
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(TopoDS::Edge(cad.edges(c.edge + 1)), first, last);
+    for (const TopoDS_Vertex& v : {first, last})
+      if (!v.IsNull()) junctionVertices.insert(cad.vertices.FindIndex(v));
+  }
+  auto atJunction = [&](int e) {
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(TopoDS::Edge(cad.edges(e + 1)), first, last);
+    return junctionVertices.count(cad.vertices.FindIndex(first)) ||
+           junctionVertices.count(cad.vertices.FindIndex(last));
+  };
   std::set<int> seams;
   for (const SheetJoin& j : sides.sheetJoins)
     if (sides.faces[j.a].side != Side::Lateral && sides.faces[j.a].side == sides.faces[j.b].side &&
         inputFaceOf(cad, j.a) != inputFaceOf(cad, j.b) && !isCutFace(cad, j.a) && !isCutFace(cad, j.b) &&
-        oneSurfaceAcross(cad, j))
+        oneSurfaceAcross(cad, j) && !atJunction(j.edge))
       seams.insert(j.edge);
   return seams;
 }
