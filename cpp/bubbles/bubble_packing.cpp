@@ -16,6 +16,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -128,25 +129,27 @@ double diameterAround(const TopTools_ListOfShape& faces, const CadSolid& cad, co
 // piece's foot, whose rim the footprint follows), nor from a concave edge's end (a long wall's face split above a low
 // wall standing on it: the line on from its top, where the hexes turn). [in] cad, sides.
 std::set<int> oneSurfaceSeams(const CadSolid& cad, const WallSides& sides) {
-  std::set<int> junctionVertices;  // the vertices of concave edges (where a wall stands on another)
-  for (const FacePairEdge& c : concaveEdges(cad)) {
-    TopoDS_Vertex first, last;
-    TopExp::Vertices(TopoDS::Edge(cad.edges(c.edge + 1)), first, last);
-    for (const TopoDS_Vertex& v : {first, last})
-      if (!v.IsNull()) junctionVertices.insert(cad.vertices.FindIndex(v));
-  }
-  auto atJunction = [&](int e) {
-    TopoDS_Vertex first, last;
-    TopExp::Vertices(TopoDS::Edge(cad.edges(e + 1)), first, last);
-    return junctionVertices.count(cad.vertices.FindIndex(first)) ||
-           junctionVertices.count(cad.vertices.FindIndex(last));
-  };
-  std::set<int> seams;
+  std::vector<int> candidates;
   for (const SheetJoin& j : sides.sheetJoins)
     if (sides.faces[j.a].side != Side::Lateral && sides.faces[j.a].side == sides.faces[j.b].side &&
         inputFaceOf(cad, j.a) != inputFaceOf(cad, j.b) && !isCutFace(cad, j.a) && !isCutFace(cad, j.b) &&
-        oneSurfaceAcross(cad, j) && !atJunction(j.edge))
-      seams.insert(j.edge);
+        oneSurfaceAcross(cad, j))
+      candidates.push_back(j.edge);
+  if (candidates.empty()) return {};  // most parts: no edge analysis for the concave edges
+  auto vertices = [&](int e) {
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(TopoDS::Edge(cad.edges(e + 1)), first, last);
+    return std::array<int, 2>{cad.vertices.FindIndex(first), cad.vertices.FindIndex(last)};  // 0: none
+  };
+  std::set<int> junctionVertices;  // the vertices of concave edges (where a wall stands on another)
+  for (const FacePairEdge& c : concaveEdges(cad))
+    for (int v : vertices(c.edge))
+      if (v > 0) junctionVertices.insert(v);
+  std::set<int> seams;
+  for (int e : candidates) {
+    const std::array<int, 2> ends = vertices(e);
+    if (!junctionVertices.count(ends[0]) && !junctionVertices.count(ends[1])) seams.insert(e);
+  }
   return seams;
 }
 
@@ -163,14 +166,18 @@ void packVertices(const CadSolid& cad, const WallSides& sides, const std::vector
                   const std::set<int>& seams, Packing& pack) {
   TopTools_IndexedDataMapOfShapeListOfShape vertexFaces, vertexEdges, edgeFaces;
   TopExp::MapShapesAndAncestors(cad.solid, TopAbs_VERTEX, TopAbs_FACE, vertexFaces);
-  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_VERTEX, TopAbs_EDGE, vertexEdges);
-  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  if (!seams.empty()) {  // the maps for onSeamsOnly
+    TopExp::MapShapesAndAncestors(cad.solid, TopAbs_VERTEX, TopAbs_EDGE, vertexEdges);
+    TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  }
+  auto onSeamsOnly = [&](const TopoDS_Shape& vertex) {
+    const TopTools_ListOfShape& edges = vertexEdges.FindFromKey(vertex);
+    return std::none_of(edges.cbegin(), edges.cend(), [&](const TopoDS_Shape& e) {
+      return packedEdge(cad, sides, edgeFaces.FindFromKey(e), cad.edges.FindIndex(e) - 1, seams);
+    });
+  };
   for (int v = 1; v <= cad.vertices.Extent(); ++v) {
-    const TopTools_ListOfShape& edges = vertexEdges.FindFromKey(cad.vertices(v));
-    if (!seams.empty() && std::none_of(edges.cbegin(), edges.cend(), [&](const TopoDS_Shape& e) {
-          return packedEdge(cad, sides, edgeFaces.FindFromKey(e), cad.edges.FindIndex(e) - 1, seams);
-        }))
-      continue;
+    if (!seams.empty() && onSeamsOnly(cad.vertices(v))) continue;
     const TopTools_ListOfShape& faces = vertexFaces.FindFromKey(cad.vertices(v));
     SurfaceNode n;
     n.side = sideAround(faces, cad, sides);
