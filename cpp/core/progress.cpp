@@ -4,6 +4,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/error.hpp"
+
 namespace hexlayer {
 
 std::string Progress::line() const {
@@ -48,6 +50,43 @@ Progress progressFinish(const std::string& stage, double seconds) {
 
 void reportProgress(const ProgressCallback& progress, const Progress& event) {
   if (progress) progress(event);
+}
+
+ProgressCallback ProgressRelay::callback() {
+  return [this](const Progress& event) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (stopped_) throw internalError("stopped: the work beside it failed");
+    queue_.push_back(event);
+    changed_.notify_one();
+  };
+}
+
+void ProgressRelay::close() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  closed_ = true;
+  changed_.notify_one();
+}
+
+void ProgressRelay::stop() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  stopped_ = true;
+}
+
+void ProgressRelay::forward(bool untilClosed) {
+  for (;;) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (untilClosed) changed_.wait(lock, [&] { return closed_ || !queue_.empty(); });
+    if (queue_.empty()) return;  // every event so far handed on (closed, if untilClosed)
+    const Progress event = std::move(queue_.front());
+    queue_.pop_front();
+    lock.unlock();
+    try {
+      reportProgress(progress_, event);
+    } catch (...) {
+      stop();
+      throw;
+    }
+  }
 }
 
 }  // namespace hexlayer

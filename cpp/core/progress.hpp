@@ -3,7 +3,10 @@
 // the running stage from it (a bar on a terminal, plain lines otherwise), `--machine` hands it to the FreeCAD
 // workbench's progress bar, the Python module passes the lines on.
 #pragma once
+#include <condition_variable>
+#include <deque>
 #include <functional>
+#include <mutex>
 #include <string>
 
 namespace hexlayer {
@@ -34,5 +37,30 @@ Progress progressFinish(const std::string& stage, double seconds);
 
 // Calls progress(event) if progress is set. [in] progress: may be empty; [in] event.
 void reportProgress(const ProgressCallback& progress, const Progress& event);
+
+// The events of work running on a thread of its own, handed to a callback on the thread that waits for it: a callback
+// is called on one thread only (the Python module's takes the GIL), the events in their order.
+class ProgressRelay {
+ public:
+  // [in] progress: the waiting thread's callback (may be empty).
+  explicit ProgressRelay(ProgressCallback progress) : progress_(std::move(progress)) {}
+  // The callback the work reports through: its events are queued; once stop() was called it throws instead, which
+  // ends the work at its next event.
+  ProgressCallback callback();
+  // The work is done, whichever way it ended (called on its thread).
+  void close();
+  // The work is no longer wanted.
+  void stop();
+  // On the waiting thread: hands on the events queued so far, or (untilClosed) those and the ones to come until
+  // close(). An exception of the callback stops the work (stop()) and leaves this function. [in] untilClosed.
+  void forward(bool untilClosed);
+
+ private:
+  ProgressCallback progress_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<Progress> queue_;
+  bool closed_ = false, stopped_ = false;
+};
 
 }  // namespace hexlayer

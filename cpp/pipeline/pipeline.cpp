@@ -1,13 +1,18 @@
 #include "pipeline/pipeline.hpp"
 
+#include <BRepBuilderAPI_Copy.hxx>
 #include <Bnd_Box.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <functional>
+#include <future>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -21,6 +26,8 @@
 #include "core/append.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "core/progress.hpp"
+#include "core/threads.hpp"
 #include "geometry/boundary_triangles.hpp"
 #include "geometry/butt_joints.hpp"
 #include "geometry/cad_faces.hpp"
@@ -555,16 +562,31 @@ std::pair<MeshResult, bool> pieceHexes(const TopoDS_Solid& solid, bool foundColu
       "45 degrees to its sides, or a face of it overhangs the foot), which is not meshed yet");
 }
 
+// Whether sheets of the cut stand on piece s. [in] cut, s.
+bool carriesFeet(const JunctionCut& cut, int s) {
+  return std::any_of(cut.feet.begin(), cut.feet.end(), [&](const Foot& f) { return f.base == s; });
+}
+
 // Meshes piece s with its quads carrying the footprints on it, joins its hexes to t.joined and keeps its own feet
-// (in joined's nodes). [in] o: in the pipeline's units; [in] tolerance: how near a node lies to its foot's plane;
-// [in] wallShare: of the wall's thickness, how far a column's end may be from its foot node. [in,out] t; [in,out]
-// boxes: the faces' exact boxes, shared with the part and the other pieces.
-void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance, double wallShare, double columnSize,
-               FaceBoxes& boxes) {
+// (in joined's nodes). [in] solid: the piece's (t.cut.pieces[s] or a copy); [in] o: in the pipeline's units;
+// [in] tolerance: how near a node lies to its foot's plane; [in] wallShare: of the wall's thickness, how far a
+// column's end may be from its foot node. [in,out] t; [in,out] boxes: the faces' exact boxes, shared with the part
+// and the other pieces. [in] feetMeshed: empty if the pieces standing on s are meshed; else waits until they are
+// (throwing their error), called where the piece's quads take their footprints (a sheet that stands on none).
+void meshPiece(JunctionPieces& t, int s, const TopoDS_Solid& solid, const MeshOptions& o, double tolerance,
+               double wallShare, double columnSize, FaceBoxes& boxes, const std::function<void()>& feetMeshed) {
   const int pieces = static_cast<int>(t.cut.pieces.size());
   reportProgress(o.progress, progressNote("", "piece " + std::to_string(pieces - s) + " of " + std::to_string(pieces)));
   std::vector<int> footNode;
-  const FootprintQuads footprint = footprintsOn(t, s, footNode);
+  FootprintQuads footprint;
+  bool footprintTaken = false;
+  const auto takeFootprint = [&] {  // once the pieces standing on s are meshed
+    if (footprintTaken) return;
+    if (feetMeshed) feetMeshed();
+    footprint = footprintsOn(t, s, footNode), footprintTaken = true;
+  };
+  if (!feetMeshed) takeFootprint();
+  const bool carries = feetMeshed ? carriesFeet(t.cut, s) : !footprint.quads.empty();
   std::vector<int> column;           // per footprint node, the sheet's quad node under it
   MergedFootprints merged;           // its shift in the part's units
   std::vector<FootSurface> ownFeet;  // the piece's feet on the sheets it stands on
@@ -588,6 +610,7 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
   double aligned = 0;  // the reach alignFootAcross had (0: it put no rim node across)
   // the sheet's quads made to carry the footprints of the walls standing on it
   const QuadEdit carryFootprints = [&](const CadSolid& c, QuadStage& stage) {
+    takeFootprint();
     if (const double reach = meanEdge(stage.quads) / c.unit;
         alignFootAcross(stage.quads, ownFeet, across, c.unit, reach))
       aligned = reach;
@@ -623,8 +646,9 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
   const HexEdit snapAcross = [&](const CadSolid& c, const QuadStage& stage, HexMesh& mesh) {
     if (aligned > 0) snapFootColumnsAcross(mesh, stage.quads, ownFeet, across, c.unit, kAcrossReach * aligned);
   };
-  auto [piece, isColumn] = pieceHexes(t.cut.pieces[s], t.columns[s] != 0, s > 0, !footprint.quads.empty(), own,
-                                      carryFootprints, snapAcross, cutFaces, columnSize, columnFeet, boxes);
+  auto [piece, isColumn] = pieceHexes(solid, t.columns[s] != 0, s > 0, carries, own, carryFootprints, snapAcross,
+                                      cutFaces, columnSize, columnFeet, boxes);
+  takeFootprint();
   std::vector<int> shared(piece.mesh.nodes.size(), -1);
   if (!footprint.quads.empty()) {
     const double reach = wallShare * piece.report.thickness + merged.shift;
@@ -648,6 +672,93 @@ void meshPiece(JunctionPieces& t, int s, const MeshOptions& o, double tolerance,
   t.reports[s] = std::move(piece.report);
 }
 
+// One piece meshed by meshPiece: [in] s, solid, o, boxes, feetMeshed as meshPiece's.
+using MeshOne = std::function<void(int s, const TopoDS_Solid& solid, const MeshOptions& o, FaceBoxes& boxes,
+                                   const std::function<void()>& feetMeshed)>;
+
+// Whether the base (piece 0) may be meshed beside the walls standing on it: it stands on no piece (only its quads'
+// footprints wait for the others), and it is no column. [in] t: the cut.
+bool baseBeside(const JunctionPieces& t) {
+  return t.cut.pieces.size() > 1 && !t.columns[0] &&
+         std::none_of(t.cut.feet.begin(), t.cut.feet.end(), [](const Foot& f) { return f.sheet == 0; });
+}
+
+// The boxes `from` keeps for the faces of `a`, kept in `to` for the faces of `b` (a copy of a: its faces in order).
+void copyBoxes(const FaceBoxes& from, const TopoDS_Shape& a, FaceBoxes& to, const TopoDS_Shape& b) {
+  TopExp_Explorer i(a, TopAbs_FACE), j(b, TopAbs_FACE);
+  for (; i.More() && j.More(); i.Next(), j.Next())
+    if (const Bnd_Box* box = from.find(TopoDS::Face(i.Current()))) to.keep(TopoDS::Face(j.Current()), *box);
+}
+
+// The walls (pieces 1 ..) meshed as meshJunctionPieces does, on a thread of their own, and the base beside them (on
+// this thread; with one thread, after them) up to where its quads take their footprints, then to its end: its stages
+// before do not depend on the walls. The base is meshed from a copy of its solid made before the walls (they share
+// faces with it, whose triangles their stages make): the same result on any number of threads. Progress reaches
+// o.progress on this thread, the walls' events first (as they come, at the base's events), the base's after them; the
+// walls' error is thrown before the base's, as when meshed one after the other; a progress callback's exception (a
+// cancel) stops the walls at their next event. [in,out] t; [in] mesh: meshes one piece; [in] o; [in,out] boxes: as
+// meshPiece's.
+void meshWallsAndBase(JunctionPieces& t, const MeshOne& mesh, const MeshOptions& o, FaceBoxes& boxes) {
+  const TopoDS_Solid base = TopoDS::Solid(BRepBuilderAPI_Copy(t.cut.pieces[0], true, true).Shape());
+  FaceBoxes baseBoxes;
+  copyBoxes(boxes, t.cut.pieces[0], baseBoxes, base);
+  const auto walls = [&](const MeshOptions& wo) {
+    for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s > 0; --s) mesh(s, t.cut.pieces[s], wo, boxes, {});
+  };
+  if (threadCount() < 2) {
+    walls(o);
+    mesh(0, base, o, baseBoxes, {});
+  } else {
+    ProgressRelay relay(o.progress);
+    MeshOptions wallOptions = o;
+    wallOptions.progress = relay.callback();
+    const std::shared_future<void> wallsMeshed = std::async(std::launch::async, [&] {
+                                                   struct Closing {
+                                                     ProgressRelay& relay;
+                                                     ~Closing() { relay.close(); }
+                                                   } closing{relay};
+                                                   walls(wallOptions);
+                                                 }).share();
+    bool handedOn = false, cancelled = false;  // the walls' events and result; a callback threw
+    std::vector<Progress> held;                // the base's events until the walls' are handed on
+    const auto guarded = [&](const auto& report) {
+      try {
+        report();
+      } catch (...) {
+        cancelled = true;
+        throw;
+      }
+    };
+    const auto waitForWalls = [&] {  // their events handed on, then their error thrown, then the base's events
+      if (handedOn) return;
+      guarded([&] { relay.forward(true); });
+      handedOn = true;
+      wallsMeshed.get();
+      for (const Progress& event : held) guarded([&] { reportProgress(o.progress, event); });
+    };
+    MeshOptions own = o;
+    own.progress = [&](const Progress& event) {
+      if (!handedOn && wallsMeshed.wait_for(std::chrono::seconds(0)) == std::future_status::ready) waitForWalls();
+      if (handedOn) return guarded([&] { reportProgress(o.progress, event); });
+      guarded([&] { relay.forward(false); });
+      held.push_back(event);
+    };
+    try {
+      mesh(0, base, own, baseBoxes, waitForWalls);
+    } catch (...) {
+      if (cancelled) {
+        relay.stop();
+        throw;  // the walls waited for at wallsMeshed's end
+      }
+      const std::exception_ptr error = std::current_exception();
+      relay.forward(true);
+      wallsMeshed.get();  // the walls' error first
+      std::rethrow_exception(error);
+    }
+  }
+  copyBoxes(baseBoxes, base, boxes, t.cut.pieces[0]);
+}
+
 // [in] cad, sides, sheets (the sheet stood on, then the standing ones); [in] o: in the pipeline's units; [in,out]
 // clock; [in,out] boxes: the faces' exact boxes (meshPiece). Throws the pieces' errors.
 JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
@@ -661,13 +772,21 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
   // smoothed after the sweep, and in a bend its chordal facets are coarser than the wall), then is the foot's node.
   MeshOptions piece = o;
   piece.force = true;
-  for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s) try {
-      meshPiece(t, s, piece, kOnFoot * sides.thickness / o.layers, 0.5, o.size > 0 ? o.size : sides.thickness, boxes);
+  const MeshOne mesh = [&](int s, const TopoDS_Solid& solid, const MeshOptions& po, FaceBoxes& b,
+                           const std::function<void()>& feetMeshed) {
+    try {
+      meshPiece(t, s, solid, po, kOnFoot * sides.thickness / o.layers, 0.5, o.size > 0 ? o.size : sides.thickness, b,
+                feetMeshed);
     } catch (const Error& e) {  // the part was read and checked: a piece that is no valid solid is the cut's doing
       if (e.code() != ExitCode::BadInput) throw;
       throw geometryError("the cut at the junctions gave a piece that is no valid solid (" + std::string(e.what()) +
                           "), as where a boss is merged into a box's wall: such a cut is not made yet");
     }
+  };
+  if (baseBeside(t))
+    meshWallsAndBase(t, mesh, piece, boxes);
+  else
+    for (int s = static_cast<int>(t.cut.pieces.size()) - 1; s >= 0; --s) mesh(s, t.cut.pieces[s], piece, boxes, {});
   return t;
 }
 

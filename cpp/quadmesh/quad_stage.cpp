@@ -11,6 +11,7 @@
 #include "chordal/chordal_fairing.hpp"
 #include "chordal/chordal_locator.hpp"
 #include "core/error.hpp"
+#include "core/threads.hpp"
 
 namespace hexlayer {
 namespace {
@@ -52,11 +53,11 @@ QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const Q
                                         [](const PatchSplit& split) { return split.ownPatches; }),
                          qo.patchSplits.end());
   }
-  if (o.adaptive) qo.vertexSize = adaptiveSizes(stage.chordal, o.sizing);
   if (o.adaptive) {  // §6.1's radius term only: the own patches' and the patch grid's creases are their curves
     SizingOptions withoutCurvature = o.sizing;
     withoutCurvature.turnPerQuad = std::numeric_limits<double>::infinity();
-    qo.ownPatchSize = adaptiveSizes(stage.chordal, withoutCurvature);
+    sideBySide({[&] { qo.vertexSize = adaptiveSizes(stage.chordal, o.sizing); },
+                [&] { qo.ownPatchSize = adaptiveSizes(stage.chordal, withoutCurvature); }});
   }
   const double levels = static_cast<double>(std::size(kFairingIterations));
   if (o.progress)

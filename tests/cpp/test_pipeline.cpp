@@ -14,7 +14,11 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "core/error.hpp"
 #include "pipeline/pipeline.hpp"
@@ -195,6 +199,49 @@ TEST(Pipeline, ProgressStartsAndEndsEveryStage) {
   EXPECT_EQ(finished, r.report.stages.size());
   EXPECT_EQ(r.report.quadMesh.tries.run, 0u) << "a box is one grid: no Gmsh try";
   EXPECT_GT(r.report.quadMesh.budgetSeconds, 10);
+}
+
+// A part with walls standing on it (issue 18) is meshed piece by piece, the base sheet on this thread beside the walls
+// on another (pipeline.cpp, meshWallsAndBase): every progress event still comes on the calling thread, the pieces'
+// notes in order, each stage started and ended within its piece; the same hexes at 1 and 2 threads. A callback that
+// throws (a cancel) during the walls or the base ends the run with its exception.
+TEST(Pipeline, AJunctionPartsProgressComesOnTheCallingThreadPieceByPiece) {
+  const TopoDS_Solid ribs = test_boxes::boxes({{0, 0, 0, 60, 40, 2}, {0, 9, 2, 60, 2, 12}, {0, 29, 2, 60, 2, 12}}, 1);
+  MeshOptions o;
+  std::vector<Progress> events;
+  std::vector<std::thread::id> threads;
+  o.progress = [&](const Progress& p) { events.push_back(p), threads.push_back(std::this_thread::get_id()); };
+  const MeshResult r = meshSolid(ribs, o);
+  ASSERT_EQ(r.report.junctions.size(), 2u);
+  std::vector<std::string> pieces;
+  std::string running;
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const Progress& p = events[i];
+    EXPECT_EQ(threads[i], std::this_thread::get_id()) << p.line();
+    if (p.kind == Progress::Kind::Note && p.note.rfind("piece ", 0) == 0) {
+      EXPECT_EQ(running, "") << p.note << " inside " << running;
+      pieces.push_back(p.note);
+    }
+    if (p.kind == Progress::Kind::Start) running = p.stage;
+    if (p.kind == Progress::Kind::Finish) running.clear();
+  }
+  EXPECT_EQ(pieces, (std::vector<std::string>{"piece 1 of 3", "piece 2 of 3", "piece 3 of 3"}));
+#ifdef _OPENMP
+  const int threadsBefore = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const MeshResult one = meshSolid(ribs, MeshOptions{});
+  omp_set_num_threads(threadsBefore);
+  EXPECT_EQ(one.mesh.nodes, r.mesh.nodes);
+  EXPECT_EQ(one.mesh.hexes, r.mesh.hexes);
+#endif
+  struct Cancelled {};
+  for (const std::string& at : {std::string("piece 2 of 3"), std::string("piece 3 of 3")}) {
+    MeshOptions cancel;
+    cancel.progress = [&](const Progress& p) {
+      if (p.note == at) throw Cancelled{};
+    };
+    EXPECT_THROW(meshSolid(ribs, cancel), Cancelled) << "cancelled at " << at;
+  }
 }
 
 // Walls ending part way up the walls they meet, which run on flush with their outside (butt_joints.hpp): an open box's
