@@ -645,12 +645,22 @@ void checkGapQuads(const QuadMesh& q, const std::vector<Surface>& surfaces) {
 }
 
 // The gap's quads on the sheet: its boundary nodes where they are, the others lifted from the plane onto the chordal
-// surface and smoothed (quad_smoothing; the boundary stays). [in] at: every node so far (the first at.size() of
-// the quads'); [in] map, chordal; [in,out] q: Gmsh's quads in the map, then on the sheet. Returns the worst
-// quad's scaled Jacobian, turned the map's way (<= 0: one is folded).
-double smoothGap(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal, QuadMesh& q) {
+// surface. [in] at: every node so far (the first at.size() of the quads'); [in] map, chordal; [in,out] q: Gmsh's
+// quads in the map, then on the sheet.
+void liftGap(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal, QuadMesh& q) {
   for (std::size_t n = 0; n < q.nodes.size(); ++n)
     q.nodes[n] = n < at.size() ? at[n] : chordal.locate(map.lift({q.nodes[n].x(), q.nodes[n].y()})).point;
+}
+
+// A gap quad's scaled Jacobian on the sheet, turned the map's way. [in] map; [in] nodes, quad.
+double onSheet(const GapMap& map, const std::vector<Vec3>& nodes, const Quad& quad) {
+  const std::array<Vec3, 4> c{nodes[quad[0]], nodes[quad[1]], nodes[quad[2]], nodes[quad[3]]};
+  return quadScaledJacobian(c, map.normal(0.25 * (c[0] + c[1] + c[2] + c[3])));
+}
+
+// The gap's quads on the sheet (liftGap's) smoothed (quad_smoothing; the boundary stays).
+// [in] map, chordal; [in,out] q. Returns the worst quad's scaled Jacobian, turned the map's way (<= 0: one is folded).
+double smoothGap(const GapMap& map, const ChordalLocator& chordal, QuadMesh& q) {
   QuadMesh local;  // the gap's nodes only
   std::map<int, int> index;
   std::vector<int> of;
@@ -666,10 +676,7 @@ double smoothGap(const std::vector<Vec3>& at, const GapMap& map, const ChordalLo
   smoothQuadMesh(local, chordal, kSmoothing, false);
   for (std::size_t l = 0; l < of.size(); ++l) q.nodes[of[l]] = local.nodes[l];
   double worst = 1;
-  for (const Quad& quad : q.quads) {
-    const std::array<Vec3, 4> c{q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]};
-    worst = std::min(worst, quadScaledJacobian(c, map.normal(0.25 * (c[0] + c[1] + c[2] + c[3]))));
-  }
+  for (const Quad& quad : q.quads) worst = std::min(worst, onSheet(map, q.nodes, quad));
   return worst;
 }
 
@@ -788,19 +795,29 @@ std::array<int, 6> hexagonOf(const Quad& a, int k, const Quad& b) {
   return {a[(k + 1) % 4], a[(k + 2) % 4], a[(k + 3) % 4], a[k], b[(at + 1) % 4], b[(at + 2) % 4]};
 }
 
-// Quads a (poor) and b (its neighbour) split anew the best way (hexagonSplits), if that is better than both: a node
-// at the hexagon's centroid added to q's if used. [in,out] q; [in] a, b: indices of its quads; [in] k: their edge, from
-// a's corner k. Returns whether they were.
-bool splitPairAnew(QuadMesh& q, int a, int b, int k) {
+// A quad's quality: its scaled Jacobian in the plane (worstInPlane) or on the sheet (onSheet). [in] nodes, quad.
+using QuadQuality = std::function<double(const std::vector<Vec3>& nodes, const Quad& quad)>;
+
+// The worst of the quads by `quality`. [in] quality, nodes, quads.
+double worstBy(const QuadQuality& quality, const std::vector<Vec3>& nodes, const std::vector<Quad>& quads) {
+  double worst = 1;
+  for (const Quad& quad : quads) worst = std::min(worst, quality(nodes, quad));
+  return worst;
+}
+
+// Quads a (poor) and b (its neighbour) split anew the best way (hexagonSplits), if that is better than both by
+// `quality`: a node at the hexagon's centroid added to q's if used. [in,out] q; [in] a, b: indices of its quads;
+// [in] k: their edge, from a's corner k; [in] quality. Returns whether they were.
+bool splitPairAnew(QuadMesh& q, int a, int b, int k, const QuadQuality& quality) {
   const std::array<int, 6> h = hexagonOf(q.quads[a], k, q.quads[b]);
   Vec3 centroid = Vec3::Zero();
   for (int n : h) centroid += q.nodes[n] / 6;
   q.nodes.push_back(centroid);
   const int centre = static_cast<int>(q.nodes.size()) - 1;
   std::vector<Quad> best;
-  double bestWorst = worstInPlane(q.nodes, {q.quads[a], q.quads[b]});
+  double bestWorst = worstBy(quality, q.nodes, {q.quads[a], q.quads[b]});
   for (const std::vector<Quad>& way : hexagonSplits(h, centre))
-    if (const double w = worstInPlane(q.nodes, way); w > bestWorst) best = way, bestWorst = w;
+    if (const double w = worstBy(quality, q.nodes, way); w > bestWorst) best = way, bestWorst = w;
   if (best.size() < 3) q.nodes.pop_back();
   if (best.empty()) return false;
   q.quads[a] = best[0], q.quads[b] = best[1];
@@ -808,35 +825,48 @@ bool splitPairAnew(QuadMesh& q, int a, int b, int k) {
   return true;
 }
 
-// Gmsh's quads of the gap, in the plane, with a poor one (below kFlat: where Blossom left two triangles in an acute
-// corner, paired by quad_completion, three boundary nodes in a line) split anew with a neighbour (splitPairAnew)
-// while that makes them better. [in,out] q.
-void repairPoorQuads(QuadMesh& q) {
+// Gmsh's quads of the gap with a poor one (below kFlat by `quality`: in the plane, where Blossom left two triangles in
+// an acute corner, paired by quad_completion, three boundary nodes in a line; on the sheet, where the map bent such a
+// corner straight) split anew with a neighbour (splitPairAnew) while that makes them better. [in,out] q; [in]
+// quality. Returns whether any was.
+bool repairPoorQuads(QuadMesh& q, const QuadQuality& quality) {
+  bool repaired = false;
   for (std::size_t tries = 0; tries <= q.quads.size(); ++tries) {
     std::map<std::pair<int, int>, std::vector<int>> quadsOf;
     for (int i = 0; i < static_cast<int>(q.quads.size()); ++i)
       for (int c = 0; c < 4; ++c) quadsOf[std::minmax(q.quads[i][c], q.quads[i][(c + 1) % 4])].push_back(i);
     bool split = false;
     for (int i = 0; !split && i < static_cast<int>(q.quads.size()); ++i) {
-      if (worstInPlane(q.nodes, {q.quads[i]}) >= kFlat) continue;
+      if (quality(q.nodes, q.quads[i]) >= kFlat) continue;
       for (int c = 0; !split && c < 4; ++c)
         for (int j : quadsOf[std::minmax(q.quads[i][c], q.quads[i][(c + 1) % 4])])
-          if (j != i && !split) split = splitPairAnew(q, i, j, c);
+          if (j != i && !split) split = splitPairAnew(q, i, j, c, quality);
     }
-    if (!split) return;
+    if (!split) return repaired;
+    repaired = true;
   }
+  return repaired;
 }
 
 // One try at the gap: Gmsh's quads of the surfaces (the wedge quads added), checked to fill the gap, smoothed on the
-// sheet. [in] at: every node so far; [in] map, chordal; [in] surfaces: the gap's; [in] cut: what Gmsh meshes;
-// [in] q: Gmsh's quads (finishGapQuads). Returns the quads; [out] worst: the worst's scaled Jacobian (smoothGap).
-// Throws geometryError if its quads do not fill the gap.
+// sheet; where a quad is then still poor, it and a neighbour split anew on the sheet and smoothed again. [in] at: every
+// node so far; [in] map, chordal; [in] surfaces: the gap's; [in] cut: what Gmsh meshes; [in] q: Gmsh's quads
+// (finishGapQuads). Returns the quads; [out] worst: the worst's scaled Jacobian (smoothGap). Throws geometryError if
+// its quads do not fill the gap.
 QuadMesh gapTry(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
                 const std::vector<Surface>& surfaces, const WedgeCut& cut, QuadMesh q, double& worst) {
   q.quads.insert(q.quads.end(), cut.quads.begin(), cut.quads.end());
-  repairPoorQuads(q);
+  repairPoorQuads(q, [](const std::vector<Vec3>& nodes, const Quad& quad) { return worstInPlane(nodes, {quad}); });
   checkGapQuads(q, surfaces);
-  worst = smoothGap(at, map, chordal, q);
+  liftGap(at, map, chordal, q);
+  worst = smoothGap(map, chordal, q);
+  const std::size_t lifted = q.nodes.size();
+  if (worst < kFlat &&  // the map bent angles: three boundary nodes nearly in a line on the sheet, not in the plane
+      repairPoorQuads(q, [&](const std::vector<Vec3>& nodes, const Quad& quad) { return onSheet(map, nodes, quad); })) {
+    for (std::size_t n = lifted; n < q.nodes.size(); ++n) q.nodes[n] = chordal.locate(q.nodes[n]).point;
+    checkGapQuads(q, surfaces);
+    worst = smoothGap(map, chordal, q);
+  }
   return q;
 }
 
