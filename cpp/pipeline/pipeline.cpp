@@ -696,8 +696,8 @@ void copyBoxes(const FaceBoxes& from, const TopoDS_Shape& a, FaceBoxes& to, cons
 // faces with it, whose triangles their stages make): the same result on any number of threads. Progress reaches
 // o.progress on this thread, the walls' events first (as they come, at the base's events), the base's after them; the
 // walls' error is thrown before the base's, as when meshed one after the other; a progress callback's exception (a
-// cancel) stops the walls at their next event. [in,out] t; [in] mesh: meshes one piece; [in] o; [in,out] boxes: as
-// meshPiece's.
+// cancel) stops the walls at their next event. The base's report counts its own work: its wait for the walls is not
+// in its footprints' stage. [in,out] t; [in] mesh: meshes one piece; [in] o; [in,out] boxes: as meshPiece's.
 void meshWallsAndBase(JunctionPieces& t, const MeshOne& mesh, const MeshOptions& o, FaceBoxes& boxes) {
   const TopoDS_Solid base = TopoDS::Solid(BRepBuilderAPI_Copy(t.cut.pieces[0], true, true).Shape());
   FaceBoxes baseBoxes;
@@ -729,9 +729,12 @@ void meshWallsAndBase(JunctionPieces& t, const MeshOne& mesh, const MeshOptions&
         throw;
       }
     };
+    double waited = 0;               // seconds the base waited for the walls, in its footprints' stage
     const auto waitForWalls = [&] {  // their events handed on, then their error thrown, then the base's events
       if (handedOn) return;
+      const auto from = std::chrono::steady_clock::now();
       guarded([&] { relay.forward(true); });
+      waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
       handedOn = true;
       wallsMeshed.get();
       for (const Progress& event : held) guarded([&] { reportProgress(o.progress, event); });
@@ -755,6 +758,8 @@ void meshWallsAndBase(JunctionPieces& t, const MeshOne& mesh, const MeshOptions&
       wallsMeshed.get();  // the walls' error first
       std::rethrow_exception(error);
     }
+    if (auto stage = t.reports[0].stages.find("footprints"); stage != t.reports[0].stages.end())
+      stage->second.seconds = std::max(0.0, stage->second.seconds - waited);  // the base's own work, not its wait
   }
   copyBoxes(baseBoxes, base, boxes, t.cut.pieces[0]);
 }
