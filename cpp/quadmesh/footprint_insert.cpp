@@ -344,12 +344,18 @@ GapEdges gapEdges(const Nodes& nodes, const GapMap& map, const QuadMesh& sheet, 
     footInPlane.emplace_back();
     for (int n : footprint.quads[q]) footInPlane.back().push_back(map.at(nodes.at[n + offset]));
   }
-  auto covered = [&](const Vec3& p) {  // in the map: along a footprint's rim edge, not beyond its ends, or in its quad
+  std::map<int, int> footRimEdges;  // per node of the footprints' edges along the rim, how many such edges it ends
+  for (const auto& [a, b] : footRim) ++footRimEdges[a], ++footRimEdges[b];
+  // in the map: along a footprint's rim edge, not beyond its ends (but round a node between two, where the rim turns),
+  // or in its quad
+  auto covered = [&](const Vec3& p) {
     const Vec3 at = map.flat(p);
     for (const auto& [a, b] : footRim)
       if (const auto [d, t] = toSegment(at, map.flat(nodes.at[a]), map.flat(nodes.at[b]));
           d <= tolerance * map.scale(p) && t > 0 && t < 1)
         return true;
+    for (const auto& [n, edges] : footRimEdges)
+      if (edges > 1 && (at - map.flat(nodes.at[n])).norm() <= tolerance * map.scale(p)) return true;
     return std::any_of(footInPlane.begin(), footInPlane.end(),
                        [&](const auto& q) { return insidePolygon(q, at.head<2>()); });
   };
