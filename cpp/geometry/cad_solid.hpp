@@ -113,9 +113,11 @@ std::optional<gp_Cylinder> cylinderOf(const TopoDS_Shape& face, double tolerance
 // curvature outside the material (the outward normal points at it); none for any other face. [in] face.
 std::optional<double> filletRadius(const TopoDS_Shape& face);
 
-// Whether two planes are one: parallel (1e-9 rad) and the one's origin within `tolerance` of the other. [in] a, b.
-inline bool samePlane(const gp_Pln& a, const gp_Pln& b, double tolerance) {
-  return a.Axis().IsParallel(b.Axis(), 1e-9) && a.Distance(b.Location()) <= tolerance;
+// Whether two planes are one: parallel (within `angle` rad) and each one's origin within `tolerance` of the other.
+// [in] a, b, tolerance, angle.
+inline bool samePlane(const gp_Pln& a, const gp_Pln& b, double tolerance, double angle = 1e-9) {
+  return a.Axis().IsParallel(b.Axis(), angle) && a.Distance(b.Location()) <= tolerance &&
+         b.Distance(a.Location()) <= tolerance;
 }
 
 // The largest tolerance of the shape's vertices, edges and faces.

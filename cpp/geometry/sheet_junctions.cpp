@@ -29,7 +29,8 @@ constexpr double kSmallFeatureWalls = 2;  // a column within a box this many wal
 // A group of faces that encloses no more than this share of its area times the wall with its foot stands out of
 // nothing: a face at the wall's level (the floor of a boss's bore over a smaller hole through the plate).
 constexpr double kStandsOut = 1e-3;
-constexpr double kStepCos = 0.866;  // cos 30 deg: the walls on either side of a thickness step face the same way
+constexpr double kStepCos = 0.866;        // cos 30 deg: the walls on either side of a thickness step face the same way
+constexpr double kSamePlaneAngle = 1e-6;  // rad: the faces of a sheet and of the sheet joined to it lie on one plane
 
 std::vector<FaceSample> centreSamples(const TopoDS_Shape& face, double area) {
   return sampleFace(face, std::sqrt(std::max(area, 1e-30) / 16));
@@ -81,12 +82,6 @@ Vec3 edgeMiddle(const TopoDS_Shape& edge) {
   return {p.X(), p.Y(), p.Z()};
 }
 
-// Whether two planes are one within `tolerance` (parallel, and each one's origin within tolerance of the other).
-bool samePlane(const gp_Pln& a, const gp_Pln& b, double tolerance) {
-  return a.Axis().Direction().IsParallel(b.Axis().Direction(), 1e-6) && a.Distance(b.Location()) <= tolerance &&
-         b.Distance(a.Location()) <= tolerance;
-}
-
 // Joins to the largest sheet (roots of `uf` over the wall faces, by area) every sheet whose wall faces all lie on the
 // planes of its wall faces on their sides: the plate's disc inside a tube fused onto a plate that was not bored, cut
 // off from the plate by the tube's feet only. (Not two other sheets: a rib's segments either side of a crossing rib
@@ -109,7 +104,7 @@ void joinCoplanarSheets(const CadSolid& cad, const WallSides& sides, UnionFind& 
     if (root != largest && std::all_of(faces.begin(), faces.end(), [&](const auto& face) {
           return face.second && std::any_of(base.begin(), base.end(), [&](const auto& other) {
                    return other.second && sides.faces[other.first].side == sides.faces[face.first].side &&
-                          samePlane(*face.second, *other.second, tolerance);
+                          samePlane(*face.second, *other.second, tolerance, kSamePlaneAngle);
                  });
         }))
       uf.unite(root, largest);
