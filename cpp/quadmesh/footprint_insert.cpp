@@ -658,6 +658,12 @@ void liftGap(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocato
     q.nodes[n] = n < at.size() ? at[n] : chordal.locate(map.lift({q.nodes[n].x(), q.nodes[n].y()})).point;
 }
 
+// A gap quad's scaled Jacobian in the plane z = 0: negative for a clockwise one (turned over) or a bow tie.
+// [in] nodes, quad.
+double quadInPlane(const std::vector<Vec3>& nodes, const Quad& quad) {
+  return quadScaledJacobian({nodes[quad[0]], nodes[quad[1]], nodes[quad[2]], nodes[quad[3]]}, Vec3::UnitZ());
+}
+
 // A gap quad's scaled Jacobian on the sheet, turned the map's way. [in] map; [in] nodes, quad.
 double onSheet(const GapMap& map, const std::vector<Vec3>& nodes, const Quad& quad) {
   const std::array<Vec3, 4> c{nodes[quad[0]], nodes[quad[1]], nodes[quad[2]], nodes[quad[3]]};
@@ -801,7 +807,7 @@ std::array<int, 6> hexagonOf(const Quad& a, int k, const Quad& b) {
   return {a[(k + 1) % 4], a[(k + 2) % 4], a[(k + 3) % 4], a[k], b[(at + 1) % 4], b[(at + 2) % 4]};
 }
 
-// A quad's quality: its scaled Jacobian in the plane (worstInPlane) or on the sheet (onSheet). [in] nodes, quad.
+// A quad's quality: its scaled Jacobian in the plane (quadInPlane) or on the sheet (onSheet). [in] nodes, quad.
 using QuadQuality = std::function<double(const std::vector<Vec3>& nodes, const Quad& quad)>;
 
 // The worst of the quads by `quality`. [in] quality, nodes, quads.
@@ -862,7 +868,7 @@ bool repairPoorQuads(QuadMesh& q, const QuadQuality& quality) {
 QuadMesh gapTry(const std::vector<Vec3>& at, const GapMap& map, const ChordalLocator& chordal,
                 const std::vector<Surface>& surfaces, const WedgeCut& cut, QuadMesh q, double& worst) {
   q.quads.insert(q.quads.end(), cut.quads.begin(), cut.quads.end());
-  repairPoorQuads(q, [](const std::vector<Vec3>& nodes, const Quad& quad) { return worstInPlane(nodes, {quad}); });
+  repairPoorQuads(q, quadInPlane);
   checkGapQuads(q, surfaces);
   liftGap(at, map, chordal, q);
   worst = smoothGap(map, chordal, q);
@@ -1103,12 +1109,7 @@ std::vector<int> alikeNodes(const std::vector<Vec3>& at, const std::vector<int>&
 }  // namespace
 
 double worstInPlane(const std::vector<Vec3>& nodes, const std::vector<Quad>& quads) {
-  double worst = 1;
-  for (const Quad& q : quads) {
-    const std::array<Vec3, 4> c{nodes[q[0]], nodes[q[1]], nodes[q[2]], nodes[q[3]]};
-    worst = std::min(worst, quadScaledJacobian(c, Vec3::UnitZ()));
-  }
-  return worst;
+  return worstBy(quadInPlane, nodes, quads);
 }
 
 FootprintQuads onChordalSurface(FootprintQuads footprint, const ChordalLocator& chordal) {

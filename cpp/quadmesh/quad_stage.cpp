@@ -53,7 +53,8 @@ QuadMesh meshFairedLevel(const ChordalSurface& cut, const TetMesh& tets, const Q
                                         [](const PatchSplit& split) { return split.ownPatches; }),
                          qo.patchSplits.end());
   }
-  if (o.adaptive) {  // §6.1's radius term only: the own patches' and the patch grid's creases are their curves
+  if (o.adaptive) {  // §6.1's sizes, and its radius term only for the own patches and the patch grid (their creases
+                     // are their curves), side by side
     SizingOptions withoutCurvature = o.sizing;
     withoutCurvature.turnPerQuad = std::numeric_limits<double>::infinity();
     sideBySide({[&] { qo.vertexSize = adaptiveSizes(stage.chordal, o.sizing); },
