@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "core/groups.hpp"
 #include "core/point_grid.hpp"
 #include "core/union_find.hpp"
 
@@ -292,19 +293,28 @@ ChordalSurface buildChordalSurface(const TetMesh& m, double unit) {
 }
 
 std::vector<std::pair<std::pair<int, int>, int>> facetEdgeUses(const ChordalSurface& s) {
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(4 * s.facets.size());
-  for (const auto& f : s.facets) {
-    const int n = f[3] < 0 ? 3 : 4;
-    for (int k = 0; k < n; ++k) edges.push_back(std::minmax(f[k], f[(k + 1) % n]));
-  }
-  std::sort(edges.begin(), edges.end());
+  // A counting sort by the lower end, then each lower end's higher ends sorted: the order of sorting the edges whole,
+  // in time linear in the facets (this runs at every step that changes the facets).
+  int ends = 0;
+  for (const auto& f : s.facets)
+    for (int v : f) ends = std::max(ends, v + 1);
+  auto forEachEdge = [&](auto emit) {
+    for (const auto& f : s.facets) {
+      const int n = f[3] < 0 ? 3 : 4;
+      for (int k = 0; k < n; ++k) emit(std::min(f[k], f[(k + 1) % n]), std::max(f[k], f[(k + 1) % n]));
+    }
+  };
+  Groups<int> higher = groupByKey<int>(static_cast<std::size_t>(ends), forEachEdge);
   std::vector<std::pair<std::pair<int, int>, int>> uses;
-  for (const auto& e : edges)
-    if (uses.empty() || uses.back().first != e)
-      uses.push_back({e, 1});
-    else
-      ++uses.back().second;
+  for (int a = 0; a < ends; ++a) {
+    const auto from = higher.items.begin() + higher.start[a], to = higher.items.begin() + higher.start[a + 1];
+    std::sort(from, to);
+    for (auto b = from; b != to; ++b)
+      if (b == from || *b != *(b - 1))
+        uses.push_back({{a, *b}, 1});
+      else
+        ++uses.back().second;
+  }
   return uses;
 }
 
