@@ -1,6 +1,7 @@
 // The OpenMP thread count and index, 1 and 0 in a build without OpenMP: per-thread copies of
 // OpenCASCADE query objects (not thread-safe when shared) are indexed by them.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <exception>
 #include <functional>
@@ -85,6 +86,20 @@ inline void sideBySide(const std::vector<std::function<void()>>& jobs) {
 #endif
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
+}
+
+// What body(i) gives for each i in [0, n), the items found independently of each other side by side, joined in the
+// order of i: the same on any number of threads. [in] n; [in] body(i): a vector of items. Returns them all.
+template <class Body>
+auto joinedInOrder(int n, Body body) {
+  std::vector<decltype(body(0))> each(static_cast<std::size_t>(std::max(n, 0)));
+  ParallelErrors errors;
+#pragma omp parallel for schedule(dynamic)
+  for (int i = 0; i < n; ++i) errors.run([&] { each[i] = body(i); });
+  errors.rethrow();
+  decltype(body(0)) all;
+  for (auto& items : each) all.insert(all.end(), items.begin(), items.end());
+  return all;
 }
 
 }  // namespace hexlayer

@@ -114,6 +114,7 @@ std::size_t splitButtJoints(CadSolid& cad, WallSides& sides) {
       for (const TopoDS_Edge& e : sectionInside(cad, j.outside, *planeOf(cad.faces(b + 1), kPlanar * cad.diagonal)))
         tools.Append(e), split.insert(j.outside);
   if (tools.IsEmpty()) return 0;
+  CadSolid pieces;
   try {
     arguments.Append(cad.solid);
     BRepAlgoAPI_Splitter splitter;  // the General Fuse: the edges imprinted where they cross each other too
@@ -121,13 +122,13 @@ std::size_t splitButtJoints(CadSolid& cad, WallSides& sides) {
     splitter.SetTools(tools);
     splitter.Build();
     if (!splitter.IsDone()) return 0;
-    CadSolid pieces = namedPieces(cad, splitter);
+    pieces = namedPieces(cad, splitter);
     if (pieces.faces.Extent() <= cad.faces.Extent()) return 0;
-    cad = std::move(pieces);
   } catch (const Standard_Failure&) {
     return 0;
   }
-  sides = classifyWallSides(cad);
+  sides = classifyWallSidesAfterSplit(pieces, cad, sides);
+  cad = std::move(pieces);
   return split.size();
 }
 

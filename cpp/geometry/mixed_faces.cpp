@@ -34,6 +34,7 @@
 #include <set>
 #include <tuple>
 
+#include "core/threads.hpp"
 #include "core/triangle_tree.hpp"
 #include "geometry/face_sampling.hpp"
 
@@ -449,32 +450,29 @@ bool thicknessSpread(const FaceSide& fs) {
 }  // namespace
 
 std::vector<FaceSplit> findThinParts(const CadSolid& cad, const WallSides& sides) {
-  std::vector<FaceSplit> splits;
-  for (int f = 0; f < static_cast<int>(sides.faces.size()); ++f) {
+  return joinedInOrder(static_cast<int>(sides.faces.size()), [&](int f) {
     const FaceSide& fs = sides.faces[f];
-    if (fs.side == Side::Lateral || fs.marks.size() < kMinMarks || !thicknessSpread(fs)) continue;
+    std::vector<FaceSplit> splits;
+    if (fs.side == Side::Lateral || fs.marks.size() < kMinMarks || !thicknessSpread(fs)) return splits;
     if (std::optional<FaceSplit> s = thinPartSplit(cad, fs, f)) splits.push_back(*s);
-  }
-  return splits;
+    return splits;
+  });
 }
 
 std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& sides) {
-  std::vector<FaceSplit> splits;
-  for (int f = 0; f < static_cast<int>(sides.faces.size()); ++f) {
+  return joinedInOrder(static_cast<int>(sides.faces.size()), [&](int f) {
     const FaceSide& fs = sides.faces[f];
-    if (fs.marks.size() < kMinMarks || fs.wallShare < kRimPiece) continue;  // a rim face
-    if (std::optional<std::vector<FaceSplit>> s = bestSplit(cad, fs, sides.thickness, f)) {
-      splits.insert(splits.end(), s->begin(), s->end());
-      continue;
-    }
-    if (fs.side == Side::Lateral || !isFlat(TopoDS::Face(cad.faces(f + 1)))) continue;
+    if (fs.marks.size() < kMinMarks || fs.wallShare < kRimPiece) return std::vector<FaceSplit>{};  // a rim face
+    if (std::optional<std::vector<FaceSplit>> s = bestSplit(cad, fs, sides.thickness, f)) return *s;
+    if (fs.side == Side::Lateral || !isFlat(TopoDS::Face(cad.faces(f + 1)))) return std::vector<FaceSplit>{};
+    std::vector<FaceSplit> splits;
     if (std::optional<FaceSplit> s = flushRimSplit(cad, fs, f, sides.thickness)) {
       splits.push_back(*s);
       const std::vector<FaceSplit> rounds = splitsAcrossRounds(cad, sides, *s);
       splits.insert(splits.end(), rounds.begin(), rounds.end());
     }
-  }
-  return splits;
+    return splits;
+  });
 }
 
 namespace {
@@ -572,13 +570,14 @@ std::size_t splitMixedFaces(CadSolid& cad, WallSides& sides) {
     if (splits.empty()) break;
     CadSolid pieces = splitFaces(cad, splits);
     if (pieces.faces.Extent() == 0) break;
+    sides = classifyWallSidesAfterSplit(pieces, cad, sides);
     cad = std::move(pieces);
-    sides = classifyWallSides(cad);
     split += splits.size();
   }
   if (const std::vector<FaceSplit> thin = findThinParts(cad, sides); !thin.empty()) {
     CadSolid pieces = splitThinParts(cad, thin);
-    if (pieces.faces.Extent() > 0) cad = std::move(pieces), sides = classifyWallSides(cad), split += thin.size();
+    if (pieces.faces.Extent() > 0)
+      sides = classifyWallSidesAfterSplit(pieces, cad, sides), cad = std::move(pieces), split += thin.size();
   }
   return split;
 }

@@ -112,27 +112,70 @@ double airGapAhead(RayCaster& rays, const Vec3& p, const Vec3& outward, double t
   return hit ? hit->w : 0;
 }
 
+// The inward ray of a mark (its sample): the face it first meets and how far, none beyond `reach`. [in,out] m;
+// [in] rays; [in] skip: hits nearer than this are the sample's own face.
+void castMark(RayMark& m, RayCaster& rays, double skip, double reach) {
+  const std::optional<RayHit> hit = rays.nearest(m.point, -m.normal, skip, reach);
+  m.hitFace = hit ? hit->face : -1, m.length = hit ? hit->w : 0;
+}
+
+// Whether a mark's ray crosses the wall, and if so the air gap in front of its sample (airGapAhead, unless `gap` is
+// given: the same ray's, measured before). [in,out] m; [in] boundary, rays, skip; [in] gap.
+void markCrossing(RayMark& m, const BoundaryTriangles& boundary, RayCaster& rays, double skip,
+                  std::optional<double> gap = std::nullopt) {
+  m.crossing = m.hitFace >= 0 && crossesWall(boundary, m.point, -m.normal, m.length);
+  m.airGap = !m.crossing ? 0 : gap ? *gap : airGapAhead(rays, m.point, m.normal, m.length, skip);
+}
+
+// A face's rays from its marks (every sample, in order). [in] marks.
+FaceRays raysOfMarks(std::vector<RayMark> marks) {
+  FaceRays out;
+  for (const RayMark& m : marks) {
+    out.meanNormal += m.area * m.normal;
+    out.sampledArea += m.area;
+    if (m.hitFace < 0) continue;
+    const Ray ray{m.length, m.hitFace, m.area};
+    out.all.push_back(ray);
+    if (!m.crossing) continue;
+    out.crossing.push_back(ray);
+    if (m.airGap > 0) out.airGap = out.airGap > 0 ? std::min(out.airGap, m.airGap) : m.airGap;
+  }
+  out.marks = std::move(marks);
+  return out;
+}
+
 // Casts rays from the face's samples inward and records how far the boundary is and which face it is; from the
 // samples whose ray crosses the wall, outward too (airGapAhead).
 FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, RayCaster& rays, int f) {
   const TopoDS_Shape& face = cad.faces(f + 1);
   const double spacing = std::sqrt(std::max(triangulatedArea(face), 1e-30) / kRaysPerFace);
   const double skip = 1e-5 * cad.diagonal;
-  FaceRays out;
+  std::vector<RayMark> marks;
   for (const FaceSample& s : sampleFace(face, spacing)) {
-    out.meanNormal += s.area * s.normal;
-    out.sampledArea += s.area;
-    const std::optional<RayHit> hit = rays.nearest(s.point, -s.normal, skip, 2 * cad.diagonal);
-    out.marks.push_back({s.u, s.v, s.area, s.normal, false, hit ? hit->face : -1, hit ? hit->w : 0});
-    if (!hit) continue;
-    const Ray ray{hit->w, hit->face, s.area};
-    out.all.push_back(ray);
-    if (!crossesWall(boundary, s.point, -s.normal, ray.length)) continue;
-    out.crossing.push_back(ray), out.marks.back().crossing = true;
-    if (const double gap = airGapAhead(rays, s.point, s.normal, ray.length, skip); gap > 0)
-      out.airGap = out.airGap > 0 ? std::min(out.airGap, gap) : gap;
+    RayMark m{s.u, s.v, s.area, s.point, s.normal};
+    castMark(m, rays, skip, 2 * cad.diagonal);
+    markCrossing(m, boundary, rays, skip);
+    marks.push_back(m);
   }
-  return out;
+  return raysOfMarks(std::move(marks));
+}
+
+// The rays of a face left as it was by a split, from its marks before: a ray that hit a face left as it was hits it
+// still (renumbered), one that hit a face split is cast again; whether each crosses the wall is asked again (the
+// split faces' triangles are new), the air gap in front kept where it was measured. [in] cad; [in] marks: before;
+// [in] faceNow: per face before, its index in cad if left as it was, else -1; [in] boundary, rays.
+FaceRays reusedRays(const CadSolid& cad, std::vector<RayMark> marks, const std::vector<int>& faceNow,
+                    const BoundaryTriangles& boundary, RayCaster& rays) {
+  const double skip = 1e-5 * cad.diagonal;
+  for (RayMark& m : marks) {
+    const std::optional<double> gap = m.crossing ? std::optional<double>(m.airGap) : std::nullopt;
+    if (m.hitFace >= 0 && faceNow[m.hitFace] >= 0)
+      m.hitFace = faceNow[m.hitFace];
+    else if (m.hitFace >= 0)
+      castMark(m, rays, skip, 2 * cad.diagonal);
+    markCrossing(m, boundary, rays, skip, gap);
+  }
+  return raysOfMarks(std::move(marks));
 }
 
 int dominantHit(const std::vector<Ray>& rays) {
@@ -418,10 +461,13 @@ Error ownSideError(const CadSolid& cad, const WallSides& w) { return junctionErr
 
 WallSides classifyWallSides(const CadSolid& cad) { return classifyWallSides(cad, BoundaryTriangles(cad)); }
 
-WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& boundary) {
+namespace {
+
+// Every face's rays, the faces side by side, each thread with its own ray caster. [in] cad; [in] raysOf(rays, f):
+// face f's rays. Returns them per face.
+template <class FaceRaysOf>
+std::vector<FaceRays> raysPerFace(const CadSolid& cad, FaceRaysOf raysOf) {
   const int n = cad.faces.Extent();
-  WallSides w;
-  w.faces.resize(n);
   std::vector<FaceRays> faceRays(n);
   ParallelErrors errors;
 #pragma omp parallel
@@ -431,10 +477,19 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
     for (int f = 0; f < n; ++f)
       errors.run([&] {
         if (!rays) rays.emplace(cad, 1e-7 * cad.diagonal);
-        faceRays[f] = castInwardRays(cad, boundary, *rays, f);
+        faceRays[f] = raysOf(*rays, f);
       });
   }
   errors.rethrow();
+  return faceRays;
+}
+
+// The sides and the wall's thickness from every face's rays (classifyWallSides, below in wall_sides.hpp). [in] cad;
+// [in] faceRays: per face.
+WallSides sidesFromRays(const CadSolid& cad, std::vector<FaceRays> faceRays) {
+  const int n = cad.faces.Extent();
+  WallSides w;
+  w.faces.resize(n);
   std::vector<Vec3> meanNormal(n);
   std::vector<std::map<int, double>> across(n);  // per face: ray area crossing the wall to each face
   std::vector<int> landing(n, -1);               // per face: where most of its rays land
@@ -489,6 +544,28 @@ WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& bounda
     if (w.faces[f].side != Side::Lateral)
       w.faces[f].side = ((rootParity[f].second == 0) == (up[rootParity[f].first] >= 0)) ? Side::Top : Side::Bottom;
   return w;
+}
+
+}  // namespace
+
+WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& boundary) {
+  return sidesFromRays(
+      cad, raysPerFace(cad, [&](RayCaster& rays, int f) { return castInwardRays(cad, boundary, rays, f); }));
+}
+
+WallSides classifyWallSidesAfterSplit(const CadSolid& cad, const CadSolid& before, const WallSides& sidesBefore) {
+  const BoundaryTriangles boundary(cad);
+  std::vector<int> faceNow(before.faces.Extent(), -1), faceBefore(cad.faces.Extent(), -1);
+  for (int g = 0; g < before.faces.Extent(); ++g) {
+    const int f = cad.faces.FindIndex(before.faces(g + 1)) - 1;  // the same face (IsSame), the same way round
+    if (f >= 0 && cad.faces(f + 1).Orientation() == before.faces(g + 1).Orientation())
+      faceNow[g] = f, faceBefore[f] = g;
+  }
+  return sidesFromRays(cad, raysPerFace(cad, [&](RayCaster& rays, int f) {
+                         return faceBefore[f] < 0
+                                    ? castInwardRays(cad, boundary, rays, f)
+                                    : reusedRays(cad, sidesBefore.faces[faceBefore[f]].marks, faceNow, boundary, rays);
+                       }));
 }
 
 SmallFeatures findSmallFeatures(const CadSolid& cad, const WallSides& sides, double size) {

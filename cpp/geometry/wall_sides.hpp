@@ -18,10 +18,11 @@ class BoundaryTriangles;
 // outward normal, whether the ray crosses the wall (classifyWallSides), the face it hits (-1: none) and how far.
 struct RayMark {
   double u = 0, v = 0, area = 0;
-  Vec3 normal = Vec3::Zero();
+  Vec3 point = Vec3::Zero(), normal = Vec3::Zero();
   bool crossing = false;
   int hitFace = -1;
   double length = 0;  // to the hit (0: none)
+  double airGap = 0;  // a crossing ray's: the solid in front of the sample, across the air (0: none)
 };
 
 // A face's width: twice its area over its perimeter (about the wall's thickness for a rim face, a post's width for its
@@ -80,6 +81,12 @@ struct WallSides {
 // part is not a thin section or its sides cannot be told apart.
 WallSides classifyWallSides(const CadSolid& cad);
 WallSides classifyWallSides(const CadSolid& cad, const BoundaryTriangles& boundary);
+
+// The same for a solid whose faces were split (mixed_faces.hpp, butt_joints.hpp), the same surfaces: a face left as it
+// was keeps its samples, and of their rays only those that hit a face that was split are cast again (on a part with
+// many faces most rays are not cast again). [in] cad: the split solid; [in] before, sidesBefore: the solid before the
+// split and its classification.
+WallSides classifyWallSidesAfterSplit(const CadSolid& cad, const CadSolid& before, const WallSides& sidesBefore);
 
 // The error for a sheet that branches (WallSides::ownSideFaces not empty): the faces and where they
 // meet the other walls.

@@ -278,20 +278,38 @@ struct CapPlan {
   std::vector<Cap> caps;
 };
 
-// The rim's edges whose profile (at their middle) loses enough for a cap to be worth it with `layout`, and the
-// caps of their columns, laid along their capped edges' mean normal; edges whose cap has a poor hex, or that
+// The rim's profile at the middle of each rim edge, where it has three points or more inside the walls (else none):
+// the same for every layout. [in] mesh, columns, edges; [in,out] rays: per thread; [in] walls.
+std::vector<std::optional<Profile>> edgeProfiles(const HexMesh& mesh, const std::vector<std::vector<int>>& columns,
+                                                 const std::vector<RimEdge>& edges, std::deque<WallRays>& rays,
+                                                 const WallProjector& walls) {
+  std::vector<std::optional<Profile>> profiles(edges.size());
+  ParallelErrors errors;
+#pragma omp parallel for schedule(dynamic, 8)
+  for (long i = 0; i < static_cast<long>(edges.size()); ++i)
+    errors.run([&] {
+      const RimEdge& e = edges[i];
+      const Column a = ends(mesh, columns[e.a]), b = ends(mesh, columns[e.b]);
+      Profile p = rimProfile(rays[threadIndex()], 0.5 * (a.bottom + b.bottom), 0.5 * (a.top + b.top), e.outward);
+      if (p.points.size() >= 3 && inside(walls, p)) profiles[i] = std::move(p);
+    });
+  errors.rethrow();
+  return profiles;
+}
+
+// The rim's edges whose profile (at their middle: edgeProfiles) loses enough for a cap to be worth it with `layout`,
+// and the caps of their columns, laid along their capped edges' mean normal; edges whose cap has a poor hex, or that
 // would end a cap where its side face is not on the CAD, are dropped and the caps laid again, until none is.
 CapPlan planCaps(const HexMesh& mesh, const std::vector<std::vector<int>>& columns, const std::vector<RimEdge>& edges,
-                 const CapLayout& layout, std::deque<WallRays>& rays, const WallProjector& walls) {
+                 const std::vector<std::optional<Profile>>& profiles, const CapLayout& layout,
+                 std::deque<WallRays>& rays, const WallProjector& walls) {
   CapPlan plan{std::vector<char>(edges.size(), 0), std::vector<Cap>(columns.size())};
   ParallelErrors errors;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < static_cast<long>(edges.size()); ++i)
     errors.run([&] {
-      const RimEdge& e = edges[i];
-      const Column a = ends(mesh, columns[e.a]), b = ends(mesh, columns[e.b]);
-      const Profile p = rimProfile(rays[threadIndex()], 0.5 * (a.bottom + b.bottom), 0.5 * (a.top + b.top), e.outward);
-      if (p.points.size() < 3 || !inside(walls, p)) return;
+      if (!profiles[i]) return;
+      const Profile& p = *profiles[i];
       const double uncapped = leftOut(p, sweptNodes(p, layout.t.layers)),
                    capped = leftOut(p, profileNodes(p, layout.t));
       plan.capped[i] = uncapped > kMinLoss * 4 * p.h * p.h && capped <= kGain * uncapped;
@@ -306,7 +324,7 @@ CapPlan planCaps(const HexMesh& mesh, const std::vector<std::vector<int>>& colum
       const Vec3 ab = (middle(ends(mesh, columns[e.b])) - middle(ends(mesh, columns[e.a]))).normalized();
       along[e.a] += ab, along[e.b] -= ab;  // cancels where both edges are capped
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 8)
     for (long c = 0; c < static_cast<long>(columns.size()); ++c)
       errors.run([&] {
         plan.caps[c] = outward[c].norm() > 0 ? layCap(rays[threadIndex()], walls,
@@ -445,7 +463,9 @@ RimCapStats capRims(HexMesh& mesh, const CadSolid& cad, const WallSides& sides, 
   for (int t = 0; t < threadCount(); ++t) rays.emplace_back(cad, sides);
   const std::vector<CapLayout> layouts = capLayouts(layers);
   std::vector<CapPlan> plans;
-  for (const CapLayout& layout : layouts) plans.push_back(planCaps(mesh, columns, edges, layout, rays, walls));
+  const std::vector<std::optional<Profile>> profiles = edgeProfiles(mesh, columns, edges, rays, walls);
+  for (const CapLayout& layout : layouts)
+    plans.push_back(planCaps(mesh, columns, edges, profiles, layout, rays, walls));
   const std::vector<int> planOf = choosePlans(mesh, columns, edges, plans, layouts);
   // The capped columns: inner nodes back on the straight line, then the caps' nodes and hexes. Inner nodes are
   // inside the part, unless the column has an edge without a cap: then its cap's side face is on the boundary.

@@ -194,3 +194,38 @@ TEST(MixedFaces, AWallFaceThinnerOverAPartIsSplitWhereTheThicknessSteps) {
   const CadSolid wedge = readSample("Resources/samples/wedge_plate.step");
   EXPECT_TRUE(findThinParts(wedge, classifyWallSides(wedge)).empty()) << "a taper";
 }
+
+// A solid whose faces were split is classified from the rays of the faces left as they were (their rays that hit a
+// split face cast again): every face's side, thickness, wall share, opposite face, air gap and every sample's ray as
+// a classification from scratch gives them (lowEndWallBox, its outer face at x = 0 split in three; half of the other
+// faces left as they were, those whose edges the lines end on made anew). At x1, 1e-3 and 1e3, and as B-splines.
+TEST(MixedFaces, TheSplitSolidClassifiedFromTheRaysOfItsFacesLeftAsTheyWereIsClassifiedAsAnew) {
+  for (const double s : {1.0, 1e-3, 1e3})
+    for (const bool bspline : {false, true}) {
+      SCOPED_TRACE(testing::Message() << "scale " << s << (bspline ? ", B-splines" : ""));
+      const CadSolid cad = prepareSolid(lowEndWallBox(s, bspline));
+      const WallSides before = classifyWallSides(cad);
+      const CadSolid split = splitFaces(cad, findMixedFaces(cad, before));
+      ASSERT_EQ(split.faces.Extent(), cad.faces.Extent() + 2);
+      int kept = 0;
+      for (int g = 1; g <= cad.faces.Extent(); ++g) kept += split.faces.FindIndex(cad.faces(g)) > 0;
+      EXPECT_GE(kept, cad.faces.Extent() / 2) << "faces left as they were (those meeting the lines' ends are new)";
+      const WallSides anew = classifyWallSides(split), reused = classifyWallSidesAfterSplit(split, cad, before);
+      EXPECT_EQ(reused.thickness, anew.thickness);
+      ASSERT_EQ(reused.faces.size(), anew.faces.size());
+      for (std::size_t f = 0; f < anew.faces.size(); ++f) {
+        const FaceSide &a = anew.faces[f], &b = reused.faces[f];
+        EXPECT_EQ(b.side, a.side) << "face " << f;
+        EXPECT_EQ(b.thickness, a.thickness);
+        EXPECT_EQ(b.wallShare, a.wallShare);
+        EXPECT_EQ(b.opposite, a.opposite);
+        EXPECT_EQ(b.airGap, a.airGap);
+        ASSERT_EQ(b.marks.size(), a.marks.size());
+        for (std::size_t k = 0; k < a.marks.size(); ++k) {
+          EXPECT_EQ(b.marks[k].hitFace, a.marks[k].hitFace);
+          EXPECT_EQ(b.marks[k].length, a.marks[k].length);
+          EXPECT_EQ(b.marks[k].crossing, a.marks[k].crossing);
+        }
+      }
+    }
+}

@@ -90,3 +90,19 @@ TEST(SideBySide, EveryJobRunsOnceAndTheFirstJobsExceptionIsThrown) {
   }
   EXPECT_EQ(done, std::vector<char>(3, 1));
 }
+
+// joinedInOrder: each item's vector joined in the items' order whatever thread made it (item i gives i copies of i);
+// an item's exception reaches the caller.
+TEST(JoinedInOrder, ItemsJoinInTheirOrderAndAnExceptionReachesTheCaller) {
+  const std::vector<int> all = joinedInOrder(50, [](int i) { return std::vector<int>(i, i); });
+  std::vector<int> expected;
+  for (int i = 0; i < 50; ++i) expected.insert(expected.end(), i, i);
+  EXPECT_EQ(all, expected);
+  EXPECT_TRUE(joinedInOrder(0, [](int i) { return std::vector<int>{i}; }).empty());
+  EXPECT_THROW(joinedInOrder(20,
+                             [](int i) {
+                               if (i == 13) throw Standard_NullObject("thirteen");
+                               return std::vector<int>{i};
+                             }),
+               Standard_Failure);
+}
