@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
 #include <vector>
 
 #include "core/types.hpp"
@@ -12,11 +11,11 @@ namespace hexlayer {
 
 class PointGrid {
  public:
-  explicit PointGrid(double cellSize) : h_(cellSize > 0 ? cellSize : 1.0) {}
+  explicit PointGrid(double cellSize) : h_(cellSize > 0 ? cellSize : 1.0), slots_(kFirstSlots) {}
 
   void insert(int id, const Vec3& p) {
     const Eigen::Vector3i c = cellOf(p);
-    cells_[key(c)].push_back({id, p});
+    cellAt(key(c)).push_back({id, p});
     lo_ = lo_.cwiseMin(c), hi_ = hi_.cwiseMax(c);
   }
 
@@ -44,9 +43,9 @@ class PointGrid {
     for (int i = lo.x(); i <= hi.x(); ++i)
       for (int j = lo.y(); j <= hi.y(); ++j)
         for (int k = lo.z(); k <= hi.z(); ++k) {
-          const auto it = cells_.find(key({i, j, k}));
-          if (it == cells_.end()) continue;
-          for (const Entry& e : it->second)
+          const int cell = find(key({i, j, k}));
+          if (cell < 0) continue;
+          for (const Entry& e : cells_[cell])
             if ((e.p - p).squaredNorm() <= radius * radius && f(e.id, e.p)) return true;
         }
     return false;
@@ -64,8 +63,48 @@ class PointGrid {
     return (static_cast<std::int64_t>(c.x() & 0x1FFFFF) << 42) | (static_cast<std::int64_t>(c.y() & 0x1FFFFF) << 21) |
            static_cast<std::int64_t>(c.z() & 0x1FFFFF);
   }
+
+  // The occupied cells by key in an open-addressing table: slots_ (a power of two, at most half full) hold indices
+  // into cells_, probed one after the other from the key's multiplicative hash. Most queries ask for empty cells:
+  // one multiplication and a probe or two each.
+  struct Slot {
+    std::int64_t key = 0;
+    int cell = -1;  // -1: empty
+  };
+  static constexpr std::size_t kFirstSlots = 64;  // 2^(64 - kFirstShift)
+  static constexpr int kFirstShift = 58;
+  std::size_t slotOf(std::int64_t k) const {  // the product's top bits: every bit of the key moves them
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(k) * 0x9E3779B97F4A7C15ull) >> shift_);
+  }
+  int find(std::int64_t k) const {
+    for (std::size_t s = slotOf(k);; s = (s + 1) & (slots_.size() - 1)) {
+      if (slots_[s].cell < 0) return -1;
+      if (slots_[s].key == k) return slots_[s].cell;
+    }
+  }
+  void place(std::int64_t k, int cell) {
+    std::size_t s = slotOf(k);
+    while (slots_[s].cell >= 0) s = (s + 1) & (slots_.size() - 1);
+    slots_[s] = {k, cell};
+  }
+  std::vector<Entry>& cellAt(std::int64_t k) {
+    if (const int cell = find(k); cell >= 0) return cells_[cell];
+    if (2 * (keys_.size() + 1) > slots_.size()) {
+      slots_.assign(2 * slots_.size(), Slot{});
+      --shift_;
+      for (std::size_t c = 0; c < keys_.size(); ++c) place(keys_[c], static_cast<int>(c));
+    }
+    place(k, static_cast<int>(cells_.size()));
+    keys_.push_back(k);
+    cells_.emplace_back();
+    return cells_.back();
+  }
+
   double h_;
-  std::unordered_map<std::int64_t, std::vector<Entry>> cells_;
+  std::vector<Slot> slots_;
+  int shift_ = kFirstShift;                // 64 - log2(slots)
+  std::vector<std::int64_t> keys_;         // per occupied cell, its key
+  std::vector<std::vector<Entry>> cells_;  // per occupied cell, its points in the order of insertion
   Eigen::Vector3i lo_ = Eigen::Vector3i::Constant(std::numeric_limits<int>::max());  // box of the occupied cells
   Eigen::Vector3i hi_ = Eigen::Vector3i::Constant(std::numeric_limits<int>::min());
 };

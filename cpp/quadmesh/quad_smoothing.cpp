@@ -240,26 +240,6 @@ int cornerOf(const std::array<int, 4>& quad, int v) {
   return -1;
 }
 
-// Which nodes can still move in a sweep: a node's update depends only on the nodes of the quads around it, so if
-// none of them (itself included) moved since its last visit, the visit would decide as before and is skipped. The
-// result is the same as visiting every node. Times are places in the sweeps' order (sweep * nodes + position):
-// a visit at 2 t, a move at 2 t + 1.
-class MoveClock {
- public:
-  explicit MoveClock(std::size_t nodes) : movedAt_(nodes, -1), visitedAt_(nodes, -2) {}
-  bool unchanged(const QuadMesh& q, const NodeQuads& nq, int node) const {
-    for (int k = nq.start[node]; k < nq.start[node + 1]; ++k)
-      for (int c : q.quads[nq.items[k]])
-        if (movedAt_[c] > visitedAt_[node]) return false;
-    return true;
-  }
-  void visit(int node, long t) { visitedAt_[node] = 2 * t; }
-  void moved(int node, long t) { movedAt_[node] = 2 * t + 1; }
-
- private:
-  std::vector<long> movedAt_, visitedAt_;
-};
-
 // Visits the nodes in the sweep order (sweep_halves.hpp), `iterations` times, skipping those whose neighbourhood has
 // not changed; update(node) returns whether it moved the node.
 template <class Update>
@@ -268,7 +248,9 @@ void gaussSeidel(const QuadMesh& q, const NodeQuads& nq, const SweepHalves& orde
   const long n = static_cast<long>(q.nodes.size());
   for (int it = 0; it < iterations; ++it)
     sweepInHalves(order, [&](int node, int) {
-      if (clock.unchanged(q, nq, node)) return;
+      if (clock.unchanged(
+              nq, [&](int quad) { return q.quads[quad]; }, node))
+        return;
       const long t = it * n + order.position[node];
       clock.visit(node, t);
       if (update(node)) clock.moved(node, t);

@@ -150,7 +150,8 @@ bool searchMove(HexMesh& mesh, const WallProjector& walls, const Freedom& f, int
 
 // Gauss-Seidel rounds over the candidate nodes, each moved by `move` (the same moves for the same mesh), until a
 // round moves none or kMaxRounds: in index order, or on a mesh large enough in two halves side by side and their seam
-// after them (sweep_halves.hpp: a move reads only the nodes of the hexes around its node). Returns the moves kept.
+// after them (sweep_halves.hpp: a move reads only the nodes of the hexes around its node), a node whose hexes did not
+// change since its last visit passed by (MoveClock). Returns the moves kept.
 template <class Move>
 std::size_t smoothRounds(HexMesh& mesh, const WallSides& sides, const std::vector<char>& candidate,
                          const Groups<std::size_t>& hexesAt, const std::vector<std::vector<int>>& neighbours,
@@ -158,11 +159,18 @@ std::size_t smoothRounds(HexMesh& mesh, const WallSides& sides, const std::vecto
   const SweepHalves order = sweepHalves(
       mesh.nodes, [&](int v) { return candidate[v] != 0; }, hexesAt, [&](std::size_t h) { return mesh.hexes[h]; });
   std::size_t total = 0;
+  MoveClock clock(mesh.nodes.size());  // a node whose hexes' nodes did not move since its last visit is passed by
+  const long n = static_cast<long>(mesh.nodes.size());
   for (int round = 0; round < kMaxRounds; ++round) {
     std::array<std::size_t, 3> moved{0, 0, 0};  // per part of the sweep
     sweepInHalves(order, [&](int v, int part) {
-      const Freedom f = candidate[v] ? freedomOf(mesh, sides, v, rimEdges) : Freedom{};
-      if (f.moves && !neighbours[v].empty() && move(f, v)) ++moved[part];
+      if (!candidate[v] || clock.unchanged(
+                               hexesAt, [&](std::size_t h) { return mesh.hexes[h]; }, v))
+        return;
+      const long t = round * n + order.position[v];
+      clock.visit(v, t);
+      const Freedom f = freedomOf(mesh, sides, v, rimEdges);
+      if (f.moves && !neighbours[v].empty() && move(f, v)) ++moved[part], clock.moved(v, t);
     });
     const std::size_t inRound = moved[0] + moved[1] + moved[2];
     total += inRound;
