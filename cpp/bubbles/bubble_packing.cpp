@@ -245,8 +245,8 @@ std::vector<FaceBubble> seedFace(const std::vector<FaceSample>& candidates, doub
     const auto tooClose = [&](int j, const Vec3& q) {
       return (q - c.point).norm() < 0.85 * 0.5 * (d + pack.diameter[j]);
     };
-    if (pack.anyNearOnSide(c.point, pack.reach(d, 0.85 * 0.5, 2 * d), side, tooClose) ||
-        own.anyNear(c.point, 0.85 * d, [](int, const Vec3&) { return true; }))
+    if (own.anyNear(c.point, 0.85 * d, [](int, const Vec3&) { return true; }) ||  // most candidates: the face's own
+        pack.anyNearOnSide(c.point, pack.reach(d, 0.85 * 0.5, 2 * d), side, tooClose))
       continue;
     own.insert(static_cast<int>(seeds.size()), c.point);
     seeds.push_back({c.u, c.v, c.point});

@@ -1,7 +1,9 @@
 #include "chordal/chordal_rim.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <set>
 #include <utility>
@@ -29,13 +31,23 @@ bool spoiled(const Vec3& before, const Vec3& after) {
   return after.dot(before) <= kMinAreaShare * before.squaredNorm();
 }
 
-// The rim's edges (in one facet only), lower vertex first.
-std::set<std::pair<int, int>> rimEdges(const ChordalSurface& s) {
-  std::set<std::pair<int, int>> rim;
-  for (const auto& [edge, uses] : facetEdgeUses(s))
-    if (uses == 1) rim.insert(edge);
-  return rim;
-}
+// The rim's edges (in one facet only), lower vertex first, sorted; and per vertex whether it ends one (most
+// facet edges asked about end at no rim vertex).
+class RimEdges {
+ public:
+  explicit RimEdges(const ChordalSurface& s) : atVertex_(s.vertices.size(), 0) {
+    for (const auto& [edge, uses] : facetEdgeUses(s))
+      if (uses == 1) edges_.push_back(edge), atVertex_[edge.first] = atVertex_[edge.second] = 1;
+  }
+  bool has(int a, int b) const {
+    return atVertex_[a] && atVertex_[b] &&
+           std::binary_search(edges_.begin(), edges_.end(), std::pair<int, int>(std::minmax(a, b)));
+  }
+
+ private:
+  std::vector<std::pair<int, int>> edges_;
+  std::vector<char> atVertex_;
+};
 
 // The rim's edges in the direction of their facets (the surface on their left seen from the top): per
 // vertex, the next and the previous rim vertex (-1 if none, or if the rim passes it twice).
@@ -44,32 +56,39 @@ struct RimWalk {
 };
 
 RimWalk rimWalk(const ChordalSurface& s) {
-  const std::set<std::pair<int, int>> rim = rimEdges(s);
+  const RimEdges rim(s);
   RimWalk w{std::vector<int>(s.vertices.size(), -1), std::vector<int>(s.vertices.size(), -1)};
   std::vector<int> passes(s.vertices.size(), 0);
   for (const auto& f : s.facets) {
     const int n = f[3] < 0 ? 3 : 4;
     for (int k = 0; k < n; ++k)
-      if (const int a = f[k], b = f[(k + 1) % n]; rim.count(std::minmax(a, b)))
-        w.next[a] = b, w.previous[b] = a, ++passes[a];
+      if (const int a = f[k], b = f[(k + 1) % n]; rim.has(a, b)) w.next[a] = b, w.previous[b] = a, ++passes[a];
   }
   for (std::size_t v = 0; v < passes.size(); ++v)
     if (passes[v] > 1) w.next[v] = w.previous[v] = -1;
   return w;
 }
 
+// The walls' rim middles found so far, by the point they were asked for (a vertex still where it was asks again for
+// nothing when the rim is measured again).
+using KnownMiddles = std::map<std::array<double, 3>, std::optional<Vec3>>;
+
 // Where each rim vertex goes: midway between the walls' rim edges nearest to it, if that is farther than
 // kMinMove of the reach (nearer, the vertex is on its rim: a flat rim's), within reach, and across the rim (a
-// move mostly along the rim is a corner's ambiguity, not the rim's profile).
+// move mostly along the rim is a corner's ambiguity, not the rim's profile). [in,out] known: the middles.
 std::vector<std::optional<Vec3>> rimTargets(const ChordalSurface& s, const RimWalk& walk, const RimMiddle& middle,
-                                            double reach) {
-  std::vector<std::optional<Vec3>> to(s.vertices.size());
-  ParallelErrors errors;  // each vertex on its own: the walls' projections on every thread
+                                            double reach, KnownMiddles& known) {
+  auto keyOf = [&](long v) { return std::array<double, 3>{s.vertices[v].x(), s.vertices[v].y(), s.vertices[v].z()}; };
+  std::vector<std::optional<Vec3>> to(s.vertices.size()), found(s.vertices.size());
+  std::vector<char> asked(s.vertices.size(), 0);
+  ParallelErrors errors;  // each vertex on its own: the walls' projections on every thread (`known` only read)
 #pragma omp parallel for schedule(dynamic, 16)
   for (long v = 0; v < static_cast<long>(s.vertices.size()); ++v) {
     if (walk.next[v] < 0 || walk.previous[v] < 0) continue;
     errors.run([&] {
-      const std::optional<Vec3> m = middle(s.vertices[v]);
+      const auto was = known.find(keyOf(v));
+      if (was == known.end()) found[v] = middle(s.vertices[v]), asked[v] = 1;
+      const std::optional<Vec3>& m = was == known.end() ? found[v] : was->second;
       if (!m) return;
       const Vec3 move = *m - s.vertices[v];
       const Vec3 along = (s.vertices[walk.next[v]] - s.vertices[walk.previous[v]]).normalized();
@@ -79,19 +98,21 @@ std::vector<std::optional<Vec3>> rimTargets(const ChordalSurface& s, const RimWa
     });
   }
   errors.rethrow();
+  for (std::size_t v = 0; v < s.vertices.size(); ++v)
+    if (asked[v]) known.emplace(keyOf(static_cast<long>(v)), found[v]);
   return to;
 }
 
 // The facets on the rim (with an edge of no other facet) that the moves of the rim vertices turn over or
 // shrink: they lie in the rim's profile, beyond where the rim goes.
 std::vector<char> spoiledRimFacets(const ChordalSurface& s, const std::vector<Vec3>& before) {
-  const std::set<std::pair<int, int>> rim = rimEdges(s);
+  const RimEdges rim(s);
   std::vector<char> spoilt(s.facets.size(), 0);
   for (std::size_t f = 0; f < s.facets.size(); ++f) {
     if (!spoiled(before[f], areaVector(s, s.facets[f]))) continue;
     const auto& facet = s.facets[f];
     const int n = facet[3] < 0 ? 3 : 4;
-    for (int k = 0; k < n; ++k) spoilt[f] |= rim.count(std::minmax(facet[k], facet[(k + 1) % n])) > 0;
+    for (int k = 0; k < n; ++k) spoilt[f] |= rim.has(facet[k], facet[(k + 1) % n]);
   }
   return spoilt;
 }
@@ -205,9 +226,10 @@ std::size_t fillTears(ChordalSurface& s, const NearRim& nearRim, const InMateria
 
 RimSnapStats snapRimBetweenWallEdges(ChordalSurface& s, const RimMiddle& middle, double reach) {
   RimSnapStats stats;
+  KnownMiddles known;
   for (;;) {
     const RimWalk walk = rimWalk(s);
-    std::vector<std::optional<Vec3>> to = rimTargets(s, walk, middle, reach);
+    std::vector<std::optional<Vec3>> to = rimTargets(s, walk, middle, reach, known);
     std::vector<Vec3> before;
     for (const auto& f : s.facets) before.push_back(areaVector(s, f));
     const std::vector<Vec3> original = s.vertices;

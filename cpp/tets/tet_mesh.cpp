@@ -41,10 +41,10 @@ bool isCoplanar(const TetMesh& mesh, const std::array<int, 4>& t) {
 // Whether the coplanar tet lies in the rim: its centre closer to the solid's boundary than a quarter
 // of its shortest top-bottom edge (about the wall thickness; a bend's coplanar tet is half of it away).
 // A centre clearly farther than that from the triangulation is not measured on the exact shell.
-// [in,out] boundary: the distance tool with the solid's outer shell loaded once (LoadS2: its faces' boxes are made
-// once; Perform recomputes the rest, the same bits as a tool built per query).
-bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, BRepExtrema_DistShapeShape& boundary,
-              const BoundaryTriangles& triangles) {
+// [in,out] boundary: the distance tool with the solid's outer shell loaded once, at its first use (LoadS2: its faces'
+// boxes are made once; Perform recomputes the rest, the same bits as a tool built per query).
+bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, const CadSolid& cad,
+              std::optional<BRepExtrema_DistShapeShape>& boundary, const BoundaryTriangles& triangles) {
   double shortest = std::numeric_limits<double>::infinity();
   Vec3 c = Vec3::Zero();
   for (int a : t) {
@@ -54,9 +54,10 @@ bool onTheRim(const TetMesh& mesh, const std::array<int, 4>& t, BRepExtrema_Dist
         shortest = std::min(shortest, (mesh.nodes[a] - mesh.nodes[b]).norm());
   }
   if (triangles.fartherThan(c, 0.25 * shortest)) return false;
-  boundary.LoadS1(BRepBuilderAPI_MakeVertex(gp_Pnt(c.x(), c.y(), c.z())).Vertex());
-  boundary.Perform();
-  return boundary.IsDone() && boundary.Value() < 0.25 * shortest;
+  if (!boundary) boundary.emplace(), boundary->LoadS2(BRepClass3d::OuterShell(cad.solid));
+  boundary->LoadS1(BRepBuilderAPI_MakeVertex(gp_Pnt(c.x(), c.y(), c.z())).Vertex());
+  boundary->Perform();
+  return boundary->IsDone() && boundary->Value() < 0.25 * shortest;
 }
 
 // Whether p is inside the solid: the triangulation decides where it can, rays on the exact faces near the
@@ -81,29 +82,43 @@ enum Verdict : char { kKept, kKeptCoplanar, kFlat, kOutside };
 // inside the solid, away from its boundary), instead of between tets on both sides (a sharp bend). Peeled
 // until none is left, as dropping one can lay open another behind it.
 // [in,out] verdict: per tet; peeled slivers become kOutside.
+// Face `skip` of tet t (the other three corners), its corners sorted. [in] t, skip.
+std::array<int, 3> sortedFace(const std::array<int, 4>& t, int skip) {
+  std::array<int, 3> f{};
+  for (int k = 0, j = 0; k < 4; ++k)
+    if (k != skip) f[j++] = t[k];
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
 void peelHullSlivers(const TetMesh& mesh, std::vector<char>& verdict) {
+  auto kept = [&](std::size_t i) { return verdict[i] == kKept || verdict[i] == kKeptCoplanar; };
   for (bool changed = true; changed;) {
     changed = false;
-    std::vector<std::pair<std::array<int, 3>, std::size_t>> faces;
+    std::vector<std::array<int, 3>> sliverFaces;  // the faces of the coplanar tets, sorted: how many kept tets use each
     for (std::size_t i = 0; i < mesh.tets.size(); ++i)
-      if (verdict[i] == kKept || verdict[i] == kKeptCoplanar)
+      if (verdict[i] == kKeptCoplanar)
+        for (int skip = 0; skip < 4; ++skip) sliverFaces.push_back(sortedFace(mesh.tets[i], skip));
+    if (sliverFaces.empty()) return;
+    std::sort(sliverFaces.begin(), sliverFaces.end());
+    sliverFaces.erase(std::unique(sliverFaces.begin(), sliverFaces.end()), sliverFaces.end());
+    std::vector<int> uses(sliverFaces.size(), 0);
+    for (std::size_t i = 0; i < mesh.tets.size(); ++i)
+      if (kept(i))
         for (int skip = 0; skip < 4; ++skip) {
-          std::array<int, 3> f{};
-          for (int k = 0, j = 0; k < 4; ++k)
-            if (k != skip) f[j++] = mesh.tets[i][k];
-          std::sort(f.begin(), f.end());
-          faces.emplace_back(f, i);
+          const std::array<int, 3> f = sortedFace(mesh.tets[i], skip);
+          const auto at = std::lower_bound(sliverFaces.begin(), sliverFaces.end(), f);
+          if (at != sliverFaces.end() && *at == f) ++uses[at - sliverFaces.begin()];
         }
-    std::sort(faces.begin(), faces.end());
-    std::vector<int> open(mesh.tets.size(), 0);  // faces shared with no other kept tet
-    for (std::size_t a = 0; a < faces.size();) {
-      std::size_t b = a;
-      while (b < faces.size() && faces[b].first == faces[a].first) ++b;
-      if (b - a == 1) ++open[faces[a].second];
-      a = b;
+    for (std::size_t i = 0; i < mesh.tets.size(); ++i) {
+      if (verdict[i] != kKeptCoplanar) continue;
+      int open = 0;  // faces shared with no other kept tet
+      for (int skip = 0; skip < 4; ++skip) {
+        const auto at = std::lower_bound(sliverFaces.begin(), sliverFaces.end(), sortedFace(mesh.tets[i], skip));
+        open += uses[at - sliverFaces.begin()] == 1;
+      }
+      if (open >= 2) verdict[i] = kOutside, changed = true;
     }
-    for (std::size_t i = 0; i < mesh.tets.size(); ++i)
-      if (verdict[i] == kKeptCoplanar && open[i] >= 2) verdict[i] = kOutside, changed = true;
   }
 }
 
@@ -158,7 +173,7 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad, const
   {
     std::optional<RayCaster> rays;
     std::optional<BRepClass3d_SolidClassifier> exact;
-#pragma omp for schedule(static)
+#pragma omp for schedule(dynamic, 256)  // flat tets cost nothing, those near the boundary most
     for (long i = 0; i < static_cast<long>(mesh.tets.size()); ++i)
       errors.run([&] {
         const auto& t = mesh.tets[i];
@@ -177,10 +192,9 @@ TetFilterCounts keepSpanningTetsInside(TetMesh& mesh, const CadSolid& cad, const
   TetFilterCounts counts;
   counts.delaunay = mesh.tets.size();
   counts.flat = std::count(verdict.begin(), verdict.end(), kFlat);
-  BRepExtrema_DistShapeShape boundary;
-  boundary.LoadS2(BRepClass3d::OuterShell(cad.solid));
+  std::optional<BRepExtrema_DistShapeShape> boundary;
   for (std::size_t i = 0; i < mesh.tets.size(); ++i)
-    if (verdict[i] == kKeptCoplanar && onTheRim(mesh, mesh.tets[i], boundary, triangles)) verdict[i] = kOutside;
+    if (verdict[i] == kKeptCoplanar && onTheRim(mesh, mesh.tets[i], cad, boundary, triangles)) verdict[i] = kOutside;
   peelHullSlivers(mesh, verdict);
   counts.coplanar = std::count(verdict.begin(), verdict.end(), kKeptCoplanar);
   counts.outside = std::count(verdict.begin(), verdict.end(), kOutside);
