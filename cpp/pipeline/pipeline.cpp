@@ -1057,8 +1057,11 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
     return keepSpanningTetsInside(tets, cad, r.facesSplit ? boundary.emplace(cad) : *boundary);
   });
   r.tetsKept = tets.tets.size();
-  ChordalSurface cut = clock.run("chordal_surface", [&] { return buildChordalSurface(tets, cad.unit); });
-  r.tetClasses = classifyTets(tets);
+  ChordalSurface cut = clock.run("chordal_surface", [&] {  // the tets' classes for the report beside it
+    ChordalSurface built;
+    sideBySide({[&] { built = buildChordalSurface(tets, cad.unit); }, [&] { r.tetClasses = classifyTets(tets); }});
+    return built;
+  });
   r.chordal = countChordal(cut);
   const WallProjector walls(cad, sides, boxes);
   r.chordal.rim = clock.run("chordal_rim", [&] {
