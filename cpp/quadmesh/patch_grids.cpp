@@ -15,9 +15,11 @@
 namespace hexlayer {
 namespace {
 
-const double kSideTurn = 45 * M_PI / 180;    // a curve turning more within a quad is cut there: a patch's corner
-const double kMaxCorner = 135 * M_PI / 180;  // a patch's corner turns at most this much (and at least kSideTurn)
-constexpr double kCornerWindow = 3;          // quads: a corner's turn is measured over this length of its sides
+const double kSideTurn = 45 * M_PI / 180;     // a curve turning more within a quad is cut there: a patch's corner
+const double kMaxCorner = 135 * M_PI / 180;   // a patch's corner turns at most this much (and at least kSideTurn)
+constexpr double kCornerWindow = 3;           // quads: a corner's turn is measured over this length of its sides
+constexpr std::size_t kMostCorners = 6;       // a patch's loop with more corners is not cut into four sides
+const double kMaxSideKink = 80 * M_PI / 180;  // the largest turn a corner left inside a side may make
 
 // A chain of chordal vertices along a patch's rim, from a corner to a corner, with the patches on either side.
 struct Curve {
@@ -308,23 +310,51 @@ bool squareCorners(const std::vector<Curve>& curves, const std::vector<std::vect
   return true;
 }
 
-// A loop of curves cut into four sides at its corners: a loop of four curves at their ends; a longer loop where its
-// curves turn into one another by kSideTurn or more, or where a rounded corner was cut (Curve::cornerWindow), the
-// others going on flat along a side. [in] loop, curves, paths, size. Nothing if that does not give four corners.
-std::optional<std::array<Side, 4>> sidesOf(const Side& loop, const std::vector<Curve>& curves,
-                                           const std::vector<std::vector<Vec3>>& paths, const SizeField& size) {
-  std::vector<std::size_t> corners;  // the loop's pieces that start a side (a rounded corner's cut does)
-  for (std::size_t i = 0; i < loop.size(); ++i)
-    if (loop.size() == 4 || cornerWindow(curves, loop[i]) > kCornerWindow ||
-        turnInto(sidePath(paths, {loop[(i + loop.size() - 1) % loop.size()]}), sidePath(paths, {loop[i]}), size,
-                 kCornerWindow) >= kSideTurn)
-      corners.push_back(i);
-  if (corners.size() != 4) return std::nullopt;
+// The loop's four sides starting at its pieces `corners` (ascending). [in] loop, corners.
+std::array<Side, 4> sidesFrom(const Side& loop, const std::array<std::size_t, 4>& corners) {
   std::array<Side, 4> sides;
   for (int k = 0; k < 4; ++k)
     for (std::size_t i = corners[k]; i != (k == 3 ? corners[0] + loop.size() : corners[k + 1]); ++i)
       sides[k].push_back(loop[i % loop.size()]);
   return sides;
+}
+
+// A loop of curves cut into four sides at its corners: a loop of four curves at their ends; a longer loop where its
+// curves turn into one another by kSideTurn or more, or where a rounded corner was cut (Curve::cornerWindow), the
+// others going on flat along a side. With PatchSides::KinksInSides, a loop with up to kMostCorners such corners keeps
+// the four whose sides turn square into one another (squareCorners) and leave the gentlest turn inside a side (at
+// most kMaxSideKink; on a tie the first in the loop's order), a rounded corner's cut always kept. [in] loop, curves,
+// paths, size, kinks. Nothing if that does not give four corners.
+std::optional<std::array<Side, 4>> sidesOf(const Side& loop, const std::vector<Curve>& curves,
+                                           const std::vector<std::vector<Vec3>>& paths, const SizeField& size,
+                                           PatchSides kinks) {
+  std::vector<std::size_t> corners;  // the loop's pieces that start a side (a rounded corner's cut does)
+  std::vector<double> turn;          // the turn into each (infinite at a rounded corner's cut: it stays a corner)
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const bool rounded = cornerWindow(curves, loop[i]) > kCornerWindow;
+    const double t = loop.size() == 4 || rounded
+                         ? std::numeric_limits<double>::infinity()
+                         : turnInto(sidePath(paths, {loop[(i + loop.size() - 1) % loop.size()]}),
+                                    sidePath(paths, {loop[i]}), size, kCornerWindow);
+    if (t >= kSideTurn) corners.push_back(i), turn.push_back(t);
+  }
+  if (corners.size() == 4) return sidesFrom(loop, {corners[0], corners[1], corners[2], corners[3]});
+  if (kinks != PatchSides::KinksInSides || corners.size() < 4 || corners.size() > kMostCorners) return std::nullopt;
+  std::optional<std::array<Side, 4>> best;
+  double gentlest = kMaxSideKink;
+  const std::size_t m = corners.size();
+  for (std::size_t a = 0; a < m; ++a)
+    for (std::size_t b = a + 1; b < m; ++b)
+      for (std::size_t c = b + 1; c < m; ++c)
+        for (std::size_t d = c + 1; d < m; ++d) {
+          double kink = 0;  // the largest turn left inside a side
+          for (std::size_t k = 0; k < m; ++k)
+            if (k != a && k != b && k != c && k != d) kink = std::max(kink, turn[k]);
+          if (!(kink <= gentlest) || (best && kink == gentlest)) continue;
+          const std::array<Side, 4> sides = sidesFrom(loop, {corners[a], corners[b], corners[c], corners[d]});
+          if (squareCorners(curves, paths, sides, size)) best = sides, gentlest = kink;
+        }
+  return best;
 }
 
 // The curves of a group (that follow one another round a loop) joined into their loop of vertices, the first not
@@ -369,13 +399,13 @@ std::optional<PatchLoops> loopsOf(const std::vector<Curve>& curves, const std::v
 }
 
 // A patch as a face: its outer loop four sides round it, its other loops holes (loopsOf). [in] curves, paths;
-// [in] ofPatch: the patch's curves, ascending; [in] size. Nothing if loopsOf gives nothing or the outer loop is not
-// four-sided with square corners.
+// [in] ofPatch: the patch's curves, ascending; [in] size, kinks: sidesOf's. Nothing if loopsOf gives nothing or the
+// outer loop is not four-sided with square corners.
 std::optional<Face> faceOf(const std::vector<Curve>& curves, const std::vector<std::vector<Vec3>>& paths,
-                           const std::vector<int>& ofPatch, const SizeField& size) {
+                           const std::vector<int>& ofPatch, const SizeField& size, PatchSides kinks) {
   const std::optional<PatchLoops> loops = loopsOf(curves, ofPatch);
   const std::optional<Side> loop = loops ? loopOf(curves, loops->outer) : std::nullopt;
-  const std::optional<std::array<Side, 4>> sides = loop ? sidesOf(*loop, curves, paths, size) : std::nullopt;
+  const std::optional<std::array<Side, 4>> sides = loop ? sidesOf(*loop, curves, paths, size, kinks) : std::nullopt;
   if (!sides || !squareCorners(curves, paths, *sides, size)) return std::nullopt;
   Face face{*sides, {}};
   for (const std::vector<int>& hole : loops->holes) {
@@ -936,7 +966,7 @@ bool cutAtReflexCorner(PatchLayout& layout, Patches& patches, const std::vector<
 }  // namespace
 
 PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle, PatchSeeds seeds,
-                      PatchRims rims) {
+                      PatchRims rims, PatchSides sides) {
   const std::vector<Vec3>& x = chordal.vertices;
   const std::vector<std::array<int, 3>> triangles = chordalTriangles(chordal);
   PatchLayout layout;
@@ -951,10 +981,10 @@ PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, doub
   layout.paths = curvePaths(layout.curves, x, layout.typical);
   std::vector<std::vector<int>> ofPatch = curvesOfPatches(layout.curves, patch.count);
   for (int p = 0, cuts = 0; p < patch.count; ++p) {
-    std::optional<Face> face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
+    std::optional<Face> face = faceOf(layout.curves, layout.paths, ofPatch[p], size, sides);
     for (const double window : kRoundCorners)
       if (!face && cutAtRoundCorners(layout.curves, layout.paths, ofPatch[p], x, layout.typical, window))
-        face = faceOf(layout.curves, layout.paths, ofPatch[p], size);
+        face = faceOf(layout.curves, layout.paths, ofPatch[p], size, sides);
     if (!face && cuts < kMaxCuts && cutAtReflexCorner(layout, patch, triangles, x, size, p, ofPatch[p])) {
       ++cuts, p = -1;  // the faces again: the cut may have split a curve of one made already
       layout.faces.clear(), ofPatch = curvesOfPatches(layout.curves, patch.count);

@@ -39,10 +39,15 @@ namespace hexlayer {
 struct PatchGrids {
   BlockGrid graded, even;
 };
+// Which loops of a face become its four sides: those with four corners; or also those with five or six, the gentlest
+// turns left inside its sides (a strip whose ends are two short curves each meeting at an angle, as a chamfer's
+// chordal surface may be cut at a mitre): the last layout tried before Gmsh's quads.
+enum class PatchSides { FourCorners, KinksInSides };
 // [in] seeds, rims: facePatches' (PatchSeeds::FlatFirst where the faces grown in index order give no grid;
 // PatchRims::FittedToNormals where those as grown give no acceptable grid: no grid if the fitting moves no triangle,
-// the faces then being those as grown).
+// the faces then being those as grown); [in] sides.
 PatchGrids patchGrids(const ChordalSurface& chordal, const SizeField& size, double featureAngle,
-                      PatchSeeds seeds = PatchSeeds::InOrder, PatchRims rims = PatchRims::AsGrown);
+                      PatchSeeds seeds = PatchSeeds::InOrder, PatchRims rims = PatchRims::AsGrown,
+                      PatchSides sides = PatchSides::FourCorners);
 
 }  // namespace hexlayer

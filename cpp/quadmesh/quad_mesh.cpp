@@ -651,8 +651,8 @@ void rankEvenPatchGrid(bool graded, PatchGrids& patch, const ChordalLocator& cho
 // and with even rows where that one is refused or outranked. [in] chordal, o, chordalEuler; [in] seeds, rims;
 // [in,out] ranked.
 void rankPatchGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler, PatchSeeds seeds,
-                   PatchRims rims, Ranked& ranked) {
-  PatchGrids patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, seeds, rims);
+                   PatchRims rims, Ranked& ranked, PatchSides sides = PatchSides::FourCorners) {
+  PatchGrids patch = patchGrids(chordal.surface(), creaseSize(chordal, o), kCreaseAngle, seeds, rims, sides);
   if (patch.even.empty()) return;
   const bool graded = !patch.graded.empty();
   std::vector<QuadMesh> tries;
@@ -667,7 +667,8 @@ void rankPatchGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long
 // with even rows. Where the faces as grown give no acceptable patch grid, those with their rims fitted to their normals
 // (PatchRims::FittedToNormals) may. Where the faces grown in index order give no patch grid, those grown from their
 // flat middles first (PatchSeeds::FlatFirst) may, ranked after the others: their cuts may lie where the surface only
-// curves (a tube's), so they refuse no grid that crosses them.
+// curves (a tube's), so they refuse no grid that crosses them. Where none is acceptable, the patch grids of faces whose
+// loops have five or six corners, the gentlest left inside a side (PatchSides::KinksInSides), grown both ways.
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
   SurfaceMap square;
@@ -688,6 +689,9 @@ Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, lo
   if (ranked.best.layout != QuadLayout::PatchGrid)
     rankPatchGrid(chordal, o, chordalEuler, PatchSeeds::InOrder, PatchRims::FittedToNormals, ranked);
   if (none) rankPatchGrid(chordal, o, chordalEuler, PatchSeeds::FlatFirst, PatchRims::AsGrown, ranked);
+  for (const PatchSeeds seeds : {PatchSeeds::InOrder, PatchSeeds::FlatFirst})  // the last layouts before Gmsh's
+    if (ranked.best.quads.empty())
+      rankPatchGrid(chordal, o, chordalEuler, seeds, PatchRims::AsGrown, ranked, PatchSides::KinksInSides);
   return ranked;
 }
 

@@ -54,6 +54,15 @@ def write_placed(gmsh, path, scale=1.0, turn=0.0, axis=(1, 2, 3)):
     gmsh.write(path)
 
 
+def write_as_bsplines(step, path, scale=1.0):
+    """The solids of `step` with every face a B-spline (Gmsh's affine transform, as another CAD system may write the
+    same part), scaled by `scale`, written to `path`."""
+    with opened(step) as gmsh:
+        gmsh.model.occ.affineTransform(gmsh.model.getEntities(3), [scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0])
+        gmsh.model.occ.synchronize()
+        gmsh.write(path)
+
+
 def junctions_named(message):
     """The junction sheets a T-junction message names: [((x, y, z), [face numbers])]."""
     return [((float(x), float(y), float(z)), [int(f[4:]) for f in faces.split()])
