@@ -30,8 +30,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
-#include <set>
 #include <tuple>
 
 #include "core/threads.hpp"
@@ -59,6 +59,7 @@ constexpr double kFlushShare = 0.5;   // a flush rim piece: at least this share 
 constexpr double kThinPart = 0.1;       // the thin piece: at least this share of the face's crossing sample area
 constexpr double kThinStep = 0.75;      // the thin piece's thickest (90th percentile) below this x the other's thinnest
 constexpr double kThinMisplaced = 0.1;  // at most this share of the thin piece's area on the wrong side of the line
+constexpr double kAcrossShare = 0.02;   // of a wall face's crossing ray area: the least a face across it takes
 
 // The knots of the face's surface along u (alongV lines sit on them) or v: where a B-spline skin joins a flat
 // to a round, its curvature jumps at a knot.
@@ -195,14 +196,18 @@ std::optional<std::vector<FaceSplit>> bestSplit(const CadSolid& cad, const FaceS
   return best->splits;
 }
 
-// The faces across a wall face's wall (those its crossing rays hit) as triangles (face_sampling.hpp).
+// The faces across a wall face's wall (those its crossing rays hit, each for at least kAcrossShare of their area: a
+// ray or two from a corner that hit the wall beside it are no face across) as triangles (face_sampling.hpp).
 TriangleTree facesAcross(const CadSolid& cad, const FaceSide& fs) {
-  std::set<int> across;
+  std::map<int, double> hit;  // face -> crossing ray area
+  double crossing = 0;
   for (const RayMark& m : fs.marks)
-    if (m.crossing) across.insert(m.hitFace);
+    if (m.crossing) hit[m.hitFace] += m.area, crossing += m.area;
   std::vector<Triangle> triangles;
-  for (int g : across)
+  for (const auto& [g, area] : hit) {
+    if (area < kAcrossShare * crossing) continue;
     for (const Triangle2d& t : faceTriangles(TopoDS::Face(cad.faces(g + 1)))) triangles.push_back(spaceTriangle(t));
+  }
   return TriangleTree(std::move(triangles));
 }
 
