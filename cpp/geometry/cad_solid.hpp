@@ -96,7 +96,7 @@ Vec3 outwardNormal(const TopoDS_Shape& face, double u, double v, double* length 
 Vec3 normalAtEdge(const TopoDS_Face& face, const TopoDS_Edge& edge);
 
 // The solid's volume and centre of mass (adaptive Gauss-Kronrod, to `relativeError`: OpenCASCADE's default rule is 1 %
-// off on B-spline faces). [in] solid, relativeError.
+// off on B-spline faces; a solid of planes only by the adaptive Gauss rule, exact there). [in] solid, relativeError.
 std::pair<double, Vec3> volumeOf(const TopoDS_Shape& solid, double relativeError = 1e-7);
 
 // The face's plane: its surface's if a plane, or the plane a B-spline (or other) surface lies on within tolerance
