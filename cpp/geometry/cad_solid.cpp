@@ -266,8 +266,8 @@ Vec3 normalAtEdge(const TopoDS_Face& face, const TopoDS_Edge& edge) {
 std::pair<double, Vec3> volumeOf(const TopoDS_Shape& solid, double relativeError) {
   bool planes = true;  // the Gauss-Kronrod rule refines without end along a plane's edges oblique to its axes (100 s on
                        // a box turned 30 degrees): a solid of planes only by the Gauss rule, exact on them
-  for (TopExp_Explorer it(solid, TopAbs_FACE); it.More() && planes; it.Next())
-    planes = BRepAdaptor_Surface(TopoDS::Face(it.Current())).GetType() == GeomAbs_Plane;
+  for (TopExp_Explorer it(solid, TopAbs_FACE); it.More() && planes; it.Next())  // a B-spline plane too
+    planes = planeOf(it.Current(), 10 * BRep_Tool::Tolerance(TopoDS::Face(it.Current()))).has_value();
   GProp_GProps props;
   if (planes)
     BRepGProp::VolumeProperties(solid, props, relativeError, false);

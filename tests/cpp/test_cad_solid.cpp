@@ -167,28 +167,31 @@ TEST(CadSolid, VolumeIsExactOnAnalyticAndBSplineFaces) {
 }
 
 // A solid of planes only turned 30 degrees about a skew axis (every edge oblique to its planes' axes, where the
-// Gauss-Kronrod rule took 100 s on a box with a lip): its exact volume and centre of mass, at x1, 1e-3 and 1e3. An
-// L-shaped block (40 x 20 x 10 with a 20 x 20 x 10 step on one half) with a 6 x 4 hole through it.
+// Gauss-Kronrod rule took 100 s on a box with a lip): its exact volume and centre of mass, at x1, 1e-3 and 1e3, its
+// planes as planes and as B-splines. An L-shaped block (40 x 20 x 10 with a 20 x 20 x 10 step on one half) with a 6 x 4
+// hole through it.
 TEST(CadSolid, VolumeIsExactOnASolidOfPlanesTurnedObliquely) {
-  for (double s : {1.0, 1e-3, 1e3}) {
-    SCOPED_TRACE("x " + std::to_string(s));
-    TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(40, 20, 20)).Shape();
-    block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeBox(gp_Pnt(20, -1, 10), gp_Pnt(41, 21, 21)).Shape()).Shape();
-    block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeBox(gp_Pnt(5, 8, -1), gp_Pnt(11, 12, 21)).Shape()).Shape();
-    gp_Trsf turn, scale;
-    turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 2, 3)), 30 * M_PI / 180);
-    scale.SetScale(gp_Pnt(0, 0, 0), s);
-    const TopoDS_Shape placed = BRepBuilderAPI_Transform(block, scale * turn, true).Shape();
-    TopExp_Explorer solid(placed, TopAbs_SOLID);
-    ASSERT_TRUE(solid.More());
-    const double exact = (40 * 20 * 10 + 20 * 20 * 10 - 6 * 4 * 20) * s * s * s;
-    const auto [volume, centre] = volumeOf(solid.Current());
-    EXPECT_NEAR(volume / exact, 1, 1e-9);
-    // the centre: the pieces' centres weighted by their volumes, turned and scaled as the block
-    const gp_XYZ c = (gp_XYZ(20, 10, 5) * 8000 + gp_XYZ(10, 10, 15) * 4000 - gp_XYZ(8, 10, 10) * 480) / (12000 - 480);
-    const gp_Pnt expected = gp_Pnt(c).Transformed(scale * turn);
-    EXPECT_NEAR((Vec3(expected.X(), expected.Y(), expected.Z()) - centre).norm(), 0, 1e-9 * s * 50);
-  }
+  for (double s : {1.0, 1e-3, 1e3})
+    for (bool bspline : {false, true}) {
+      SCOPED_TRACE("x " + std::to_string(s) + (bspline ? " B-spline" : ""));
+      TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(40, 20, 20)).Shape();
+      block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeBox(gp_Pnt(20, -1, 10), gp_Pnt(41, 21, 21)).Shape()).Shape();
+      block = BRepAlgoAPI_Cut(block, BRepPrimAPI_MakeBox(gp_Pnt(5, 8, -1), gp_Pnt(11, 12, 21)).Shape()).Shape();
+      gp_Trsf turn, scale;
+      turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 2, 3)), 30 * M_PI / 180);
+      scale.SetScale(gp_Pnt(0, 0, 0), s);
+      TopoDS_Shape placed = BRepBuilderAPI_Transform(block, scale * turn, true).Shape();
+      if (bspline) placed = BRepBuilderAPI_NurbsConvert(placed, true).Shape();
+      TopExp_Explorer solid(placed, TopAbs_SOLID);
+      ASSERT_TRUE(solid.More());
+      const double exact = (40 * 20 * 10 + 20 * 20 * 10 - 6 * 4 * 20) * s * s * s;
+      const auto [volume, centre] = volumeOf(solid.Current());
+      EXPECT_NEAR(volume / exact, 1, 1e-9);
+      // the centre: the pieces' centres weighted by their volumes, turned and scaled as the block
+      const gp_XYZ c = (gp_XYZ(20, 10, 5) * 8000 + gp_XYZ(10, 10, 15) * 4000 - gp_XYZ(8, 10, 10) * 480) / (12000 - 480);
+      const gp_Pnt expected = gp_Pnt(c).Transformed(scale * turn);
+      EXPECT_NEAR((Vec3(expected.X(), expected.Y(), expected.Z()) - centre).norm(), 0, 1e-9 * s * 50);
+    }
 }
 
 // A file holding only the closed shell of a part (as sheet-metal exports often do) gives its solid.
