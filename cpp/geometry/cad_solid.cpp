@@ -30,7 +30,6 @@
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
 #include <XSControl_Reader.hxx>
 #include <gp_Trsf.hxx>
@@ -266,8 +265,7 @@ Vec3 normalAtEdge(const TopoDS_Face& face, const TopoDS_Edge& edge) {
 std::pair<double, Vec3> volumeOf(const TopoDS_Shape& solid, double relativeError) {
   bool planes = true;  // the Gauss-Kronrod rule refines without end along a plane's edges oblique to its axes (100 s on
                        // a box turned 30 degrees): a solid of planes only by the Gauss rule, exact on them
-  for (TopExp_Explorer it(solid, TopAbs_FACE); it.More() && planes; it.Next())  // a B-spline plane too
-    planes = planeOf(it.Current(), 10 * BRep_Tool::Tolerance(TopoDS::Face(it.Current()))).has_value();
+  for (TopExp_Explorer it(solid, TopAbs_FACE); it.More() && planes; it.Next()) planes = isFlat(it.Current());
   GProp_GProps props;
   if (planes)
     BRepGProp::VolumeProperties(solid, props, relativeError, false);
@@ -303,6 +301,10 @@ std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance) {
   GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(TopoDS::Face(face)), tolerance);
   if (!planar.IsPlanar()) return std::nullopt;
   return planar.Plan();
+}
+
+bool isFlat(const TopoDS_Shape& face) {
+  return planeOf(face, 10 * BRep_Tool::Tolerance(TopoDS::Face(face))).has_value();
 }
 
 std::optional<gp_Cylinder> cylinderOf(const TopoDS_Shape& face, double tolerance) {

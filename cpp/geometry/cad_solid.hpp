@@ -103,6 +103,10 @@ std::pair<double, Vec3> volumeOf(const TopoDS_Shape& solid, double relativeError
 // (CAD systems and scaling write planes as B-splines); none if it is curved. [in] face, tolerance.
 std::optional<gp_Pln> planeOf(const TopoDS_Shape& face, double tolerance);
 
+// Whether the face lies in a plane within 10 x its own tolerance (planeOf: a plane, or a plane written as a B-spline by
+// a CAD system or by a scaling). [in] face.
+bool isFlat(const TopoDS_Shape& face);
+
 // The face's cylinder: its surface's if a cylinder, or the circular cylinder a B-spline or Bézier surface lies on
 // within tolerance (a boss written as a B-spline, trimmed to the face, has no surface where a rib covers it; its
 // cylinder goes on round). None if it is another shape. [in] face, tolerance: absolute.

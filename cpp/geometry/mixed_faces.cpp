@@ -13,7 +13,6 @@
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
-#include <GeomLib_IsPlanarSurface.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
@@ -370,12 +369,6 @@ std::vector<FaceSplit> splitsAcrossRounds(const CadSolid& cad, const WallSides& 
   return out;
 }
 
-// Whether the face lies in a plane: a plane, or a surface of another kind that is flat (a plane written as a
-// B-spline by a CAD system or by a scaling). [in] face.
-bool isFlat(const TopoDS_Face& face) {
-  return GeomLib_IsPlanarSurface(BRep_Tool::Surface(face), 10 * BRep_Tool::Tolerance(face)).IsPlanar();
-}
-
 // A crossing sample's parameter along a split line's normal (alongV: u) and its ray's length and area.
 struct Thickness {
   double at, length, area;
@@ -469,7 +462,7 @@ std::vector<FaceSplit> findMixedFaces(const CadSolid& cad, const WallSides& side
     const FaceSide& fs = sides.faces[f];
     if (fs.marks.size() < kMinMarks || fs.wallShare < kRimPiece) return std::vector<FaceSplit>{};  // a rim face
     if (std::optional<std::vector<FaceSplit>> s = bestSplit(cad, fs, sides.thickness, f)) return *s;
-    if (fs.side == Side::Lateral || !isFlat(TopoDS::Face(cad.faces(f + 1)))) return std::vector<FaceSplit>{};
+    if (fs.side == Side::Lateral || !isFlat(cad.faces(f + 1))) return std::vector<FaceSplit>{};
     std::vector<FaceSplit> splits;
     if (std::optional<FaceSplit> s = flushRimSplit(cad, fs, f, sides.thickness)) {
       splits.push_back(*s);
