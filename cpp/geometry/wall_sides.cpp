@@ -112,19 +112,22 @@ double airGapAhead(RayCaster& rays, const Vec3& p, const Vec3& outward, double t
   return hit ? hit->w : 0;
 }
 
-// The inward ray of a mark (its sample): the face it first meets and how far, none beyond `reach`. [in,out] m;
-// [in] rays; [in] skip: hits nearer than this are the sample's own face.
-void castMark(RayMark& m, RayCaster& rays, double skip, double reach) {
-  const std::optional<RayHit> hit = rays.nearest(m.point, -m.normal, skip, reach);
+// Hits nearer than this share of the part's diagonal are the sample's own face.
+double raySkip(const CadSolid& cad) { return 1e-5 * cad.diagonal; }
+
+// The inward ray of a mark (its sample): the face it first meets and how far, none beyond twice the part's diagonal.
+// [in,out] m; [in] rays, cad.
+void castMark(RayMark& m, RayCaster& rays, const CadSolid& cad) {
+  const std::optional<RayHit> hit = rays.nearest(m.point, -m.normal, raySkip(cad), 2 * cad.diagonal);
   m.hitFace = hit ? hit->face : -1, m.length = hit ? hit->w : 0;
 }
 
 // Whether a mark's ray crosses the wall, and if so the air gap in front of its sample (airGapAhead, unless `gap` is
-// given: the same ray's, measured before). [in,out] m; [in] boundary, rays, skip; [in] gap.
-void markCrossing(RayMark& m, const BoundaryTriangles& boundary, RayCaster& rays, double skip,
+// given: the same ray's, measured before). [in,out] m; [in] boundary, rays, cad; [in] gap.
+void markCrossing(RayMark& m, const BoundaryTriangles& boundary, RayCaster& rays, const CadSolid& cad,
                   std::optional<double> gap = std::nullopt) {
   m.crossing = m.hitFace >= 0 && crossesWall(boundary, m.point, -m.normal, m.length);
-  m.airGap = !m.crossing ? 0 : gap ? *gap : airGapAhead(rays, m.point, m.normal, m.length, skip);
+  m.airGap = !m.crossing ? 0 : gap ? *gap : airGapAhead(rays, m.point, m.normal, m.length, raySkip(cad));
 }
 
 // A face's rays from its marks (every sample, in order). [in] marks.
@@ -149,12 +152,11 @@ FaceRays raysOfMarks(std::vector<RayMark> marks) {
 FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, RayCaster& rays, int f) {
   const TopoDS_Shape& face = cad.faces(f + 1);
   const double spacing = std::sqrt(std::max(triangulatedArea(face), 1e-30) / kRaysPerFace);
-  const double skip = 1e-5 * cad.diagonal;
   std::vector<RayMark> marks;
   for (const FaceSample& s : sampleFace(face, spacing)) {
     RayMark m{s.u, s.v, s.area, s.point, s.normal};
-    castMark(m, rays, skip, 2 * cad.diagonal);
-    markCrossing(m, boundary, rays, skip);
+    castMark(m, rays, cad);
+    markCrossing(m, boundary, rays, cad);
     marks.push_back(m);
   }
   return raysOfMarks(std::move(marks));
@@ -166,14 +168,13 @@ FaceRays castInwardRays(const CadSolid& cad, const BoundaryTriangles& boundary, 
 // [in] faceNow: per face before, its index in cad if left as it was, else -1; [in] boundary, rays.
 FaceRays reusedRays(const CadSolid& cad, std::vector<RayMark> marks, const std::vector<int>& faceNow,
                     const BoundaryTriangles& boundary, RayCaster& rays) {
-  const double skip = 1e-5 * cad.diagonal;
   for (RayMark& m : marks) {
     const std::optional<double> gap = m.crossing ? std::optional<double>(m.airGap) : std::nullopt;
     if (m.hitFace >= 0 && faceNow[m.hitFace] >= 0)
       m.hitFace = faceNow[m.hitFace];
     else if (m.hitFace >= 0)
-      castMark(m, rays, skip, 2 * cad.diagonal);
-    markCrossing(m, boundary, rays, skip, gap);
+      castMark(m, rays, cad);
+    markCrossing(m, boundary, rays, cad, gap);
   }
   return raysOfMarks(std::move(marks));
 }
