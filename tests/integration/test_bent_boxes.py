@@ -82,31 +82,34 @@ class BentBoxes(unittest.TestCase):
         uses = collections.Counter(tuple(sorted((q[k], q[(k + 1) % 4]))) for q in quads for k in range(4))
         self.assertEqual(set(uses.values()), {2}, "the boundary is not closed")
 
-    def check_box(self, part, layers, volume, junctions, mean_sj=MEAN_SJ):
-        """The written mesh and its report as the module's note says; `junctions` the kinds of the report's."""
-        path, report = self.mesh(part, layers)
+    def check_box(self, part, layers, volume, junctions, mean_sj=MEAN_SJ, min_sj=MIN_SJ, step=None, scale=None):
+        """The written mesh and its report as the module's note says; `junctions` the kinds of the report's. The part
+        is the sample's, or `step` (written at `scale`: its Euler characteristic measured at that scale)."""
+        path, report = self.mesh_file(step, layers) if step else self.mesh(part, layers)
         nodes, elements, _ = read_inp(path)
         self.assertTrue(all(len(n) == 8 for _, n in elements), "8-node hexes only")
         x, hexes, _ = hex_arrays(nodes, elements)
         self.assertEqual(len(hexes) % layers, 0)
         self.assertGreater(hex_volumes(x, hexes).min(), 0, "a hex of zero or negative volume")
         sj = hex_scaled_jacobians(x, hexes)
-        self.assertGreaterEqual(sj.min(), MIN_SJ)
+        self.assertGreaterEqual(sj.min(), min_sj)
         self.assertGreaterEqual(sj.mean(), mean_sj)
         volume_error = hex_volumes(x, hexes).sum() / volume - 1
         self.assertLess(abs(volume_error), VOLUME_TOL)
         self.check_closed(hexes)
-        scale = 1e-3 if part.endswith("_metres") else 1.0
-        cad_euler = surface_euler_characteristic(os.path.join(samples(), part + ".step"), EULER_TRIANGLE_SIZE * scale)
+        if scale is None:
+            scale = 1e-3 if part.endswith("_metres") else 1.0
+        cad_euler = surface_euler_characteristic(step or os.path.join(samples(), part + ".step"),
+                                                 EULER_TRIANGLE_SIZE * scale)
         self.assertEqual(boundary_euler_characteristic(hexes), cad_euler)
         self.assertEqual([j["kind"] for j in report["junctions"]], junctions)
         self.assertTrue(report["boundary"]["watertight"], report["boundary"])
         self.assertTrue(report["boundary"]["same_topology_as_cad"], report["boundary"])
         self.assertEqual(report["inverted_hexes"], 0)
         self.assertTrue(report["validation"]["passed"], report["validation"])
-        print(f"{part} ({layers} layers): {len(hexes)} hexes, scaled Jacobian min {sj.min():.3f} avg {sj.mean():.3f}, "
-              f"volume {100 * volume_error:+.3f} %, Euler characteristic {cad_euler}, quads "
-              f"{report['quad_mesh'].get('layout', '?')}")
+        print(f"{os.path.basename(step) if step else part} ({layers} layers): {len(hexes)} hexes, scaled Jacobian "
+              f"min {sj.min():.3f} avg {sj.mean():.3f}, volume {100 * volume_error:+.3f} %, Euler characteristic "
+              f"{cad_euler}, quads {report['quad_mesh'].get('layout', '?')}")
         return report
 
     def test_bent_boxes_mesh_as_one_sheet(self):
@@ -132,28 +135,14 @@ class BentBoxes(unittest.TestCase):
             self.assertEqual(report["quad_mesh"]["layout"], "patch-grid")
 
     def check_bspline_twins(self, part, volume, junctions, min_sj):
-        """The part with every face a B-spline (as another CAD system may write it), as drawn and in metres: all hex,
-        scaled Jacobian min >= min_sj and avg >= MEAN_SJ, its volume, closed, its topology, valid, the patch grid's
-        quads and the junctions of `junctions`' kinds."""
+        """The part with every face a B-spline (as another CAD system may write it), as drawn and in metres, checked
+        as the sample is (check_box) with scaled Jacobian min >= min_sj, and its quads the patch grid."""
         for name, scale in (("drawn", 1.0), ("metres", 1e-3)):
             with self.subTest(part=part, twin=name):
                 step = os.path.join(self.tmp.name, f"{os.path.basename(part)}_{name}.step")
                 write_as_bsplines(os.path.join(samples(), part + ".step"), step, scale)
-                path, report = self.mesh_file(step, 2)
-                nodes, elements, _ = read_inp(path)
-                x, hexes, _ = hex_arrays(nodes, elements)
-                sj = hex_scaled_jacobians(x, hexes)
+                report = self.check_box(part, 2, volume * scale ** 3, junctions, min_sj=min_sj, step=step, scale=scale)
                 self.assertEqual(report["quad_mesh"]["layout"], "patch-grid")
-                self.assertEqual([j["kind"] for j in report["junctions"]], junctions)
-                self.assertGreater(hex_volumes(x, hexes).min(), 0)
-                self.assertGreaterEqual(sj.min(), min_sj)
-                self.assertGreaterEqual(sj.mean(), MEAN_SJ)
-                self.assertLess(abs(hex_volumes(x, hexes).sum() / (volume * scale ** 3) - 1), VOLUME_TOL)
-                self.check_closed(hexes)
-                self.assertTrue(report["boundary"]["same_topology_as_cad"], report["boundary"])
-                self.assertTrue(report["validation"]["passed"], report["validation"])
-                print(f"{part} as B-splines, {name}: {len(hexes)} hexes, scaled Jacobian min {sj.min():.3f} "
-                      f"avg {sj.mean():.3f}")
 
     def test_chamfered_tray_twins(self):
         """tray_chamfered as B-splines, as drawn and in metres: its bubbles lie elsewhere, and a chamfer's patch of the
