@@ -34,6 +34,10 @@ namespace {
 
 constexpr int kRaysPerFace = 150;
 constexpr double kMaxSlenderness = 0.25;  // wall thickness over the part's diagonal
+// The same for a junction piece (a solid with a cut face): the part it was cut from passed kMaxSlenderness; a short
+// thick rib or a block standing against a wall (a tab 2.5 walls thick, 3 long) is chunky by itself once cut off at its
+// foot. A piece whose wall is about as thick as its other sides are long (a cube: 1 / sqrt(3)) is still refused.
+constexpr double kMaxPieceSlenderness = 0.45;
 // Wall faces facing a wall on their own side, as a share of the wall area, above which the sheet branches.
 constexpr double kMaxJunctionAreaShare = 0.02;
 // A ray crosses the wall when its middle is farther than this share of its half-length from every boundary
@@ -333,9 +337,12 @@ void requireThin(const WallSides& w, const CadSolid& cad, double thicknessEveryw
   std::ostringstream msg;
   const double thickness = w.thickness > 0 ? w.thickness : thicknessEverywhere;
   const double slenderness = thickness / cad.diagonal;
-  if (w.thickness > 0 && w.sheetAreaShare >= 0.5 && slenderness <= kMaxSlenderness) return;
+  const bool piece = std::any_of(cad.cutInput.begin(), cad.cutInput.end(), [](char cut) { return cut != 0; });
+  const double most = piece ? kMaxPieceSlenderness : kMaxSlenderness;
+  if (w.thickness > 0 && w.sheetAreaShare >= 0.5 && slenderness <= most) return;
   msg << "not a thin section: measured thickness " << thickness / cad.unit << " over part size (diagonal) "
-      << cad.diagonal / cad.unit << " = " << slenderness << " (a thin section has at most " << kMaxSlenderness << ")";
+      << cad.diagonal / cad.unit << " = " << slenderness << " (a thin " << (piece ? "junction piece" : "section")
+      << " has at most " << most << ")";
   if (w.thickness > 0)
     msg << ", top+bottom area share " << w.sheetAreaShare << " (at least 0.5)";
   else

@@ -67,6 +67,10 @@ constexpr double kMaxAutoQuads = 250000;
 // How far a rim node may move onto the rim faces, in walls: half of a rim cut obliquely 3.2 walls wide
 // (wall_sides.hpp), with room.
 constexpr double kRimReach = 1.6;
+// A sweep column's end this far from the wall's foot node on it, in walls, is put on it before the smoothing
+// (placeFootEnds): half the reach the join takes (meshPiece's wallShare, half a wall); a nearer one is left to the
+// join.
+constexpr double kFootEndNear = 0.25;
 // Tears of the chordal surface (fillTears) are rim loops no longer than this many walls.
 constexpr double kMaxTear = 5;
 
@@ -534,29 +538,34 @@ std::vector<const WallFoot*> feetMeshedBefore(const JunctionPieces& t, int s) {
 }
 
 // A piece's hexes and whether they are a column's: a column found on the part (Sheet::column) is meshed as one (a low
-// pad alone would mesh as a flat sheet lying on its foot); another piece by the sheet method, its quads edited by
-// `carry` and its hexes by `swept`, or as a column where that method refuses a standing piece that carries no footprint
-// (a pin: `not a thin section`). [in] solid, o, cutFaces, columnSize, across: as meshColumn's; [in] foundColumn,
-// standing, carries: the piece's kind, whether it stands on another, whether others stand on it; [in,out] boxes. Throws
-// the sheet method's error.
+// pad alone would mesh as a flat sheet lying on its foot), or by the sheet method where the cut left it no column (a
+// block against a wall: cut off the floor and the wall, it has two feet); another piece by the sheet method, its quads
+// edited by `carry` and its hexes by `swept`, or as a column where that method refuses a standing piece that carries no
+// footprint (a pin: `not a thin section`). [in] solid, o, cutFaces, columnSize, across: as meshColumn's; [in]
+// foundColumn, standing, carries: the piece's kind, whether it stands on another, whether others stand on it; [in,out]
+// boxes. Throws the sheet method's error.
 std::pair<MeshResult, bool> pieceHexes(const TopoDS_Solid& solid, bool foundColumn, bool standing, bool carries,
                                        const MeshOptions& o, const QuadEdit& carry, const HexEdit& swept,
                                        const std::vector<char>& cutFaces, double columnSize,
                                        const std::vector<FootprintQuads>& across, FaceBoxes& boxes) {
+  if (foundColumn && carries) throw geometryError("column: walls stand on a post or block, which is not meshed yet");
   std::exception_ptr sheetError;
-  if (!foundColumn) {
+  auto bySheetMethod = [&]() -> std::optional<MeshResult> {
     try {
-      return {meshSolid(solid, o, carry, cutFaces, &boxes, swept), false};
+      return meshSolid(solid, o, carry, cutFaces, &boxes, swept);
     } catch (const Error& e) {
       if (e.code() != ExitCode::UnsupportedGeometry || !standing || carries) throw;
       sheetError = std::current_exception();
+      return std::nullopt;
     }
-  } else if (carries) {
-    throw geometryError("column: walls stand on a post or block, which is not meshed yet");
-  }
+  };
+  if (!foundColumn)
+    if (std::optional<MeshResult> sheet = bySheetMethod()) return {std::move(*sheet), false};
   if (std::optional<MeshResult> column = meshColumn(solid, o, cutFaces, columnSize, across, &boxes))
     return {std::move(*column), true};
-  if (sheetError) std::rethrow_exception(sheetError);
+  if (foundColumn && standing && std::count(cutFaces.begin(), cutFaces.end(), 1) > 1)  // two feet: no column
+    if (std::optional<MeshResult> sheet = bySheetMethod()) return {std::move(*sheet), false};
+  if (sheetError && !foundColumn) std::rethrow_exception(sheetError);
   throw geometryError(
       "column: a post or block stands on the sheet, but it is no column (its foot is not one face, or is tilted over "
       "45 degrees to its sides, or a face of it overhangs the foot), which is not meshed yet");
@@ -625,6 +634,8 @@ void meshPiece(JunctionPieces& t, int s, const TopoDS_Solid& solid, const MeshOp
       const FootprintInsertion in =
           insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads), o.gmshRuns.get());
       for (int m : merged.node) column.push_back(in.node[m]);
+      stage.feet.clear();
+      for (std::size_t k = 0; k < column.size(); ++k) stage.feet.push_back({column[k], footprint.nodes[k] * c.unit});
       t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
       stage.quads = in.quads;
       std::vector<char> onFootprint(stage.quads.nodes.size(), 0);
@@ -1095,11 +1106,13 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   const ChordalLocator locator(stage.chordal);
   SweepResult swept = clock.run("sweep", [&] { return sweepToWalls(quads, locator, cad, sides, o.layers); });
   result.mesh = std::move(swept.mesh);
+  const std::vector<char> onFeet =  // the walls' foot nodes
+      placeFootEnds(result.mesh, quads, stage.feet, kFootEndNear * sides.thickness);
   r.untangled = swept.untangled;
   r.rimProjection =
       clock.run("rim", [&] { return projectRim(result.mesh, cad, sides, walls, kRimReach * sides.thickness); });
   r.rimCap = clock.run("rim_cap", [&] { return capRims(result.mesh, cad, sides, walls); });
-  r.smoothing = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides); });
+  r.smoothing = clock.run("smoothing", [&] { return smoothPoorHexes(result.mesh, walls, sides, onFeet); });
   r.sharpEdges = clock.run("sharp_edges", [&] { return captureSharpEdges(result.mesh, cad, sides); });
   if (hexEdit) hexEdit(cad, stage, result.mesh);
   if (o.order == 2) r.quadratic = clock.run("quadratic", [&] { return makeQuadratic(result.mesh, walls); });

@@ -57,6 +57,12 @@ struct PatchSplit {
   bool ownPatches = false;
 };
 
+// Where a wall standing on the sheet has a foot node: on quad node `quadNode`'s sweep column, at `at`.
+struct FootEnd {
+  int quadNode = -1;
+  Vec3 at = Vec3::Zero();
+};
+
 struct QuadMeshOptions {
   double size = 0;                 // target edge length (uniform sizing)
   int ringAround = 0;              // the ring grid's quads round (ringGrid), 0: from the size

@@ -39,7 +39,11 @@ struct QuadStage {
   // Facet edges shorter than kSliverEdge x the median edge of the surface as cut: where there are any, the faired
   // levels are not tried (fairing folds the facets round them).
   std::size_t sliverEdges = 0;
-  QuadTries tries;           // the Gmsh tries of every fairing level tried (also in quads.tries)
+  QuadTries tries;  // the Gmsh tries of every fairing level tried (also in quads.tries)
+  // The walls' foot nodes on the sheet's quads (carried in by the pipeline's edit; empty: none): per foot node, the
+  // quad node under it and where it is, in the stage's units. The end of that quad node's sweep column nearer to it
+  // is put there (placeFootEnds), and the hex smoothing leaves it there.
+  std::vector<FootEnd> feet;
   double budgetSeconds = 0;  // the stage's time budget used
 };
 

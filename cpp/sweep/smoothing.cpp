@@ -204,9 +204,17 @@ std::vector<char> withHexesAround(const HexMesh& mesh, const std::vector<char>& 
   return out;
 }
 
+// The candidates but the pinned nodes. [in] candidate, pinned: one flag per node (pinned empty: none).
+std::vector<char> unpinned(std::vector<char> candidate, const std::vector<char>& pinned) {
+  for (std::size_t v = 0; v < pinned.size() && v < candidate.size(); ++v)
+    if (pinned[v]) candidate[v] = 0;
+  return candidate;
+}
+
 }  // namespace
 
-SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const WallSides& sides) {
+SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const WallSides& sides,
+                               const std::vector<char>& pinned) {
   SmoothingStats stats;
   const std::vector<double> sj = scaledJacobians(mesh);
   for (const double q : sj) {
@@ -231,11 +239,12 @@ SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const 
   };
   auto worstAround = [&](int v) { return hexesAround(v).worst; };
   stats.nodesMoved = smoothRounds(
-      mesh, sides, nodesOfHexesBelow(mesh, sj, kPoorHex), hexesAt, neighbours, false,
+      mesh, sides, unpinned(nodesOfHexesBelow(mesh, sj, kPoorHex), pinned), hexesAt, neighbours, false,
       [&](const Freedom& f, int v) { return laplacianMove(mesh, walls, f, v, neighbours[v], worstAround); });
   stats.searchMoves = smoothRounds(
-      mesh, sides, withHexesAround(mesh, nodesOfHexesBelow(mesh, scaledJacobians(mesh), kBadHex)), hexesAt, neighbours,
-      true, [&](const Freedom& f, int v) { return searchMove(mesh, walls, f, v, neighbours[v], hexesAround); });
+      mesh, sides, unpinned(withHexesAround(mesh, nodesOfHexesBelow(mesh, scaledJacobians(mesh), kBadHex)), pinned),
+      hexesAt, neighbours, true,
+      [&](const Freedom& f, int v) { return searchMove(mesh, walls, f, v, neighbours[v], hexesAround); });
   const std::vector<double> after = scaledJacobians(mesh);
   stats.worstAfter = *std::min_element(after.begin(), after.end());
   return stats;

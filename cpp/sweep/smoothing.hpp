@@ -14,6 +14,7 @@
 // turns a corner folds the hexes between them).
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include "core/types.hpp"
 #include "geometry/wall_projector.hpp"
@@ -29,7 +30,9 @@ struct SmoothingStats {
 };
 
 // [in,out] mesh: a linear layered mesh (nodeFace, nodeOnRim and nodeLayer sized); nodes moved, nodeFace of the
-// nodes moved onto the CAD updated. [in] walls, sides: the nearest-point projector and the faces' sides.
-SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const WallSides& sides);
+// nodes moved onto the CAD updated. [in] walls, sides: the nearest-point projector and the faces' sides. [in] pinned:
+// per node, whether it stays where it is (a node a wall's foot shares, whose place the wall gives; empty: none).
+SmoothingStats smoothPoorHexes(HexMesh& mesh, const WallProjector& walls, const WallSides& sides,
+                               const std::vector<char>& pinned = {});
 
 }  // namespace hexlayer

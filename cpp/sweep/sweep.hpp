@@ -66,4 +66,14 @@ SweepResult sweepQuads(const QuadMesh& quads, const ChordalLocator& chordal, int
 // indexed by its bottom node (empty for the other nodes). [in] mesh: nodeLayer sized.
 std::vector<std::vector<int>> columnsByBottom(const HexMesh& mesh);
 
+// Each foot end's sweep column (quad node i's: nodes i * (layers + 1) ..., as layeredHexes numbers them): its end
+// nearer to `at` put there if it is farther than `near` from it, and the nodes between that end and the chordal
+// surface put on the new half line as layerNode puts them. A wall's foot node lies on the sheet's wall, where the
+// joined mesh takes it for the column's end; the sweep line from the chordal surface ends at it, or near (a column
+// sheared by a tilted wall's foot: a pin upright through a sloping plate), except at a bend's inside corner between
+// walls of different thickness, where it ends 1-2 mm off. [in,out] mesh: as swept; [in] quads: the quad mesh swept
+// (its nodes the chordal points); [in] feet; [in] near. Returns per node of the mesh whether it is a foot end, put or
+// near (empty without feet): the smoothing leaves it.
+std::vector<char> placeFootEnds(HexMesh& mesh, const QuadMesh& quads, const std::vector<FootEnd>& feet, double near);
+
 }  // namespace hexlayer

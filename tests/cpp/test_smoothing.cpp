@@ -58,6 +58,20 @@ TEST(Smoothing, AFreeInnerNodeGoesBackWhereItsHexesAreSquare) {
   for (int k = 0; k <= 2; k += 2) EXPECT_EQ(m.nodes[id(1, 1, k)], Vec3(1, 1, k)) << "not free: a wall node off the CAD";
 }
 
+// The same pushed node pinned (a node a wall's foot shares, whose place the wall gives: placeFootEnds'): it stays, and
+// its hexes stay poor.
+TEST(Smoothing, APinnedNodeStaysWhereItIs) {
+  const Box box;
+  HexMesh m = block();
+  m.nodes[id(1, 1, 1)] += Vec3(0.7, 0.7, 0);
+  const Vec3 pushed = m.nodes[id(1, 1, 1)];
+  std::vector<char> pinned(m.nodes.size(), 0);
+  pinned[id(1, 1, 1)] = 1;
+  const SmoothingStats s = smoothPoorHexes(m, box.walls, box.sides, pinned);
+  EXPECT_EQ(m.nodes[id(1, 1, 1)], pushed);
+  EXPECT_LT(s.worstAfter, 0.9);
+}
+
 // A thin block (layers 0.1 high, hexes 1 wide) whose top node above inner node (1, 1, 1) is sheared 0.8 along x:
 // its hexes start at 0.097. At its neighbours' mean (where the Laplacian move takes it) the vertical edge above it
 // stays slanted far more than the one below, and the Laplacian rounds alone end at 0.116. The pattern search

@@ -224,6 +224,40 @@ TEST(Sweep, SweepQuadsTurnsClockwiseQuads) {
   }
 }
 
+// A wall's foot node on the sheet's top wall 0.8 beside the top of quad node (1, 1)'s column (a bend's inside corner
+// between walls of different thickness): that end is put there, the column's nodes above the chordal surface on the
+// new half line at their offsets, those below left. A foot node under the sheet moves the bottom end. Both ends are
+// reported, and with `near` beyond their distances both are reported but neither is moved. No feet: nothing.
+TEST(Sweep, PlaceFootEndsPutsTheNearerEndOnTheWallsFootNode) {
+  const ChordalSurface s = flatGrid(2, 2, unitRadius);  // centre vertex (1, 1) has id 4
+  const ChordalLocator locator(s);
+  const QuadMesh q = sameQuads(s);
+  for (const int m : {2, 3}) {
+    SCOPED_TRACE("layers " + std::to_string(m));
+    const HexMesh before = sweepQuads(q, locator, m).mesh;
+    HexMesh h = before;
+    EXPECT_TRUE(placeFootEnds(h, q, {}, 0).empty());
+    const int first = 4 * (m + 1), last = first + m;
+    const Vec3 top(1.8, 1, 1), bottom(0.4, 0, -1);
+    const std::vector<FootEnd> feet{{4, top}, {0, bottom}};
+    const std::vector<char> near = placeFootEnds(h, q, feet, 1.0);
+    EXPECT_EQ(h.nodes, before.nodes);
+    const std::vector<char> placed = placeFootEnds(h, q, feet, 0.1);
+    EXPECT_EQ(near, placed);
+    const std::vector<double> offsets = layerOffsets(m);
+    for (int k = 0; k <= m; ++k) {
+      const Vec3 on = Vec3(1, 1, 0) + offsets[k] * (top - Vec3(1, 1, 0));
+      EXPECT_LT((h.nodes[first + k] - (offsets[k] > 0 ? on : before.nodes[first + k])).norm(), 1e-12) << k;
+    }
+    EXPECT_EQ(h.nodes[last], top);
+    EXPECT_EQ(h.nodes[0], bottom);
+    EXPECT_EQ(std::count(placed.begin(), placed.end(), 1), 2);
+    EXPECT_TRUE(placed[last] && placed[0]);
+    for (std::size_t n = 0; n < h.nodes.size(); ++n)
+      if (n / (m + 1) != 4 && n / (m + 1) != 0) EXPECT_EQ(h.nodes[n], before.nodes[n]);
+  }
+}
+
 // The hex node offsets scale with the interpolated radius (§7.2: s = 2r / m).
 TEST(Sweep, SweepQuadsScalesLayersWithTheRadius) {
   const ChordalSurface s = flatGrid(2, 1, growingRadius);  // r = 1 + x / 2

@@ -289,6 +289,36 @@ TEST(WallSides, ALowRibsPieceHasWallsWhenItsFootIsACut) {
     }
 }
 
+// A tab's piece cut off a box's floor and wall (the Framework cover's tab, 2.5 walls thick): 5 x 6 x 13, its faces
+// z = 0 and y = 6 the feet (cuts through the part). Its wall, 5 thick, is 0.33 of its own diagonal: over the whole
+// part's bar (0.25), not over a piece's (kMaxPieceSlenderness); the same box with no cut face is refused, and a cube
+// piece still is. At scales 1, 1e-3, 1e3.
+TEST(WallSides, AChunkyJunctionPieceIsThinWhileAWholePartAsChunkyIsNot) {
+  for (const double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    for (const auto& [width, length] : {std::pair{5.0, 6.0}, std::pair{13.0, 13.0}}) {  // a cube: 0.58
+      const TopoDS_Solid tab = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), width * s, length * s, 13 * s).Solid();
+      CadSolid cad = prepareSolid(tab, normalizingUnit(tab));
+      EXPECT_THROW(classifyWallSides(cad), Error);
+      cad.cutInput.assign(cad.faces.Extent(), 0);
+      for (int f = 0; f < cad.faces.Extent(); ++f) {
+        const Vec3 c = faceCentre(cad, f) / cad.unit / s;
+        cad.cutInput[f] =
+            surfaceOf(cad, f).GetType() == GeomAbs_Plane && (std::abs(c.z()) < 1e-9 || std::abs(c.y() - length) < 1e-9);
+      }
+      if (length == 13) {
+        EXPECT_THROW(classifyWallSides(cad), Error);
+        continue;
+      }
+      const WallSides w = classifyWallSides(cad);
+      EXPECT_NEAR(w.thickness / cad.unit / s, 5, 1e-6);
+      for (int f = 0; f < cad.faces.Extent(); ++f)
+        if (w.faces[f].side != Side::Lateral)
+          EXPECT_NEAR(std::abs(faceCentre(cad, f).x() / cad.unit / s - 2.5), 2.5, 1e-6);
+    }
+  }
+}
+
 // An open hem (Resources/samples/gaps/hem_narrow: a 1 mm sheet folded back round R0.3, the air between the legs 0.6
 // wide): the sheet's inner face, the leg's and the fold's inside face the solid across the air, 0.6 walls away; the
 // outer faces face nothing within 1.5 walls. The same in metres.
