@@ -72,18 +72,60 @@ TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges(const CadSolid& cad) {
   return edgeFaces;
 }
 
-// Per face (0-based), the sheet it belongs to: a sheet's walls, and the rim faces beside a standing sheet's walls
-// (a rib's end face); -1 for the other rim faces.
-std::vector<int> sheetOfFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
+// Per face (0-based), whether it is a lateral face inside a bend: it meets two or more walls of the first sheet it
+// meets (walls standing on it aside), all on one side, each in a concave edge (a chamfer or round filling a bend's
+// inside corner), where a rim face meets walls on both sides. [in] cad, sides; [in] wallSheet: wallSheetOfFaces'; [in]
+// concave: concaveEdges(cad).
+std::vector<char> insideBendFaces(const CadSolid& cad, const WallSides& sides, const std::vector<int>& wallSheet,
+                                  const std::vector<FacePairEdge>& concave) {
+  const int n = static_cast<int>(sides.faces.size());
+  std::set<int> concaveEdge;
+  for (const FacePairEdge& c : concave) concaveEdge.insert(c.edge);
+  struct Meeting {
+    int wall;
+    Side side;
+    bool concave;
+  };
+  std::vector<std::map<int, std::vector<Meeting>>> bySheet(n);  // per lateral face: per sheet, its walls met
+  const TopTools_IndexedDataMapOfShapeListOfShape edgeFaces = facesOfEdges(cad);
+  for (int e = 1; e <= edgeFaces.Extent(); ++e) {
+    std::vector<int> faces;
+    for (const TopoDS_Shape& f : edgeFaces(e)) faces.push_back(cad.faces.FindIndex(f) - 1);
+    const bool isConcave = concaveEdge.count(cad.edges.FindIndex(edgeFaces.FindKey(e)) - 1) > 0;
+    for (int a : faces)
+      for (int b : faces)
+        if (sides.faces[a].side == Side::Lateral && wallSheet[b] >= 0)
+          bySheet[a][wallSheet[b]].push_back({b, sides.faces[b].side, isConcave});
+  }
+  std::vector<char> inside(n, 0);
+  for (int a = 0; a < n; ++a) {
+    if (bySheet[a].empty()) continue;
+    const std::vector<Meeting>& met = bySheet[a].begin()->second;
+    std::set<int> walls;
+    for (const Meeting& m : met) walls.insert(m.wall);
+    inside[a] = walls.size() >= 2 && std::all_of(met.begin(), met.end(), [&](const Meeting& m) {
+                  return m.concave && m.side == met.front().side;
+                });
+  }
+  return inside;
+}
+
+// Per face (0-based), the sheet it belongs to: a sheet's walls, the rim faces beside a standing sheet's walls (a rib's
+// end face) and the faces inside a bend (insideBendFaces: a wall may stand across one, its foot on it too); -1 for the
+// other rim faces. [in] cad, sides, sheets; [in] concave: concaveEdges(cad).
+std::vector<int> sheetOfFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
+                              const std::vector<FacePairEdge>& concave) {
   const std::vector<int> sheet = wallSheetOfFaces(sheets, sides.faces.size());
   const TopTools_IndexedDataMapOfShapeListOfShape edgeFaces = facesOfEdges(cad);
   std::vector<int> rimSheet(sheet);
+  const std::vector<char> inside = insideBendFaces(cad, sides, sheet, concave);
   for (int e = 1; e <= edgeFaces.Extent(); ++e) {
     std::vector<int> faces;
     for (const TopoDS_Shape& f : edgeFaces(e)) faces.push_back(cad.faces.FindIndex(f) - 1);
     for (int a : faces)
       for (int b : faces)
-        if (sides.faces[a].side == Side::Lateral && sheet[b] > 0) rimSheet[a] = sheet[b];
+        if (sides.faces[a].side == Side::Lateral && sheet[b] >= 0 && (inside[a] || sheet[b] > 0))
+          rimSheet[a] = sheet[b];
   }
   return rimSheet;
 }
@@ -94,6 +136,7 @@ struct Junctions {
   const WallSides& sides;
   const std::vector<Sheet>& sheets;
   std::vector<int> sheetOf;                             // sheetOfFaces
+  std::vector<char> insideBend;                         // insideBendFaces
   std::vector<FacePairEdge> concave;                    // concaveEdges
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;  // facesOfEdges
 };
@@ -142,8 +185,8 @@ std::map<int, std::vector<TopoDS_Edge>> footEdges(const Junctions& j, int s) {
   std::map<int, std::vector<TopoDS_Edge>> edges;
   for (const FacePairEdge& c : j.concave)
     for (const auto& [base, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
-      if (j.sheetOf[base] >= 0 && j.sheetOf[base] < s && j.sides.faces[base].side != Side::Lateral &&
-          j.sheetOf[other] == s)
+      if (j.sheetOf[base] >= 0 && j.sheetOf[base] < s &&
+          (j.sides.faces[base].side != Side::Lateral || j.insideBend[base]) && j.sheetOf[other] == s)
         edges[base].push_back(TopoDS::Edge(j.cad.edges(c.edge + 1)));
   for (auto& [base, on] : edges) {
     const std::vector<TopoDS_Edge> flush = flushFootEdges(j, s, base);
@@ -156,6 +199,14 @@ gp_Pnt endPoint(const TopoDS_Wire& wire, bool first) {
   TopoDS_Vertex a, b;
   TopExp::Vertices(wire, a, b);
   return BRep_Tool::Pnt(first ? a : b);
+}
+
+// Whether the open wire runs straight from end to end (its length that of the segment between its ends): closed on
+// itself, it bounds no area. [in] wire, tolerance.
+bool straightWire(const TopoDS_Wire& wire, double tolerance) {
+  GProp_GProps length;
+  BRepGProp::LinearProperties(wire, length);
+  return length.Mass() - endPoint(wire, true).Distance(endPoint(wire, false)) <= tolerance;
 }
 
 // The direction in which the edge leaves through its end `at`: its tangent there, pointing away from it; none if `at`
@@ -241,7 +292,9 @@ std::optional<std::array<TopoDS_Edge, 2>> roundRimCorner(const std::vector<TopoD
 // The foot edges joined into closed wires. Open chains are closed by segments on the base wall's surface between
 // their free ends: first an end and the end it runs on to (a rib's foot continued under a rib crossing it), then
 // the nearest free ends (a foot running to the wall's edge, a partition's two edges between walls), round the corner
-// of the base's rim where the foot covers one (roundRimCorner, on a plane base; rims: the base face's rim edges).
+// of the base's rim where the foot covers one (roundRimCorner, on a plane base; rims: the base face's rim edges). The
+// two ends of a straight chain are not joined to each other (a wall standing across a narrow face of the base, a bend's
+// chamfer or a strip between two walls: its two sides' edges on it are shorter than the wall is thick).
 std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, const Handle(Geom_Surface) & surface,
                                      const std::vector<Handle(Geom_Surface)>& along,
                                      const std::vector<TopoDS_Edge>& rims, double tolerance) {
@@ -250,11 +303,14 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, cons
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, wires);
   std::vector<gp_Pnt> ends;
   std::vector<gp_Vec> out;
+  std::vector<int> straight;  // per end: its wire's index if that runs straight, else -1
   for (int i = 1; i <= wires->Length(); ++i) {
     const TopoDS_Wire w = TopoDS::Wire(wires->Value(i));
     if (BRep_Tool::IsClosed(w) || endPoint(w, true).Distance(endPoint(w, false)) <= tolerance) continue;
+    const int line = straightWire(w, tolerance) ? i : -1;
     for (const bool first : {true, false})
-      ends.push_back(endPoint(w, first)), out.push_back(outward(w, endPoint(w, first), tolerance));
+      ends.push_back(endPoint(w, first)), out.push_back(outward(w, endPoint(w, first), tolerance)),
+          straight.push_back(line);
   }
   std::vector<char> used(ends.size(), 0);
   auto runsOn = [&](std::size_t i, std::size_t j) {  // the segment from end i to end j continues both
@@ -268,7 +324,8 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, cons
       double best = std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < ends.size(); ++i)
         for (std::size_t j = i + 1; j < ends.size(); ++j)
-          if (!used[i] && !used[j] && (!continuing || runsOn(i, j)) && ends[i].Distance(ends[j]) < best)
+          if (!used[i] && !used[j] && (straight[i] < 0 || straight[i] != straight[j]) &&
+              (!continuing || runsOn(i, j)) && ends[i].Distance(ends[j]) < best)
             best = ends[i].Distance(ends[j]), bi = i, bj = j;
       if (!std::isfinite(best)) break;
       used[bi] = used[bj] = 1;
@@ -564,7 +621,7 @@ bool bothWallsOn(const std::map<std::pair<int, int>, std::vector<Vec3>>& normals
 // [in] sheets: by decreasing area.
 std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, const std::vector<FacePairEdge>& concave,
                                  std::vector<Sheet> sheets) {
-  const std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets);
+  const std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets, concave);
   std::map<std::pair<int, int>, std::vector<Vec3>> normals;  // (own sheet, other sheet) -> own walls' normals there
   for (const FacePairEdge& c : concave)
     for (const auto& [own, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
@@ -595,9 +652,9 @@ std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, co
 
 std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
   const int n = static_cast<int>(sheets.size());
-  const std::vector<int> faceSheet = sheetOfFaces(cad, sides, sheets);
-  std::vector<std::set<int>> meets(n);  // the standing sheets each meets in a concave edge
   const std::vector<FacePairEdge> concave = concaveEdges(cad);
+  const std::vector<int> faceSheet = sheetOfFaces(cad, sides, sheets, concave);
+  std::vector<std::set<int>> meets(n);  // the standing sheets each meets in a concave edge
   for (const FacePairEdge& c : concave)
     if (const int a = faceSheet[c.a], b = faceSheet[c.b]; a > 0 && b > 0 && a != b)
       meets[a].insert(b), meets[b].insert(a);
@@ -685,7 +742,14 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
     std::iota(same.begin(), same.end(), 0);
     return {{cad.solid}, {0}, {}, {same}};
   }
-  const Junctions junctions{cad, sides, sheets, sheetOfFaces(cad, sides, sheets), concaveEdges(cad), facesOfEdges(cad)};
+  const std::vector<FacePairEdge> concave = concaveEdges(cad);
+  const Junctions junctions{cad,
+                            sides,
+                            sheets,
+                            sheetOfFaces(cad, sides, sheets, concave),
+                            insideBendFaces(cad, sides, wallSheetOfFaces(sheets, sides.faces.size()), concave),
+                            concave,
+                            facesOfEdges(cad)};
   JunctionCut cut;
   TopTools_ListOfShape arguments, tools;
   arguments.Append(cad.solid);

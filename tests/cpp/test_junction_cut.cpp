@@ -7,10 +7,13 @@
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <GProp_GProps.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp.hxx>
@@ -238,6 +241,47 @@ TEST(JunctionCut, WallsStandingOnWalls) {
       expectPiecesAddUp(c);
     }
   }
+}
+
+// A plate 60 x 40 x 2 bent up into a lip 3 thick and 8 high along y = 0, the bend's inside corner chamfered 1 and its
+// outside `outer` (0: sharp), and a tab 5 thick (x = 30..35) standing on the plate against the lip across the chamfer,
+// 9 along the plate, 12 high (the Framework cover's tab). The tab's edges on the chamfer are two short lines across
+// it, each a straight chain: closed on itself it bounded no area, and the cut left the tab joined to the plate
+// (`no piece holds the sheet`); with the outside sharp the chamfer is a lateral face inside the bend (insideBendFaces).
+// Cut now into two pieces of one sheet each (their feet cuts), feet on the lip (5 x 5), the chamfer (5 x 1.41) and the
+// plate (5 x 8), the volumes adding up; at scales 1, 1e-3, 1e3.
+TEST(JunctionCut, ATabAcrossABendsChamferedInsideCorner) {
+  for (const double outer : {3.0, 0.0})
+    for (const double s : {1.0, 1e-3, 1e3}) {
+      SCOPED_TRACE("outer " + std::to_string(outer) + " x " + std::to_string(s));
+      BRepBuilderAPI_MakePolygon profile;
+      std::vector<std::pair<double, double>> corners{{outer, 0}, {40, 0}, {40, 2}, {4, 2}, {3, 3}, {3, 8}, {0, 8}};
+      if (outer > 0) corners.emplace_back(0, outer);
+      for (const auto& [y, z] : corners) profile.Add(gp_Pnt(0, y * s, z * s));
+      profile.Close();
+      const TopoDS_Shape bent =
+          BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(60 * s, 0, 0)).Shape();
+      BRepAlgoAPI_Fuse fuse(bent, BRepPrimAPI_MakeBox(gp_Pnt(30 * s, 3 * s, 1 * s), 5 * s, 9 * s, 11 * s).Shape());
+      ShapeUpgrade_UnifySameDomain unify(fuse.Shape());
+      unify.Build();
+      TopExp_Explorer solid(unify.Shape(), TopAbs_SOLID);
+      ASSERT_TRUE(solid.More());
+      const SampleCut c = cutSolid(TopoDS::Solid(solid.Current()));
+      ASSERT_EQ(c.cut.pieces.size(), 2u);
+      double area = 0;
+      for (const Foot& f : c.cut.feet) area += f.area;
+      EXPECT_NEAR(area / (c.cad.unit * c.cad.unit) / (s * s), 25 + 5 * std::sqrt(2.0) + 40, 1e-6);
+      EXPECT_EQ(c.cut.feet.size(), 3u);
+      double volume = 0;
+      for (std::size_t p = 0; p < c.cut.pieces.size(); ++p) {  // one sheet each, its feet cuts (as the pipeline has it)
+        volume += exactVolume(c.cut.pieces[p]);
+        CadSolid piece = prepareSolid(c.cut.pieces[p], normalizingUnit(c.cut.pieces[p]));
+        for (int origin : c.cut.faceOrigin[p]) piece.cutInput.push_back(origin < 0);
+        EXPECT_EQ(findSheets(piece, classifyWallSides(piece)).size(), 1u) << "piece " << p;
+      }
+      EXPECT_NEAR(volume / c.cad.volume, 1, 1e-9);
+      expectFaceOrigins(c.cad, c.cut);
+    }
 }
 
 // A tab 1 thick sticking out of the 2 mm plate's side face (mid-thickness): it stands on the plate's rim face, not on
