@@ -72,10 +72,10 @@ TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges(const CadSolid& cad) {
   return edgeFaces;
 }
 
-// Per face (0-based), whether it is a lateral face inside a bend: it meets two or more walls of the first sheet it
-// meets (walls standing on it aside), all on one side, each in a concave edge (a chamfer or round filling a bend's
-// inside corner), where a rim face meets walls on both sides. [in] cad, sides; [in] wallSheet: wallSheetOfFaces'; [in]
-// concave: concaveEdges(cad).
+// Per face (0-based), whether it is a lateral face inside a bend: a face of no sheet (not a column's side) that meets
+// two or more walls of the first sheet it meets (walls standing on it aside), all on one side, each in a concave edge
+// (a chamfer or round filling a bend's inside corner), where a rim face meets walls on both sides. [in] cad, sides;
+// [in] wallSheet: wallSheetOfFaces'; [in] concave: concaveEdges(cad).
 std::vector<char> insideBendFaces(const CadSolid& cad, const WallSides& sides, const std::vector<int>& wallSheet,
                                   const std::vector<FacePairEdge>& concave) {
   const int n = static_cast<int>(sides.faces.size());
@@ -99,7 +99,7 @@ std::vector<char> insideBendFaces(const CadSolid& cad, const WallSides& sides, c
   }
   std::vector<char> inside(n, 0);
   for (int a = 0; a < n; ++a) {
-    if (bySheet[a].empty()) continue;
+    if (bySheet[a].empty() || wallSheet[a] >= 0) continue;  // no lateral face of a sheet (a column's side)
     const std::vector<Meeting>& met = bySheet[a].begin()->second;
     std::set<int> walls;
     for (const Meeting& m : met) walls.insert(m.wall);

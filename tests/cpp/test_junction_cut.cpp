@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <BRepAdaptor_Surface.hxx>
 
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -24,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <set>
 #include <string>
 #include <tuple>
@@ -189,6 +191,26 @@ SampleCut cutSample(const std::string& name, double s) {
   return cutSolid(test_boxes::scaled(read, s));
 }
 
+// The first solid of a boolean's result, its faces unified, cut at its junctions (cutSolid); its feet's areas, in the
+// solid's units, none of them on a face of the sheet standing on it.
+struct BooleanCut {
+  SampleCut c;
+  std::vector<double> footAreas;
+};
+BooleanCut cutBoolean(const TopoDS_Shape& result) {
+  ShapeUpgrade_UnifySameDomain unify(result);
+  unify.Build();
+  TopExp_Explorer solid(unify.Shape(), TopAbs_SOLID);
+  EXPECT_TRUE(solid.More());
+  BooleanCut out{cutSolid(TopoDS::Solid(solid.Current())), {}};
+  for (const Foot& f : out.c.cut.feet) {
+    out.footAreas.push_back(f.area / (out.c.cad.unit * out.c.cad.unit));
+    const std::vector<int>& own = out.c.sheets[out.c.cut.sheetOf[f.sheet]].faces;
+    EXPECT_EQ(std::count(own.begin(), own.end(), f.baseFace), 0) << "a foot on the standing sheet's own face";
+  }
+  return out;
+}
+
 // Every piece is one sheet and the pieces' volumes are the part's.
 void expectPiecesAddUp(const SampleCut& c) {
   double volume = 0;
@@ -245,15 +267,16 @@ TEST(JunctionCut, WallsStandingOnWalls) {
 
 // A plate 60 x 40 x 2 bent up into a lip 3 thick and 8 high along y = 0, the bend's inside corner chamfered 1 and its
 // outside `outer` (0: sharp), and a tab 5 thick (x = 30..35) standing on the plate against the lip across the chamfer,
-// 9 along the plate, 12 high (the Framework cover's tab). The tab's edges on the chamfer are two short lines across
-// it, each a straight chain: closed on itself it bounded no area, and the cut left the tab joined to the plate
-// (`no piece holds the sheet`); with the outside sharp the chamfer is a lateral face inside the bend (insideBendFaces).
-// Cut now into two pieces of one sheet each (their feet cuts), feet on the lip (5 x 5), the chamfer (5 x 1.41) and the
-// plate (5 x 8), the volumes adding up; at scales 1, 1e-3, 1e3.
+// `along` the plate, 12 high (the Framework cover's tabs: 9 along, a sheet; 5 along, a column). The tab's edges on the
+// chamfer are two short lines across it, each a straight chain: closed on itself it bounded no area, and the cut left
+// the tab joined to the plate (`no piece holds the sheet`); with the outside sharp the chamfer is a lateral face inside
+// the bend (insideBendFaces), and a column's sides are no such face. Cut now into two pieces (the tab's one sheet, its
+// feet cuts; the column's not meshed yet: three feet), feet on the lip (5 x 5), the chamfer (5 x 1.41) and the plate
+// (5 x (along - 1)), the volumes adding up; at scales 1, 1e-3, 1e3.
 TEST(JunctionCut, ATabAcrossABendsChamferedInsideCorner) {
-  for (const double outer : {3.0, 0.0})
+  for (const auto& [outer, along] : {std::pair{3.0, 9.0}, std::pair{0.0, 9.0}, std::pair{3.0, 5.0}})
     for (const double s : {1.0, 1e-3, 1e3}) {
-      SCOPED_TRACE("outer " + std::to_string(outer) + " x " + std::to_string(s));
+      SCOPED_TRACE("outer " + std::to_string(outer) + " along " + std::to_string(along) + " x " + std::to_string(s));
       BRepBuilderAPI_MakePolygon profile;
       std::vector<std::pair<double, double>> corners{{outer, 0}, {40, 0}, {40, 2}, {4, 2}, {3, 3}, {3, 8}, {0, 8}};
       if (outer > 0) corners.emplace_back(0, outer);
@@ -261,20 +284,17 @@ TEST(JunctionCut, ATabAcrossABendsChamferedInsideCorner) {
       profile.Close();
       const TopoDS_Shape bent =
           BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(60 * s, 0, 0)).Shape();
-      BRepAlgoAPI_Fuse fuse(bent, BRepPrimAPI_MakeBox(gp_Pnt(30 * s, 3 * s, 1 * s), 5 * s, 9 * s, 11 * s).Shape());
-      ShapeUpgrade_UnifySameDomain unify(fuse.Shape());
-      unify.Build();
-      TopExp_Explorer solid(unify.Shape(), TopAbs_SOLID);
-      ASSERT_TRUE(solid.More());
-      const SampleCut c = cutSolid(TopoDS::Solid(solid.Current()));
+      BRepAlgoAPI_Fuse fuse(bent, BRepPrimAPI_MakeBox(gp_Pnt(30 * s, 3 * s, 1 * s), 5 * s, along * s, 11 * s).Shape());
+      const BooleanCut cut = cutBoolean(fuse.Shape());
+      const SampleCut& c = cut.c;
       ASSERT_EQ(c.cut.pieces.size(), 2u);
-      double area = 0;
-      for (const Foot& f : c.cut.feet) area += f.area;
-      EXPECT_NEAR(area / (c.cad.unit * c.cad.unit) / (s * s), 25 + 5 * std::sqrt(2.0) + 40, 1e-6);
+      const double area = std::accumulate(cut.footAreas.begin(), cut.footAreas.end(), 0.0);
+      EXPECT_NEAR(area / (s * s), 25 + 5 * std::sqrt(2.0) + 5 * (along - 1), 1e-6);
       EXPECT_EQ(c.cut.feet.size(), 3u);
       double volume = 0;
       for (std::size_t p = 0; p < c.cut.pieces.size(); ++p) {  // one sheet each, its feet cuts (as the pipeline has it)
         volume += exactVolume(c.cut.pieces[p]);
+        if (c.sheets[c.cut.sheetOf[p]].column) continue;
         CadSolid piece = prepareSolid(c.cut.pieces[p], normalizingUnit(c.cut.pieces[p]));
         for (int origin : c.cut.faceOrigin[p]) piece.cutInput.push_back(origin < 0);
         EXPECT_EQ(findSheets(piece, classifyWallSides(piece)).size(), 1u) << "piece " << p;
@@ -282,6 +302,25 @@ TEST(JunctionCut, ATabAcrossABendsChamferedInsideCorner) {
       EXPECT_NEAR(volume / c.cad.volume, 1, 1e-9);
       expectFaceOrigins(c.cad, c.cut);
     }
+}
+
+// The Framework cover's (shared/parts/real) upper tab with the plate, the chamfered bend and the lip round it (the part
+// cut to x 120..135, z 115..140): a column 5 x 5 across the bend, standing on the plate, the bend's inside chamfer and
+// the lip. Its sides were taken for faces inside the bend (lateral, meeting walls of one sheet and one side in concave
+// edges), a foot was put on one, and the cut left the tab joined to the plate (`no piece holds the sheet`). Cut now,
+// feet on the lip (5 x 5), the chamfer (5 x 1.41) and the plate (5 x 4), none on the tab's own faces.
+TEST(JunctionCut, TheFrameworkCoversUpperTabIsCutOffItsBentPlate) {
+  const TopoDS_Solid cover = readSolids(std::string(HEXLAYER_SHARED_PARTS) + "/framework_top_cover_r_full.stp").at(0);
+  BRepAlgoAPI_Common crop(cover, BRepPrimAPI_MakeBox(gp_Pnt(120, -20, 115), gp_Pnt(135, 20, 140)).Shape());
+  const BooleanCut cut = cutBoolean(crop.Shape());
+  ASSERT_EQ(cut.c.cut.pieces.size(), 2u);
+  std::vector<double> areas = cut.footAreas;
+  std::sort(areas.begin(), areas.end());
+  ASSERT_EQ(areas.size(), 3u);
+  EXPECT_NEAR(areas[0], 5 * std::sqrt(2.0), 1e-3);
+  EXPECT_NEAR(areas[1], 20, 1e-3);
+  EXPECT_NEAR(areas[2], 25, 1e-3);
+  expectFaceOrigins(cut.c.cad, cut.c.cut);
 }
 
 // A tab 1 thick sticking out of the 2 mm plate's side face (mid-thickness): it stands on the plate's rim face, not on
