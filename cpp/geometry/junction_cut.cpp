@@ -72,13 +72,14 @@ TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges(const CadSolid& cad) {
   return edgeFaces;
 }
 
-// Per face (0-based), whether it is a lateral face inside a bend: a face of no sheet (not a column's side) that meets
-// two or more walls of the first sheet it meets (walls standing on it aside), all on one side, each in a concave edge
-// (a chamfer or round filling a bend's inside corner), where a rim face meets walls on both sides. [in] cad, sides;
-// [in] wallSheet: wallSheetOfFaces'; [in] concave: concaveEdges(cad).
-std::vector<char> insideBendFaces(const CadSolid& cad, const WallSides& sides, const std::vector<int>& wallSheet,
+// Per face (0-based), the sheet whose bend it is inside, -1 if none: a lateral face of no sheet (not a column's side)
+// that meets two or more walls of the first sheet it meets (walls standing on it aside), all on one side, each in a
+// concave edge (a chamfer or round filling a bend's inside corner), where a rim face meets walls on both sides. [in]
+// cad, sides, sheets; [in] concave: concaveEdges(cad).
+std::vector<int> bendSheetOfFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
                                   const std::vector<FacePairEdge>& concave) {
   const int n = static_cast<int>(sides.faces.size());
+  const std::vector<int> wallSheet = wallSheetOfFaces(sheets, sides.faces.size());
   std::set<int> concaveEdge;
   for (const FacePairEdge& c : concave) concaveEdge.insert(c.edge);
   struct Meeting {
@@ -97,36 +98,36 @@ std::vector<char> insideBendFaces(const CadSolid& cad, const WallSides& sides, c
         if (sides.faces[a].side == Side::Lateral && wallSheet[b] >= 0)
           bySheet[a][wallSheet[b]].push_back({b, sides.faces[b].side, isConcave});
   }
-  std::vector<char> inside(n, 0);
+  std::vector<int> bendSheet(n, -1);
   for (int a = 0; a < n; ++a) {
     if (bySheet[a].empty() || wallSheet[a] >= 0) continue;  // no lateral face of a sheet (a column's side)
-    const std::vector<Meeting>& met = bySheet[a].begin()->second;
+    const auto& [sheet, met] = *bySheet[a].begin();
     std::set<int> walls;
     for (const Meeting& m : met) walls.insert(m.wall);
-    inside[a] = walls.size() >= 2 && std::all_of(met.begin(), met.end(), [&](const Meeting& m) {
-                  return m.concave && m.side == met.front().side;
-                });
+    if (walls.size() >= 2 &&
+        std::all_of(met.begin(), met.end(), [&](const Meeting& m) { return m.concave && m.side == met.front().side; }))
+      bendSheet[a] = sheet;
   }
-  return inside;
+  return bendSheet;
 }
 
-// Per face (0-based), the sheet it belongs to: a sheet's walls, the rim faces beside a standing sheet's walls (a rib's
-// end face) and the faces inside a bend (insideBendFaces: a wall may stand across one, its foot on it too); -1 for the
-// other rim faces. [in] cad, sides, sheets; [in] concave: concaveEdges(cad).
+// Per face (0-based), the sheet it belongs to: a sheet's walls, the faces inside its bends (bendSheet: a wall may stand
+// across one, its foot on it too) and the rim faces beside a standing sheet's walls (a rib's end face); -1 for the
+// other rim faces. [in] cad, sides, sheets; [in] bendSheet: bendSheetOfFaces'.
 std::vector<int> sheetOfFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
-                              const std::vector<FacePairEdge>& concave) {
+                              const std::vector<int>& bendSheet) {
   const std::vector<int> sheet = wallSheetOfFaces(sheets, sides.faces.size());
   const TopTools_IndexedDataMapOfShapeListOfShape edgeFaces = facesOfEdges(cad);
   std::vector<int> rimSheet(sheet);
-  const std::vector<char> inside = insideBendFaces(cad, sides, sheet, concave);
   for (int e = 1; e <= edgeFaces.Extent(); ++e) {
     std::vector<int> faces;
     for (const TopoDS_Shape& f : edgeFaces(e)) faces.push_back(cad.faces.FindIndex(f) - 1);
     for (int a : faces)
       for (int b : faces)
-        if (sides.faces[a].side == Side::Lateral && sheet[b] >= 0 && (inside[a] || sheet[b] > 0))
-          rimSheet[a] = sheet[b];
+        if (sides.faces[a].side == Side::Lateral && sheet[b] > 0 && bendSheet[a] < 0) rimSheet[a] = sheet[b];
   }
+  for (std::size_t a = 0; a < bendSheet.size(); ++a)
+    if (bendSheet[a] >= 0) rimSheet[a] = bendSheet[a];
   return rimSheet;
 }
 
@@ -135,8 +136,8 @@ struct Junctions {
   const CadSolid& cad;
   const WallSides& sides;
   const std::vector<Sheet>& sheets;
+  std::vector<int> bendSheet;                           // bendSheetOfFaces
   std::vector<int> sheetOf;                             // sheetOfFaces
-  std::vector<char> insideBend;                         // insideBendFaces
   std::vector<FacePairEdge> concave;                    // concaveEdges
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;  // facesOfEdges
 };
@@ -186,7 +187,7 @@ std::map<int, std::vector<TopoDS_Edge>> footEdges(const Junctions& j, int s) {
   for (const FacePairEdge& c : j.concave)
     for (const auto& [base, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
       if (j.sheetOf[base] >= 0 && j.sheetOf[base] < s &&
-          (j.sides.faces[base].side != Side::Lateral || j.insideBend[base]) && j.sheetOf[other] == s)
+          (j.sides.faces[base].side != Side::Lateral || j.bendSheet[base] >= 0) && j.sheetOf[other] == s)
         edges[base].push_back(TopoDS::Edge(j.cad.edges(c.edge + 1)));
   for (auto& [base, on] : edges) {
     const std::vector<TopoDS_Edge> flush = flushFootEdges(j, s, base);
@@ -621,7 +622,7 @@ bool bothWallsOn(const std::map<std::pair<int, int>, std::vector<Vec3>>& normals
 // [in] sheets: by decreasing area.
 std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, const std::vector<FacePairEdge>& concave,
                                  std::vector<Sheet> sheets) {
-  const std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets, concave);
+  const std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets, bendSheetOfFaces(cad, sides, sheets, concave));
   std::map<std::pair<int, int>, std::vector<Vec3>> normals;  // (own sheet, other sheet) -> own walls' normals there
   for (const FacePairEdge& c : concave)
     for (const auto& [own, other] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}})
@@ -653,7 +654,7 @@ std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, co
 std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
   const int n = static_cast<int>(sheets.size());
   const std::vector<FacePairEdge> concave = concaveEdges(cad);
-  const std::vector<int> faceSheet = sheetOfFaces(cad, sides, sheets, concave);
+  const std::vector<int> faceSheet = sheetOfFaces(cad, sides, sheets, bendSheetOfFaces(cad, sides, sheets, concave));
   std::vector<std::set<int>> meets(n);  // the standing sheets each meets in a concave edge
   for (const FacePairEdge& c : concave)
     if (const int a = faceSheet[c.a], b = faceSheet[c.b]; a > 0 && b > 0 && a != b)
@@ -743,13 +744,9 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
     return {{cad.solid}, {0}, {}, {same}};
   }
   const std::vector<FacePairEdge> concave = concaveEdges(cad);
-  const Junctions junctions{cad,
-                            sides,
-                            sheets,
-                            sheetOfFaces(cad, sides, sheets, concave),
-                            insideBendFaces(cad, sides, wallSheetOfFaces(sheets, sides.faces.size()), concave),
-                            concave,
-                            facesOfEdges(cad)};
+  std::vector<int> bendSheet = bendSheetOfFaces(cad, sides, sheets, concave);
+  std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets, bendSheet);
+  const Junctions junctions{cad, sides, sheets, std::move(bendSheet), std::move(sheetOf), concave, facesOfEdges(cad)};
   JunctionCut cut;
   TopTools_ListOfShape arguments, tools;
   arguments.Append(cad.solid);

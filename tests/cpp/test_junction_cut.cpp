@@ -270,7 +270,7 @@ TEST(JunctionCut, WallsStandingOnWalls) {
 // `along` the plate, 12 high (the Framework cover's tabs: 9 along, a sheet; 5 along, a column). The tab's edges on the
 // chamfer are two short lines across it, each a straight chain: closed on itself it bounded no area, and the cut left
 // the tab joined to the plate (`no piece holds the sheet`); with the outside sharp the chamfer is a lateral face inside
-// the bend (insideBendFaces), and a column's sides are no such face. Cut now into two pieces (the tab's one sheet, its
+// the bend (bendSheetOfFaces), and a column's sides are no such face. Cut now into two pieces (the tab's one sheet, its
 // feet cuts; the column's not meshed yet: three feet), feet on the lip (5 x 5), the chamfer (5 x 1.41) and the plate
 // (5 x (along - 1)), the volumes adding up; at scales 1, 1e-3, 1e3.
 TEST(JunctionCut, ATabAcrossABendsChamferedInsideCorner) {
