@@ -53,6 +53,9 @@ namespace hexlayer {
 namespace {
 
 constexpr double kRunsOn = 0.999;  // cosine: a closing segment this near an open foot chain's direction continues it
+// Cosine: a segment closing a foot chain on itself turns back along it where it leaves an end at more than 120 degrees
+// to the chain's direction there (a line or a shallow arc across a narrow face: a sliver of no or little area).
+constexpr double kTurnsBack = -0.5;
 constexpr double kOppositeWalls = 0.9;  // cosine: a sheet's two walls at its foot face opposite ways
 constexpr int kSeamSamples = 4;         // points per foot edge, less one, that the seam of its surface keeps away from
 constexpr double kOnBoth = 100;         // x kJoin: a gap's closing edge along a curved wall also lies on the base's
@@ -202,14 +205,6 @@ gp_Pnt endPoint(const TopoDS_Wire& wire, bool first) {
   return BRep_Tool::Pnt(first ? a : b);
 }
 
-// Whether the open wire runs straight from end to end (its length that of the segment between its ends): closed on
-// itself, it bounds no area. [in] wire, tolerance.
-bool straightWire(const TopoDS_Wire& wire, double tolerance) {
-  GProp_GProps length;
-  BRepGProp::LinearProperties(wire, length);
-  return length.Mass() - endPoint(wire, true).Distance(endPoint(wire, false)) <= tolerance;
-}
-
 // The direction in which the edge leaves through its end `at`: its tangent there, pointing away from it; none if `at`
 // is no end of it. [in] edge, at, tolerance.
 std::optional<gp_Vec> leaving(const TopoDS_Edge& edge, const gp_Pnt& at, double tolerance) {
@@ -293,9 +288,10 @@ std::optional<std::array<TopoDS_Edge, 2>> roundRimCorner(const std::vector<TopoD
 // The foot edges joined into closed wires. Open chains are closed by segments on the base wall's surface between
 // their free ends: first an end and the end it runs on to (a rib's foot continued under a rib crossing it), then
 // the nearest free ends (a foot running to the wall's edge, a partition's two edges between walls), round the corner
-// of the base's rim where the foot covers one (roundRimCorner, on a plane base; rims: the base face's rim edges). The
-// two ends of a straight chain are not joined to each other (a wall standing across a narrow face of the base, a bend's
-// chamfer or a strip between two walls: its two sides' edges on it are shorter than the wall is thick).
+// of the base's rim where the foot covers one (roundRimCorner, on a plane base; rims: the base face's rim edges). A
+// chain's two ends are joined to each other only where no other end is left to join, if the segment turns back along
+// it (a wall standing across a narrow face of the base, a bend's chamfer or round: its two sides' edges on it are
+// lines or arcs shorter than the wall is thick, each closed on itself a sliver).
 std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, const Handle(Geom_Surface) & surface,
                                      const std::vector<Handle(Geom_Surface)>& along,
                                      const std::vector<TopoDS_Edge>& rims, double tolerance) {
@@ -304,29 +300,34 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, cons
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, wires);
   std::vector<gp_Pnt> ends;
   std::vector<gp_Vec> out;
-  std::vector<int> straight;  // per end: its wire's index if that runs straight, else -1
+  std::vector<int> chain;  // per end: its wire
   for (int i = 1; i <= wires->Length(); ++i) {
     const TopoDS_Wire w = TopoDS::Wire(wires->Value(i));
     if (BRep_Tool::IsClosed(w) || endPoint(w, true).Distance(endPoint(w, false)) <= tolerance) continue;
-    const int line = straightWire(w, tolerance) ? i : -1;
     for (const bool first : {true, false})
-      ends.push_back(endPoint(w, first)), out.push_back(outward(w, endPoint(w, first), tolerance)),
-          straight.push_back(line);
+      ends.push_back(endPoint(w, first)), out.push_back(outward(w, endPoint(w, first), tolerance)), chain.push_back(i);
   }
   std::vector<char> used(ends.size(), 0);
   auto runsOn = [&](std::size_t i, std::size_t j) {  // the segment from end i to end j continues both
     const gp_Vec d(ends[i], ends[j]);
     return d.Magnitude() > tolerance && out[i].Dot(d.Normalized()) > kRunsOn && out[j].Dot(-d.Normalized()) > kRunsOn;
   };
+  auto turnsBack = [&](std::size_t i, std::size_t j) {  // the segment from end i to end j closes a chain back on itself
+    const gp_Vec d(ends[i], ends[j]);
+    return chain[i] == chain[j] && d.Magnitude() > tolerance &&
+           (out[i].Dot(d.Normalized()) < kTurnsBack || out[j].Dot(-d.Normalized()) < kTurnsBack);
+  };
+  enum class Pass { Continuing, NotBack, Any };
   const bool plane = GeomAdaptor_Surface(surface).GetType() == GeomAbs_Plane;
-  for (const bool continuing : {true, false})
+  for (const Pass pass : {Pass::Continuing, Pass::NotBack, Pass::Any})
     for (;;) {  // nearest pairs first
+      const bool continuing = pass == Pass::Continuing;
       std::size_t bi = 0, bj = 0;
       double best = std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < ends.size(); ++i)
         for (std::size_t j = i + 1; j < ends.size(); ++j)
-          if (!used[i] && !used[j] && (straight[i] < 0 || straight[i] != straight[j]) &&
-              (!continuing || runsOn(i, j)) && ends[i].Distance(ends[j]) < best)
+          if (!used[i] && !used[j] && (!continuing || runsOn(i, j)) && (pass != Pass::NotBack || !turnsBack(i, j)) &&
+              ends[i].Distance(ends[j]) < best)
             best = ends[i].Distance(ends[j]), bi = i, bj = j;
       if (!std::isfinite(best)) break;
       used[bi] = used[bj] = 1;

@@ -11,16 +11,19 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
+#include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <gp_Ax2.hxx>
 
 #include <algorithm>
@@ -265,31 +268,47 @@ TEST(JunctionCut, WallsStandingOnWalls) {
   }
 }
 
-// A plate 60 x 40 x 2 bent up into a lip 3 thick and 8 high along y = 0, the bend's inside corner chamfered 1 and its
-// outside `outer` (0: sharp), and a tab 5 thick (x = 30..35) standing on the plate against the lip across the chamfer,
-// `along` the plate, 12 high (the Framework cover's tabs: 9 along, a sheet; 5 along, a column). The tab's edges on the
-// chamfer are two short lines across it, each a straight chain: closed on itself it bounded no area, and the cut left
-// the tab joined to the plate (`no piece holds the sheet`); with the outside sharp the chamfer is a lateral face inside
-// the bend (bendSheetOfFaces), and a column's sides are no such face. Cut now into two pieces (the tab's one sheet, its
-// feet cuts; the column's not meshed yet: three feet), feet on the lip (5 x 5), the chamfer (5 x 1.41) and the plate
-// (5 x (along - 1)), the volumes adding up; at scales 1, 1e-3, 1e3.
+// A plate 60 x 40 x 2 bent up into a lip 3 thick and 8 high along y = 0, the bend's inside corner chamfered 1 (or
+// rounded R1) and its outside `outer` (0: sharp), and a tab 5 thick (x = 30..35) standing on the plate against the lip
+// across the chamfer, `along` the plate, 12 high (the Framework cover's tabs: 9 along, a sheet; 5 along, a column). The
+// tab's edges on the chamfer are two short lines across it (on the round, two quarter arcs): each closed on itself
+// bounded no area (a sliver), and the cut left the tab joined to the plate (`no piece holds the sheet`); with the
+// outside sharp the chamfer is a lateral face inside the bend (bendSheetOfFaces), and a column's sides are no such
+// face. Cut now into two pieces (the tab's one sheet, its feet cuts; the column's not meshed yet: three feet), feet on
+// the lip (5 x 5), the chamfer (5 x 1.41; the round 5 x pi / 2) and the plate (5 x (along - 1)), the volumes adding up;
+// at scales 1, 1e-3, 1e3.
 TEST(JunctionCut, ATabAcrossABendsChamferedInsideCorner) {
-  for (const auto& [outer, along] : {std::pair{3.0, 9.0}, std::pair{0.0, 9.0}, std::pair{3.0, 5.0}})
+  for (const auto& [outer, along, round] : {std::tuple{3.0, 9.0, false}, std::tuple{0.0, 9.0, false},
+                                            std::tuple{3.0, 5.0, false}, std::tuple{3.0, 9.0, true}})
     for (const double s : {1.0, 1e-3, 1e3}) {
-      SCOPED_TRACE("outer " + std::to_string(outer) + " along " + std::to_string(along) + " x " + std::to_string(s));
+      SCOPED_TRACE("outer " + std::to_string(outer) + " along " + std::to_string(along) + (round ? " round" : "") +
+                   " x " + std::to_string(s));
       BRepBuilderAPI_MakePolygon profile;
       std::vector<std::pair<double, double>> corners{{outer, 0}, {40, 0}, {40, 2}, {4, 2}, {3, 3}, {3, 8}, {0, 8}};
+      if (round) corners.erase(corners.begin() + 3), corners[3] = {3, 2};  // a sharp inside corner, rounded below
       if (outer > 0) corners.emplace_back(0, outer);
       for (const auto& [y, z] : corners) profile.Add(gp_Pnt(0, y * s, z * s));
       profile.Close();
-      const TopoDS_Shape bent =
+      TopoDS_Shape bent =
           BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(profile.Wire()).Face(), gp_Vec(60 * s, 0, 0)).Shape();
+      if (round) {
+        BRepFilletAPI_MakeFillet fillet(bent);
+        for (TopExp_Explorer e(bent, TopAbs_EDGE); e.More(); e.Next()) {
+          TopoDS_Vertex a, b;
+          TopExp::Vertices(TopoDS::Edge(e.Current()), a, b);
+          const gp_Pnt p = BRep_Tool::Pnt(a), q = BRep_Tool::Pnt(b);
+          if (std::abs(p.Y() - 3 * s) + std::abs(q.Y() - 3 * s) + std::abs(p.Z() - 2 * s) + std::abs(q.Z() - 2 * s) <
+              1e-9 * s)
+            fillet.Add(1 * s, TopoDS::Edge(e.Current()));
+        }
+        bent = fillet.Shape();
+      }
       BRepAlgoAPI_Fuse fuse(bent, BRepPrimAPI_MakeBox(gp_Pnt(30 * s, 3 * s, 1 * s), 5 * s, along * s, 11 * s).Shape());
       const BooleanCut cut = cutBoolean(fuse.Shape());
       const SampleCut& c = cut.c;
       ASSERT_EQ(c.cut.pieces.size(), 2u);
       const double area = std::accumulate(cut.footAreas.begin(), cut.footAreas.end(), 0.0);
-      EXPECT_NEAR(area / (s * s), 25 + 5 * std::sqrt(2.0) + 5 * (along - 1), 1e-6);
+      EXPECT_NEAR(area / (s * s), 25 + 5 * (round ? M_PI / 2 : std::sqrt(2.0)) + 5 * (along - 1), 1e-6);
       EXPECT_EQ(c.cut.feet.size(), 3u);
       double volume = 0;
       for (std::size_t p = 0; p < c.cut.pieces.size(); ++p) {  // one sheet each, its feet cuts (as the pipeline has it)
