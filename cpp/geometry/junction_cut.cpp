@@ -61,6 +61,7 @@ constexpr int kSeamSamples = 4;         // points per foot edge, less one, that 
 constexpr double kOnBoth = 100;         // x kJoin: a gap's closing edge along a curved wall also lies on the base's
 constexpr double kJoin = 1e-7;          // times the part's diagonal: ends of foot edges this close are one point
 constexpr double kRimTurn = 1e-6;       // sine: rims running on from a foot's two ends meet if they turn more
+constexpr double kPlanesMeet = 1e-3;    // three planes whose normals' triple product is smaller meet in no point
 
 double areaOf(const TopoDS_Shape& face) {
   GProp_GProps props;
@@ -77,7 +78,8 @@ TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges(const CadSolid& cad) {
 
 // Per face (0-based), the sheet whose bend it is inside, -1 if none: a lateral face of no sheet (not a column's side)
 // that meets two or more walls of the first sheet it meets (walls standing on it aside), all on one side, each in a
-// concave edge (a chamfer or round filling a bend's inside corner), where a rim face meets walls on both sides. [in]
+// concave edge (a chamfer or round filling a bend's inside corner), where a rim face meets walls on both sides, and
+// meets no other sheet's wall in a convex edge (a rim face of that sheet: a boss's top in a box's corner). [in]
 // cad, sides, sheets; [in] concave: concaveEdges(cad).
 std::vector<int> bendSheetOfFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
                                   const std::vector<FacePairEdge>& concave) {
@@ -105,6 +107,10 @@ std::vector<int> bendSheetOfFaces(const CadSolid& cad, const WallSides& sides, c
   for (int a = 0; a < n; ++a) {
     if (bySheet[a].empty() || wallSheet[a] >= 0) continue;  // no lateral face of a sheet (a column's side)
     const auto& [sheet, met] = *bySheet[a].begin();
+    const bool rimOfAnother = std::any_of(std::next(bySheet[a].begin()), bySheet[a].end(), [](const auto& other) {
+      return std::any_of(other.second.begin(), other.second.end(), [](const Meeting& m) { return !m.concave; });
+    });
+    if (rimOfAnother) continue;  // a standing sheet's rim face against the walls (a boss's top in a box's corner)
     std::set<int> walls;
     for (const Meeting& m : met) walls.insert(m.wall);
     if (walls.size() >= 2 &&
@@ -242,20 +248,56 @@ TopoDS_Edge edgeOnSurface(const Handle(Geom_Surface) & surface, const gp_Pnt& a,
   return edge;
 }
 
-// The edge closing a foot chain's gap from a to b on the base wall's surface: where a and b both lie on a curved
-// surface of `along` (the standing sheet's own wall, or another wall it stands on) and the edge along that surface
-// lies on the base's too, that edge (a rib's foot on a plate ends on a boss's foot circle, not on its chord: the two
-// feet meet on one curve); else edgeOnSurface on the base's. [in] surface: the base's; [in] along; [in] a, b.
-TopoDS_Edge closingEdge(const Handle(Geom_Surface) & surface, const std::vector<Handle(Geom_Surface)>& along,
-                        const gp_Pnt& a, const gp_Pnt& b, double tolerance) {
-  for (const Handle(Geom_Surface) & other : along) {
-    if (!liesOn(other, a, tolerance) || !liesOn(other, b, tolerance)) continue;
-    const TopoDS_Edge edge = edgeOnSurface(other, a, b, tolerance);
-    const BRepAdaptor_Curve curve(edge);
-    if (liesOn(surface, curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter())), kOnBoth * tolerance))
-      return edge;
-  }
-  return edgeOnSurface(surface, a, b, tolerance);
+// What a foot chain's gaps are closed on: the base wall's surface, the sheet's feet on other base surfaces and the
+// curved walls of the sheet and of those it stands on.
+struct ClosingSurfaces {
+  Handle(Geom_Surface) base;
+  std::vector<Handle(Geom_Surface)> feet;   // the sheet's other feet's surfaces
+  std::vector<Handle(Geom_Surface)> along;  // the curved walls
+};
+
+// The edge from a to b along `other` if a and b lie on it and the edge's middle lies on `base` too, else none.
+std::optional<TopoDS_Edge> edgeOnBoth(const Handle(Geom_Surface) & base, const Handle(Geom_Surface) & other,
+                                      const gp_Pnt& a, const gp_Pnt& b, double tolerance) {
+  if (!liesOn(other, a, tolerance) || !liesOn(other, b, tolerance)) return std::nullopt;
+  const TopoDS_Edge edge = edgeOnSurface(other, a, b, tolerance);
+  const BRepAdaptor_Curve curve(edge);
+  if (!liesOn(base, curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter())), kOnBoth * tolerance))
+    return std::nullopt;
+  return edge;
+}
+
+// The point where three planes meet, none if two are parallel or nearly.
+std::optional<gp_Pnt> planesMeet(const gp_Pln& p, const gp_Pln& q, const gp_Pln& r) {
+  const gp_XYZ n1 = p.Axis().Direction().XYZ(), n2 = q.Axis().Direction().XYZ(), n3 = r.Axis().Direction().XYZ();
+  const double det = n1.Dot(n2.Crossed(n3));
+  if (std::abs(det) < kPlanesMeet) return std::nullopt;
+  const double d1 = n1.Dot(p.Location().XYZ()), d2 = n2.Dot(q.Location().XYZ()), d3 = n3.Dot(r.Location().XYZ());
+  return gp_Pnt((d1 * n2.Crossed(n3) + d2 * n3.Crossed(n1) + d3 * n1.Crossed(n2)) / det);
+}
+
+// The edges closing a foot chain's gap from a to b on the base wall's surface, where the feet meet on one curve:
+// along another foot of the sheet if a and b both lie on it (a boss merged into a box's wall: its foot on the floor
+// closed along its foot on the wall, not round its own cylinder inside the wall); on planes, round the corner where
+// two other feet's planes, one through a and one through b, meet the base's (a boss filling a box's corner: its foot
+// on the floor runs along both walls' feet to the corner); along a curved wall if a and b lie on it (a rib's foot on a
+// plate ending on a boss's foot circle, not on its chord); else edgeOnSurface on the base's. [in] on; [in] a, b.
+std::vector<TopoDS_Edge> closingEdges(const ClosingSurfaces& on, const gp_Pnt& a, const gp_Pnt& b, double tolerance) {
+  for (const Handle(Geom_Surface) & other : on.feet)
+    if (const std::optional<TopoDS_Edge> edge = edgeOnBoth(on.base, other, a, b, tolerance)) return {*edge};
+  const Handle(Geom_Plane) base = Handle(Geom_Plane)::DownCast(on.base);
+  for (const Handle(Geom_Surface) & p : on.feet)
+    for (const Handle(Geom_Surface) & q : on.feet) {
+      const Handle(Geom_Plane) pa = Handle(Geom_Plane)::DownCast(p), qb = Handle(Geom_Plane)::DownCast(q);
+      if (base.IsNull() || pa.IsNull() || qb.IsNull() || p == q || !liesOn(p, a, tolerance) || !liesOn(q, b, tolerance))
+        continue;
+      if (const std::optional<gp_Pnt> corner = planesMeet(base->Pln(), pa->Pln(), qb->Pln());
+          corner && corner->Distance(a) > tolerance && corner->Distance(b) > tolerance)
+        return {BRepBuilderAPI_MakeEdge(a, *corner).Edge(), BRepBuilderAPI_MakeEdge(*corner, b).Edge()};
+    }
+  for (const Handle(Geom_Surface) & other : on.along)
+    if (const std::optional<TopoDS_Edge> edge = edgeOnBoth(on.base, other, a, b, tolerance)) return {*edge};
+  return {edgeOnSurface(on.base, a, b, tolerance)};
 }
 
 // The direction in which the sheet's rim runs on past p: the tangent at p of the rim edge (`rims`) ending there,
@@ -292,8 +334,7 @@ std::optional<std::array<TopoDS_Edge, 2>> roundRimCorner(const std::vector<TopoD
 // chain's two ends are joined to each other only where no other end is left to join, if the segment turns back along
 // it (a wall standing across a narrow face of the base, a bend's chamfer or round: its two sides' edges on it are
 // lines or arcs shorter than the wall is thick, each closed on itself a sliver).
-std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, const Handle(Geom_Surface) & surface,
-                                     const std::vector<Handle(Geom_Surface)>& along,
+std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, const ClosingSurfaces& on,
                                      const std::vector<TopoDS_Edge>& rims, double tolerance) {
   Handle(TopTools_HSequenceOfShape) in = new TopTools_HSequenceOfShape, wires;
   for (const TopoDS_Edge& e : edges) in->Append(e);
@@ -318,7 +359,7 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, cons
            (out[i].Dot(d.Normalized()) < kTurnsBack || out[j].Dot(-d.Normalized()) < kTurnsBack);
   };
   enum class Pass { Continuing, NotBack, Any };
-  const bool plane = GeomAdaptor_Surface(surface).GetType() == GeomAbs_Plane;
+  const bool plane = GeomAdaptor_Surface(on.base).GetType() == GeomAbs_Plane;
   for (const Pass pass : {Pass::Continuing, Pass::NotBack, Pass::Any})
     for (;;) {  // nearest pairs first
       const bool continuing = pass == Pass::Continuing;
@@ -334,7 +375,7 @@ std::vector<TopoDS_Wire> closedWires(const std::vector<TopoDS_Edge>& edges, cons
       if (const auto round = continuing || !plane ? std::nullopt : roundRimCorner(rims, ends[bi], ends[bj], tolerance))
         in->Append((*round)[0]), in->Append((*round)[1]);
       else
-        in->Append(closingEdge(surface, along, ends[bi], ends[bj], tolerance));
+        for (const TopoDS_Edge& e : closingEdges(on, ends[bi], ends[bj], tolerance)) in->Append(e);
     }
   Handle(TopTools_HSequenceOfShape) closed;
   ShapeAnalysis_FreeBounds::ConnectEdgesToWires(in, tolerance, false, closed);
@@ -525,11 +566,15 @@ std::vector<Foot> footFaces(const Junctions& j, int s) {
     if (!planeOf(j.cad.faces(f + 1), tolerance)) along.push_back(curvedSurface(j.cad.faces(f + 1), tolerance));
   for (const SurfaceEdges& on : surfaces)
     if (!on.plane) along.push_back(on.surface);
-  for (const SurfaceEdges& on : surfaces)
-    for (const TopoDS_Wire& wire : closedWires(on.edges, on.surface, along, rimEdges(j, on.face), tolerance))
+  for (const SurfaceEdges& on : surfaces) {
+    ClosingSurfaces closing{on.surface, {}, along};
+    for (const SurfaceEdges& other : surfaces)
+      if (&other != &on) closing.feet.push_back(other.surface);
+    for (const TopoDS_Wire& wire : closedWires(on.edges, closing, rimEdges(j, on.face), tolerance))
       if (const std::optional<TopoDS_Face> face = faceOn(on, wire, tolerance))
         if (const double area = areaOf(*face); area > tolerance * tolerance)  // not edges there and back (no area)
           feet.push_back({s, on.base, on.face, *face, area});
+  }
   if (feet.empty() && standsOnRimFace(j, s))
     throw geometryError("T-junction: the sheet at " + sheetPlace(j.cad, j.sheets[s]) +
                         " stands on the edge (a rim face) of another sheet, not on its wall" + stepNote(j, s) +

@@ -61,6 +61,9 @@ constexpr int kSurfaceSamples = 8;  // of a face's ray samples, checked to lie o
 // A wall's extension faces the way the wall does within this angle (mean normals): a piece of the same plane or of a
 // gently curved wall, not a piece of a round that turns away from it.
 constexpr double kExtensionTurn = 10 * M_PI / 180;
+// A cut face (a piece's foot) turning less than this from a wall face it meets (their normals at the edge) carries that
+// wall's side on (lapFeet).
+constexpr double kLapTurn = 60 * M_PI / 180;
 
 struct Ray {
   double length;
@@ -240,6 +243,25 @@ std::vector<int> splitWallPieces(const CadSolid& cad, const WallSides& w, const 
         (fs.wallShare * fs.area + wall.wallShare * wall.area) / std::max(fs.area + wall.area, 1e-300);
     return fs.wallShare >= kMinSplitShare && together >= kMinWallShare;
   });
+}
+
+// Lateral cut faces (a piece's feet) that lie along the piece's wall: a quarter of their rays crossing the wall
+// (kMinSplitShare) and meeting a wall face in an edge where it turns less than kLapTurn (a boss merged into a box's
+// wall, cut off along the wall: its flat face to face with the wall carries its outer side on; where the flat is wider
+// than its bore, the rays from the flat's ends run along the boss to its far side). A foot across a wall (a rib's)
+// meets its walls square, its rays running along them. [in] cad, w. Returns the faces, ascending.
+std::vector<int> lapFeet(const CadSolid& cad, const WallSides& w) {
+  std::set<int> found;
+  for (const SheetJoin& j : w.sheetJoins)
+    for (auto [f, g] : {std::pair{j.a, j.b}, std::pair{j.b, j.a}})
+      if (isCutFace(cad, f) && w.faces[f].side == Side::Lateral && w.faces[f].wallShare >= kMinSplitShare &&
+          w.faces[g].side != Side::Lateral && j.edge >= 0) {
+        const TopoDS_Edge& edge = TopoDS::Edge(cad.edges(j.edge + 1));
+        const Vec3 nf = normalAtEdge(TopoDS::Face(cad.faces(f + 1)), edge);
+        const Vec3 ng = normalAtEdge(TopoDS::Face(cad.faces(g + 1)), edge);
+        if (!nf.isZero() && !ng.isZero() && angleBetween(nf, ng) < kLapTurn) found.insert(f);
+      }
+  return {found.begin(), found.end()};
 }
 
 // Lateral faces that are a short wall's: flat, at least a quarter wall wide (kMinWallWidth, as every wall face), a
@@ -536,6 +558,7 @@ WallSides sidesFromRays(const CadSolid& cad, std::vector<FaceRays> faceRays) {
   for (int f : wallExtensions(cad, w, landing, meanNormal)) w.faces[f].side = Side::Top;
   for (int f : splitWallPieces(cad, w, meanNormal)) w.faces[f].side = Side::Top;
   for (int f : shortWallFaces(cad, w, meanNormal)) w.faces[f].side = Side::Top;
+  for (int f : lapFeet(cad, w)) w.faces[f].side = Side::Top;
   std::vector<std::pair<int, int>> rootParity = solveSides(cad, w, across);
   w.obliqueRims = obliqueRimFaces(cad, w);
   if (!w.obliqueRims.empty()) {  // sides again without them

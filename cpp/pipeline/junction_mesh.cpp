@@ -2,7 +2,9 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
 #include <gp_Pln.hxx>
 
 #include <algorithm>
@@ -18,6 +20,11 @@
 namespace hexlayer {
 namespace {
 
+// A standing wall's footprint covering less of its feet's faces leaves some of them unjoined (wallFoot refuses it).
+constexpr double kCoveredFoot = 0.75;
+// A wall lying along a foot (a lap) whose hexes' faces cover less of that foot leaves notches where they do not: its
+// quads straddle the foot's edges (wallFoot refuses it).
+constexpr double kCoveredLap = 0.8;
 constexpr int kLeanRings = 3;  // rings of quads round the columns of an oblique crossing that lean less and less
 
 // 20-node hexes: the sheet's mid-edge node of every edge whose corners are both walls' nodes is the walls' mid-edge
@@ -67,7 +74,7 @@ void moveNodes(HexMesh& mesh, std::vector<Vec3>& move, std::vector<char>& moved,
 
 }  // namespace
 
-FootSurface::FootSurface(const TopoDS_Face& foot, double tolerance) : tolerance_(tolerance) {
+FootSurface::FootSurface(const TopoDS_Face& foot, double tolerance) : face_(foot), tolerance_(tolerance) {
   BRepBndLib::AddOptimal(foot, box_, false, false);  // its curves', not its triangulation's
   box_.Enlarge(tolerance);
   const BRepAdaptor_Surface surface(foot);
@@ -94,6 +101,12 @@ Vec3 FootSurface::project(const Vec3& p) {
   return {at.X(), at.Y(), at.Z()};
 }
 
+double FootSurface::area() const {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(face_, props);
+  return props.Mass();
+}
+
 std::vector<FootSurface> footSurfaces(const JunctionCut& cut, int sheet, int base, double tolerance) {
   std::vector<FootSurface> surfaces;
   for (const Foot& f : cut.feet)
@@ -101,7 +114,29 @@ std::vector<FootSurface> footSurfaces(const JunctionCut& cut, int sheet, int bas
   return surfaces;
 }
 
-WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet) {
+double footArea(const JunctionCut& cut, int sheet, int base) {
+  double area = 0;
+  for (const Foot& f : cut.feet)
+    if (f.sheet == sheet && f.base == base) area += f.area;
+  return area;
+}
+
+namespace {
+
+// The quad's area: half its diagonals' cross product.
+double quadArea(const std::vector<Vec3>& nodes, const std::array<int, 4>& q) {
+  return 0.5 * (nodes[q[2]] - nodes[q[0]]).cross(nodes[q[3]] - nodes[q[1]]).norm();
+}
+
+double quadsArea(const FootprintQuads& f) {
+  double area = 0;
+  for (const auto& q : f.quads) area += quadArea(f.nodes, q);
+  return area;
+}
+
+}  // namespace
+
+WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet, double footArea) {
   const int m = wall.layers, stride = m + 1;
   const std::vector<std::vector<int>> rim = rimEdgeNeighbours(quads);
   // Per foot, whether quad node q's sweep column lies on it (only rim nodes can; a node where feet meet, on a bend's
@@ -138,7 +173,39 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSu
         foot.footprint.quads.push_back(
             {node(a * stride + k), node(b * stride + k), node(b * stride + k + 1), node(a * stride + k + 1)});
     }
+  // A wall lying along a foot (a boss merged into a box's wall: a ring flattened there) has its side's hex faces on it:
+  // every quad whose sweep columns all end (first or last layer) on one foot.
+  std::vector<double> lapArea(feet.size(), 0);  // per foot
+  for (const auto& quad : quads.quads)
+    for (const int k : {0, m})
+      for (std::size_t f = 0; f < feet.size(); ++f)
+        if (std::all_of(quad.begin(), quad.end(), [&](int q) { return feet[f].holds(wall.nodes[q * stride + k]); })) {
+          std::array<int, 4> lap;
+          for (int c = 0; c < 4; ++c) lap[c] = node(quad[c] * stride + k);
+          foot.footprint.quads.push_back(lap);
+          foot.lap.resize(foot.wallNode.size(), 0);
+          for (int n : lap) foot.lap[n] = 1;
+          lapArea[f] += quadArea(foot.footprint.nodes, lap);
+          break;
+        }
   if (foot.footprint.quads.empty()) throw geometryError("junction: a standing wall has no quads along its foot");
+  if (const double covered = quadsArea(foot.footprint) / footArea; covered < kCoveredFoot) {
+    std::ostringstream what;
+    what << "junction: a standing wall's hexes cover " << std::lround(100 * covered)
+         << " % of its feet (it lies along a foot, as a boss merged into a box's wall, its hexes' faces not on the "
+            "foot there), which is not meshed yet";
+    throw geometryError(what.str());
+  }
+  for (std::size_t f = 0; f < feet.size(); ++f)
+    if (const double covered = lapArea[f] / feet[f].area(); lapArea[f] > 0 && covered < kCoveredLap) {
+      std::ostringstream what;
+      what << "junction: a standing wall lies along its foot (a boss merged into a box's wall, its flat on the wall), "
+              "its hexes' faces cover "
+           << std::lround(100 * covered) << " % of the flat (its quads do not follow the flat's edges), which is not "
+           << "meshed yet";
+      throw geometryError(what.str());
+    }
+  foot.lap.resize(foot.wallNode.size(), 0);
   foot.ring = std::none_of(footEdges.begin(), footEdges.end(), [](int e) { return e == 1; });
   return foot;
 }

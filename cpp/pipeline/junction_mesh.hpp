@@ -7,6 +7,7 @@
 #pragma once
 #include <Bnd_Box.hxx>
 #include <ShapeAnalysis_Surface.hxx>
+#include <TopoDS_Face.hxx>
 
 #include <optional>
 #include <vector>
@@ -27,8 +28,11 @@ class FootSurface {
   bool holds(const Vec3& p);
   // The point of the foot's surface nearest to p (on a plane: along its normal).
   Vec3 project(const Vec3& p);
+  // The foot face's area.
+  double area() const;
 
  private:
+  TopoDS_Face face_;
   double tolerance_;
   Bnd_Box box_;
   std::optional<std::pair<Vec3, double>> plane_;  // normal, offset
@@ -39,10 +43,14 @@ class FootSurface {
 // Returns the surfaces of its feet on that sheet.
 std::vector<FootSurface> footSurfaces(const JunctionCut& cut, int sheet, int base, double tolerance);
 
+// The area of the faces on which standing piece `sheet` stands on piece `base` (the cut's feet). [in] cut, sheet, base.
+double footArea(const JunctionCut& cut, int sheet, int base);
+
 // A standing wall's feet as its hexes have them.
 struct WallFoot {
   FootprintQuads footprint;   // its nodes where the wall's are (not yet on the sheet's chordal surface)
   std::vector<int> wallNode;  // per footprint node, the wall's hex node it is
+  std::vector<char> lap;      // per footprint node, whether it is a lap's (the wall lying along the foot), or empty
   bool ring = false;          // every foot closed on itself (a boss)
   bool column = false;        // the foot filled: a column's (column_piece.hpp)
   std::vector<std::vector<Vec3>> footColumns;  // a wall's sweep columns on the foot, each its nodes (not a column's)
@@ -75,10 +83,13 @@ std::size_t snapFootColumnsAcross(HexMesh& piece, const QuadMesh& quads, std::ve
                                   const FootColumns& across, double unit, double reach);
 
 // [in] wall: hexes swept from `quads` (sweep.hpp's layout: quad node q's sweep column is the hex nodes q (m + 1) + k,
-// k = 0..m); [in] quads; [in,out] feet: the surfaces of the wall's feet (footSurfaces).
-// Returns the footprint: for every rim edge of the quads whose two sweep columns lie on one foot's surface, the m
-// quads between the columns. Throws geometryError if there is none.
-WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet);
+// k = 0..m); [in] quads; [in,out] feet: the surfaces of the wall's feet (footSurfaces); [in] footArea: their faces'
+// area. Returns the footprint: for every rim edge of the quads whose two sweep columns lie on one foot's surface, the m
+// quads between the columns (a strip, or a ring); and where the wall lies along a foot, its side face to face with the
+// sheet's wall (a boss merged into a box's wall, flattened there: a lap), its hexes' faces on the foot (a patch), their
+// nodes flagged `lap`. Throws geometryError if there is none, or if it covers under kCoveredFoot of the feet (a lap
+// whose face is not the wall's side: only its rim would be joined to the sheet).
+WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet, double footArea);
 
 // [in] column: hexes swept from `quads` up a column (column_sweep.hpp: each quad node's column in turn). Returns the
 // footprint: the quads themselves, their nodes the columns' first (layer 0) nodes.

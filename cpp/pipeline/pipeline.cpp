@@ -503,8 +503,8 @@ double meanEdge(const QuadMesh& q) {
 }
 
 // The footprints of the sheets standing on sheet s, one node per joined node (feet that meet share their nodes).
-// [out] node: per footprint node, its joined node.
-FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& node) {
+// [out] node: per footprint node, its joined node; [out] lap: per footprint node, whether it is a lap's (WallFoot).
+FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& node, std::vector<char>& lap) {
   FootprintQuads f;
   std::map<int, int> index;  // joined node -> footprint node
   for (const auto& on : t.feet) {
@@ -515,7 +515,8 @@ FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& no
       for (int c = 0; c < 4; ++c) {
         const int n = foot->second.wallNode[quad[c]];
         const auto [it, added] = index.emplace(n, static_cast<int>(node.size()));
-        if (added) node.push_back(n), f.nodes.push_back(t.joined.nodes[n]);
+        if (added) node.push_back(n), f.nodes.push_back(t.joined.nodes[n]), lap.push_back(0);
+        if (!foot->second.lap.empty() && foot->second.lap[quad[c]]) lap[it->second] = 1;
         q[c] = it->second;
       }
       f.quads.push_back(q);
@@ -587,12 +588,13 @@ void meshPiece(JunctionPieces& t, int s, const TopoDS_Solid& solid, const MeshOp
   const int pieces = static_cast<int>(t.cut.pieces.size());
   reportProgress(o.progress, progressNote("", "piece " + std::to_string(pieces - s) + " of " + std::to_string(pieces)));
   std::vector<int> footNode;
+  std::vector<char> footLap;
   FootprintQuads footprint;
   bool footprintTaken = false;
   const auto takeFootprint = [&] {  // once the pieces standing on s are meshed
     if (footprintTaken) return;
     if (feetMeshed) feetMeshed();
-    footprint = footprintsOn(t, s, footNode), footprintTaken = true;
+    footprint = footprintsOn(t, s, footNode, footLap), footprintTaken = true;
   };
   if (!feetMeshed) takeFootprint();
   const bool carries = feetMeshed ? carriesFeet(t.cut, s) : !footprint.quads.empty();
@@ -635,7 +637,8 @@ void meshPiece(JunctionPieces& t, int s, const TopoDS_Solid& solid, const MeshOp
           insertFootprints(stage.quads, merged.footprint, locator, meanEdge(stage.quads), o.gmshRuns.get());
       for (int m : merged.node) column.push_back(in.node[m]);
       stage.feet.clear();
-      for (std::size_t k = 0; k < column.size(); ++k) stage.feet.push_back({column[k], footprint.nodes[k] * c.unit});
+      for (std::size_t k = 0; k < column.size(); ++k)
+        stage.feet.push_back({column[k], footprint.nodes[k] * c.unit, footLap[k] != 0});
       t.crossed[s] = merged.footprint.nodes.size() < merged.node.size();
       stage.quads = in.quads;
       std::vector<char> onFootprint(stage.quads.nodes.size(), 0);
@@ -675,7 +678,8 @@ void meshPiece(JunctionPieces& t, int s, const TopoDS_Solid& solid, const MeshOp
     if (f.sheet == s) bases.insert(f.base);
   for (int b : bases) {
     std::vector<FootSurface> surfaces = footSurfaces(t.cut, s, b, tolerance);
-    WallFoot foot = isColumn ? columnFoot(piece.mesh, piece.quadMesh) : wallFoot(piece.mesh, piece.quadMesh, surfaces);
+    WallFoot foot = isColumn ? columnFoot(piece.mesh, piece.quadMesh)
+                             : wallFoot(piece.mesh, piece.quadMesh, surfaces, footArea(t.cut, s, b));
     for (int& n : foot.wallNode) n = id[n];
     t.feet[s][b] = std::move(foot);
   }
@@ -796,7 +800,7 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
     } catch (const Error& e) {  // the part was read and checked: a piece that is no valid solid is the cut's doing
       if (e.code() != ExitCode::BadInput) throw;
       throw geometryError("the cut at the junctions gave a piece that is no valid solid (" + std::string(e.what()) +
-                          "), as where a boss is merged into a box's wall: such a cut is not made yet");
+                          "), which is not meshed");
     }
   };
   if (baseBeside(t))

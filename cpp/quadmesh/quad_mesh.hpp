@@ -61,6 +61,7 @@ struct PatchSplit {
 struct FootEnd {
   int quadNode = -1;
   Vec3 at = Vec3::Zero();
+  bool lap = false;  // a node of a wall lying along the sheet's wall (a boss merged into it: a lap)
 };
 
 struct QuadMeshOptions {

@@ -130,7 +130,7 @@ std::vector<char> placeFootEnds(HexMesh& mesh, const QuadMesh& quads, const std:
     const std::size_t first = foot.quadNode * stride, last = first + mesh.layers;
     const bool top = (mesh.nodes[last] - foot.at).norm() < (mesh.nodes[first] - foot.at).norm();
     placed[top ? last : first] = 1;
-    if ((mesh.nodes[top ? last : first] - foot.at).norm() <= near) continue;
+    if (!foot.lap && (mesh.nodes[top ? last : first] - foot.at).norm() <= near) continue;
     const Vec3& q = quads.nodes[foot.quadNode];
     for (std::size_t k = 0; k < stride; ++k)  // layerNode's half line: q + |t| (end - q) on the end's side
       if (top ? offsets[k] > 0 : offsets[k] < 0) mesh.nodes[first + k] = q + std::abs(offsets[k]) * (foot.at - q);

@@ -71,9 +71,11 @@ std::vector<std::vector<int>> columnsByBottom(const HexMesh& mesh);
 // surface put on the new half line as layerNode puts them. A wall's foot node lies on the sheet's wall, where the
 // joined mesh takes it for the column's end; the sweep line from the chordal surface ends at it, or near (a column
 // sheared by a tilted wall's foot: a pin upright through a sloping plate), except at a bend's inside corner between
-// walls of different thickness, where it ends 1-2 mm off. [in,out] mesh: as swept; [in] quads: the quad mesh swept
-// (its nodes the chordal points); [in] feet; [in] near. Returns per node of the mesh whether it is a foot end, put or
-// near (empty without feet): the smoothing leaves it.
+// walls of different thickness, where it ends 1-2 mm off. A lap's node (FootEnd::lap) is put there however near: the
+// sheet's hexes there lie face to face with the wall's, every one of their nodes moved by the join else (a boss merged
+// into a box's wall, meshed with its foot nodes left to the join: a hex folded where the boss's flat meets the floor).
+// [in,out] mesh: as swept; [in] quads: the quad mesh swept (its nodes the chordal points); [in] feet; [in] near.
+// Returns per node of the mesh whether it is a foot end, put or near (empty without feet): the smoothing leaves it.
 std::vector<char> placeFootEnds(HexMesh& mesh, const QuadMesh& quads, const std::vector<FootEnd>& feet, double near);
 
 }  // namespace hexlayer

@@ -323,6 +323,69 @@ TEST(JunctionCut, ATabAcrossABendsChamferedInsideCorner) {
     }
 }
 
+// The area of the disc round (cx, cy) of radius r where x >= a and y >= b (the midpoint rule over x, 20 000 strips).
+double discBeyond(double cx, double cy, double r, double a, double b) {
+  const int n = 20000;
+  double area = 0;
+  const double x0 = std::max(a, cx - r), dx = (cx + r - x0) / n;
+  for (int i = 0; i < n; ++i) {
+    const double x = x0 + (i + 0.5) * dx, h = std::sqrt(std::max(0.0, r * r - (x - cx) * (x - cx)));
+    area += std::max(0.0, cy + h - std::max(b, cy - h)) * dx;
+  }
+  return area;
+}
+
+// Hollow screw bosses molded into an open box (60 x 40 x 15, walls and floor 2): outside R3.5, bore R1.5 from the
+// floor up, 13 over the floor, at (30, 5) merged 0.5 into the wall y = 0..2, at (4, 4) into the corner (both walls).
+// The boss's foot on the floor was closed round its own cylinder inside the wall (a whole disc), and the cut left
+// the box's piece a second shell, not closed; in the corner the boss's top was taken for a face inside the box's
+// bend, so the boss had no foot on the walls (`no piece holds the sheet`). Cut now into two pieces, each one closed
+// shell: feet on each wall the boss lies on (its chord x 12 high) and on the floor (the disc beyond the walls, less
+// the bore), the boss's piece a prism on its foot on the floor, the volumes adding up; at scales 1, 1e-3, 1e3.
+TEST(JunctionCut, BossesMergedIntoABoxsWallAndCorner) {
+  for (const auto& [cx, cy, walls] : {std::tuple{30.0, 5.0, 1u}, std::tuple{4.0, 4.0, 2u}})
+    for (const double s : {1.0, 1e-3, 1e3}) {
+      SCOPED_TRACE("boss at " + std::to_string(cx) + ", " + std::to_string(cy) + " x " + std::to_string(s));
+      const double r = 3.5, bore = 1.5;
+      const TopoDS_Shape box = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60 * s, 40 * s, 15 * s).Shape(),
+                                               BRepPrimAPI_MakeBox(gp_Pnt(2 * s, 2 * s, 2 * s), 56 * s, 36 * s, 15 * s))
+                                   .Shape();
+      const TopoDS_Shape boss =
+          BRepAlgoAPI_Fuse(box, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(cx * s, cy * s, s), gp::DZ()), r * s, 13 * s))
+              .Shape();
+      const BooleanCut cut = cutBoolean(BRepAlgoAPI_Cut(
+          boss, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(cx * s, cy * s, 2 * s), gp::DZ()), bore * s, 15 * s)));
+      const SampleCut& c = cut.c;
+      ASSERT_EQ(c.cut.pieces.size(), 2u);
+      ASSERT_EQ(c.cut.feet.size(), walls + 1);
+      const double chord = walls == 1 ? 2 * std::sqrt(r * r - (cy - 2) * (cy - 2))        // across the wall's face
+                                      : cx + std::sqrt(r * r - (cy - 2) * (cy - 2)) - 2;  // from the corner
+      const double floor = discBeyond(cx, cy, r, walls == 1 ? -1e9 : 2, 2) - M_PI * bore * bore;
+      double onFloor = 0;
+      for (std::size_t f = 0; f < c.cut.feet.size(); ++f) {
+        const bool level =
+            BRepAdaptor_Surface(c.cut.feet[f].face).Plane().Axis().Direction().IsParallel(gp::DZ(), 1e-9);
+        if (level)
+          onFloor += cut.footAreas[f] / (s * s);
+        else
+          EXPECT_NEAR(cut.footAreas[f] / (s * s), chord * 12, 1e-6);
+      }
+      EXPECT_NEAR(onFloor, floor, 1e-4);
+      double volume = 0;
+      for (const TopoDS_Solid& p : c.cut.pieces) {
+        int shells = 0;
+        for (TopExp_Explorer shell(p, TopAbs_SHELL); shell.More(); shell.Next(), ++shells)
+          EXPECT_TRUE(BRep_Tool::IsClosed(shell.Current()));
+        EXPECT_EQ(shells, 1);
+        volume += exactVolume(p);
+      }
+      const double unit = s * c.cad.unit;  // the cut is in the pipeline's units
+      EXPECT_NEAR(exactVolume(c.cut.pieces[1]) / (unit * unit * unit), floor * 12, 1e-3);
+      EXPECT_NEAR(volume / c.cad.volume, 1, 1e-9);
+      expectFaceOrigins(c.cad, c.cut);
+    }
+}
+
 // The Framework cover's (shared/parts/real) upper tab with the plate, the chamfered bend and the lip round it (the part
 // cut to x 120..135, z 115..140): a column 5 x 5 across the bend, standing on the plate, the bend's inside chamfer and
 // the lip. Its sides were taken for faces inside the bend (lateral, meeting walls of one sheet and one side in concave

@@ -227,7 +227,8 @@ TEST(Sweep, SweepQuadsTurnsClockwiseQuads) {
 // A wall's foot node on the sheet's top wall 0.8 beside the top of quad node (1, 1)'s column (a bend's inside corner
 // between walls of different thickness): that end is put there, the column's nodes above the chordal surface on the
 // new half line at their offsets, those below left. A foot node under the sheet moves the bottom end. Both ends are
-// reported, and with `near` beyond their distances both are reported but neither is moved. No feet: nothing.
+// reported, and with `near` beyond their distances both are reported but neither is moved; a lap's (FootEnd::lap) is
+// moved however near. No feet: nothing.
 TEST(Sweep, PlaceFootEndsPutsTheNearerEndOnTheWallsFootNode) {
   const ChordalSurface s = flatGrid(2, 2, unitRadius);  // centre vertex (1, 1) has id 4
   const ChordalLocator locator(s);
@@ -255,6 +256,9 @@ TEST(Sweep, PlaceFootEndsPutsTheNearerEndOnTheWallsFootNode) {
     EXPECT_TRUE(placed[last] && placed[0]);
     for (std::size_t n = 0; n < h.nodes.size(); ++n)
       if (n / (m + 1) != 4 && n / (m + 1) != 0) EXPECT_EQ(h.nodes[n], before.nodes[n]);
+    HexMesh lap = before;  // a lap's foot node is put there however near
+    placeFootEnds(lap, q, {{4, top, true}}, 1.0);
+    EXPECT_EQ(lap.nodes[last], top);
   }
 }
 

@@ -3,14 +3,18 @@
 // junction piece's foot) is no such boundary.
 #include <gtest/gtest.h>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <gp_Ax2.hxx>
 
 #include <cmath>
 #include <string>
@@ -316,6 +320,46 @@ TEST(WallSides, AChunkyJunctionPieceIsThinWhileAWholePartAsChunkyIsNot) {
         if (w.faces[f].side != Side::Lateral)
           EXPECT_NEAR(std::abs(faceCentre(cad, f).x() / cad.unit / s - 2.5), 2.5, 1e-6);
     }
+  }
+}
+
+// A boss merged into a box's wall, cut off along the wall (test_junction_cut's BossesMergedIntoABoxsWallAndCorner): a
+// ring R4.5 round a bore R1.5, 12 high, flattened by the plane 3.5 from its axis (its flat 5.66 wide, 2 from the bore),
+// the flat and the foot under it cuts through the part. Only about a third of the flat's rays cross the ring (those
+// off the bore run along it to its far side); a cut face that continues a wall face across their edge (lapFeet) is
+// that wall's side: the flat is on the outer cylinder's side, the bore on the other. Not cut, the flat is a rim face.
+// At scales 1, 1e-3, 1e3.
+TEST(WallSides, ABosssFlatCutOffAWallIsItsOuterSide) {
+  for (const double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const gp_Ax2 axis(gp_Pnt(0, 3.5 * s, 0), gp::DZ());
+    const TopoDS_Shape ring = BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(axis, 4.5 * s, 12 * s).Shape(),
+                                              BRepPrimAPI_MakeCylinder(axis, 1.5 * s, 12 * s).Shape())
+                                  .Shape();
+    const TopoDS_Shape flat =
+        BRepAlgoAPI_Common(ring, BRepPrimAPI_MakeBox(gp_Pnt(-10 * s, 0, 0), 20 * s, 20 * s, 12 * s).Shape()).Shape();
+    TopExp_Explorer solid(flat, TopAbs_SOLID);
+    ASSERT_TRUE(solid.More());
+    CadSolid cad = prepareSolid(TopoDS::Solid(solid.Current()), normalizingUnit(TopoDS::Solid(solid.Current())));
+    int onWall = -1, foot = -1, outer = -1, bore = -1;
+    for (int f = 0; f < cad.faces.Extent(); ++f) {
+      const Vec3 c = faceCentre(cad, f) / cad.unit / s;
+      if (surfaceOf(cad, f).GetType() == GeomAbs_Plane && std::abs(c.y()) < 1e-9) onWall = f;
+      if (surfaceOf(cad, f).GetType() == GeomAbs_Plane && std::abs(c.z()) < 1e-9) foot = f;
+      if (surfaceOf(cad, f).GetType() == GeomAbs_Cylinder)
+        (surfaceOf(cad, f).Cylinder().Radius() / cad.unit / s > 3 ? outer : bore) = f;
+    }
+    ASSERT_TRUE(onWall >= 0 && foot >= 0 && outer >= 0 && bore >= 0);
+    cad.cutInput.assign(cad.faces.Extent(), 0);
+    cad.cutInput[foot] = 1;
+    EXPECT_EQ(classifyWallSides(cad).faces[onWall].side, Side::Lateral);
+    cad.cutInput[onWall] = 1;
+    const WallSides w = classifyWallSides(cad);
+    EXPECT_LT(w.faces[onWall].wallShare, 0.5);
+    EXPECT_EQ(w.faces[onWall].side, w.faces[outer].side);
+    EXPECT_NE(w.faces[bore].side, w.faces[outer].side);
+    EXPECT_NE(w.faces[outer].side, Side::Lateral);
+    EXPECT_EQ(w.faces[foot].side, Side::Lateral);
   }
 }
 
