@@ -25,6 +25,8 @@ constexpr double kCoveredFoot = 0.75;
 // A wall lying along a foot (a lap) whose hexes' faces cover less of that foot leaves notches where they do not: its
 // quads straddle the foot's edges (wallFoot refuses it).
 constexpr double kCoveredLap = 0.8;
+// Of a layer: a wall's sweep column ending this near a foot it lies along ends on it (lapFaces).
+constexpr double kLapReach = 0.25;
 constexpr int kLeanRings = 3;  // rings of quads round the columns of an oblique crossing that lean less and less
 
 // 20-node hexes: the sheet's mid-edge node of every edge whose corners are both walls' nodes is the walls' mid-edge
@@ -87,12 +89,13 @@ FootSurface::FootSurface(const TopoDS_Face& foot, double tolerance) : face_(foot
   }
 }
 
-bool FootSurface::holds(const Vec3& p) {
+bool FootSurface::holds(const Vec3& p, double reach) {
   const gp_Pnt at(p.x(), p.y(), p.z());
-  if (box_.IsOut(at)) return false;
-  if (plane_) return std::abs(p.dot(plane_->first) - plane_->second) <= tolerance_;
+  if (box_.IsOut(at) && (reach < 0 || box_.Distance(Bnd_Box(at, at)) > reach)) return false;  // the box: enlarged
+  if (reach < 0) reach = tolerance_;
+  if (plane_) return std::abs(p.dot(plane_->first) - plane_->second) <= reach;
   surface_->ValueOfUV(at, tolerance_);
-  return surface_->Gap() <= tolerance_;
+  return surface_->Gap() <= reach;
 }
 
 Vec3 FootSurface::project(const Vec3& p) {
@@ -134,6 +137,53 @@ double quadsArea(const FootprintQuads& f) {
   return area;
 }
 
+// A wall lying along a foot (a boss merged into a box's wall: a ring flattened there) has its side's hex faces on it:
+// every quad whose sweep columns all end (layer 0 or m) on one foot, within kLapReach of their layer (the rim's columns
+// on the floor's foot end a little off the flat's plane, up to a tenth of a layer: their quads left out opened a gap
+// along the flat's foot). [in] wall, quads, feet: as wallFoot's; [out] area: per foot, the faces' area. Returns the
+// faces, the wall's nodes.
+std::vector<std::array<int, 4>> lapFaces(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet,
+                                         std::vector<double>& area) {
+  const int m = wall.layers, stride = m + 1;
+  area.assign(feet.size(), 0);
+  std::vector<std::array<int, 4>> faces;
+  for (const auto& quad : quads.quads)
+    for (const int k : {0, m})
+      for (std::size_t f = 0; f < feet.size(); ++f)
+        if (std::all_of(quad.begin(), quad.end(), [&](int q) {
+              const double layer = (wall.nodes[q * stride + m] - wall.nodes[q * stride]).norm() / m;
+              return feet[f].holds(wall.nodes[q * stride + k], kLapReach * layer);
+            })) {
+          std::array<int, 4> face;
+          for (int c = 0; c < 4; ++c) face[c] = quad[c] * stride + k;
+          faces.push_back(face), area[f] += quadArea(wall.nodes, face);
+          break;
+        }
+  return faces;
+}
+
+// Throws geometryError if the footprint covers under kCoveredFoot of the feet's area (footArea), or the laps' quads
+// under kCoveredLap of a foot they lie on (lapArea: per foot of `feet`).
+void requireFeetCovered(const FootprintQuads& footprint, double footArea, const std::vector<double>& lapArea,
+                        const std::vector<FootSurface>& feet) {
+  if (const double covered = quadsArea(footprint) / footArea; covered < kCoveredFoot) {
+    std::ostringstream what;
+    what << "junction: a standing wall's hexes cover " << std::lround(100 * covered)
+         << " % of its feet (it lies along a foot, as a boss merged into a box's wall, its hexes' faces not on the "
+            "foot there), which is not meshed yet";
+    throw geometryError(what.str());
+  }
+  for (std::size_t f = 0; f < feet.size(); ++f)
+    if (const double covered = lapArea[f] / feet[f].area(); lapArea[f] > 0 && covered < kCoveredLap) {
+      std::ostringstream what;
+      what << "junction: a standing wall lies along its foot (a boss merged into a box's wall, its flat on the wall), "
+              "its hexes' faces cover "
+           << std::lround(100 * covered) << " % of the flat (its quads do not follow the flat's edges), which is not "
+           << "meshed yet";
+      throw geometryError(what.str());
+    }
+}
+
 }  // namespace
 
 WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet, double footArea) {
@@ -173,38 +223,16 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSu
         foot.footprint.quads.push_back(
             {node(a * stride + k), node(b * stride + k), node(b * stride + k + 1), node(a * stride + k + 1)});
     }
-  // A wall lying along a foot (a boss merged into a box's wall: a ring flattened there) has its side's hex faces on it:
-  // every quad whose sweep columns all end (first or last layer) on one foot.
-  std::vector<double> lapArea(feet.size(), 0);  // per foot
-  for (const auto& quad : quads.quads)
-    for (const int k : {0, m})
-      for (std::size_t f = 0; f < feet.size(); ++f)
-        if (std::all_of(quad.begin(), quad.end(), [&](int q) { return feet[f].holds(wall.nodes[q * stride + k]); })) {
-          std::array<int, 4> lap;
-          for (int c = 0; c < 4; ++c) lap[c] = node(quad[c] * stride + k);
-          foot.footprint.quads.push_back(lap);
-          foot.lap.resize(foot.wallNode.size(), 0);
-          for (int n : lap) foot.lap[n] = 1;
-          lapArea[f] += quadArea(foot.footprint.nodes, lap);
-          break;
-        }
-  if (foot.footprint.quads.empty()) throw geometryError("junction: a standing wall has no quads along its foot");
-  if (const double covered = quadsArea(foot.footprint) / footArea; covered < kCoveredFoot) {
-    std::ostringstream what;
-    what << "junction: a standing wall's hexes cover " << std::lround(100 * covered)
-         << " % of its feet (it lies along a foot, as a boss merged into a box's wall, its hexes' faces not on the "
-            "foot there), which is not meshed yet";
-    throw geometryError(what.str());
+  std::vector<double> lapArea;  // per foot
+  for (const std::array<int, 4>& face : lapFaces(wall, quads, feet, lapArea)) {
+    std::array<int, 4> lap;
+    for (int c = 0; c < 4; ++c) lap[c] = node(face[c]);
+    foot.footprint.quads.push_back(lap);
+    foot.lap.resize(foot.wallNode.size(), 0);
+    for (int n : lap) foot.lap[n] = 1;
   }
-  for (std::size_t f = 0; f < feet.size(); ++f)
-    if (const double covered = lapArea[f] / feet[f].area(); lapArea[f] > 0 && covered < kCoveredLap) {
-      std::ostringstream what;
-      what << "junction: a standing wall lies along its foot (a boss merged into a box's wall, its flat on the wall), "
-              "its hexes' faces cover "
-           << std::lround(100 * covered) << " % of the flat (its quads do not follow the flat's edges), which is not "
-           << "meshed yet";
-      throw geometryError(what.str());
-    }
+  if (foot.footprint.quads.empty()) throw geometryError("junction: a standing wall has no quads along its foot");
+  requireFeetCovered(foot.footprint, footArea, lapArea, feet);
   foot.lap.resize(foot.wallNode.size(), 0);
   foot.ring = std::none_of(footEdges.begin(), footEdges.end(), [](int e) { return e == 1; });
   return foot;

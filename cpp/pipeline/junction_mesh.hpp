@@ -24,8 +24,8 @@ class FootSurface {
  public:
   // [in] foot: a foot face of the cut (JunctionCut::feet); [in] tolerance: how near a point lies to it.
   FootSurface(const TopoDS_Face& foot, double tolerance);
-  // Whether p lies on the foot's surface, within the foot's box.
-  bool holds(const Vec3& p);
+  // Whether p lies on the foot's surface, within the foot's box (within `reach` of them; default: the tolerance).
+  bool holds(const Vec3& p, double reach = -1);
   // The point of the foot's surface nearest to p (on a plane: along its normal).
   Vec3 project(const Vec3& p);
   // The foot face's area.
@@ -87,8 +87,9 @@ std::size_t snapFootColumnsAcross(HexMesh& piece, const QuadMesh& quads, std::ve
 // area. Returns the footprint: for every rim edge of the quads whose two sweep columns lie on one foot's surface, the m
 // quads between the columns (a strip, or a ring); and where the wall lies along a foot, its side face to face with the
 // sheet's wall (a boss merged into a box's wall, flattened there: a lap), its hexes' faces on the foot (a patch), their
-// nodes flagged `lap`. Throws geometryError if there is none, or if it covers under kCoveredFoot of the feet (a lap
-// whose face is not the wall's side: only its rim would be joined to the sheet).
+// nodes flagged `lap`. Throws geometryError if there is none, if it covers under kCoveredFoot of the feet (a lap whose
+// face is not the wall's side: only its rim would be joined to the sheet), or if a lap's quads cover under kCoveredLap
+// of its foot (they straddle its edges: notches between the wall and the sheet).
 WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet, double footArea);
 
 // [in] column: hexes swept from `quads` up a column (column_sweep.hpp: each quad node's column in turn). Returns the

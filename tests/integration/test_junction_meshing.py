@@ -863,8 +863,8 @@ class JunctionMeshing(unittest.TestCase):
         0.022 mm above the rim; the box alone turned has none). Their hexes' faces cover 84-100 % of the flat (the boss's
         quads straddle the flat's edges, near the floor most: shallow notches there). Refused still: a lap covered under
         80 % (test_a_lap_its_hexes_do_not_cover_is_refused_by_name); the corner boss in plain millimetres at 3 layers (4
-        inverted hexes); a boss filling the corner (R4.5 at (5, 5)): its flats covered 84 % and its hexes at the box's
-        inside corner 0.01; the box's inside edges rounded R1 (validation, or `no piece holds the sheet`)."""
+        inverted hexes); a boss filling the corner (R4.5 at (5, 5)): one flat covered 70 %; the box's inside edges rounded
+        R1 (validation, or `no piece holds the sheet`)."""
         twins = (("boss_in_wall", 30.0, 5.0, 3.5, False, 1.0, 0.0), ("boss_in_wall_metres", 30.0, 5.0, 3.5, False, 1e-3, 0.0),
                  ("boss_in_wall_turned", 30.0, 5.0, 3.5, False, 1.0, 30.0),
                  ("boss_in_wall_wide", 30.0, 5.5, 4.5, False, 1.0, 0.0),
