@@ -245,22 +245,33 @@ std::vector<int> splitWallPieces(const CadSolid& cad, const WallSides& w, const 
   });
 }
 
-// Lateral cut faces (a piece's feet) that lie along the piece's wall: a quarter of their rays crossing the wall
-// (kMinSplitShare) and meeting a wall face in an edge where it turns less than kLapTurn (a boss merged into a box's
-// wall, cut off along the wall: its flat face to face with the wall carries its outer side on; where the flat is wider
-// than its bore, the rays from the flat's ends run along the boss to its far side). A foot across a wall (a rib's)
-// meets its walls square, its rays running along them. [in] cad, w. Returns the faces, ascending.
+// Lateral cut faces (a piece's feet) that lie along the piece's wall: meeting a wall face in an edge where it turns
+// less than kLapTurn, and a quarter of their rays crossing the wall (kMinSplitShare) or turning less than that from
+// every wall face they meet (a boss merged into a box's wall, cut off along the wall: its flat face to face with the
+// wall carries its outer side on; where the flat is wider than its bore, the rays from the flat's ends run along the
+// boss to its far side; its foot on a round filling the box's inside corner, going on from the flat, has few rays
+// crossing). A foot across a wall (a rib's, a boss's on the floor) meets its walls square. Faces found count as walls
+// for the next. [in] cad, w. Returns the faces, ascending.
 std::vector<int> lapFeet(const CadSolid& cad, const WallSides& w) {
   std::set<int> found;
-  for (const SheetJoin& j : w.sheetJoins)
-    for (auto [f, g] : {std::pair{j.a, j.b}, std::pair{j.b, j.a}})
-      if (isCutFace(cad, f) && w.faces[f].side == Side::Lateral && w.faces[f].wallShare >= kMinSplitShare &&
-          w.faces[g].side != Side::Lateral && j.edge >= 0) {
-        const TopoDS_Edge& edge = TopoDS::Edge(cad.edges(j.edge + 1));
-        const Vec3 nf = normalAtEdge(TopoDS::Face(cad.faces(f + 1)), edge);
-        const Vec3 ng = normalAtEdge(TopoDS::Face(cad.faces(g + 1)), edge);
-        if (!nf.isZero() && !ng.isZero() && angleBetween(nf, ng) < kLapTurn) found.insert(f);
-      }
+  std::map<int, std::vector<double>> turns;  // per lateral cut face: its turns to the wall faces it meets
+  for (std::size_t before = 1; found.size() != before;) {
+    before = found.size();
+    turns.clear();
+    for (const SheetJoin& j : w.sheetJoins)
+      for (auto [f, g] : {std::pair{j.a, j.b}, std::pair{j.b, j.a}})
+        if (isCutFace(cad, f) && w.faces[f].side == Side::Lateral && !found.count(f) && j.edge >= 0 &&
+            (w.faces[g].side != Side::Lateral || found.count(g))) {
+          const TopoDS_Edge& edge = TopoDS::Edge(cad.edges(j.edge + 1));
+          const Vec3 nf = normalAtEdge(TopoDS::Face(cad.faces(f + 1)), edge);
+          const Vec3 ng = normalAtEdge(TopoDS::Face(cad.faces(g + 1)), edge);
+          if (!nf.isZero() && !ng.isZero()) turns[f].push_back(angleBetween(nf, ng));
+        }
+    for (const auto& [f, t] : turns)
+      if (*std::min_element(t.begin(), t.end()) < kLapTurn &&
+          (w.faces[f].wallShare >= kMinSplitShare || *std::max_element(t.begin(), t.end()) < kLapTurn))
+        found.insert(f);
+  }
   return {found.begin(), found.end()};
 }
 
