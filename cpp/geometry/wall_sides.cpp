@@ -276,7 +276,7 @@ std::vector<int> lapFeet(const CadSolid& cad, const WallSides& w) {
 }
 
 // Lateral faces that are a short wall's: flat, at least a quarter wall wide (kMinWallWidth, as every wall face), a
-// quarter of their rays crossing the wall (kMinSplitShare) to a wall face whose normal is opposite theirs (within
+// quarter of their rays crossing the wall (kMinSplitShare) to a flat wall face whose normal is opposite theirs (within
 // kExtensionTurn), at about its thickness (kExtensionThickness). A wall about two thicknesses high between the floor it
 // stands on and a ledge (a lid's lip cut out of its top) has fewer than half its rays crossing: those from the floor's
 // end and near the ledge run along a wall; taken for a rim, the wall's inner face and its lip became a sheet standing
@@ -290,11 +290,14 @@ std::vector<int> shortWallFaces(const CadSolid& cad, const WallSides& w, const s
         fs.opposite < 0)
       continue;
     const FaceSide& across = w.faces[fs.opposite];
-    if (across.side == Side::Lateral || meanNormal[fs.opposite].isZero() ||
-        angleBetween(meanNormal[f], -meanNormal[fs.opposite]) > kExtensionTurn ||
+    if (across.side == Side::Lateral || angleBetween(meanNormal[f], -meanNormal[fs.opposite]) > kExtensionTurn ||
         std::abs(fs.thickness - across.thickness) > kExtensionThickness * across.thickness)
       continue;
-    if (planeOf(cad.faces(f + 1), kOnSurface * cad.diagonal)) found.push_back(f);
+    // both flat: a curved face's mean normal says little of where it faces (a bore's, all round, is about zero and
+    // points anywhere: of a boss's two flat sides, one was taken for a wall and the other not)
+    if (planeOf(cad.faces(f + 1), kOnSurface * cad.diagonal) &&
+        planeOf(cad.faces(fs.opposite + 1), kOnSurface * cad.diagonal))
+      found.push_back(f);
   }
   return found;
 }
