@@ -2,9 +2,7 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
-#include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
-#include <GProp_GProps.hxx>
 #include <gp_Pln.hxx>
 
 #include <algorithm>
@@ -76,16 +74,16 @@ void moveNodes(HexMesh& mesh, std::vector<Vec3>& move, std::vector<char>& moved,
 
 }  // namespace
 
-FootSurface::FootSurface(const TopoDS_Face& foot, double tolerance) : face_(foot), tolerance_(tolerance) {
-  BRepBndLib::AddOptimal(foot, box_, false, false);  // its curves', not its triangulation's
+FootSurface::FootSurface(const Foot& foot, double tolerance) : area_(foot.area), tolerance_(tolerance) {
+  BRepBndLib::AddOptimal(foot.face, box_, false, false);  // its curves', not its triangulation's
   box_.Enlarge(tolerance);
-  const BRepAdaptor_Surface surface(foot);
+  const BRepAdaptor_Surface surface(foot.face);
   if (surface.GetType() == GeomAbs_Plane) {
     const gp_Pln plane = surface.Plane();
     const gp_XYZ n = plane.Axis().Direction().XYZ(), o = plane.Location().XYZ();
     plane_.emplace(Vec3(n.X(), n.Y(), n.Z()), n.Dot(o));
   } else {
-    surface_ = new ShapeAnalysis_Surface(BRep_Tool::Surface(foot));
+    surface_ = new ShapeAnalysis_Surface(BRep_Tool::Surface(foot.face));
   }
 }
 
@@ -104,24 +102,11 @@ Vec3 FootSurface::project(const Vec3& p) {
   return {at.X(), at.Y(), at.Z()};
 }
 
-double FootSurface::area() const {
-  GProp_GProps props;
-  BRepGProp::SurfaceProperties(face_, props);
-  return props.Mass();
-}
-
 std::vector<FootSurface> footSurfaces(const JunctionCut& cut, int sheet, int base, double tolerance) {
   std::vector<FootSurface> surfaces;
   for (const Foot& f : cut.feet)
-    if (f.sheet == sheet && f.base == base) surfaces.emplace_back(f.face, tolerance);
+    if (f.sheet == sheet && f.base == base) surfaces.emplace_back(f, tolerance);
   return surfaces;
-}
-
-double footArea(const JunctionCut& cut, int sheet, int base) {
-  double area = 0;
-  for (const Foot& f : cut.feet)
-    if (f.sheet == sheet && f.base == base) area += f.area;
-  return area;
 }
 
 namespace {
@@ -162,10 +147,12 @@ std::vector<std::array<int, 4>> lapFaces(const HexMesh& wall, const QuadMesh& qu
   return faces;
 }
 
-// Throws geometryError if the footprint covers under kCoveredFoot of the feet's area (footArea), or the laps' quads
-// under kCoveredLap of a foot they lie on (lapArea: per foot of `feet`).
-void requireFeetCovered(const FootprintQuads& footprint, double footArea, const std::vector<double>& lapArea,
+// Throws geometryError if the footprint covers under kCoveredFoot of the feet's area, or the laps' quads under
+// kCoveredLap of a foot they lie on (lapArea: per foot of `feet`).
+void requireFeetCovered(const FootprintQuads& footprint, const std::vector<double>& lapArea,
                         const std::vector<FootSurface>& feet) {
+  double footArea = 0;
+  for (const FootSurface& f : feet) footArea += f.area();
   if (const double covered = quadsArea(footprint) / footArea; covered < kCoveredFoot) {
     std::ostringstream what;
     what << "junction: a standing wall's hexes cover " << std::lround(100 * covered)
@@ -186,7 +173,7 @@ void requireFeetCovered(const FootprintQuads& footprint, double footArea, const 
 
 }  // namespace
 
-WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet, double footArea) {
+WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet) {
   const int m = wall.layers, stride = m + 1;
   const std::vector<std::vector<int>> rim = rimEdgeNeighbours(quads);
   // Per foot, whether quad node q's sweep column lies on it (only rim nodes can; a node where feet meet, on a bend's
@@ -232,7 +219,7 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSu
     for (int n : lap) foot.lap[n] = 1;
   }
   if (foot.footprint.quads.empty()) throw geometryError("junction: a standing wall has no quads along its foot");
-  requireFeetCovered(foot.footprint, footArea, lapArea, feet);
+  requireFeetCovered(foot.footprint, lapArea, feet);
   foot.lap.resize(foot.wallNode.size(), 0);
   foot.ring = std::none_of(footEdges.begin(), footEdges.end(), [](int e) { return e == 1; });
   return foot;

@@ -7,7 +7,6 @@
 #pragma once
 #include <Bnd_Box.hxx>
 #include <ShapeAnalysis_Surface.hxx>
-#include <TopoDS_Face.hxx>
 
 #include <optional>
 #include <vector>
@@ -23,16 +22,16 @@ namespace hexlayer {
 class FootSurface {
  public:
   // [in] foot: a foot face of the cut (JunctionCut::feet); [in] tolerance: how near a point lies to it.
-  FootSurface(const TopoDS_Face& foot, double tolerance);
+  FootSurface(const Foot& foot, double tolerance);
   // Whether p lies on the foot's surface, within the foot's box (within `reach` of them; default: the tolerance).
   bool holds(const Vec3& p, double reach = -1);
   // The point of the foot's surface nearest to p (on a plane: along its normal).
   Vec3 project(const Vec3& p);
-  // The foot face's area.
-  double area() const;
+  // The foot face's area (the cut's).
+  double area() const { return area_; }
 
  private:
-  TopoDS_Face face_;
+  double area_;
   double tolerance_;
   Bnd_Box box_;
   std::optional<std::pair<Vec3, double>> plane_;  // normal, offset
@@ -42,9 +41,6 @@ class FootSurface {
 // [in] cut; [in] sheet: a standing sheet's index (its piece's); [in] base: the sheet it stands on; [in] tolerance.
 // Returns the surfaces of its feet on that sheet.
 std::vector<FootSurface> footSurfaces(const JunctionCut& cut, int sheet, int base, double tolerance);
-
-// The area of the faces on which standing piece `sheet` stands on piece `base` (the cut's feet). [in] cut, sheet, base.
-double footArea(const JunctionCut& cut, int sheet, int base);
 
 // A standing wall's feet as its hexes have them.
 struct WallFoot {
@@ -83,14 +79,14 @@ std::size_t snapFootColumnsAcross(HexMesh& piece, const QuadMesh& quads, std::ve
                                   const FootColumns& across, double unit, double reach);
 
 // [in] wall: hexes swept from `quads` (sweep.hpp's layout: quad node q's sweep column is the hex nodes q (m + 1) + k,
-// k = 0..m); [in] quads; [in,out] feet: the surfaces of the wall's feet (footSurfaces); [in] footArea: their faces'
-// area. Returns the footprint: for every rim edge of the quads whose two sweep columns lie on one foot's surface, the m
-// quads between the columns (a strip, or a ring); and where the wall lies along a foot, its side face to face with the
-// sheet's wall (a boss merged into a box's wall, flattened there: a lap), its hexes' faces on the foot (a patch), their
-// nodes flagged `lap`. Throws geometryError if there is none, if it covers under kCoveredFoot of the feet (a lap whose
-// face is not the wall's side: only its rim would be joined to the sheet), or if a lap's quads cover under kCoveredLap
-// of its foot (they straddle its edges: notches between the wall and the sheet).
-WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet, double footArea);
+// k = 0..m); [in] quads; [in,out] feet: the surfaces of the wall's feet (footSurfaces). Returns the footprint: for
+// every rim edge of the quads whose two sweep columns lie on one foot's surface, the m quads between the columns (a
+// strip, or a ring); and where the wall lies along a foot, its side face to face with the sheet's wall (a boss merged
+// into a box's wall, flattened there: a lap), its hexes' faces on the foot (a patch), their nodes flagged `lap`. Throws
+// geometryError if there is none, if it covers under kCoveredFoot of the feet (a lap whose face is not the wall's side:
+// only its rim would be joined to the sheet), or if a lap's quads cover under kCoveredLap of its foot (they straddle
+// its edges: notches between the wall and the sheet).
+WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSurface>& feet);
 
 // [in] column: hexes swept from `quads` up a column (column_sweep.hpp: each quad node's column in turn). Returns the
 // footprint: the quads themselves, their nodes the columns' first (layer 0) nodes.

@@ -602,7 +602,7 @@ void meshPiece(JunctionPieces& t, int s, const TopoDS_Solid& solid, const MeshOp
   MergedFootprints merged;           // its shift in the part's units
   std::vector<FootSurface> ownFeet;  // the piece's feet on the sheets it stands on
   for (const Foot& f : t.cut.feet)
-    if (f.sheet == s) ownFeet.emplace_back(f.face, tolerance);
+    if (f.sheet == s) ownFeet.emplace_back(f, tolerance);
   std::vector<char> cutFaces;  // the piece's feet, on the sheets it stands on or under those standing on it
   for (int origin : t.cut.faceOrigin[s]) cutFaces.push_back(origin < 0);
   // The feet meshed before: the columns' (meshColumn takes one across the sheet), and the walls' across the sheet from
@@ -678,8 +678,7 @@ void meshPiece(JunctionPieces& t, int s, const TopoDS_Solid& solid, const MeshOp
     if (f.sheet == s) bases.insert(f.base);
   for (int b : bases) {
     std::vector<FootSurface> surfaces = footSurfaces(t.cut, s, b, tolerance);
-    WallFoot foot = isColumn ? columnFoot(piece.mesh, piece.quadMesh)
-                             : wallFoot(piece.mesh, piece.quadMesh, surfaces, footArea(t.cut, s, b));
+    WallFoot foot = isColumn ? columnFoot(piece.mesh, piece.quadMesh) : wallFoot(piece.mesh, piece.quadMesh, surfaces);
     for (int& n : foot.wallNode) n = id[n];
     t.feet[s][b] = std::move(foot);
   }

@@ -60,7 +60,7 @@ void expectJoined(const std::vector<Box>& parts, int layers, int order = 1) {
     for (int w = 1; w < static_cast<int>(c.cut.pieces.size()); ++w) {
       const MeshResult wall = meshSolid(c.cut.pieces[w], o);
       std::vector<FootSurface> feet = footSurfaces(c.cut, w, 0, 1e-6 * k);
-      const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, feet, footArea(c.cut, w, 0));
+      const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, feet);
       EXPECT_FALSE(foot.ring);
       EXPECT_EQ(foot.footprint.quads.size() % layers, 0u);
       for (const auto& q : foot.footprint.quads) {
@@ -144,7 +144,7 @@ TEST(JunctionMesh, ABossFootIsARing) {
   MeshOptions o;
   const MeshResult wall = meshSolid(c.cut.pieces[1], o);
   std::vector<FootSurface> feet = footSurfaces(c.cut, 1, 0, 1e-6);
-  const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, feet, footArea(c.cut, 1, 0));
+  const WallFoot foot = wallFoot(wall.mesh, wall.quadMesh, feet);
   EXPECT_TRUE(foot.ring);
   EXPECT_EQ(foot.footprint.nodes.size(), foot.footprint.quads.size() / o.layers * (o.layers + 1));
 }
