@@ -749,10 +749,11 @@ std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides
   return standingOrder(cad, sides, concave, std::move(merged));
 }
 
-// Each sheet's pieces among the solids of the cut: the solid holding (the image of) its first wall face is its piece,
-// cut.pieces[s]; a solid holding no earlier sheet's wall face but an image of one of s's is a further piece of s
-// (appended). Throws geometryError if a solid is no sheet's or a sheet has no solid. [in] cad, sheets, split, solids;
-// [out] cut: pieces, sheetOf.
+// Each sheet's pieces among the solids of the cut: the solid holding most of (the images of) its wall faces' area is
+// its piece, cut.pieces[s] (not the one holding its first face: a face's place in the CAD's list is the exporter's, and
+// a blind bore's bottom, a wall face of the base, may go with the boss's piece); a solid holding no earlier sheet's
+// piece but an image of one of s's wall faces is a further piece of s (appended). Throws geometryError if a solid is no
+// sheet's or a sheet has no solid. [in] cad, sheets, split, solids; [out] cut: pieces, sheetOf.
 void piecesOfSheets(const CadSolid& cad, const std::vector<Sheet>& sheets, BRepAlgoAPI_Splitter& split,
                     const std::vector<TopoDS_Solid>& solids, JunctionCut& cut) {
   std::vector<TopTools_IndexedMapOfShape> faces(solids.size());
@@ -764,11 +765,16 @@ void piecesOfSheets(const CadSolid& cad, const std::vector<Sheet>& sheets, BRepA
   };
   std::vector<int> owner(solids.size(), -1);
   for (std::size_t s = 0; s < sheets.size(); ++s) {
-    const int first = holding(imagesOf(split, cad.faces(sheets[s].faces.front() + 1)).front());
-    if (first < 0 || owner[first] >= 0)
+    std::vector<double> held(solids.size(), 0.0);  // the sheet's wall area each solid holds
+    for (int f : sheets[s].faces)
+      for (const TopoDS_Shape& image : imagesOf(split, cad.faces(f + 1)))
+        if (const int k = holding(image); k >= 0) held[k] += areaOf(image);
+    const auto most = std::max_element(held.begin(), held.end());
+    const int piece = most == held.end() || *most <= 0 ? -1 : static_cast<int>(most - held.begin());
+    if (piece < 0 || owner[piece] >= 0)
       throw geometryError("T-junction: no piece holds the sheet at " + sheetPlace(cad, sheets[s]) + " after the cut");
-    owner[first] = static_cast<int>(s);
-    cut.pieces.push_back(solids[first]), cut.sheetOf.push_back(static_cast<int>(s));
+    owner[piece] = static_cast<int>(s);
+    cut.pieces.push_back(solids[piece]), cut.sheetOf.push_back(static_cast<int>(s));
   }
   for (std::size_t s = 1; s < sheets.size(); ++s)
     for (int f : sheets[s].faces)
@@ -817,10 +823,11 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
       for (std::size_t p = 0; p < cut.pieces.size(); ++p)
         if (cut.sheetOf[p] == f.sheet && pieceFaces[f.base].Contains(image) && pieceFaces[p].Contains(image))
           cut.feet.push_back({static_cast<int>(p), f.base, f.baseFace, TopoDS::Face(image), areaOf(image)});
-    if (cut.feet.empty() || cut.sheetOf[cut.feet.back().sheet] != f.sheet)  // none yet: a cutter may leave none
-      throw geometryError("T-junction: the foot of the sheet at " + sheetPlace(cad, sheets[f.sheet]) +
-                          " is not a face of both pieces after the cut");
   }
+  for (int s = 1; s < static_cast<int>(sheets.size()); ++s)  // a cutter may leave none (one on a face), a sheet not
+    if (std::none_of(cut.feet.begin(), cut.feet.end(), [&](const Foot& f) { return cut.sheetOf[f.sheet] == s; }))
+      throw geometryError("T-junction: the foot of the sheet at " + sheetPlace(cad, sheets[s]) +
+                          " is not a face of both pieces after the cut");
   cut.faceOrigin = faceOrigins(cad, split, cut.pieces);
   return cut;
 }

@@ -37,6 +37,7 @@
 #include "core/error.hpp"
 #include "geometry/junction_cut.hpp"
 #include "test_boxes.hpp"
+#include "test_parts.hpp"
 
 using namespace hexlayer;
 using hexlayer::test_boxes::Box;
@@ -495,6 +496,32 @@ TEST(JunctionCut, ARibFromAWallIntoABoss) {
     for (const Foot& f : c.cut.feet)
       EXPECT_GT(areaOf(f.face) / (c.cad.unit * c.cad.unit) / (s * s), 1.0) << "sheet " << f.sheet;
   }
+}
+
+// A hollow boss (R4, 10 high) on a 60 x 40 x 2 plate, its blind bore R2 down to the plate's top or stopping 0.9 above
+// it (a cup), as built and with its faces listed in the reverse order (as another CAD system may write it). The
+// bore's bottom is a wall face of the plate's sheet; listed first, it was the face that named the plate's piece, which
+// went to the cup (`no piece holds the sheet`), and a foot on it (the bore's bottom itself, no face of both pieces)
+// coming first was taken for the sheet having no foot. Now: the plate's piece holds the plate (60 x 40 x 2), the
+// boss's the ring or the cup (its bottom with it), its foot the ring (pi (4^2 - 2^2)) or the cup's whole disc (pi 4^2),
+// at scales 1, 1e-3, 1e3.
+TEST(JunctionCut, ACuppedBossIsCutOffWhateverTheOrderOfItsFaces) {
+  for (const double bottom : {0.0, 0.9})
+    for (const bool reversed : {false, true})
+      for (const double s : {1.0, 1e-3, 1e3}) {
+        SCOPED_TRACE("bottom " + std::to_string(bottom) + (reversed ? ", reversed" : "") + ", x " + std::to_string(s));
+        const TopoDS_Solid part = test_parts::cuppedBoss(bottom, s);
+        const SampleCut c = cutSolid(reversed ? test_parts::withFacesReversed(part) : part);
+        ASSERT_EQ(c.cut.pieces.size(), 2u);
+        EXPECT_EQ(c.cut.sheetOf, (std::vector<int>{0, 1}));
+        const double unit3 = std::pow(s * c.cad.unit, 3);
+        EXPECT_NEAR(exactVolume(c.cut.pieces[0]) / unit3, 60 * 40 * 2, 1e-6);
+        EXPECT_NEAR(exactVolume(c.cut.pieces[1]) / unit3, M_PI * (16 * 10 - 4 * (10 - bottom)), 1e-6);
+        double feet = 0;
+        for (const Foot& f : c.cut.feet) feet += f.area / std::pow(s * c.cad.unit, 2);
+        EXPECT_NEAR(feet, M_PI * (bottom > 0 ? 16 : 16 - 4), 1e-6);
+        expectFaceOrigins(c.cad, c.cut);
+      }
 }
 
 // A hollow boss through the plate (R4 outside, R2 bore through both, from z = -6 to 12 on a 2 mm plate): one sheet

@@ -10,6 +10,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Shell.hxx>
 #include <gp_Ax2.hxx>
 
 #include <cmath>
@@ -88,6 +89,31 @@ inline TopoDS_Solid bossOverAHole(double s) {
   const TopoDS_Shape plate = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60 * s, 40 * s, 2 * s).Shape();
   const TopoDS_Shape boss = BRepAlgoAPI_Cut(cylinder(5, 1, 11), cylinder(3, 2, 12));
   return firstSolid(BRepAlgoAPI_Cut(BRepAlgoAPI_Fuse(plate, boss).Shape(), cylinder(2, -1, 4)).Shape());
+}
+
+// [in] s: the scale. A 60 x 40 x 2 plate with a hollow boss at (30, 20): R4 outside, 10 high above the plate, a
+// blind bore R2 from the top whose bottom is `bottom` above the plate's top (a cup; 0: down to the plate), all lengths
+// times s.
+inline TopoDS_Solid cuppedBoss(double bottom, double s) {
+  auto cylinder = [&](double r, double z0, double h) {
+    return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30 * s, 20 * s, z0 * s), gp_Dir(0, 0, 1)), r * s, h * s).Shape();
+  };
+  const TopoDS_Shape plate = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60 * s, 40 * s, 2 * s).Shape();
+  return firstSolid(BRepAlgoAPI_Cut(BRepAlgoAPI_Fuse(plate, cylinder(4, 1, 11)).Shape(), cylinder(2, 2 + bottom, 11)));
+}
+
+// The solid with its faces listed in the reverse order, as another CAD system may write the same part: [in] solid.
+inline TopoDS_Solid withFacesReversed(const TopoDS_Solid& solid) {
+  std::vector<TopoDS_Shape> faces;
+  for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next()) faces.push_back(it.Current());
+  BRep_Builder build;
+  TopoDS_Shell shell;
+  build.MakeShell(shell);
+  for (auto f = faces.rbegin(); f != faces.rend(); ++f) build.Add(shell, *f);
+  TopoDS_Solid reversed;
+  build.MakeSolid(reversed);
+  build.Add(reversed, shell);
+  return reversed;
 }
 
 // [in] s: the scale. An open box 40 x 45 x 12, walls and floor 2.5, the outer half of its walls cut away over the top
