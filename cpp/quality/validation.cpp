@@ -5,6 +5,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/box_tree.hpp"
+
 namespace hexlayer {
 namespace {
 
@@ -68,6 +70,81 @@ std::optional<ValidationFailure> checkVolume(const QualityReport& q, double cadV
   return ValidationFailure{"volume", 1, std::nullopt, s.str()};
 }
 
+// A boundary face lies on another when the other's plane is this near its middle, relative to its size (the square
+// root of its area): two pieces' faces on one cut face, apart by the sagitta of their chords at most where it is
+// curved.
+constexpr double kFaceOnFace = 0.05;
+
+// A boundary face, its middle, unit outward normal and size (the square root of its area).
+struct FacePlane {
+  Vec3 middle, normal;
+  double size;
+};
+
+FacePlane facePlane(const HexMesh& mesh, const BoundaryFace& f) {
+  const auto& p = mesh.nodes;
+  const Vec3 cross = (p[f.nodes[2]] - p[f.nodes[0]]).cross(p[f.nodes[3]] - p[f.nodes[1]]);
+  const double area = 0.5 * cross.norm();
+  Vec3 middle = Vec3::Zero();
+  for (int n : f.nodes) middle += p[n] / 4;
+  return {middle, area > 0 ? Vec3(cross.normalized()) : Vec3::Zero(), std::sqrt(area)};
+}
+
+// Whether q, in the plane of the triangle a b c, lies in it (barycentric coordinates above -1e-6).
+bool inTriangle(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = (b - a).cross(c - a);
+  const double twice = n.squaredNorm();
+  if (twice <= 0) return false;
+  const double u = (c - b).cross(q - b).dot(n) / twice, v = (a - c).cross(q - c).dot(n) / twice;
+  return u >= -1e-6 && v >= -1e-6 && 1 - u - v >= -1e-6;
+}
+
+// Whether face f's middle lies on face g (within kFaceOnFace of its size from g's plane, inside it), g facing it
+// (their normals opposite), not at the same four places (nodes written twice: checkConformal's).
+bool liesOn(const HexMesh& mesh, const BoundaryFace& f, const FacePlane& pf, const BoundaryFace& g,
+            const FacePlane& pg) {
+  if (pf.normal.dot(pg.normal) > -0.9) return false;
+  const double height = (pf.middle - pg.middle).dot(pg.normal);
+  if (std::abs(height) > kFaceOnFace * pf.size) return false;
+  const auto& p = mesh.nodes;
+  const double same = kCoincidentTolerance * pf.size;
+  if (std::all_of(f.nodes.begin(), f.nodes.end(), [&](int a) {
+        return std::any_of(g.nodes.begin(), g.nodes.end(), [&](int b) { return (p[a] - p[b]).norm() < same; });
+      }))
+    return false;
+  const Vec3 q = pf.middle - height * pg.normal;
+  const auto& c = g.nodes;
+  return inTriangle(q, p[c[0]], p[c[1]], p[c[2]]) || inTriangle(q, p[c[0]], p[c[2]], p[c[3]]);
+}
+
+// Boundary faces lying face to face on other boundary faces: two pieces side by side inside the part, not joined
+// (no node in common, so the checks of conformity and of the boundary's edges and Euler characteristic pass them).
+std::optional<ValidationFailure> checkJoined(const HexMesh& mesh) {
+  const std::vector<BoundaryFace> faces = boundaryFaces(mesh);
+  std::vector<FacePlane> planes;
+  std::vector<Box> boxes(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    planes.push_back(facePlane(mesh, faces[f]));
+    for (int n : faces[f].nodes) boxes[f].add(mesh.nodes[n]);
+    const Vec3 reach = Vec3::Constant(kFaceOnFace * planes[f].size);
+    boxes[f].lo -= reach, boxes[f].hi += reach;
+  }
+  const BoxTree tree(boxes);
+  std::size_t lying = 0, first = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    bool on = false;
+    tree.traverse([&](const Box& b) { return squaredDistanceToBox(planes[f].middle, b) <= 0; },
+                  [&](int g) {
+                    on = g != static_cast<int>(f) && liesOn(mesh, faces[f], planes[f], faces[g], planes[g]);
+                    return on;
+                  });
+    if (on && lying++ == 0) first = f;
+  }
+  if (lying == 0) return std::nullopt;
+  return failure("joined", lying, planes[first].middle,
+                 "boundary faces lying face to face on others inside the part (pieces not joined there), the first");
+}
+
 // Only on a watertight boundary: an open one's Euler characteristic says nothing of its holes.
 std::optional<ValidationFailure> checkTopology(const BoundaryCheck& b, std::optional<long> cadEuler) {
   const long apart = cadEuler ? *cadEuler - b.eulerCharacteristic : 0;  // chi = 2 - 2 genus per closed shell
@@ -89,7 +166,8 @@ std::vector<ValidationFailure> validateMesh(const HexMesh& mesh, const QualityRe
                  q.inverted == 0 ? std::nullopt
                                  : std::optional(failure("inverted", q.inverted, q.worstAt,
                                                          "inverted hexes (scaled Jacobian <= 0), the worst")),
-                 checkConformal(mesh), checkWatertight(mesh, b), checkVolume(q, cadVolume), checkTopology(b, cadEuler)})
+                 checkConformal(mesh), checkJoined(mesh), checkWatertight(mesh, b), checkVolume(q, cadVolume),
+                 checkTopology(b, cadEuler)})
     if (f) failures.push_back(*f);
   return failures;
 }

@@ -1,7 +1,7 @@
 // Validation of a finished mesh before it is written (issue 5): every element a proper hex, none
-// inverted, conformal, a watertight boundary, the volume of the CAD solid and no hole the CAD solid does not have
-// (its Euler characteristic). A failed check says
-// what and where, so that no bad mesh reaches a solver silently.
+// inverted, conformal, no two pieces lying face to face unjoined, a watertight boundary, the volume of the CAD solid
+// and no hole the CAD solid does not have (its Euler characteristic). A failed check says what and where, so that no
+// bad mesh reaches a solver silently.
 #pragma once
 #include <optional>
 #include <string>
@@ -16,8 +16,8 @@ namespace hexlayer {
 inline constexpr double kMaxVolumeError = 0.05;
 
 struct ValidationFailure {
-  std::string check;       // "hexes", "inverted", "conformal", "watertight", "volume" or "topology"
-  std::size_t count = 0;   // how many elements, node pairs, edges or holes fail (1 for the volume)
+  std::string check;       // "hexes", "inverted", "conformal", "joined", "watertight", "volume" or "topology"
+  std::size_t count = 0;   // how many elements, node pairs, faces, edges or holes fail (1 for the volume)
   std::optional<Vec3> at;  // where: the worst or first offender (none for the volume and the topology)
   std::string message;     // one sentence naming the check, the count and the place
 };

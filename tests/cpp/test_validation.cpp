@@ -58,6 +58,34 @@ TEST(Validation, DuplicateNodesAreNotConformal) {
   EXPECT_TRUE(failures[0].at->isApprox(Vec3(1, 0, 0)));  // node 8, the first to close a pair (with node 1)
 }
 
+// Two blocks face to face at x = 1, not joined: a hex 1 x 1 x 1 and beside it 2 x 2 hexes 1 x 0.7 x 0.7 from y, z =
+// -0.2 (no node of one at a node of the other, each block closed, so every other check passes): the hex's face on
+// x = 1 and the 4 beside it lie face to face, refused as not joined, named at the first; the blocks 0.1 apart (a slit
+// narrower than a hex, as a flexure's) pass.
+TEST(Validation, PiecesFaceToFaceNotJoinedAreRefused) {
+  for (const double gap : {0.0, 0.1}) {
+    SCOPED_TRACE("gap " + std::to_string(gap));
+    HexMesh m = block({0, 1}, {0, 1}, {0, 1});
+    const HexMesh beside = block({1 + gap, 2 + gap}, {-0.2, 0.5, 1.2}, {-0.2, 0.5, 1.2});
+    const int first = static_cast<int>(m.nodes.size());
+    m.nodes.insert(m.nodes.end(), beside.nodes.begin(), beside.nodes.end());
+    for (auto h : beside.hexes) {
+      for (int& v : h) v += first;
+      m.hexes.push_back(h);
+    }
+    const auto failures = validate(m, 1 + 1.4 * 1.4);
+    if (gap > 0) {
+      EXPECT_TRUE(failures.empty());
+      continue;
+    }
+    ASSERT_EQ(failures.size(), 1u);
+    EXPECT_EQ(failures[0].check, "joined");
+    EXPECT_EQ(failures[0].count, 5u);
+    ASSERT_TRUE(failures[0].at);
+    EXPECT_DOUBLE_EQ(failures[0].at->x(), 1.0);
+  }
+}
+
 TEST(Validation, OpenBoundaryIsNotWatertight) {
   HexMesh m = block({0, 1, 2}, {0, 1}, {0, 1});
   m.hexes.push_back(m.hexes[1]);  // the face x=1 used three times: hex 0 is an open box
