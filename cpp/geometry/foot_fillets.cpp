@@ -4,8 +4,10 @@
 #include <BRepAlgoAPI_Defeaturing.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepTools.hxx>
+#include <BRepTools_History.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -87,40 +89,77 @@ std::set<int> filletsAtFoot(const FilletSearch& f, int s) {
   return onEarlier ? found : std::set<int>{};
 }
 
-// The part's faces removed by defeaturing, smooth's inputFace set through its history; false if a face of smooth
-// comes from none of the part's.
-bool traceFaces(const CadSolid& cad, BRepAlgoAPI_Defeaturing& defeat, CadSolid& smooth) {
-  smooth.inputFace.assign(smooth.faces.Extent(), -1);
-  for (int f = 1; f <= cad.faces.Extent(); ++f) {
-    const TopoDS_Shape& face = cad.faces(f);
-    if (defeat.IsDeleted(face)) continue;
-    const TopTools_ListOfShape& modified = defeat.Modified(face);
-    std::vector<TopoDS_Shape> images(modified.cbegin(), modified.cend());
-    if (images.empty()) images.push_back(face);
-    for (const TopoDS_Shape& image : images)
-      if (const int i = smooth.faces.FindIndex(image); i > 0) smooth.inputFace[i - 1] = inputFaceOf(cad, f - 1);
-  }
-  return std::find(smooth.inputFace.begin(), smooth.inputFace.end(), -1) == smooth.inputFace.end();
+// The part without some of its faces, and those of its faces merged into a neighbour on the same surface first.
+struct Defeatured {
+  CadSolid smooth;          // its inputFace: the input's face each face is (of those merged, the first's)
+  std::vector<int> merged;  // the part's faces (0-based) whose input face no face of smooth names
+};
+
+// The images of `face` in a history (itself if unchanged, none if removed). [in] history (may be null); [in] face.
+std::vector<TopoDS_Shape> imagesIn(const Handle(BRepTools_History) & history, const TopoDS_Shape& face) {
+  if (history.IsNull()) return {face};
+  if (history->IsRemoved(face)) return {};
+  const TopTools_ListOfShape& modified = history->Modified(face);
+  if (modified.IsEmpty()) return {face};
+  return std::vector<TopoDS_Shape>(modified.cbegin(), modified.cend());
 }
 
-// The part without `faces` (defeatured), or none if OpenCASCADE cannot remove them.
-std::optional<CadSolid> withoutFaces(const CadSolid& cad, const std::set<int>& faces) {
-  try {
-    BRepAlgoAPI_Defeaturing defeat;
-    defeat.SetShape(cad.solid);
-    for (int f : faces) defeat.AddFaceToRemove(cad.faces(f + 1));
-    defeat.SetRunParallel(false);
-    defeat.Build();
-    if (!defeat.IsDone()) return std::nullopt;
-    TopExp_Explorer solid(defeat.Shape(), TopAbs_SOLID);
-    if (!solid.More() || !BRepCheck_Analyzer(solid.Current()).IsValid()) return std::nullopt;
-    CadSolid smooth = prepareSolid(TopoDS::Solid(solid.Current()));
-    smooth.unit = cad.unit, smooth.cutInput = cad.cutInput;
-    if (!traceFaces(cad, defeat, smooth)) return std::nullopt;
-    return smooth;
-  } catch (const Standard_Failure&) {
-    return std::nullopt;
-  }
+// Smooth's inputFace set through the histories of the unifying (if any) and of the defeaturing: false if a face of
+// smooth comes from none of the part's. [in] cad; [in] removed: the part's faces removed (0-based); [in] unified: the
+// unifying's history, or null; [in] defeat; [in,out] out: smooth's inputFace set, the part's faces no longer named
+// listed in merged.
+bool traceFaces(const CadSolid& cad, const std::set<int>& removed, const Handle(BRepTools_History) & unified,
+                BRepAlgoAPI_Defeaturing& defeat, Defeatured& out) {
+  CadSolid& smooth = out.smooth;
+  smooth.inputFace.assign(smooth.faces.Extent(), -1);
+  std::vector<int> from(smooth.faces.Extent(), -1);  // the part's face each face of smooth is named after
+  for (int f = 1; f <= cad.faces.Extent(); ++f)
+    for (const TopoDS_Shape& face :
+         removed.count(f - 1) ? std::vector<TopoDS_Shape>{} : imagesIn(unified, cad.faces(f))) {
+      if (defeat.IsDeleted(face)) continue;
+      const TopTools_ListOfShape& modified = defeat.Modified(face);
+      std::vector<TopoDS_Shape> images(modified.cbegin(), modified.cend());
+      if (images.empty()) images.push_back(face);
+      for (const TopoDS_Shape& image : images)
+        if (const int i = smooth.faces.FindIndex(image); i > 0 && from[i - 1] < 0)
+          from[i - 1] = f - 1, smooth.inputFace[i - 1] = inputFaceOf(cad, f - 1);
+    }
+  std::set<int> named(smooth.inputFace.begin(), smooth.inputFace.end());
+  for (int f = 0; f < cad.faces.Extent(); ++f)
+    if (!named.count(inputFaceOf(cad, f)) && !removed.count(f)) out.merged.push_back(f);
+  return !named.count(-1);
+}
+
+// The part without `faces` (defeatured), or none if OpenCASCADE cannot remove them. Where it leaves them (a fillet
+// along a plate written in pieces: it warns and keeps the part as it is), the part's faces on one surface are merged
+// first (ShapeUpgrade_UnifySameDomain) and the fillets removed from that.
+std::optional<Defeatured> withoutFaces(const CadSolid& cad, const std::set<int>& faces) {
+  for (const bool unify : {false, true}) try {
+      TopoDS_Shape part = cad.solid;
+      Handle(BRepTools_History) unified;
+      if (unify) {
+        ShapeUpgrade_UnifySameDomain same(cad.solid, false, true, false);
+        same.Build();
+        part = same.Shape(), unified = same.History();
+      }
+      BRepAlgoAPI_Defeaturing defeat;
+      defeat.SetShape(part);
+      for (int f : faces)
+        for (const TopoDS_Shape& image : imagesIn(unified, cad.faces(f + 1))) defeat.AddFaceToRemove(image);
+      defeat.SetRunParallel(false);
+      defeat.Build();
+      if (!defeat.IsDone()) return std::nullopt;
+      if (defeat.HasWarnings()) continue;  // the faces left where they were
+      TopExp_Explorer solid(defeat.Shape(), TopAbs_SOLID);
+      if (!solid.More() || !BRepCheck_Analyzer(solid.Current()).IsValid()) return std::nullopt;
+      Defeatured out{prepareSolid(TopoDS::Solid(solid.Current())), {}};
+      out.smooth.unit = cad.unit, out.smooth.cutInput = cad.cutInput;
+      if (!traceFaces(cad, faces, unified, defeat, out)) return std::nullopt;
+      return out;
+    } catch (const Standard_Failure&) {
+      return std::nullopt;
+    }
+  return std::nullopt;
 }
 
 // Whether the walls fall into two sheets or more once the faces are taken for rims (nothing joins walls through
@@ -148,9 +187,10 @@ std::optional<FootFillets> removeFootFillets(const CadSolid& cad, const WallSide
   for (int s = 1; s < static_cast<int>(sheets.size()); ++s)
     if (!standsOnEdges(concave, search.sheetOf, s)) fillets.merge(filletsAtFoot(search, s));
   if (fillets.empty()) return std::nullopt;
-  std::optional<CadSolid> smooth = withoutFaces(cad, fillets);
+  std::optional<Defeatured> smooth = withoutFaces(cad, fillets);
   if (!smooth) return std::nullopt;
-  FootFillets out{std::move(*smooth), std::vector<int>(fillets.begin(), fillets.end()), 0, {}};
+  FootFillets out{
+      std::move(smooth->smooth), std::vector<int>(fillets.begin(), fillets.end()), 0, {}, std::move(smooth->merged)};
   for (int f : fillets) out.largestRadius = std::max(out.largestRadius, *search.radius[f]);
   out.sides = classifyWallSides(out.smooth);
   return out;
@@ -175,12 +215,12 @@ std::optional<FootFillets> removeRootFillets(const CadSolid& cad, const WallSide
     if (others >= 2) fillets.insert(static_cast<int>(f)), largest = std::max(largest, *radius[f]);
   }
   if (fillets.empty() || !sheetsApartWithout(cad, sides, fillets)) return std::nullopt;
-  std::optional<CadSolid> smooth = withoutFaces(cad, fillets);
+  std::optional<Defeatured> smooth = withoutFaces(cad, fillets);
   if (!smooth) return std::nullopt;
-  WallSides smoothSides = classifyWallSides(*smooth);
-  if (!smoothSides.ownSideFaces.empty() || findSheets(*smooth, smoothSides).size() < 2) return std::nullopt;
-  return FootFillets{std::move(*smooth), std::vector<int>(fillets.begin(), fillets.end()), largest,
-                     std::move(smoothSides)};
+  WallSides smoothSides = classifyWallSides(smooth->smooth);
+  if (!smoothSides.ownSideFaces.empty() || findSheets(smooth->smooth, smoothSides).size() < 2) return std::nullopt;
+  return FootFillets{std::move(smooth->smooth), std::vector<int>(fillets.begin(), fillets.end()), largest,
+                     std::move(smoothSides), std::move(smooth->merged)};
 }
 
 }  // namespace hexlayer

@@ -5,8 +5,9 @@
 // written as B-splines) joining its faces, across such faces, to faces of the sheets before it, and chamfers: plane
 // rim faces narrower than the wall whose edges with walls are all concave (a 45-degree chamfer at a rib's root). They
 // are removed with OpenCASCADE's defeaturing (BRepAlgoAPI_Defeaturing: the faces beside them extended to meet in the
-// sharp edge the fillet rounded), and the part so smoothed is cut and meshed; the pipeline groups the fillets' nodes
-// and element faces by nearness and reports them.
+// sharp edge the fillet rounded; where it leaves them, as beside a plate written in pieces, the faces on one surface
+// merged first), and the part so smoothed is cut and meshed; the pipeline groups the fillets' nodes and element faces
+// (and those of faces merged) by nearness and reports them.
 #pragma once
 #include <TopoDS_Solid.hxx>
 
@@ -24,6 +25,8 @@ struct FootFillets {
   std::vector<int> faces;    // the part's faces removed, 0-based
   double largestRadius = 0;  // of those faces (a chamfer's: its width)
   WallSides sides;           // smooth's faces' sides (classifyWallSides), no mixed face split yet
+  std::vector<int> merged;   // the part's faces (0-based) merged into a neighbour on their surface before the fillets
+                             // could be removed (a plate written in pieces): no face of smooth is named after them
 };
 
 // [in] cad: the part (pipeline units); [in] sides: its faces' sides; [in] sheets: findSheets's, the first the base.

@@ -901,61 +901,61 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
   return std::move(result);
 }
 
-// The fillet a point grouped with an input face is nearer to than to that face (within twice the largest fillet's
-// radius).
-class NearestFillet {
+// Of some faces of the part (removed fillets, faces merged into a neighbour), the one a point grouped with an input
+// face is nearer to than to that face (or nearest to, if `overOwn`), within a reach.
+class NearerFace {
  public:
-  // [in] cad: the part, fillets and all (kept by reference); [in] fillets.
-  NearestFillet(const CadSolid& cad, const FootFillets& fillets)
-      : cad_(cad), fillets_(fillets), faces_(cad), probe_(faces_) {}
-  // [in] p: in the part's units; [in] group: the input face it is grouped with. Returns the fillet's input face,
+  // [in] cad: the part, fillets and all (kept by reference); [in] faces: the candidates (0-based, kept by reference);
+  // [in] reach; [in] overOwn: whether the face the point is grouped with is not compared.
+  NearerFace(const CadSolid& cad, const std::vector<int>& faces, double reach, bool overOwn)
+      : cad_(cad), candidates_(faces), reach_(reach), overOwn_(overOwn), faces_(cad), probe_(faces_) {}
+  // [in] p: in the part's units; [in] group: the input face it is grouped with. Returns the candidate's input face,
   // or -1.
   int operator()(const Vec3& p, int group) {
     int best = -1;
-    double nearest = 2 * fillets_.largestRadius;
-    for (int f : fillets_.faces)
+    double nearest = reach_;
+    for (int f : candidates_)
       if (const double d = probe_.distance(f, p); d < nearest) nearest = d, best = inputFaceOf(cad_, f);
-    for (int f = 0; best >= 0 && best != group && f < cad_.faces.Extent(); ++f)
+    for (int f = 0; !overOwn_ && best >= 0 && best != group && f < cad_.faces.Extent(); ++f)
       if (inputFaceOf(cad_, f) == group && probe_.distance(f, p) <= nearest) best = -1;
     return best == group ? -1 : best;
   }
 
  private:
   const CadSolid& cad_;
-  const FootFillets& fillets_;
+  const std::vector<int>& candidates_;
+  double reach_;
+  bool overOwn_;
   CadFaces faces_;
   CadFaceProbe probe_;
 };
 
-// The boundary quads and nodes of the mesh nearer to a removed fillet than to the face they are grouped with (a quad
-// by its centre) move to the fillet's group. [in,out] groups: per input face; [in] mesh: in the input's units; [in]
-// cad: the part, fillets and all; [in] fillets.
-void groupFootFillets(std::vector<SurfaceGroup>& groups, const HexMesh& mesh, const CadSolid& cad,
-                      const FootFillets& fillets) {
-  for (int f = 0; f < cad.faces.Extent(); ++f)
-    if (const int input = inputFaceOf(cad, f); input >= static_cast<int>(groups.size())) groups.resize(input + 1);
-  for (std::size_t g = 0; g < groups.size(); ++g) groups[g].name = "Face" + std::to_string(g + 1);
-  NearestFillet nearest(cad, fillets);
-  auto filletOf = [&](const std::vector<int>& nodes, int group) {  // of their centre
+// The boundary quads and nodes of the mesh nearer to one of `faces` (within reach) than to the face they are grouped
+// with (a quad by its centre) move to its group. [in,out] groups: per input face; [in] mesh: in the input's units;
+// [in] cad: the part, fillets and all; [in] faces, reach, overOwn: NearerFace's.
+void groupByNearness(std::vector<SurfaceGroup>& groups, const HexMesh& mesh, const CadSolid& cad,
+                     const std::vector<int>& faces, double reach, bool overOwn = false) {
+  NearerFace nearer(cad, faces, reach, overOwn);
+  auto nearerOf = [&](const std::vector<int>& nodes, int group) {  // of their centre
     Vec3 centre = Vec3::Zero();
     for (int n : nodes) centre += cad.unit / nodes.size() * mesh.nodes[n];
-    return nearest(centre, group);
+    return nearer(centre, group);
   };
-  std::vector<std::pair<int, HexFace>> quads;  // to the fillet's group
+  std::vector<std::pair<int, HexFace>> quads;  // to the nearer face's group
   std::vector<std::pair<int, int>> nodes;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     std::vector<HexFace> keptQuads;
     for (const HexFace& q : groups[g].hexFaces) {
       std::vector<int> corners;
       for (int c : kHexFaces[q.localFace]) corners.push_back(mesh.hexes[q.hex][c]);
-      if (const int to = filletOf(corners, static_cast<int>(g)); to >= 0)
+      if (const int to = nearerOf(corners, static_cast<int>(g)); to >= 0)
         quads.emplace_back(to, q);
       else
         keptQuads.push_back(q);
     }
     std::vector<int> keptNodes;
     for (int n : groups[g].nodes)
-      if (const int to = filletOf({n}, static_cast<int>(g)); to >= 0)
+      if (const int to = nearerOf({n}, static_cast<int>(g)); to >= 0)
         nodes.emplace_back(to, n);
       else
         keptNodes.push_back(n);
@@ -963,7 +963,24 @@ void groupFootFillets(std::vector<SurfaceGroup>& groups, const HexMesh& mesh, co
   }
   for (const auto& [to, q] : quads) groups[to].hexFaces.push_back(q);
   for (const auto& [to, n] : nodes) groups[to].nodes.push_back(n);
-  for (int f : fillets.faces) sortGroup(groups[inputFaceOf(cad, f)]);
+  for (int f : faces) sortGroup(groups[inputFaceOf(cad, f)]);
+}
+
+// The smoothed part's groups as the part's: those of faces merged into a neighbour (FootFillets::merged) by nearness
+// first (the piece of the surface each quad lies on), then those of the fillets (within twice the largest radius), and
+// if a fillet is left without element faces (every quad beside it as near to a face beside it), each fillet takes those
+// within its radius that are nearer to it than to the other fillets.
+// [in,out] groups: per input face; [in] mesh: in the input's units; [in] cad: the part, fillets and all; [in] fillets.
+void groupFootFillets(std::vector<SurfaceGroup>& groups, const HexMesh& mesh, const CadSolid& cad,
+                      const FootFillets& fillets) {
+  for (int f = 0; f < cad.faces.Extent(); ++f)
+    if (const int input = inputFaceOf(cad, f); input >= static_cast<int>(groups.size())) groups.resize(input + 1);
+  for (std::size_t g = 0; g < groups.size(); ++g) groups[g].name = "Face" + std::to_string(g + 1);
+  if (!fillets.merged.empty()) groupByNearness(groups, mesh, cad, fillets.merged, cad.diagonal);
+  groupByNearness(groups, mesh, cad, fillets.faces, 2 * fillets.largestRadius);
+  if (std::any_of(fillets.faces.begin(), fillets.faces.end(),
+                  [&](int f) { return groups[inputFaceOf(cad, f)].hexFaces.empty(); }))
+    groupByNearness(groups, mesh, cad, fillets.faces, fillets.largestRadius, true);
 }
 
 // Issue 18, fillets at the feet of standing walls (foot_fillets.hpp): the part meshed without them (meshJunctions on

@@ -22,6 +22,7 @@
 #include "geometry/mixed_faces.hpp"
 #include "geometry/sheet_edges.hpp"
 #include "test_boxes.hpp"
+#include "test_parts.hpp"
 
 using namespace hexlayer;
 
@@ -84,6 +85,33 @@ TEST(FootFillets, ARibOnAPlate) { expectRemoved("plate_rib_fillet", 2, 2 * 60 * 
 // The rib in the box, 40 x 2, filleted all round (the samples README's volume: the part's less the box's and rib's).
 TEST(FootFillets, ARibInABoxFilletedAllRound) {
   expectRemoved("box_rib_fillet", 4, (2 * 40 + 2 * 2) * (1 - M_PI / 4) + 4 * (5.0 / 3 - M_PI / 2));
+}
+
+// The same box with its faces written in pieces (none over a twelfth of the surface: the floor in four, the fillets
+// whole): OpenCASCADE's defeaturing left the fillets where they were (a warning, the part unchanged, and the rib
+// refused: `no foot found`); the faces on one surface are merged first now. The fillets' volume removed, the floor's
+// pieces but one merged (listed: their quads are grouped by nearness; so are the floor's bottom's), every other input
+// face named by a face of the smoothed part, two sheets meeting in concave edges. At scales 1, 1e-3, 1e3.
+TEST(FootFillets, ARibInABoxWrittenInPieces) {
+  const TopoDS_Solid part = test_parts::inPieces(sample("box_rib_fillet"), 12);
+  for (double s : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("x " + std::to_string(s));
+    const Found f = footFilletsOf(part, s);
+    ASSERT_TRUE(f.fillets);
+    const double volume = (2 * 40 + 2 * 2) * (1 - M_PI / 4) + 4 * (5.0 / 3 - M_PI / 2), unit3 = std::pow(f.cad.unit, 3);
+    EXPECT_NEAR((f.cad.volume - f.fillets->smooth.volume) / unit3, volume * s * s * s, 0.01 * volume * s * s * s);
+    std::set<int> named(f.fillets->smooth.inputFace.begin(), f.fillets->smooth.inputFace.end()), merged, removed;
+    for (int face : f.fillets->merged) merged.insert(inputFaceOf(f.cad, face));
+    for (int face : f.fillets->faces) removed.insert(inputFaceOf(f.cad, face));
+    EXPECT_GE(merged.size(), 3u);  // the floor's top in four pieces: one names the merged face
+    for (int face = 0; face < f.cad.faces.Extent(); ++face) {
+      const int input = inputFaceOf(f.cad, face);
+      EXPECT_EQ(named.count(input) + merged.count(input) + removed.count(input), 1u) << "input face " << input;
+    }
+    const WallSides sides = classifyWallSides(f.fillets->smooth);
+    EXPECT_EQ(findSheets(f.fillets->smooth, sides).size(), 2u);
+    EXPECT_FALSE(concaveEdges(f.fillets->smooth).empty());
+  }
 }
 
 // The rib's top edges (at z = 10: along its sides and across its ends) rounded r = 0.8.

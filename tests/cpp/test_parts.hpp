@@ -3,10 +3,13 @@
 #pragma once
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
+#include <ShapeUpgrade_ShapeDivideArea.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
@@ -114,6 +117,17 @@ inline TopoDS_Solid withFacesReversed(const TopoDS_Solid& solid) {
   build.MakeSolid(reversed);
   build.Add(reversed, shell);
   return reversed;
+}
+
+// The solid with its faces divided so that none is larger than 1/pieces of its surface (ShapeUpgrade_ShapeDivideArea),
+// as a CAD system may write a plate in pieces: [in] solid; [in] pieces.
+inline TopoDS_Solid inPieces(const TopoDS_Solid& solid, double pieces) {
+  GProp_GProps surface;
+  BRepGProp::SurfaceProperties(solid, surface);
+  ShapeUpgrade_ShapeDivideArea divide(solid);
+  divide.MaxArea() = surface.Mass() / pieces;
+  divide.Perform();
+  return firstSolid(divide.Result());
 }
 
 // [in] s: the scale. An open box 40 x 45 x 12, walls and floor 2.5, the outer half of its walls cut away over the top
