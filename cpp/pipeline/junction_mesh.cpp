@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "quality/quality.hpp"
 
 namespace hexlayer {
 namespace {
@@ -147,6 +148,32 @@ std::vector<std::array<int, 4>> lapFaces(const HexMesh& wall, const QuadMesh& qu
   return faces;
 }
 
+// The wall's boundary faces beyond its sweep lying on one foot: the faces of its rim caps' hexes (a rounded rim's
+// profile beyond the sweep, rim_cap.hpp) where the rim meets the foot (a rib's round end), none of them in `foot`
+// already. [in] wall, feet: as wallFoot's; [in] foot: the strip and lap faces so far. Returns the faces, the wall's
+// nodes, ordered as boundaryFaces orders them.
+std::vector<std::array<int, 4>> capFaces(const HexMesh& wall, std::vector<FootSurface>& feet, const WallFoot& foot) {
+  std::set<std::array<int, 4>> known;
+  for (const std::array<int, 4>& q : foot.footprint.quads) {
+    std::array<int, 4> nodes{foot.wallNode[q[0]], foot.wallNode[q[1]], foot.wallNode[q[2]], foot.wallNode[q[3]]};
+    std::sort(nodes.begin(), nodes.end());
+    known.insert(nodes);
+  }
+  std::vector<std::array<int, 4>> faces;
+  for (const BoundaryFace& b : boundaryFaces(wall)) {
+    std::array<int, 4> sorted = b.nodes;
+    std::sort(sorted.begin(), sorted.end());
+    if (known.count(sorted) ||
+        std::none_of(b.nodes.begin(), b.nodes.end(), [&](int n) { return wall.nodeOnRim[n] == kRimCap; }))
+      continue;
+    if (std::any_of(feet.begin(), feet.end(), [&](FootSurface& f) {
+          return std::all_of(b.nodes.begin(), b.nodes.end(), [&](int n) { return f.holds(wall.nodes[n]); });
+        }))
+      faces.push_back(b.nodes);
+  }
+  return faces;
+}
+
 // Throws geometryError if the footprint covers under kCoveredFoot of the feet's area, or the laps' quads under
 // kCoveredLap of a foot they lie on (lapArea: per foot of `feet`).
 void requireFeetCovered(const FootprintQuads& footprint, const std::vector<double>& lapArea,
@@ -217,6 +244,11 @@ WallFoot wallFoot(const HexMesh& wall, const QuadMesh& quads, std::vector<FootSu
     foot.footprint.quads.push_back(lap);
     foot.lap.resize(foot.wallNode.size(), 0);
     for (int n : lap) foot.lap[n] = 1;
+  }
+  for (const std::array<int, 4>& face : capFaces(wall, feet, foot)) {
+    std::array<int, 4> cap;
+    for (int c = 0; c < 4; ++c) cap[c] = node(face[c]);
+    foot.footprint.quads.push_back(cap);
   }
   if (foot.footprint.quads.empty()) throw geometryError("junction: a standing wall has no quads along its foot");
   requireFeetCovered(foot.footprint, lapArea, feet);

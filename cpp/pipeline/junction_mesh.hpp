@@ -82,7 +82,8 @@ std::size_t snapFootColumnsAcross(HexMesh& piece, const QuadMesh& quads, std::ve
 // k = 0..m); [in] quads; [in,out] feet: the surfaces of the wall's feet (footSurfaces). Returns the footprint: for
 // every rim edge of the quads whose two sweep columns lie on one foot's surface, the m quads between the columns (a
 // strip, or a ring); and where the wall lies along a foot, its side face to face with the sheet's wall (a boss merged
-// into a box's wall, flattened there: a lap), its hexes' faces on the foot (a patch), their nodes flagged `lap`. Throws
+// into a box's wall, flattened there: a lap), its hexes' faces on the foot (a patch), their nodes flagged `lap`; and
+// the faces of its rim caps' hexes on the foot (a rib's round end: the cap's profile where it meets the foot). Throws
 // geometryError if there is none, if it covers under kCoveredFoot of the feet (a lap whose face is not the wall's side:
 // only its rim would be joined to the sheet), or if a lap's quads cover under kCoveredLap of its foot (they straddle
 // its edges: notches between the wall and the sheet).

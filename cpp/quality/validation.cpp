@@ -70,16 +70,24 @@ std::optional<ValidationFailure> checkVolume(const QualityReport& q, double cadV
   return ValidationFailure{"volume", 1, std::nullopt, s.str()};
 }
 
-// A boundary face lies on another when the other's plane is this near its middle, relative to its size (the square
-// root of its area): two pieces' faces on one cut face, apart by the sagitta of their chords at most where it is
-// curved.
+// A boundary face lies on another when the other's plane is this near its middle, relative to its size (the lesser of
+// the square root of its area and its hex's depth across it, so that the two walls of one thin layer of wide hexes
+// are not taken for one face): two pieces' faces on one cut face, apart by the sagitta of their chords at most where
+// it is curved.
 constexpr double kFaceOnFace = 0.05;
 
-// A boundary face, its middle, unit outward normal and size (the square root of its area).
+// A boundary face, its middle, unit outward normal and size (as kFaceOnFace measures it).
 struct FacePlane {
   Vec3 middle, normal;
   double size;
 };
+
+// The middle of local face `face` of hex h.
+Vec3 faceMiddle(const HexMesh& mesh, int h, int face) {
+  Vec3 middle = Vec3::Zero();
+  for (int c : kHexFaces[face]) middle += mesh.nodes[mesh.hexes[h][c]] / 4;
+  return middle;
+}
 
 FacePlane facePlane(const HexMesh& mesh, const BoundaryFace& f) {
   const auto& p = mesh.nodes;
@@ -87,7 +95,9 @@ FacePlane facePlane(const HexMesh& mesh, const BoundaryFace& f) {
   const double area = 0.5 * cross.norm();
   Vec3 middle = Vec3::Zero();
   for (int n : f.nodes) middle += p[n] / 4;
-  return {middle, area > 0 ? Vec3(cross.normalized()) : Vec3::Zero(), std::sqrt(area)};
+  const int across = f.localFace < 2 ? 1 - f.localFace : 2 + f.localFace % 4;  // kHexFaces' pairs: 0-1, 2-4, 3-5
+  const double depth = (faceMiddle(mesh, f.hex, across) - middle).norm();
+  return {middle, area > 0 ? Vec3(cross.normalized()) : Vec3::Zero(), std::min(std::sqrt(area), depth)};
 }
 
 // Whether q, in the plane of the triangle a b c, lies in it (barycentric coordinates above -1e-6).

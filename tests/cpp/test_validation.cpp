@@ -61,8 +61,10 @@ TEST(Validation, DuplicateNodesAreNotConformal) {
 // Two blocks face to face at x = 1, not joined: a hex 1 x 1 x 1 and beside it 2 x 2 hexes 1 x 0.7 x 0.7 from y, z =
 // -0.2 (no node of one at a node of the other, each block closed, so every other check passes): the hex's face on
 // x = 1 and the 4 beside it lie face to face, refused as not joined, named at the first; the blocks 0.1 apart (a slit
-// narrower than a hex, as a flexure's) pass.
+// narrower than a hex, as a flexure's) pass; so does a plate 60 x 40 x 2 of two hexes, one on the other (its two wide
+// walls 2 apart, under 5 % of a face's size but as deep as its hexes).
 TEST(Validation, PiecesFaceToFaceNotJoinedAreRefused) {
+  EXPECT_TRUE(validate(block({0, 60}, {0, 40}, {0, 1, 2}), 4800).empty());
   for (const double gap : {0.0, 0.1}) {
     SCOPED_TRACE("gap " + std::to_string(gap));
     HexMesh m = block({0, 1}, {0, 1}, {0, 1});
