@@ -106,60 +106,67 @@ std::vector<TopoDS_Shape> imagesIn(const Handle(BRepTools_History) & history, co
 
 // Smooth's inputFace set through the histories of the unifying (if any) and of the defeaturing: false if a face of
 // smooth comes from none of the part's. [in] cad; [in] removed: the part's faces removed (0-based); [in] unified: the
-// unifying's history, or null; [in] defeat; [in,out] out: smooth's inputFace set, the part's faces no longer named
-// listed in merged.
+// unifying's history, or null; [in] defeat; [in,out] out: smooth's inputFace set (the first of the part's faces a face
+// comes from names it), the part's faces no longer named listed in merged.
 bool traceFaces(const CadSolid& cad, const std::set<int>& removed, const Handle(BRepTools_History) & unified,
                 BRepAlgoAPI_Defeaturing& defeat, Defeatured& out) {
   CadSolid& smooth = out.smooth;
   smooth.inputFace.assign(smooth.faces.Extent(), -1);
-  std::vector<int> from(smooth.faces.Extent(), -1);  // the part's face each face of smooth is named after
-  for (int f = 1; f <= cad.faces.Extent(); ++f)
-    for (const TopoDS_Shape& face :
-         removed.count(f - 1) ? std::vector<TopoDS_Shape>{} : imagesIn(unified, cad.faces(f))) {
+  for (int f = 1; f <= cad.faces.Extent(); ++f) {
+    if (removed.count(f - 1)) continue;
+    for (const TopoDS_Shape& face : imagesIn(unified, cad.faces(f))) {
       if (defeat.IsDeleted(face)) continue;
       const TopTools_ListOfShape& modified = defeat.Modified(face);
       std::vector<TopoDS_Shape> images(modified.cbegin(), modified.cend());
       if (images.empty()) images.push_back(face);
       for (const TopoDS_Shape& image : images)
-        if (const int i = smooth.faces.FindIndex(image); i > 0 && from[i - 1] < 0)
-          from[i - 1] = f - 1, smooth.inputFace[i - 1] = inputFaceOf(cad, f - 1);
+        if (const int i = smooth.faces.FindIndex(image); i > 0 && smooth.inputFace[i - 1] < 0)
+          smooth.inputFace[i - 1] = inputFaceOf(cad, f - 1);
     }
+  }
   std::set<int> named(smooth.inputFace.begin(), smooth.inputFace.end());
   for (int f = 0; f < cad.faces.Extent(); ++f)
     if (!named.count(inputFaceOf(cad, f)) && !removed.count(f)) out.merged.push_back(f);
   return !named.count(-1);
 }
 
+// The part without `faces` (defeatured), the part's faces on one surface merged first if `unify`; none if OpenCASCADE
+// cannot remove them, or leaves them where they were (it warns: then `warned`).
+std::optional<Defeatured> defeatured(const CadSolid& cad, const std::set<int>& faces, bool unify, bool& warned) {
+  try {
+    TopoDS_Shape part = cad.solid;
+    Handle(BRepTools_History) unified;
+    if (unify) {
+      ShapeUpgrade_UnifySameDomain same(cad.solid, false, true, false);
+      same.Build();
+      part = same.Shape(), unified = same.History();
+    }
+    BRepAlgoAPI_Defeaturing defeat;
+    defeat.SetShape(part);
+    for (int f : faces)
+      for (const TopoDS_Shape& image : imagesIn(unified, cad.faces(f + 1))) defeat.AddFaceToRemove(image);
+    defeat.SetRunParallel(false);
+    defeat.Build();
+    warned = defeat.IsDone() && defeat.HasWarnings();
+    if (!defeat.IsDone() || warned) return std::nullopt;
+    TopExp_Explorer solid(defeat.Shape(), TopAbs_SOLID);
+    if (!solid.More() || !BRepCheck_Analyzer(solid.Current()).IsValid()) return std::nullopt;
+    Defeatured out{prepareSolid(TopoDS::Solid(solid.Current())), {}};
+    out.smooth.unit = cad.unit, out.smooth.cutInput = cad.cutInput;
+    if (!traceFaces(cad, faces, unified, defeat, out)) return std::nullopt;
+    return out;
+  } catch (const Standard_Failure&) {
+    return std::nullopt;
+  }
+}
+
 // The part without `faces` (defeatured), or none if OpenCASCADE cannot remove them. Where it leaves them (a fillet
 // along a plate written in pieces: it warns and keeps the part as it is), the part's faces on one surface are merged
 // first (ShapeUpgrade_UnifySameDomain) and the fillets removed from that.
 std::optional<Defeatured> withoutFaces(const CadSolid& cad, const std::set<int>& faces) {
-  for (const bool unify : {false, true}) try {
-      TopoDS_Shape part = cad.solid;
-      Handle(BRepTools_History) unified;
-      if (unify) {
-        ShapeUpgrade_UnifySameDomain same(cad.solid, false, true, false);
-        same.Build();
-        part = same.Shape(), unified = same.History();
-      }
-      BRepAlgoAPI_Defeaturing defeat;
-      defeat.SetShape(part);
-      for (int f : faces)
-        for (const TopoDS_Shape& image : imagesIn(unified, cad.faces(f + 1))) defeat.AddFaceToRemove(image);
-      defeat.SetRunParallel(false);
-      defeat.Build();
-      if (!defeat.IsDone()) return std::nullopt;
-      if (defeat.HasWarnings()) continue;  // the faces left where they were
-      TopExp_Explorer solid(defeat.Shape(), TopAbs_SOLID);
-      if (!solid.More() || !BRepCheck_Analyzer(solid.Current()).IsValid()) return std::nullopt;
-      Defeatured out{prepareSolid(TopoDS::Solid(solid.Current())), {}};
-      out.smooth.unit = cad.unit, out.smooth.cutInput = cad.cutInput;
-      if (!traceFaces(cad, faces, unified, defeat, out)) return std::nullopt;
-      return out;
-    } catch (const Standard_Failure&) {
-      return std::nullopt;
-    }
-  return std::nullopt;
+  bool warned = false;
+  if (std::optional<Defeatured> smooth = defeatured(cad, faces, false, warned); smooth || !warned) return smooth;
+  return defeatured(cad, faces, true, warned);
 }
 
 // Whether the walls fall into two sheets or more once the faces are taken for rims (nothing joins walls through
