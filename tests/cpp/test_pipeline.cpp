@@ -206,7 +206,8 @@ TEST(Pipeline, AFilletedRibInABoxWrittenInPiecesIsMeshedAsJunctions) {
 // the plate's hexes unjoined (14 boundary faces face to face inside the part; validation passed it until it looked for
 // that: `joined`). Now the caps' faces on the foot are part of the footprint the plate carries: all hex, one T
 // junction, validated (no faces face to face), SJ min >= 0.6 and avg >= 0.96 (measured 0.705-0.737 / 0.970-0.982), the
-// volume within 1 %. In millimetres and metres.
+// volume within 1 %, a surface group with element faces for each of its faces (the round ends' too). In millimetres
+// and metres.
 TEST(Pipeline, ARibWithRoundEndsIsJoinedToThePlateAllRound) {
   auto cylinder = [](double x) { return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, 20, 2), gp::DZ()), 1, 10).Shape(); };
   TopoDS_Shape part = BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60, 40, 2).Shape(),
@@ -215,11 +216,15 @@ TEST(Pipeline, ARibWithRoundEndsIsJoinedToThePlateAllRound) {
   part = BRepAlgoAPI_Fuse(BRepAlgoAPI_Fuse(part, cylinder(11)).Shape(), cylinder(49)).Shape();
   ShapeUpgrade_UnifySameDomain unify(part);
   unify.Build();
+  int faces = 0;
+  for (TopExp_Explorer f(unify.Shape(), TopAbs_FACE); f.More(); f.Next()) ++faces;
   for (const double s : {1.0, 1e-3}) {
     SCOPED_TRACE("x " + std::to_string(s));
     const MeshResult r = expectMeshedAllHex(test_boxes::scaled(unify.Shape(), s), 0.6, 0.96, 0.01);
     ASSERT_EQ(r.report.junctions.size(), 1u);
     EXPECT_EQ(r.report.junctions[0].kind, "T");
+    ASSERT_EQ(r.surfaceGroups.size(), static_cast<std::size_t>(faces));
+    for (const SurfaceGroup& g : r.surfaceGroups) EXPECT_FALSE(g.hexFaces.empty()) << g.name;
   }
 }
 
