@@ -901,45 +901,22 @@ MeshResult meshJunctions(const CadSolid& cad, const WallSides& sides, const std:
   return std::move(result);
 }
 
-// Of some faces of the part (removed fillets, faces merged into a neighbour), the one a point grouped with an input
-// face is nearer to than to that face (or nearest to, if `overOwn`), within a reach.
-class NearerFace {
- public:
-  // [in] cad: the part, fillets and all (kept by reference); [in] faces: the candidates (0-based, kept by reference);
-  // [in] reach; [in] overOwn: whether the face the point is grouped with is not compared.
-  NearerFace(const CadSolid& cad, const std::vector<int>& faces, double reach, bool overOwn)
-      : cad_(cad), candidates_(faces), reach_(reach), overOwn_(overOwn), faces_(cad), probe_(faces_) {}
-  // [in] p: in the part's units; [in] group: the input face it is grouped with. Returns the candidate's input face,
-  // or -1.
-  int operator()(const Vec3& p, int group) {
-    int best = -1;
-    double nearest = reach_;
-    for (int f : candidates_)
-      if (const double d = probe_.distance(f, p); d < nearest) nearest = d, best = inputFaceOf(cad_, f);
-    for (int f = 0; !overOwn_ && best >= 0 && best != group && f < cad_.faces.Extent(); ++f)
-      if (inputFaceOf(cad_, f) == group && probe_.distance(f, p) <= nearest) best = -1;
-    return best == group ? -1 : best;
-  }
-
- private:
-  const CadSolid& cad_;
-  const std::vector<int>& candidates_;
-  double reach_;
-  bool overOwn_;
-  CadFaces faces_;
-  CadFaceProbe probe_;
-};
-
-// The boundary quads and nodes of the mesh nearer to one of `faces` (within reach) than to the face they are grouped
-// with (a quad by its centre) move to its group. [in,out] groups: per input face; [in] mesh: in the input's units;
-// [in] cad: the part, fillets and all; [in] faces, reach, overOwn: NearerFace's.
-void groupByNearness(std::vector<SurfaceGroup>& groups, const HexMesh& mesh, const CadSolid& cad,
+// The boundary quads and nodes of the mesh nearer to one of `faces` (removed fillets, faces merged into a neighbour;
+// within reach) than to the face they are grouped with (a quad by its centre; not compared if `overOwn`) move to its
+// group. [in,out] groups: per input face; [in] mesh: in the input's units; [in] cad: the part, fillets and all;
+// [in,out] probe: of cad's faces (made once for every pass); [in] faces: 0-based; [in] reach; [in] overOwn.
+void groupByNearness(std::vector<SurfaceGroup>& groups, const HexMesh& mesh, const CadSolid& cad, CadFaceProbe& probe,
                      const std::vector<int>& faces, double reach, bool overOwn = false) {
-  NearerFace nearer(cad, faces, reach, overOwn);
-  auto nearerOf = [&](const std::vector<int>& nodes, int group) {  // of their centre
-    Vec3 centre = Vec3::Zero();
-    for (int n : nodes) centre += cad.unit / nodes.size() * mesh.nodes[n];
-    return nearer(centre, group);
+  auto nearerOf = [&](const std::vector<int>& nodes, int group) {  // of their centre: the face's input face, or -1
+    Vec3 p = Vec3::Zero();
+    for (int n : nodes) p += cad.unit / nodes.size() * mesh.nodes[n];
+    int best = -1;
+    double nearest = reach;
+    for (int f : faces)
+      if (const double d = probe.distance(f, p); d < nearest) nearest = d, best = inputFaceOf(cad, f);
+    for (int f = 0; !overOwn && best >= 0 && best != group && f < cad.faces.Extent(); ++f)
+      if (inputFaceOf(cad, f) == group && probe.distance(f, p) <= nearest) best = -1;
+    return best == group ? -1 : best;
   };
   std::vector<std::pair<int, HexFace>> quads;  // to the nearer face's group
   std::vector<std::pair<int, int>> nodes;
@@ -976,11 +953,13 @@ void groupFootFillets(std::vector<SurfaceGroup>& groups, const HexMesh& mesh, co
   for (int f = 0; f < cad.faces.Extent(); ++f)
     if (const int input = inputFaceOf(cad, f); input >= static_cast<int>(groups.size())) groups.resize(input + 1);
   for (std::size_t g = 0; g < groups.size(); ++g) groups[g].name = "Face" + std::to_string(g + 1);
-  if (!fillets.merged.empty()) groupByNearness(groups, mesh, cad, fillets.merged, cad.diagonal);
-  groupByNearness(groups, mesh, cad, fillets.faces, 2 * fillets.largestRadius);
+  const CadFaces faces(cad);
+  CadFaceProbe probe(faces);
+  if (!fillets.merged.empty()) groupByNearness(groups, mesh, cad, probe, fillets.merged, cad.diagonal);
+  groupByNearness(groups, mesh, cad, probe, fillets.faces, 2 * fillets.largestRadius);
   if (std::any_of(fillets.faces.begin(), fillets.faces.end(),
                   [&](int f) { return groups[inputFaceOf(cad, f)].hexFaces.empty(); }))
-    groupByNearness(groups, mesh, cad, fillets.faces, fillets.largestRadius, true);
+    groupByNearness(groups, mesh, cad, probe, fillets.faces, fillets.largestRadius, true);
 }
 
 // Issue 18, fillets at the feet of standing walls (foot_fillets.hpp): the part meshed without them (meshJunctions on

@@ -93,8 +93,7 @@ FacePlane facePlane(const HexMesh& mesh, const BoundaryFace& f) {
   const auto& p = mesh.nodes;
   const Vec3 cross = (p[f.nodes[2]] - p[f.nodes[0]]).cross(p[f.nodes[3]] - p[f.nodes[1]]);
   const double area = 0.5 * cross.norm();
-  Vec3 middle = Vec3::Zero();
-  for (int n : f.nodes) middle += p[n] / 4;
+  const Vec3 middle = faceMiddle(mesh, f.hex, f.localFace);
   const int across = f.localFace < 2 ? 1 - f.localFace : 2 + f.localFace % 4;  // kHexFaces' pairs: 0-1, 2-4, 3-5
   const double depth = (faceMiddle(mesh, f.hex, across) - middle).norm();
   return {middle, area > 0 ? Vec3(cross.normalized()) : Vec3::Zero(), std::min(std::sqrt(area), depth)};
