@@ -1,6 +1,7 @@
 #include "quality/validation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -108,22 +109,26 @@ bool inTriangle(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
   return u >= -1e-6 && v >= -1e-6 && 1 - u - v >= -1e-6;
 }
 
-// Whether face f's middle lies on face g (within kFaceOnFace of its size from g's plane, inside it), g facing it
-// (their normals opposite), not at the same four places (nodes written twice: checkConformal's).
-bool liesOn(const HexMesh& mesh, const BoundaryFace& f, const FacePlane& pf, const BoundaryFace& g,
-            const FacePlane& pg) {
-  if (pf.normal.dot(pg.normal) > -0.9) return false;
-  const double height = (pf.middle - pg.middle).dot(pg.normal);
-  if (std::abs(height) > kFaceOnFace * pf.size) return false;
+// Whether face f's middle lies on face g (within kFaceOnFace of its size from the plane of one of g's four triangles,
+// inside it), that triangle facing it (their normals opposite), not at the same four places (nodes written twice:
+// checkConformal's). Each triangle of both diagonals: a face folded along one (a wall's quad with two opposite
+// corners put on a sharp edge, half of it on either face) faces the face lying on its half along neither's mean plane.
+bool liesOn(const HexMesh& mesh, const BoundaryFace& f, const FacePlane& pf, const BoundaryFace& g) {
   const auto& p = mesh.nodes;
   const double same = kCoincidentTolerance * pf.size;
   if (std::all_of(f.nodes.begin(), f.nodes.end(), [&](int a) {
         return std::any_of(g.nodes.begin(), g.nodes.end(), [&](int b) { return (p[a] - p[b]).norm() < same; });
       }))
     return false;
-  const Vec3 q = pf.middle - height * pg.normal;
-  const auto& c = g.nodes;
-  return inTriangle(q, p[c[0]], p[c[1]], p[c[2]]) || inTriangle(q, p[c[0]], p[c[2]], p[c[3]]);
+  constexpr std::array<std::array<int, 3>, 4> kTriangles{{{0, 1, 2}, {0, 2, 3}, {0, 1, 3}, {1, 2, 3}}};
+  return std::any_of(kTriangles.begin(), kTriangles.end(), [&](const std::array<int, 3>& t) {
+    const Vec3 &a = p[g.nodes[t[0]]], &b = p[g.nodes[t[1]]], &c = p[g.nodes[t[2]]];
+    const Vec3 cross = (b - a).cross(c - a);
+    if (cross.norm() <= 0 || pf.normal.dot(cross.normalized()) > -0.9) return false;
+    const Vec3 normal = cross.normalized();
+    const double height = (pf.middle - a).dot(normal);
+    return std::abs(height) <= kFaceOnFace * pf.size && inTriangle(pf.middle - height * normal, a, b, c);
+  });
 }
 
 // Boundary faces lying face to face on other boundary faces: two pieces side by side inside the part, not joined
@@ -144,7 +149,7 @@ std::optional<ValidationFailure> checkJoined(const HexMesh& mesh) {
     bool on = false;
     tree.traverse([&](const Box& b) { return squaredDistanceToBox(planes[f].middle, b) <= 0; },
                   [&](int g) {
-                    on = g != static_cast<int>(f) && liesOn(mesh, faces[f], planes[f], faces[g], planes[g]);
+                    on = g != static_cast<int>(f) && liesOn(mesh, faces[f], planes[f], faces[g]);
                     return on;
                   });
     if (on && lying++ == 0) first = f;

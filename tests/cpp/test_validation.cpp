@@ -88,6 +88,31 @@ TEST(Validation, PiecesFaceToFaceNotJoinedAreRefused) {
   }
 }
 
+// A hex 1 x 1 x 1 and beside it, not joined, a hex whose face on x = 1 is folded along its diagonal (one corner moved
+// 0.9 off the plane, as a wall's quad with two opposite corners put on a sharp edge, half of it on either face): the
+// cube's face on x = 1 lies on the folded face's half on the plane, not on its mean plane (28 degrees off), and is
+// refused as not joined (fails before: the faces were compared along their mean planes only).
+TEST(Validation, AFaceLyingOnHalfOfAFoldedFaceIsNotJoined) {
+  HexMesh m = block({0, 1}, {0, 1}, {0, 1});
+  HexMesh beside = block({1, 2}, {0.1, 1.3}, {-0.3, 0.9});
+  for (Vec3& p : beside.nodes)
+    if (p.isApprox(Vec3(1, 1.3, -0.3))) p.x() = 1.9;  // the half (y, z) above z = y - 0.4 stays on x = 1
+  const int first = static_cast<int>(m.nodes.size());
+  m.nodes.insert(m.nodes.end(), beside.nodes.begin(), beside.nodes.end());
+  for (auto h : beside.hexes) {
+    for (int& v : h) v += first;
+    m.hexes.push_back(h);
+  }
+  double volume = 0;
+  for (std::size_t h = 0; h < m.hexes.size(); ++h) volume += hexVolume(hexCorners(m, h));
+  const auto failures = validate(m, volume);
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].check, "joined");
+  EXPECT_EQ(failures[0].count, 1u);
+  ASSERT_TRUE(failures[0].at);
+  EXPECT_TRUE(failures[0].at->isApprox(Vec3(1, 0.5, 0.5)));  // the cube's face
+}
+
 TEST(Validation, OpenBoundaryIsNotWatertight) {
   HexMesh m = block({0, 1, 2}, {0, 1}, {0, 1});
   m.hexes.push_back(m.hexes[1]);  // the face x=1 used three times: hex 0 is an open box

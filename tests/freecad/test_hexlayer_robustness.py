@@ -57,17 +57,20 @@ class BadParts(unittest.TestCase):
 
 
 class ValidationInFreeCAD(unittest.TestCase):
-    """A hat section meshed with quads 8 x its wall: holes lost, the volume far off (exit 6 in the CLI)."""
+    """A hat section meshed with quads 8 x its wall: holes lost, the volume far off, a face folded over another (exit 6
+    in the CLI)."""
 
     def test_failed_validation_keeps_no_mesh_unless_forced(self):
         doc = t.new_document(self)
         mesh = HexLayer.makeMesh(doc, t.add_sample(doc, "hat_holes.step"), Size=12.0, Sizing="uniform")
-        t.assert_fails(self, mesh, "the mesh failed validation, nothing written (Force writes it anyway): volume: ")
+        t.assert_fails(self, mesh, "the mesh failed validation, nothing written (Force writes it anyway): ",
+                       "volume: the mesh's ")
         mesh.Force = True
         doc.recompute()
         self.assertTrue(mesh.isValid(), mesh.Status)
         self.assertGreater(mesh.FemMesh.VolumeCount, 0)
-        self.assertIn("Validation failed, kept as Force is on: volume: ", mesh.Status)
+        self.assertIn("Validation failed, kept as Force is on: ", mesh.Status)
+        self.assertIn("volume: the mesh's ", mesh.Status)
 
 
 class HardParts(unittest.TestCase):
