@@ -1,12 +1,18 @@
 #include "sweep/sharp_edges.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRep_Tool.hxx>
 #include <Extrema_ExtPC.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -21,7 +27,10 @@ namespace {
 
 constexpr double kMaxReach = 0.6;  // of the quad edge crossing the CAD edge: how far its nearer end may be moved
 constexpr double kFloor = 0.5;     // no hex round a moved column below this, or below the worst it had
-constexpr double kOnEdge = 1e-6;   // of the quad edge: an end this near is on the CAD edge already
+// The same for an edge of a lap's foot (a cut face: a boss's flat merged into a box's wall): the wall's hexes are
+// joined to the boss's there only if its hexes' faces follow the flat's edges.
+constexpr double kLapFloor = 0.2;
+constexpr double kOnEdge = 1e-6;  // of the quad edge: an end this near is on the CAD edge already
 
 // The point of a CAD edge nearest to p (its ends included).
 Vec3 nearestOnEdge(const BRepAdaptor_Curve& curve, const Vec3& p) {
@@ -90,6 +99,63 @@ std::vector<Capture> captures(const HexMesh& mesh, const std::vector<FacePairEdg
   return found;
 }
 
+// Per node, the length of its shortest edge to another rim node of its wall (layer 0 or the top): its rim edges there
+// (infinity for the other nodes).
+std::vector<double> rimEdgeLengths(const HexMesh& mesh) {
+  std::vector<double> shortest(mesh.nodes.size(), std::numeric_limits<double>::infinity());
+  auto onWallRim = [&](int v) {
+    return mesh.nodeOnRim[v] == kRimSwept && (mesh.nodeLayer[v] == 0 || mesh.nodeLayer[v] == mesh.layers);
+  };
+  for (const auto& h : mesh.hexes)
+    for (int base : {0, 4})
+      for (int i = 0; i < 4; ++i)
+        if (const int u = h[base + i], v = h[base + (i + 1) % 4]; onWallRim(u) && onWallRim(v)) {
+          const double length = (mesh.nodes[u] - mesh.nodes[v]).norm();
+          shortest[u] = std::min(shortest[u], length), shortest[v] = std::min(shortest[v], length);
+        }
+  return shortest;
+}
+
+// The captures of the sharp edges' ends on a rim: where a sharp edge ends on a lateral face (a boss's flat merged into
+// a wall meets its top or its foot, a box's bend without an outside round meets its rim), the wall's rim node on one
+// of the edge's faces nearest that end, if it lies within kMaxReach of its rim edge of it and not on it already (the
+// capture's `other` -1: the end is a point). The rim's quad edges cross the edge there (the rim nodes are no interior
+// quad edge's, which `captures` takes).
+std::vector<Capture> rimCaptures(const HexMesh& mesh, const CadSolid& cad, const WallSides& sides,
+                                 const std::vector<FacePairEdge>& edges) {
+  TopTools_IndexedDataMapOfShapeListOfShape facesAt;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_VERTEX, TopAbs_FACE, facesAt);
+  const std::vector<double> rimEdge = rimEdgeLengths(mesh);
+  std::vector<int> rimNodes;
+  for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
+    if (std::isfinite(rimEdge[v]) && mesh.nodeFace[v] >= 0) rimNodes.push_back(static_cast<int>(v));
+  std::vector<Capture> found;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const TopoDS_Edge& edge = TopoDS::Edge(cad.edges(edges[e].edge + 1));
+    for (const TopoDS_Vertex& end : {TopExp::FirstVertex(edge), TopExp::LastVertex(edge)}) {
+      if (end.IsNull() || !facesAt.Contains(end)) continue;
+      const TopTools_ListOfShape& faces = facesAt.FindFromKey(end);
+      if (std::none_of(faces.begin(), faces.end(), [&](const TopoDS_Shape& f) {
+            const int face = cad.faces.FindIndex(f) - 1;
+            return face >= 0 && sides.faces[face].side == Side::Lateral;
+          }))
+        continue;
+      const gp_Pnt p = BRep_Tool::Pnt(end);
+      const Vec3 at(p.X(), p.Y(), p.Z());
+      int nearest = -1;
+      for (int v : rimNodes)
+        if ((mesh.nodeFace[v] == edges[e].a || mesh.nodeFace[v] == edges[e].b) &&
+            (nearest < 0 || (mesh.nodes[v] - at).squaredNorm() < (mesh.nodes[nearest] - at).squaredNorm()))
+          nearest = v;
+      if (nearest < 0) continue;
+      if (const double d = (mesh.nodes[nearest] - at).norm();
+          d > kOnEdge * rimEdge[nearest] && d <= kMaxReach * rimEdge[nearest])
+        found.push_back({d, nearest, -1, static_cast<int>(e), at});
+    }
+  }
+  return found;
+}
+
 }  // namespace
 
 SharpEdgeStats captureSharpEdges(HexMesh& mesh, const CadSolid& cad, const WallSides& sides) {
@@ -106,9 +172,13 @@ SharpEdgeStats captureSharpEdges(HexMesh& mesh, const CadSolid& cad, const WallS
     for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
       for (int v : mesh.hexes[h]) emit(v, static_cast<int>(h));
   });
-  std::vector<char> moved(mesh.nodes.size(), 0);
-  for (const Capture& c : captures(mesh, edges, curves)) {
-    if (moved[c.node] || moved[c.other]) continue;  // the other end on an edge already: this one crosses it no more
+  std::vector<int> onEdge(mesh.nodes.size(), -1);  // per node, the edge it was put on
+  std::vector<Capture> all = captures(mesh, edges, curves), ends = rimCaptures(mesh, cad, sides, edges);
+  all.insert(all.end(), ends.begin(), ends.end());
+  std::sort(all.begin(), all.end());
+  for (const Capture& c : all) {
+    // the other end on an edge already: this one crosses it no more
+    if (onEdge[c.node] >= 0 || (c.other >= 0 && onEdge[c.other] >= 0)) continue;
     const std::vector<int>& column = columns[c.node];
     if (column.empty()) continue;
     const Vec3 move = c.onEdge - mesh.nodes[c.node];
@@ -124,12 +194,15 @@ SharpEdgeStats captureSharpEdges(HexMesh& mesh, const CadSolid& cad, const WallS
     around.erase(std::unique(around.begin(), around.end()), around.end());
     const double before = worstOf(mesh, around);
     moveColumn(1);
-    if (worstOf(mesh, around) < std::min(before, kFloor)) {
+    const FacePairEdge& e = edges[c.edge];
+    const double floor = isCutFace(cad, e.a) || isCutFace(cad, e.b) ? kLapFloor : kFloor;
+    if (worstOf(mesh, around) < std::min(before, floor)) {
       moveColumn(-1);
       ++stats.nodesKept;
       continue;
     }
-    moved[c.node] = 1, mesh.nodeFace[c.node] = edges[c.edge].a, ++stats.nodesMoved;
+    onEdge[c.node] = c.edge, ++stats.nodesMoved;
+    if (c.other >= 0) mesh.nodeFace[c.node] = edges[c.edge].a;  // an end's node stays on its rim face
   }
   return stats;
 }

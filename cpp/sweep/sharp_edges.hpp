@@ -4,7 +4,10 @@
 // (a convex edge: volume lost) or bridges it (a concave one: volume added). The end of such an edge nearer to the CAD
 // edge, when no farther from it than kMaxReach of the quad edge, is moved onto it, the nodes of its column with it
 // (less towards the other wall, not at all at it), if no hex round the column then has a scaled Jacobian below the
-// lower of kFloor and the worst it had.
+// lower of kFloor and the worst it had. Where such an edge ends on a rim (a lateral face: a boss's flat merged into a
+// box's wall meets the boss's top and its foot, a bend without an outside round meets the box's rim), the rim's quad
+// edges cross it there, and the rim's wall node on one of its faces nearest its end, within kMaxReach of its rim edge,
+// is put on that end the same way (a boss's hexes straddling its flat's edge at its top lay on the wall's unjoined).
 #pragma once
 #include <cstddef>
 

@@ -118,3 +118,27 @@ TEST(SharpEdges, ANodeOnTheEdgeStays) {
   EXPECT_EQ(captureSharpEdges(m, cad, sides).nodesMoved, 0u);
   EXPECT_EQ(m.nodes, before.nodes);
 }
+
+// The hexes' face y = 0 on the L's end face (a rim: lateral), the shared column's outside node there 0.5 off the end
+// of the bend's outside edge: no interior quad edge of the wall crosses the edge there (its nodes are the rim's), so it
+// is put on the edge's end, (0, 0, 0), and its partner at y = 1 on the edge by the quad edge crossing it; the inside
+// nodes stay. In mm and scaled by 1e-3 and 1e3 (fails before: the rim's node stayed 0.5 off the corner).
+TEST(SharpEdges, ARimNodeOffTheEndOfABendsOutsideEdgeGoesOntoItsEnd) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("scale " + std::to_string(scale));
+    const CadSolid cad = lBend(scale);
+    const WallSides sides = classifyWallSides(cad);
+    ASSERT_EQ(sides.faces[planeFace(cad, gp_Pnt(0, 0, 0), gp::DY())].side, Side::Lateral);
+    HexMesh m = bendHexes(cad, sides, 0.5, scale);
+    for (std::size_t n = 0; n < m.nodes.size(); n += 2) m.nodeOnRim[n] = kRimSwept;  // y = 0
+    const double before = meshVolume(m);
+    const SharpEdgeStats s = captureSharpEdges(m, cad, sides);
+    EXPECT_EQ(s.nodesMoved, 2u);
+    EXPECT_LT(m.nodes[2].norm(), 1e-9 * scale);                        // the rim's: on the edge's end
+    EXPECT_LT((m.nodes[3] - Vec3(0, scale, 0)).norm(), 1e-9 * scale);  // y = 1: on the edge
+    EXPECT_EQ(m.nodes[0], Vec3(2 * scale, 0, 2 * scale));              // the inside ones stay
+    EXPECT_EQ(m.nodes[1], Vec3(2 * scale, scale, 2 * scale));
+    EXPECT_NEAR(meshVolume(m) - before, 1.0 * scale * scale * scale, 1e-9 * scale * scale * scale);
+    for (std::size_t h = 0; h < m.hexes.size(); ++h) EXPECT_GT(hexScaledJacobian(hexCorners(m, h)), 0.5);
+  }
+}
