@@ -635,4 +635,39 @@ SmallFeatures findSmallFeatures(const CadSolid& cad, const WallSides& sides, dou
   return small;
 }
 
+namespace {
+constexpr double kMinCreaseTurn = 5 * M_PI / 180;  // radians: below it, a cut face goes on along its wall's surface
+}  // namespace
+
+std::vector<std::vector<Vec3>> lapCreases(const CadSolid& cad, const WallSides& sides, double step) {
+  std::vector<std::vector<Vec3>> creases;
+  if (cad.cutInput.empty()) return creases;
+  TopTools_IndexedDataMapOfShapeListOfShape facesOf;
+  TopExp::MapShapesAndAncestors(cad.solid, TopAbs_EDGE, TopAbs_FACE, facesOf);
+  for (int e = 1; e <= cad.edges.Extent(); ++e) {
+    const TopoDS_Edge& edge = TopoDS::Edge(cad.edges(e));
+    if (!facesOf.Contains(edge) || BRep_Tool::Degenerated(edge)) continue;
+    std::vector<int> faces;
+    for (const TopoDS_Shape& f : facesOf.FindFromKey(edge))
+      if (const int face = cad.faces.FindIndex(f) - 1; face >= 0) faces.push_back(face);
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    if (faces.size() != 2 || isCutFace(cad, faces[0]) == isCutFace(cad, faces[1]) ||
+        sides.faces[faces[0]].side == Side::Lateral || sides.faces[faces[1]].side == Side::Lateral)
+      continue;
+    const Vec3 a = normalAtEdge(TopoDS::Face(cad.faces(faces[0] + 1)), edge);
+    const Vec3 b = normalAtEdge(TopoDS::Face(cad.faces(faces[1] + 1)), edge);
+    if (a.isZero() || b.isZero() || angleBetween(a, b) < kMinCreaseTurn) continue;
+    const BRepAdaptor_Curve curve(edge);
+    const double first = curve.FirstParameter(), last = curve.LastParameter();
+    const int n = std::max(1, static_cast<int>(std::ceil(GCPnts_AbscissaPoint::Length(curve) / step)));
+    std::vector<Vec3>& crease = creases.emplace_back();
+    for (int k = 0; k <= n; ++k) {
+      const gp_Pnt p = curve.Value(first + (last - first) * k / n);
+      crease.emplace_back(p.X(), p.Y(), p.Z());
+    }
+  }
+  return creases;
+}
+
 }  // namespace hexlayer

@@ -109,4 +109,11 @@ inline bool narrowLateral(const WallSides& sides, int f) {
   return sides.faces[f].side == Side::Lateral && sides.faces[f].width < 0.5 * sides.thickness;
 }
 
+// The creases of a piece's laps: its edges between a cut face lying along its wall (a foot taken for a wall face: a
+// boss merged into a box's wall, cut off along the wall: its flat, lapFeet) and a wall face that is no cut (its
+// cylinder), turning at least kMinCreaseTurn from one to the other at the edge's middle. [in] cad: a piece; [in] sides:
+// its faces' sides; [in] step: the samples' spacing. Returns each crease sampled from one end to the other, both ends
+// included.
+std::vector<std::vector<Vec3>> lapCreases(const CadSolid& cad, const WallSides& sides, double step);
+
 }  // namespace hexlayer

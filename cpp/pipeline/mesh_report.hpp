@@ -14,6 +14,7 @@
 #include "geometry/wall_sides.hpp"
 #include "pipeline/shell_mesh.hpp"
 #include "pipeline/surface_groups.hpp"
+#include "quadmesh/crease_chains.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quality/quality.hpp"
 #include "quality/validation.hpp"
@@ -114,6 +115,7 @@ struct MeshReport {
   RimCapStats rimCap;
   SmoothingStats smoothing;
   SharpEdgeStats sharpEdges;
+  CreaseChainStats creaseChains;            // a lap's creases followed by the quads (crease_chains.hpp)
   std::optional<QuadraticStats> quadratic;  // order 2 only
   SurfaceGroupStats surfaceGroups;
   BoundaryDeviation boundaryDeviation;

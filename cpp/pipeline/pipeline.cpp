@@ -43,6 +43,7 @@
 #include "pipeline/shell_mesh.hpp"
 #include "pipeline/surface_groups.hpp"
 #include "quadmesh/column_foot.hpp"
+#include "quadmesh/crease_chains.hpp"
 #include "quadmesh/quad_mesh.hpp"
 #include "quadmesh/quad_stage.hpp"
 #include "quadmesh/quad_strips.hpp"
@@ -467,7 +468,8 @@ std::optional<MeshResult> meshColumn(const TopoDS_Solid& solid, const MeshOption
   return result;
 }
 
-constexpr double kOnFoot = 1e-3;  // of a layer: a node this near a foot's plane lies on it
+constexpr double kCreaseStep = 0.25;  // of a quad edge: a lap's crease sampled this often (followCreases)
+constexpr double kOnFoot = 1e-3;      // of a layer: a node this near a foot's plane lies on it
 // A wall's foot column this near (of a quad edge) to the projection of a column across the sheet is put across from it
 // (snapFootColumnsAcross): alignFootAcross put its chordal node there.
 constexpr double kAcrossReach = 0.25;
@@ -797,9 +799,15 @@ JunctionPieces meshJunctionPieces(const CadSolid& cad, const WallSides& sides, c
       meshPiece(t, s, solid, po, kOnFoot * sides.thickness / o.layers, 0.5, o.size > 0 ? o.size : sides.thickness, b,
                 feetMeshed);
     } catch (const Error& e) {  // the part was read and checked: a piece that is no valid solid is the cut's doing
-      if (e.code() != ExitCode::BadInput) throw;
-      throw geometryError("the cut at the junctions gave a piece that is no valid solid (" + std::string(e.what()) +
-                          "), which is not meshed");
+      if (e.code() == ExitCode::BadInput)
+        throw geometryError("the cut at the junctions gave a piece that is no valid solid (" + std::string(e.what()) +
+                            "), which is not meshed");
+      if (e.code() != ExitCode::UnsupportedGeometry || s == 0) throw;
+      // a standing piece's refusal names it (the base's names the walls' it waited for)
+      const Vec3 at = pieceRecord(cad, sheets, t.cut, s).at / cad.unit;
+      std::ostringstream msg;
+      msg << e.what() << " (the piece at (" << at.x() << ", " << at.y() << ", " << at.z() << "))";
+      throw geometryError(msg.str());
     }
   };
   if (baseBeside(t))
@@ -848,6 +856,10 @@ void reportPieces(MeshReport& r, JunctionPieces& t, const CadSolid& cad, const W
     r.bubbles += p.bubbles, r.tetsKept += p.tetsKept;
     r.quadMesh.quads += p.quadMesh.quads, r.quadMesh.nodes += p.quadMesh.nodes;
     r.quadMesh.pinholesClosed += p.quadMesh.pinholesClosed;
+    CreaseChainStats& c = r.creaseChains;  // the walls' laps
+    c.chains += p.creaseChains.chains, c.dropped += p.creaseChains.dropped, c.nodesMoved += p.creaseChains.nodesMoved;
+    c.farthest = std::max(c.farthest, p.creaseChains.farthest);
+    c.worstQuad = std::min(c.worstQuad, p.creaseChains.worstQuad);
   }
   r.stages = std::move(stages), r.facesSplit = facesSplit, r.thickness = sides.thickness, r.faces = countFaces(sides);
   r.smallFeatures = findSmallFeatures(cad, sides, r.size);  // the part's faces, not the pieces' (a foot is none)
@@ -1093,6 +1105,10 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   qo.tryBudget = o.quadTryBudget, qo.stageBudget = o.quadStageBudget;
   qo.ringAround = o.ringAround;
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
+  r.creaseChains = clock.run("crease_chains", [&] {  // a lap's creases followed by the quads' edges
+    return followCreases(stage.quads, ChordalLocator(stage.chordal),
+                         lapCreases(cad, sides, kCreaseStep * meanEdge(stage.quads)));
+  });
   if (edit) clock.run("footprints", [&] { return edit(cad, stage), 0; });  // the walls' feet carried into the quads
   const QuadMesh& quads = stage.quads;
   if (qo.adaptive) r.memory = requireMemoryOfQuads(o, quads.quads.size());

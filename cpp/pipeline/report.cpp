@@ -91,6 +91,14 @@ nlohmann::json sharpEdges(const SharpEdgeStats& s) {
   return {{"edges", s.edges}, {"nodes_moved", s.nodesMoved}, {"nodes_kept", s.nodesKept}};
 }
 
+nlohmann::json creaseChains(const CreaseChainStats& s) {
+  return {{"chains", s.chains},
+          {"dropped", s.dropped},
+          {"nodes_moved", s.nodesMoved},
+          {"farthest", s.farthest},
+          {"worst_quad", s.worstQuad}};
+}
+
 nlohmann::json quadratic(const QuadraticStats& s) {
   return {{"mid_edge_nodes", s.midNodes},
           {"wall_mid_edge_nodes", s.wallNodes},
@@ -214,6 +222,7 @@ void stages(const MeshReport& s, nlohmann::json& r) {
   r["rim_cap"] = rimCap(s.rimCap);
   r["smoothing"] = smoothing(s.smoothing);
   r["sharp_edges"] = sharpEdges(s.sharpEdges);
+  if (s.creaseChains.chains + s.creaseChains.dropped > 0) r["crease_chains"] = creaseChains(s.creaseChains);
   if (s.quadratic) r["quadratic"] = quadratic(*s.quadratic);
   r["surface_groups"] = surfaceGroups(s.surfaceGroups);
   r["boundary_deviation"] = deviation(s.boundaryDeviation);

@@ -300,7 +300,9 @@ void dropUnusedNodes(std::vector<Vec3>& nodes, std::vector<std::array<int, 4>>& 
   nodes.swap(kept);
 }
 
-void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, bool slideRim) {
+void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, bool slideRim,
+                    const std::vector<char>& fixed) {
+  const auto stays = [&](int node) { return !fixed.empty() && fixed[node]; };
   const NodeQuads nq = quadsAroundNodes(q);
   const std::vector<std::array<int, 2>> rim = rimNeighbours(q);
   const std::vector<Vec3> rimStart = q.nodes;  // rim nodes slide along the rim as Gmsh placed it
@@ -315,7 +317,7 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, 
     return at.point;
   };
   gaussSeidel(q, nq, order, iterations, [&](int node) {
-    if (rim[node][0] != -1) return false;
+    if (rim[node][0] != -1 || stays(node)) return false;
     const double before = worstAround(q, nq, node, q.nodes[node]);
     if (before >= kGoodQuad) return false;  // its quads are square already (a structured grid's)
     const Vec3 target = locate(node, centroidTarget(q, nq, node));
@@ -326,7 +328,8 @@ void smoothQuadMesh(QuadMesh& q, const ChordalLocator& chordal, int iterations, 
   // Then the nodes of poor quads are moved to make the worst quad around them as good as can be.
   gaussSeidel(q, nq, order, iterations, [&](int node) {
     const Vec3 from = q.nodes[node];
-    if (rim[node][0] == -2 || (!slideRim && rim[node][0] != -1) || worstAround(q, nq, node, from) >= kGoodQuad)
+    if (rim[node][0] == -2 || (!slideRim && rim[node][0] != -1) || stays(node) ||
+        worstAround(q, nq, node, from) >= kGoodQuad)
       return false;
     if (rim[node][0] == -1) {
       improveWorst(q, nq, node, tangentDirections(q, nq, node), [&](const Vec3& p) { return locate(node, p); });

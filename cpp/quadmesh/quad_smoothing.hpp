@@ -33,7 +33,9 @@ int removeDoublets(QuadMesh& quads);
 // Smooths the interior nodes, and where the worst quad round a rim node gains, slides it along the rim as Gmsh
 // placed it (slideRim false: the rim nodes stay). Deterministic, the same on any number of threads: from 2000
 // nodes on, the two halves of a cut through the poor quads are smoothed side by side (their seam after them).
-// [in,out] quads: interior nodes moved on the surface; [in] chordal, iterations, slideRim.
-void smoothQuadMesh(QuadMesh& quads, const ChordalLocator& chordal, int iterations, bool slideRim = true);
+// [in,out] quads: interior nodes moved on the surface; [in] chordal, iterations, slideRim; [in] fixed: per node,
+// whether it stays (empty: none does).
+void smoothQuadMesh(QuadMesh& quads, const ChordalLocator& chordal, int iterations, bool slideRim = true,
+                    const std::vector<char>& fixed = {});
 
 }  // namespace hexlayer

@@ -196,3 +196,14 @@ TEST(Report, SolidsMergeIntoOneReport) {
   EXPECT_EQ(j["solids"][1], secondAlone);
   EXPECT_EQ(j["solids"][1]["validation"]["failures"][0]["message"], "inverted: 3 inverted hexes");
 }
+
+// The crease chains (quadmesh/crease_chains.hpp) are reported only for a piece that has a lap's crease.
+TEST(Report, CreaseChainsOnlyWhereThereAreAny) {
+  MeshReport r = solidReport();
+  EXPECT_FALSE(toJson(r).contains("crease_chains"));
+  r.creaseChains.chains = 1, r.creaseChains.dropped = 1, r.creaseChains.nodesMoved = 7;
+  r.creaseChains.farthest = 0.25, r.creaseChains.worstQuad = 0.5;
+  EXPECT_EQ(
+      toJson(r)["crease_chains"],
+      nlohmann::json({{"chains", 1}, {"dropped", 1}, {"nodes_moved", 7}, {"farthest", 0.25}, {"worst_quad", 0.5}}));
+}

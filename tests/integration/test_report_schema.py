@@ -1,6 +1,7 @@
 """Issue 17: the report has one schema, docs/report.schema.json (JSON Schema 2020-12), which the README points
 to. Reports of parts that between them have every key (a plate with holes; a hat section at order 2 with
---aspect; a T-junction meshed with --drop-junctions and meshed with its rib (issue 18); a file of two solids, with --shell) are validated against it with
+--aspect; a T-junction meshed with --drop-junctions and meshed with its rib (issue 18); a file of two solids, with --shell;
+a boss merged into a box's wall) are validated against it with
 python3-jsonschema; every key the schema describes appears in one of them (no stale entries), and a report with
 a key the schema does not know fails (the schema is closed: a new key must be documented there).
 
@@ -23,6 +24,9 @@ RUNS = {
     "t_junction": ("tests/data/robustness/t_junction.step", ["--drop-junctions"]),
     "t_junction_meshed": ("tests/data/robustness/t_junction.step", []),  # the rib meshed with the plate
     "two_plates": ("tests/data/robustness/two_plates.step", ["--shell"]),  # its mid-surface shell too
+    # a boss merged 0.5 into a 60 x 40 x 15 box's wall (test_junction_meshing.py's write_boss_in_a_wall): its flat's
+    # creases followed by its quads (crease_chains)
+    "boss_in_wall": ("tests/data/robustness/boss_in_wall.step", []),
 }
 
 
