@@ -1105,10 +1105,10 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   qo.tryBudget = o.quadTryBudget, qo.stageBudget = o.quadStageBudget;
   qo.ringAround = o.ringAround;
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
-  r.creaseChains = clock.run("crease_chains", [&] {  // a lap's creases followed by the quads' edges
-    return followCreases(stage.quads, ChordalLocator(stage.chordal),
-                         lapCreases(cad, sides, kCreaseStep * meanEdge(stage.quads)));
-  });
+  // a lap's creases followed by the quads' edges (a piece's only: a part's own faces are no cut)
+  if (const auto creases = lapCreases(cad, sides, kCreaseStep * meanEdge(stage.quads)); !creases.empty())
+    r.creaseChains =
+        clock.run("crease_chains", [&] { return followCreases(stage.quads, ChordalLocator(stage.chordal), creases); });
   if (edit) clock.run("footprints", [&] { return edit(cad, stage), 0; });  // the walls' feet carried into the quads
   const QuadMesh& quads = stage.quads;
   if (qo.adaptive) r.memory = requireMemoryOfQuads(o, quads.quads.size());
