@@ -496,14 +496,6 @@ StageTime pieceTime(const MeshReport& piece) {
   return t;
 }
 
-// The mean length of the quads' edges.
-double meanEdge(const QuadMesh& q) {
-  double sum = 0;
-  for (const auto& quad : q.quads)
-    for (int c = 0; c < 4; ++c) sum += (q.nodes[quad[c]] - q.nodes[quad[(c + 1) % 4]]).norm();
-  return q.quads.empty() ? 0 : sum / (4.0 * q.quads.size());
-}
-
 // The footprints of the sheets standing on sheet s, one node per joined node (feet that meet share their nodes).
 // [out] node: per footprint node, its joined node; [out] lap: per footprint node, whether it is a lap's (WallFoot).
 FootprintQuads footprintsOn(const JunctionPieces& t, int s, std::vector<int>& node, std::vector<char>& lap) {

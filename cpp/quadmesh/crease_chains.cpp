@@ -130,12 +130,8 @@ CreaseChainStats followCreases(QuadMesh& quads, const ChordalLocator& chordal,
                                const std::vector<std::vector<Vec3>>& creases) {
   CreaseChainStats stats;
   if (creases.empty() || quads.quads.empty()) return stats;
-  double size = 0;
-  for (const auto& q : quads.quads)
-    for (int c = 0; c < 4; ++c) size += (quads.nodes[q[c]] - quads.nodes[q[(c + 1) % 4]]).norm();
-  size /= 4.0 * static_cast<double>(quads.quads.size());
+  const double size = meanEdge(quads);
   const auto next = edgeNeighbours(quads);
-  const std::vector<std::vector<int>> rim = rimEdgeNeighbours(quads);
   std::vector<std::vector<int>> quadsAt(quads.nodes.size());
   for (std::size_t q = 0; q < quads.quads.size(); ++q)
     for (int n : quads.quads[q]) quadsAt[n].push_back(static_cast<int>(q));
@@ -147,7 +143,8 @@ CreaseChainStats followCreases(QuadMesh& quads, const ChordalLocator& chordal,
     const std::vector<int> chain =
         chainAlong(quads, next, quadsAt, line, size, nearestNode(quads, line.front()), nearestNode(quads, line.back()));
     std::vector<char> on(quads.nodes.size(), 0);
-    for (int n : chain) on[n] = rim[n].empty() && !fixed[n];
+    for (int n : chain)  // a rim node (on a rim edge) stays
+      on[n] = !fixed[n] && std::none_of(next[n].begin(), next[n].end(), [](const auto& e) { return e.second; });
     if (std::count(on.begin(), on.end(), 1) == 0) continue;
     const std::vector<Vec3> before = quads.nodes;
     const double worstBefore = worstAround(quads, quadsAt, on);

@@ -804,6 +804,13 @@ std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& q) {
   return around;
 }
 
+double meanEdge(const QuadMesh& q) {
+  double sum = 0;
+  for (const auto& quad : q.quads)
+    for (int c = 0; c < 4; ++c) sum += (q.nodes[quad[c]] - q.nodes[quad[(c + 1) % 4]]).norm();
+  return q.quads.empty() ? 0 : sum / (4.0 * q.quads.size());
+}
+
 QuadTries& QuadTries::operator+=(const QuadTries& o) {
   run += o.run, failed += o.failed, timedOut += o.timedOut, skipped += o.skipped, samePatches += o.samePatches;
   givenUp += o.givenUp;

@@ -125,6 +125,9 @@ double gmshTryBudget(double quads);
 // For every node, the nodes it shares a rim edge with (an edge of a single quad); empty inside.
 std::vector<std::vector<int>> rimEdgeNeighbours(const QuadMesh& quads);
 
+// The mean length of the quads' edges (0 without quads).
+double meanEdge(const QuadMesh& quads);
+
 // How many of the chordal surface's rim loops the quads close: their Euler characteristic less the surface's (a
 // pinhole, a loop shorter than the smallest quad: a bend relief where sheets meet at a corner). [in] quads; [in]
 // chordal: the surface they mesh.

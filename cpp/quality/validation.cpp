@@ -124,8 +124,9 @@ bool liesOn(const HexMesh& mesh, const BoundaryFace& f, const FacePlane& pf, con
   return std::any_of(kTriangles.begin(), kTriangles.end(), [&](const std::array<int, 3>& t) {
     const Vec3 &a = p[g.nodes[t[0]]], &b = p[g.nodes[t[1]]], &c = p[g.nodes[t[2]]];
     const Vec3 cross = (b - a).cross(c - a);
-    if (cross.norm() <= 0 || pf.normal.dot(cross.normalized()) > -0.9) return false;
+    if (cross.norm() <= 0) return false;
     const Vec3 normal = cross.normalized();
+    if (pf.normal.dot(normal) > -0.9) return false;
     const double height = (pf.middle - a).dot(normal);
     return std::abs(height) <= kFaceOnFace * pf.size && inTriangle(pf.middle - height * normal, a, b, c);
   });

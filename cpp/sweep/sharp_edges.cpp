@@ -172,13 +172,13 @@ SharpEdgeStats captureSharpEdges(HexMesh& mesh, const CadSolid& cad, const WallS
     for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
       for (int v : mesh.hexes[h]) emit(v, static_cast<int>(h));
   });
-  std::vector<int> onEdge(mesh.nodes.size(), -1);  // per node, the edge it was put on
+  std::vector<char> moved(mesh.nodes.size(), 0);
   std::vector<Capture> all = captures(mesh, edges, curves), ends = rimCaptures(mesh, cad, sides, edges);
   all.insert(all.end(), ends.begin(), ends.end());
   std::sort(all.begin(), all.end());
   for (const Capture& c : all) {
     // the other end on an edge already: this one crosses it no more
-    if (onEdge[c.node] >= 0 || (c.other >= 0 && onEdge[c.other] >= 0)) continue;
+    if (moved[c.node] || (c.other >= 0 && moved[c.other])) continue;
     const std::vector<int>& column = columns[c.node];
     if (column.empty()) continue;
     const Vec3 move = c.onEdge - mesh.nodes[c.node];
@@ -201,7 +201,7 @@ SharpEdgeStats captureSharpEdges(HexMesh& mesh, const CadSolid& cad, const WallS
       ++stats.nodesKept;
       continue;
     }
-    onEdge[c.node] = c.edge, ++stats.nodesMoved;
+    moved[c.node] = 1, ++stats.nodesMoved;
     if (c.other >= 0) mesh.nodeFace[c.node] = edges[c.edge].a;  // an end's node stays on its rim face
   }
   return stats;
