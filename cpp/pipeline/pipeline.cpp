@@ -1096,11 +1096,15 @@ MeshResult meshSolid(const TopoDS_Solid& solid, const MeshOptions& given, const 
   qo.knifeEdges = !sides.knifeEdges.empty(), qo.progress = o.progress;
   qo.tryBudget = o.quadTryBudget, qo.stageBudget = o.quadStageBudget;
   qo.ringAround = o.ringAround;
+  // a lap's creases (a piece's only: a part's own faces are no cut), followed by the quads' edges: the layouts whose
+  // edges can follow them rank first
+  qo.creases = lapCreases(cad, sides, kCreaseStep * r.size);
   QuadStage stage = clock.run("quad_mesh", [&] { return meshFairedChordalSurface(cut, tets, qo); });
-  // a lap's creases followed by the quads' edges (a piece's only: a part's own faces are no cut)
-  if (const auto creases = lapCreases(cad, sides, kCreaseStep * meanEdge(stage.quads)); !creases.empty())
-    r.creaseChains =
-        clock.run("crease_chains", [&] { return followCreases(stage.quads, ChordalLocator(stage.chordal), creases); });
+  if (!qo.creases.empty())  // sampled at the quads' own edge
+    r.creaseChains = clock.run("crease_chains", [&] {
+      return followCreases(stage.quads, ChordalLocator(stage.chordal),
+                           lapCreases(cad, sides, kCreaseStep * meanEdge(stage.quads)));
+    });
   if (edit) clock.run("footprints", [&] { return edit(cad, stage), 0; });  // the walls' feet carried into the quads
   const QuadMesh& quads = stage.quads;
   if (qo.adaptive) r.memory = requireMemoryOfQuads(o, quads.quads.size());

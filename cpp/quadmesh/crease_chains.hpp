@@ -8,7 +8,8 @@
 // whose inner nodes are put on it, the quads round it smoothed with the chains fixed. The quads on either side then lie
 // on one face each, and the sweep lines from the chain end on (near) the crease. A chain whose quads would end poorer
 // than 0.2 (a crease midway between grid lines near a rim node on its end, where the chain must turn) is dropped: the
-// quads are left as they were.
+// quads are left as they were. The quad stage ranks a layout with a dropped chain after those that follow every crease
+// (quad_mesh.hpp QuadMeshOptions::creases).
 #pragma once
 #include <cstddef>
 #include <vector>

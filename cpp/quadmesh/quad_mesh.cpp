@@ -22,6 +22,7 @@
 #include "core/union_find.hpp"
 #include "quadmesh/block_grids.hpp"
 #include "quadmesh/chordal_patches.hpp"
+#include "quadmesh/crease_chains.hpp"
 #include "quadmesh/patch_grids.hpp"
 #include "quadmesh/quad_completion.hpp"
 #include "quadmesh/quad_smoothing.hpp"
@@ -486,7 +487,8 @@ struct QuadScore {
   std::size_t holes = std::numeric_limits<std::size_t>::max(), inverted = std::numeric_limits<std::size_t>::max(),
               poor = std::numeric_limits<std::size_t>::max();
   double worst = -1, mean = -1;
-  auto key() const { return std::make_tuple(topologyChanged, holes, inverted, poor, -mean, -worst); }
+  std::size_t creasesMissed = std::numeric_limits<std::size_t>::max();  // QuadMeshOptions::creases not followed
+  auto key() const { return std::make_tuple(topologyChanged, holes, inverted, creasesMissed, poor, -mean, -worst); }
   bool operator<(const QuadScore& o) const { return key() < o.key(); }
   bool good() const { return !topologyChanged && holes == 0 && inverted == 0 && poor == 0; }
 };
@@ -516,7 +518,7 @@ std::size_t foldedEdges(const QuadMesh& q, const std::vector<EdgeUse>& uses, con
 
 QuadScore scoreQuads(const QuadMesh& q, const ChordalLocator& chordal, long chordalEuler, double acceptableQuad) {
   const std::vector<EdgeUse> uses = quadEdgeUses(q);
-  QuadScore s{eulerCharacteristic(q, uses) != chordalEuler, q.holes, foldedEdges(q, uses, chordal), 0, 1, 0};
+  QuadScore s{eulerCharacteristic(q, uses) != chordalEuler, q.holes, foldedEdges(q, uses, chordal), 0, 1, 0, 0};
   for (const auto& quad : q.quads) {
     const double sj = quadScaledJacobian({q.nodes[quad[0]], q.nodes[quad[1]], q.nodes[quad[2]], q.nodes[quad[3]]});
     s.worst = std::min(s.worst, sj), s.mean += sj / q.quads.size();
@@ -525,11 +527,17 @@ QuadScore scoreQuads(const QuadMesh& q, const ChordalLocator& chordal, long chor
   return s;
 }
 
-// A try's quads made ready and ranked: doublets removed, smoothed, scored.
+// A try's quads made ready and ranked: doublets removed, smoothed, scored (its creases followed on a copy: those
+// whose chain is dropped are counted).
 QuadScore finishTry(QuadMesh& q, const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   q.doubletsRemoved = removeDoublets(q);
   smoothQuadMesh(q, chordal, o.smoothingIterations);
-  return scoreQuads(q, chordal, chordalEuler, o.acceptableQuad);
+  QuadScore s = scoreQuads(q, chordal, chordalEuler, o.acceptableQuad);
+  if (!o.creases.empty()) {
+    QuadMesh followed = q;
+    s.creasesMissed = followCreases(followed, chordal, o.creases).dropped;
+  }
+  return s;
 }
 
 // A block grid as a try, if it has quads, pillowed where a corner lies on a smooth stretch of its rim
@@ -668,7 +676,8 @@ void rankPatchGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long
 // (PatchRims::FittedToNormals) may. Where the faces grown in index order give no patch grid, those grown from their
 // flat middles first (PatchSeeds::FlatFirst) may, ranked after the others: their cuts may lie where the surface only
 // curves (a tube's), so they refuse no grid that crosses them. Where none is acceptable, the patch grids of faces whose
-// loops have five or six corners, the gentlest left inside a side (PatchSides::KinksInSides), grown both ways.
+// loops have five or six corners, the gentlest left inside a side (PatchSides::KinksInSides), grown both ways (also
+// where the best misses a crease the quads should follow: QuadMeshOptions::creases).
 Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, long chordalEuler) {
   Ranked ranked;
   SurfaceMap square;
@@ -690,7 +699,7 @@ Ranked bestBlockGrid(const ChordalLocator& chordal, const QuadMeshOptions& o, lo
     rankPatchGrid(chordal, o, chordalEuler, PatchSeeds::InOrder, PatchRims::FittedToNormals, ranked);
   if (none) rankPatchGrid(chordal, o, chordalEuler, PatchSeeds::FlatFirst, PatchRims::AsGrown, ranked);
   for (const PatchSeeds seeds : {PatchSeeds::InOrder, PatchSeeds::FlatFirst})  // the last layouts before Gmsh's
-    if (ranked.best.quads.empty())
+    if (ranked.best.quads.empty() || ranked.score.creasesMissed > 0)
       rankPatchGrid(chordal, o, chordalEuler, seeds, PatchRims::AsGrown, ranked, PatchSides::KinksInSides);
   return ranked;
 }

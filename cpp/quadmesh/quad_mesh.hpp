@@ -78,10 +78,11 @@ struct QuadMeshOptions {
   // patch can fail: the next split is tried then, or when the quads change the chordal surface's
   // topology (close a hole; a pinhole, a rim loop shorter than the smallest size, may close) or some
   // are inverted or below acceptableQuad once smoothed. Of the tries, the one that keeps the topology, then with the
-  // fewest holes, then the fewest inverted (or folded), then the fewest below acceptableQuad, then the best mean quad,
-  // then the best worst is kept. The last two splits cut HexLayer's own patches (PatchSplit::ownPatches): they run only
-  // while no try has given quads (a fallback where Gmsh's classification pinches every patch), and the quad
-  // stage gives them to the unfaired chordal surface only, whose sharp bends they follow.
+  // fewest holes, then the fewest inverted (or folded), then the fewest creases not followed (creases), then the fewest
+  // below acceptableQuad, then the best mean quad, then the best worst is kept. The last two splits cut HexLayer's own
+  // patches (PatchSplit::ownPatches): they run only while no try has given quads (a fallback where Gmsh's
+  // classification pinches every patch), and the quad stage gives them to the unfaired chordal surface only, whose
+  // sharp bends they follow.
   std::vector<PatchSplit> patchSplits{{60, 60, true},
                                       {60, 180},
                                       {40, 40},
@@ -96,6 +97,10 @@ struct QuadMeshOptions {
                                       {25, 25, false, 2},
                                       {60, 60, false, 3, true},
                                       {40, 40, false, 3, true}};
+  // Creases the quads' edges must follow (crease_chains.hpp: a lap's, issue 18), polylines near the chordal surface:
+  // a try whose chain along one is dropped (its quads cross it where no chain of their edges runs along it: a block
+  // grid's pocket corner beside a boss's flat) ranks after one that follows them all. Empty: none.
+  std::vector<std::vector<Vec3>> creases;
   double acceptableQuad = 0.1;   // quad scaled Jacobian, smoothed
   int smoothingIterations = 10;  // of every try (quad_smoothing)
   // Time budget of one Gmsh try (killed when it runs out: a failed try); 0: gmshTryBudget of the chordal

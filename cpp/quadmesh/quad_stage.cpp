@@ -27,7 +27,7 @@ constexpr std::size_t kPatchFailuresToGiveUp = 2;
 // deadline, stageBudget seconds from now).
 QuadMeshOptions triesWithin(const QuadStageOptions& o, double stageBudget) {
   QuadMeshOptions qo;
-  qo.size = o.size, qo.ringAround = o.ringAround;
+  qo.size = o.size, qo.ringAround = o.ringAround, qo.creases = o.creases;
   qo.timeoutSeconds = o.tryBudget;
   qo.deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                        std::chrono::duration<double>(stageBudget));

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "chordal/chordal_surface.hpp"
 #include "core/progress.hpp"
@@ -28,7 +29,8 @@ struct QuadStageOptions {
   // A part whose tries all finish within their budgets gets the same quads on any machine; one that runs out gets
   // the quads of the tries that finished (a slower machine may finish fewer).
   double tryBudget = 0, stageBudget = 0;
-  int ringAround = 0;  // a ring grid's quads round (QuadMeshOptions::ringAround); 0: from the size
+  int ringAround = 0;                      // a ring grid's quads round (QuadMeshOptions::ringAround); 0: from the size
+  std::vector<std::vector<Vec3>> creases;  // creases the quads should follow (QuadMeshOptions::creases)
 };
 
 struct QuadStage {
