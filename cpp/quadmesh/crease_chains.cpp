@@ -9,6 +9,7 @@
 #include <queue>
 #include <utility>
 
+#include "chordal/chordal_surface.hpp"
 #include "quadmesh/quad_smoothing.hpp"
 
 namespace hexlayer {
@@ -20,17 +21,23 @@ constexpr double kNearness = 4;
 constexpr double kAlongRim = 50;  // the weight of a rim edge: a chain runs along the rim only where nothing else does
 // The weight of an edge turning from the last inside their quad: put on the crease, the three nodes flatten it.
 constexpr double kTurn = 50;
-constexpr int kSmoothing = 10;  // iterations of the quads' smoothing round the chains
-constexpr double kFloor = 0.2;  // a chain whose quads end below this (and below their worst before) is dropped
+constexpr int kSmoothing = 10;     // iterations of the quads' smoothing round the chains
+constexpr double kFloor = 0.2;     // a chain whose quads end below this (and below their worst before) is dropped
+constexpr double kRimEnd = 0.5;    // of a mean edge: a crease ending this near the quads' rim ends on it
+constexpr double kRimCorner = 30;  // degrees: a rim node where the rim turns more is a corner, not slid along it
+
+// The point of the segment from a to b nearest p.
+Vec3 nearestOnSegment(const Vec3& a, const Vec3& b, const Vec3& p) {
+  const Vec3 ab = b - a;
+  return a + (ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0) * ab;
+}
 
 // The point of the polyline nearest p.
 Vec3 nearestOnPolyline(const std::vector<Vec3>& line, const Vec3& p) {
   Vec3 best = line.front();
-  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-    const Vec3 a = line[i], ab = line[i + 1] - a;
-    const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-    if (const Vec3 q = a + t * ab; (q - p).squaredNorm() < (best - p).squaredNorm()) best = q;
-  }
+  for (std::size_t i = 0; i + 1 < line.size(); ++i)
+    if (const Vec3 q = nearestOnSegment(line[i], line[i + 1], p); (q - p).squaredNorm() < (best - p).squaredNorm())
+      best = q;
   return best;
 }
 
@@ -53,6 +60,46 @@ std::vector<std::vector<std::pair<int, bool>>> edgeNeighbours(const QuadMesh& qu
     next[edge.second].emplace_back(edge.first, count == 1);
   }
   return next;
+}
+
+// Where a crease ends on the rim: the point of the chordal surface's rim nearest its end, and the quads' rim node
+// nearest that point, to be slid there (-1 if the point is farther than reach from the crease's end, or the node is a
+// corner of the quads' rim).
+struct RimEnd {
+  Vec3 at = Vec3::Zero();
+  int node = -1;
+};
+// [in] rim: the chordal surface's rim edges (their ends); [in] next: edgeNeighbours'; [in] p: the crease's end;
+// [in] reach. Returns the rim end.
+RimEnd rimEndNear(const QuadMesh& quads, const std::vector<std::array<Vec3, 2>>& rim,
+                  const std::vector<std::vector<std::pair<int, bool>>>& next, const Vec3& p, double reach) {
+  RimEnd end;
+  double nearest = reach;
+  bool found = false;
+  for (const auto& [a, b] : rim)
+    if (const Vec3 q = nearestOnSegment(a, b, p); (q - p).norm() <= nearest)
+      nearest = (q - p).norm(), end.at = q, found = true;
+  if (!found) return end;
+  for (int n = 0; n < static_cast<int>(next.size()); ++n)
+    if (std::any_of(next[n].begin(), next[n].end(), [](const auto& e) { return e.second; }) &&
+        (end.node < 0 || (quads.nodes[n] - end.at).squaredNorm() < (quads.nodes[end.node] - end.at).squaredNorm()))
+      end.node = n;
+  std::vector<int> along;  // the node's neighbours along the rim
+  for (const auto& [m, onRim] : next[end.node])
+    if (onRim) along.push_back(m);
+  const Vec3 v = quads.nodes[end.node];
+  if (along.size() != 2 || (v - quads.nodes[along[0]]).normalized().dot((quads.nodes[along[1]] - v).normalized()) <
+                               std::cos(kRimCorner * M_PI / 180))
+    end.node = -1;
+  return end;
+}
+
+// The chordal surface's rim edges. [in] chordal. Returns their ends.
+std::vector<std::array<Vec3, 2>> chordalRim(const ChordalSurface& chordal) {
+  std::vector<std::array<Vec3, 2>> rim;
+  for (const auto& [edge, uses] : facetEdgeUses(chordal))
+    if (uses == 1) rim.push_back({chordal.vertices[edge.first], chordal.vertices[edge.second]});
+  return rim;
 }
 
 // Whether nodes a, b and c are corners of one quad. [in] quadsAt: per node, its quads.
@@ -135,25 +182,36 @@ CreaseChainStats followCreases(QuadMesh& quads, const ChordalLocator& chordal,
   std::vector<std::vector<int>> quadsAt(quads.nodes.size());
   for (std::size_t q = 0; q < quads.quads.size(); ++q)
     for (int n : quads.quads[q]) quadsAt[n].push_back(static_cast<int>(q));
+  const std::vector<std::array<Vec3, 2>> rim = chordalRim(chordal.surface());
   std::vector<char> fixed(quads.nodes.size(), 0);  // the chains' nodes put on their creases
   for (const std::vector<Vec3>& crease : creases) {
     if (crease.size() < 2) continue;
     std::vector<Vec3> line;  // the crease on the chordal surface
     for (const Vec3& p : crease) line.push_back(chordal.locate(p).point);
-    const std::vector<int> chain =
-        chainAlong(quads, next, quadsAt, line, size, nearestNode(quads, line.front()), nearestNode(quads, line.back()));
+    // its ends: where it meets the rim, the rim node slid there (the sweep's rim capture puts its column on the CAD
+    // edge's end), else the nodes nearest its ends
+    const std::array<RimEnd, 2> rimEnds{rimEndNear(quads, rim, next, line.front(), kRimEnd * size),
+                                        rimEndNear(quads, rim, next, line.back(), kRimEnd * size)};
+    const std::vector<int> chain = chainAlong(quads, next, quadsAt, line, size,
+                                              rimEnds[0].node >= 0 ? rimEnds[0].node : nearestNode(quads, line.front()),
+                                              rimEnds[1].node >= 0 ? rimEnds[1].node : nearestNode(quads, line.back()));
     std::vector<char> on(quads.nodes.size(), 0);
-    for (int n : chain)  // a rim node (on a rim edge) stays
-      on[n] = !fixed[n] && std::none_of(next[n].begin(), next[n].end(), [](const auto& e) { return e.second; });
+    std::vector<Vec3> to(quads.nodes.size());
+    for (int n : chain)  // another rim node (on a rim edge) stays
+      if (!fixed[n] && std::none_of(next[n].begin(), next[n].end(), [](const auto& e) { return e.second; }))
+        on[n] = 1, to[n] = chordal.locate(nearestOnPolyline(line, quads.nodes[n])).point;
+    for (const RimEnd& end : rimEnds)
+      if (end.node >= 0 && !fixed[end.node] && !chain.empty() &&
+          (end.node == chain.front() || end.node == chain.back()))
+        on[end.node] = 1, to[end.node] = end.at;
     if (std::count(on.begin(), on.end(), 1) == 0) continue;
     const std::vector<Vec3> before = quads.nodes;
     const double worstBefore = worstAround(quads, quadsAt, on);
     double farthest = 0;
     for (std::size_t n = 0; n < on.size(); ++n)
       if (on[n]) {
-        const Vec3 to = chordal.locate(nearestOnPolyline(line, quads.nodes[n])).point;
-        farthest = std::max(farthest, (to - quads.nodes[n]).norm() / size);
-        quads.nodes[n] = to, fixed[n] = 1;
+        farthest = std::max(farthest, (to[n] - quads.nodes[n]).norm() / size);
+        quads.nodes[n] = to[n], fixed[n] = 1;
       }
     std::vector<char> stays = fixed;  // the chains and their ends on the rim
     for (int n : chain) stays[n] = 1;

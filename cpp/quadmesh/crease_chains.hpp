@@ -29,8 +29,11 @@ struct CreaseChainStats {
 
 // [in,out] quads: on the chordal surface, the chains' inner nodes moved and the others smoothed (rim nodes slide along
 // the rim); [in] chordal; [in] creases: polylines near the walls (wall_sides.hpp lapCreases), each put on the chordal
-// surface (its points' nearest) before its chain is found. A chain's rim nodes stay (the rim's capture,
-// sharp_edges.hpp, puts their columns on the crease's ends).
+// surface (its points' nearest) before its chain is found. Where a crease ends within half a mean quad edge of
+// the chordal surface's rim, its chain ends at the quads' rim node nearest the rim's point nearest the crease's end,
+// slid along the rim to that point (not a corner of the quads' rim, turning over 30 degrees there: it stays); the
+// chain's other rim nodes stay (the rim's capture, sharp_edges.hpp, puts the column nearest each CAD edge's end on
+// it).
 CreaseChainStats followCreases(QuadMesh& quads, const ChordalLocator& chordal,
                                const std::vector<std::vector<Vec3>>& creases);
 

@@ -2,6 +2,7 @@
 // and its quads alike), in mm and scaled by 1e-3 and 1e3.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -53,9 +54,9 @@ int straddling(const QuadMesh& quads, double a, double scale) {
 
 }  // namespace
 
-// A crease along x = 4.4 (on a wall above the surface, 0.5 off it): the column of nodes at x = 4 is the chain, its nine
-// inner nodes put on x = 4.4 (0.4 of a quad), its two rim nodes left (the rim's capture puts their columns on the
-// crease's ends); no quad but the first and last rows' has corners on both sides of it, and the quads stay good.
+// A crease along x = 4.4 (on a wall above the surface, 0.5 off it), ending on the rim: the column of nodes at x = 4 is
+// the chain, its nine inner nodes put on x = 4.4 (0.4 of a quad), its two rim nodes slid along the rim onto the
+// crease's ends; no quad has corners on both sides of it, and the quads stay good.
 TEST(CreaseChains, AGridColumnIsPutOnACreaseAlongIt) {
   for (const double scale : {1.0, 1e-3, 1e3}) {
     SCOPED_TRACE("scale " + std::to_string(scale));
@@ -69,14 +70,45 @@ TEST(CreaseChains, AGridColumnIsPutOnACreaseAlongIt) {
     const CreaseChainStats s = followCreases(g.quads, locator, creases);
     EXPECT_EQ(s.chains, 1u);
     EXPECT_EQ(s.dropped, 0u);
-    EXPECT_EQ(s.nodesMoved, 9u);
+    EXPECT_EQ(s.nodesMoved, 11u);
     EXPECT_NEAR(s.farthest, 0.4, 1e-9);
-    for (int j = 1; j < 10; ++j) EXPECT_NEAR(g.quads.nodes[column[j]].x(), 4.4 * scale, 1e-9 * scale);
-    EXPECT_EQ(g.quads.nodes[column[0]], Vec3(4, 0, 0) * scale);  // the rim's
-    EXPECT_EQ(g.quads.nodes[column[10]], Vec3(4, 10, 0) * scale);
+    for (int j = 0; j <= 10; ++j) EXPECT_NEAR(g.quads.nodes[column[j]].x(), 4.4 * scale, 1e-9 * scale);
+    EXPECT_NEAR(g.quads.nodes[column[0]].y(), 0, 1e-12 * scale);  // on the rim still
+    EXPECT_NEAR(g.quads.nodes[column[10]].y(), 10 * scale, 1e-9 * scale);
     EXPECT_EQ(straddling(g.quads, 4.4 * scale, scale), 0);
     EXPECT_GT(s.worstQuad, 0.9);
     for (const Vec3& p : g.quads.nodes) EXPECT_NEAR(p.z(), 0, 1e-12 * scale);  // on the surface
+  }
+}
+
+// A crease from (4.4, 1.7) to (4.4, 8.3), ending 1.7 quads inside the rim, and one from (0.3, 0) to (0.3, 10), its ends
+// on the rim 0.3 from the grid's corners (0, 0) and (0, 10): the first's chain runs from the node at (4, 2) to the one
+// at (4, 8), no rim node slid; the second's ends are nearest the corners, where the rim turns 90 degrees: they stay.
+TEST(CreaseChains, OnlyACreaseEndingOnTheRimSlidesARimNode) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("scale " + std::to_string(scale));
+    Grid g = grid(scale);
+    const std::vector<Vec3> before = g.quads.nodes;
+    std::vector<int> column;  // the nodes at x = 4, from y = 2 to 8
+    for (int j = 2; j <= 8; ++j) column.push_back(nodeAt(g.quads, Vec3(4, j, 0) * scale));
+    const std::vector<int> rimEnds{nodeAt(g.quads, Vec3(4, 0, 0) * scale), nodeAt(g.quads, Vec3(4, 10, 0) * scale)};
+    const CreaseChainStats s =
+        followCreases(g.quads, ChordalLocator(g.surface), {{Vec3(4.4, 1.7, 0) * scale, Vec3(4.4, 8.3, 0) * scale}});
+    EXPECT_EQ(s.chains, 1u);
+    EXPECT_EQ(s.nodesMoved, 7u);
+    for (int j = 2; j <= 8; ++j) {
+      EXPECT_NEAR(g.quads.nodes[column[j - 2]].x(), 4.4 * scale, 1e-9 * scale);
+      EXPECT_NEAR(g.quads.nodes[column[j - 2]].y(), j * scale, 1e-9 * scale);
+    }
+    for (const int n : rimEnds) {  // smoothed along the rim (towards the chain) only, not slid onto x = 4.4
+      EXPECT_GT(std::abs(g.quads.nodes[n].x() - 4.4 * scale), 0.05 * scale);
+      EXPECT_NEAR(g.quads.nodes[n].y(), before[n].y(), 1e-9 * scale);
+    }
+    Grid h = grid(scale);
+    const int corner = nodeAt(h.quads, Vec3(0, 0, 0)), top = nodeAt(h.quads, Vec3(0, 10, 0) * scale);
+    followCreases(h.quads, ChordalLocator(h.surface), {{Vec3(0.3, 0, 0) * scale, Vec3(0.3, 10, 0) * scale}});
+    EXPECT_EQ(h.quads.nodes[corner], Vec3(0, 0, 0));
+    EXPECT_EQ(h.quads.nodes[top], Vec3(0, 10, 0) * scale);
   }
 }
 
