@@ -82,6 +82,16 @@ Vec3 edgeMiddle(const TopoDS_Shape& edge) {
   return {p.X(), p.Y(), p.Z()};
 }
 
+// Whether a join's faces are one sheet: on one side (the wall runs on through a bend), or on the two sides of a knife
+// edge (a tapered end: one face the other's across the wall). A drafted boss merged into a wall meets the wall's face
+// at 20-28 degrees in an edge BRepOffset_Analyse takes for convex (a join), its side on the wall's other side: it
+// stands on the wall, and joined it made the box and the boss one sheet (Gmsh failed to make its patches).
+// [in] sides, j.
+bool runsOn(const WallSides& sides, const SheetJoin& j) {
+  const FaceSide &a = sides.faces[j.a], &b = sides.faces[j.b];
+  return a.side == b.side || a.opposite == j.b || b.opposite == j.a;
+}
+
 // Joins to the largest sheet (roots of `uf` over the wall faces, by area) every sheet whose wall faces all lie on the
 // planes of its wall faces on their sides: the plate's disc inside a tube fused onto a plate that was not bored, cut
 // off from the plate by the tube's feet only. (Not two other sheets: a rib's segments either side of a crossing rib
@@ -277,7 +287,7 @@ std::vector<Sheet> findSheets(const CadSolid& cad, const WallSides& sides) {
   auto isWall = [&](int f) { return f >= 0 && sides.faces[f].side != Side::Lateral; };
   UnionFind uf(n);
   for (const SheetJoin& j : sides.sheetJoins)
-    if (isWall(j.a) && isWall(j.b)) uf.unite(j.a, j.b);
+    if (isWall(j.a) && isWall(j.b) && runsOn(sides, j)) uf.unite(j.a, j.b);
   for (int f = 0; f < n; ++f)
     if (isWall(f) && isWall(sides.faces[f].opposite)) uf.unite(f, sides.faces[f].opposite);
   for (const auto& [a, b] : thicknessSteps(cad, sides)) uf.unite(a, b);
