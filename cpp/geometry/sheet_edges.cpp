@@ -11,6 +11,8 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
+#include <gp_Dir.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -52,18 +54,45 @@ void forEachFacePairEdge(const CadSolid& cad, Visit&& visit) {
 
 constexpr double kSameCurvature = 0.02;  // relative to the larger of the two; and 1e-6 / the part's diagonal
 
-// The mean curvature along the face's outward normal and the Gaussian curvature of `face` at parameter t of `edge`
-// (its pcurve on the face); none where undefined. [in] face, edge, t.
-std::optional<std::pair<double, double>> curvaturesAt(const TopoDS_Face& face, const TopoDS_Edge& edge, double t) {
+// The point of `face`'s parameter plane at parameter t of `edge` (its pcurve on the face); none without a pcurve.
+std::optional<gp_Pnt2d> uvAt(const TopoDS_Face& face, const TopoDS_Edge& edge, double t) {
   double first, last;
   const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
   if (pcurve.IsNull()) return std::nullopt;
-  const gp_Pnt2d uv = pcurve->Value(t);
+  return pcurve->Value(t);
+}
+
+// The mean curvature along the face's outward normal and the Gaussian curvature of `face` at parameter t of `edge`
+// (its pcurve on the face); none where undefined. [in] face, edge, t.
+std::optional<std::pair<double, double>> curvaturesAt(const TopoDS_Face& face, const TopoDS_Edge& edge, double t) {
+  const std::optional<gp_Pnt2d> uv = uvAt(face, edge, t);
+  if (!uv) return std::nullopt;
   const BRepAdaptor_Surface surface(face);
-  BRepLProp_SLProps props(surface, uv.X(), uv.Y(), 2, Precision::Confusion());
+  BRepLProp_SLProps props(surface, uv->X(), uv->Y(), 2, Precision::Confusion());
   if (!props.IsCurvatureDefined()) return std::nullopt;
   const double outward = face.Orientation() == TopAbs_REVERSED ? -1 : 1;
   return std::make_pair(outward * props.MeanCurvature(), props.GaussianCurvature());
+}
+
+// The outward unit normal of `face` at parameter t of `edge` (its pcurve on the face); none where undefined.
+std::optional<gp_Dir> normalAt(const TopoDS_Face& face, const TopoDS_Edge& edge, double t) {
+  const std::optional<gp_Pnt2d> uv = uvAt(face, edge, t);
+  if (!uv) return std::nullopt;
+  const BRepAdaptor_Surface surface(face);
+  BRepLProp_SLProps props(surface, uv->X(), uv->Y(), 1, Precision::Confusion());
+  if (!props.IsNormalDefined()) return std::nullopt;
+  return face.Orientation() == TopAbs_REVERSED ? props.Normal().Reversed() : props.Normal();
+}
+
+// Whether the normals of faces a and b at the middle of their edge are within kTangentAngle of opposite.
+// [in] cad; [in] a, b, edge: 0-based.
+bool foldedAt(const CadSolid& cad, int a, int b, int edge) {
+  const TopoDS_Edge& e = TopoDS::Edge(cad.edges(edge + 1));
+  double first, last;
+  BRep_Tool::Range(e, first, last);
+  const auto na = normalAt(TopoDS::Face(cad.faces(a + 1)), e, 0.5 * (first + last));
+  const auto nb = normalAt(TopoDS::Face(cad.faces(b + 1)), e, 0.5 * (first + last));
+  return na && nb && na->Angle(*nb) > M_PI - kTangentAngle;
 }
 
 }  // namespace
@@ -87,7 +116,10 @@ bool oneSurfaceAcross(const CadSolid& cad, const SheetJoin& j) {
 std::vector<SheetJoin> sheetJoins(const CadSolid& cad) {
   std::vector<SheetJoin> joins;
   forEachFacePairEdge(cad, [&](int edge, int a, int b, auto has) {
-    if (!has(ChFiDS_Concave)) joins.push_back({a, b, !has(ChFiDS_Convex), edge});
+    if (!has(ChFiDS_Concave)) {
+      const bool smooth = !has(ChFiDS_Convex);
+      joins.push_back({a, b, smooth, edge, !smooth && foldedAt(cad, a, b, edge)});
+    }
   });
   return joins;
 }

@@ -14,6 +14,10 @@ struct SheetJoin {
   int a = -1, b = -1;   // 0-based faces, a < b
   bool smooth = false;  // tangent edge; else a convex sharp edge (a sharp bend, or a tapered wall's knife edge)
   int edge = -1;        // 0-based in CadSolid::edges (-1: not from an edge)
+  // A convex edge whose faces' normals at its middle are within BRepOffset_Analyse's tolerance (0.5 rad) of opposite:
+  // a knife edge, or a crevice the analysis cannot tell from one (a boss merged 0.2-0.3 into a wall, or drafted, meets
+  // the wall's face in an air wedge of 20-28 degrees, which it takes for convex).
+  bool folded = false;
 };
 
 // [in] cad: the solid. Returns the pairs of distinct faces sharing an edge that is smooth or convex.

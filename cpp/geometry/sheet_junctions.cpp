@@ -83,13 +83,14 @@ Vec3 edgeMiddle(const TopoDS_Shape& edge) {
 }
 
 // Whether a join's faces are one sheet: on one side (the wall runs on through a bend), or on the two sides of a knife
-// edge (a tapered end: one face the other's across the wall). A drafted boss merged into a wall meets the wall's face
-// at 20-28 degrees in an edge BRepOffset_Analyse takes for convex (a join), its side on the wall's other side: it
-// stands on the wall, and joined it made the box and the boss one sheet (Gmsh failed to make its patches).
-// [in] sides, j.
+// edge (a tapered end: one face the other's across the wall). A boss merged into a wall, drafted or only 0.2-0.3 into
+// it, meets the wall's face in an air wedge of 20-28 degrees, an edge BRepOffset_Analyse takes for convex (a folded
+// join, SheetJoin::folded): it stands on the wall, and joined it made the box and the boss one sheet (Gmsh failed to
+// make its patches, or 206-265 hexes inverted). [in] sides, j.
 bool runsOn(const WallSides& sides, const SheetJoin& j) {
   const FaceSide &a = sides.faces[j.a], &b = sides.faces[j.b];
-  return a.side == b.side || a.opposite == j.b || b.opposite == j.a;
+  const bool knife = a.opposite == j.b || b.opposite == j.a;
+  return j.folded ? knife : a.side == b.side || knife;
 }
 
 // Joins to the largest sheet (roots of `uf` over the wall faces, by area) every sheet whose wall faces all lie on the

@@ -425,6 +425,7 @@ struct SideRelation {
   int a, b, relation;
   double weight;        // area of the rays that tie them (joins: 0, decided by their rank)
   bool smooth = false;  // a smooth edge, which no other relation may undo
+  bool folded = false;  // a knife edge or a crevice (SheetJoin::folded): ties no sides
 };
 
 // Per face, its group of wall faces that are one surface split into faces (oneSurfaceAcross: a pin's round written
@@ -451,7 +452,7 @@ std::vector<SideRelation> rankedRelations(const CadSolid& cad, const WallSides& 
   const std::vector<int> group = oneSurfaceGroups(cad, w);
   std::vector<SideRelation> smooth, opposite, convex;
   for (const SheetJoin& j : w.sheetJoins)  // not across concave edges: a rib's walls are not the sheet's side
-    if (isWall(j.a) && isWall(j.b)) (j.smooth ? smooth : convex).push_back({j.a, j.b, 0, 0, j.smooth});
+    if (isWall(j.a) && isWall(j.b)) (j.smooth ? smooth : convex).push_back({j.a, j.b, 0, 0, j.smooth, j.folded});
   std::map<std::pair<int, int>, double> pairs;
   for (int f = 0; f < static_cast<int>(across.size()); ++f)
     for (const auto& [g, area] : across[f])
@@ -473,6 +474,12 @@ std::vector<std::pair<int, int>> solveSides(const CadSolid& cad, WallSides& w,
   ParityUnionFind uf(n);
   std::vector<double> against(n, 0.0);  // per face, the ray area of its relations across the wall that failed
   for (const SideRelation& r : rankedRelations(cad, w, across)) {
+    if (r.folded) {  // a knife edge where the rays put its faces on the two sides; else a crevice: no tie
+      if (const std::pair<int, int> fa = uf.find(r.a), fb = uf.find(r.b);
+          fa.first == fb.first && fa.second != fb.second)
+        w.knifeEdges.push_back({r.a, r.b, false});
+      continue;
+    }
     if (uf.unite(r.a, r.b, r.relation)) continue;
     if (r.relation == 1)
       against[r.a] += r.weight, against[r.b] += r.weight;

@@ -83,6 +83,33 @@ TEST(SheetJunctions, BossOnAPlateIsASecondSheet) {
   EXPECT_EQ(walls, static_cast<int>(sheets[0].faces.size()));
 }
 
+// A hollow boss (R3.5, bore R1.5, 13 high) standing on a plate against a wall (60 x 2 x 15), its side merged 0.3 into
+// the wall: the boss's side meets the wall's face in an air wedge of 24 degrees along two lines, edges
+// BRepOffset_Analyse takes for convex (folded joins: the faces' normals 156 degrees apart). They tie no sides and join
+// no sheets: the boss stands on the wall and the plate (it was one sheet with them, its hexes folded). Also scaled by
+// 1e-3 and 1e3.
+TEST(SheetJunctions, ABossMergedShallowlyIntoAWallStandsOnIt) {
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    SCOPED_TRACE("scale " + std::to_string(scale));
+    const gp_Ax2 axis(gp_Pnt(30, 5.2, 2), gp_Dir(0, 0, 1));
+    TopoDS_Shape part = BRepAlgoAPI_Fuse(plate(), BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 60, 2, 15).Shape()).Shape();
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeCylinder(axis, 3.5, 13).Shape()).Shape();
+    part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeCylinder(axis, 1.5, 13).Shape()).Shape();
+    gp_Trsf scaling;
+    scaling.SetScale(gp_Pnt(0, 0, 0), scale);
+    const CadSolid cad = solidOf(BRepBuilderAPI_Transform(part, scaling, true).Shape());
+    const WallSides sides = classifyWallSides(cad);
+    int folded = 0;
+    for (const SheetJoin& j : sides.sheetJoins) folded += j.folded;
+    EXPECT_EQ(folded, 2);
+    const std::vector<Sheet> sheets = findSheets(cad, sides);
+    ASSERT_EQ(sheets.size(), 2u);
+    EXPECT_NEAR(sheets[1].centre.x() / scale, 30, 0.1);
+    EXPECT_NEAR(sheets[1].centre.z() / scale, 8.5, 0.2);
+    EXPECT_TRUE(sides.knifeEdges.empty());
+  }
+}
+
 // A rib across the plate: two walls meeting the plate at concave edges only.
 TEST(SheetJunctions, RibOnAPlateIsASecondSheet) {
   const TopoDS_Shape rib = BRepPrimAPI_MakeBox(gp_Pnt(10, 0, 2), 2, 40, 12).Shape();

@@ -1070,10 +1070,12 @@ class JunctionMeshing(unittest.TestCase):
         test_bosses_merged_into_walls_twins merged into the box's corner in metres (a notch at the crevice's foot), one
         R4.5 filling the corner (its two flats meet in it), the R3.5 boss in a box whose inside edges are rounded R1
         (a foot on the round too, a lap going on from its flat, covered 64 % with 2 layers; with 3, a hole along it), and
-        a boss drafted 1.5 degrees (a cone R3.55 -> R3.2), whose side meets the wall's face at 20-28 degrees in an edge
-        OpenCASCADE's analysis takes for convex: a join between faces on the wall's two sides (not a knife edge's) no
-        longer makes them one sheet (sheet_junctions.cpp runsOn; the whole part was one sheet and Gmsh failed to make
-        its patches), but its foot on the wall is no concave edge, and the cut leaves `no piece holds the sheet`. Each is refused
+        a boss drafted 1.5 degrees (a cone R3.55 -> R3.2) and one R3.5 merged only 0.3 into the wall, whose sides meet
+        the wall's face in an air wedge of 20-28 degrees, an edge OpenCASCADE's analysis takes for convex: such a folded
+        join ties no sides and joins no sheets unless it is a knife edge (sheet_edges.hpp SheetJoin::folded,
+        sheet_junctions.cpp runsOn; the whole part was one sheet: Gmsh failed to make the drafted one's patches, and
+        the shallow one's mesh had 206 inverted hexes), but the boss's foot on the wall is no concave edge, and the cut
+        leaves `no piece holds the sheet`. Each is refused
         (exit 4) naming why (the boss's hexes lying on the wall's unjoined: `joined`; inverted hexes at the crevice's
         foot; covering under 80 % of the flat; a hole; no piece after the cut) and, in the junction's error, the boss's
         place, not written with a crack."""
@@ -1082,7 +1084,8 @@ class JunctionMeshing(unittest.TestCase):
         cases = (("boss_in_corner_metres", boss(5.0, 5.0, 3.5), 1e-3, 0.0, (5.0, 5.0)),
                  ("boss_fill_corner", boss(5.0, 5.0, 4.5), 1.0, 0.0, (5.0, 5.0)),
                  ("boss_in_wall_round", boss(30.0, 5.0, 3.5, 1.0), 1.0, 0.0, (30.0, 5.0)),
-                 ("boss_in_wall_drafted", boss(30.0, 5.0, 3.55, top=3.2), 1.0, 0.0, (30.0, 5.0)))
+                 ("boss_in_wall_drafted", boss(30.0, 5.0, 3.55, top=3.2), 1.0, 0.0, (30.0, 5.0)),
+                 ("boss_in_wall_shallow", boss(30.0, 5.2, 3.5), 1.0, 0.0, (30.0, 5.2)))
         for name, write, scale, turn, axis in cases:
             step = os.path.join(self.tmp.name, name + ".step")
             write(step, scale, turn)
