@@ -80,7 +80,7 @@ TopTools_IndexedDataMapOfShapeListOfShape facesOfEdges(const CadSolid& cad) {
 // that meets two or more walls of the first sheet it meets (walls standing on it aside), all on one side, each in a
 // concave edge (a chamfer or round filling a bend's inside corner), where a rim face meets walls on both sides, and
 // meets no other sheet's wall in a convex edge (a rim face of that sheet: a boss's top in a box's corner). [in]
-// cad, sides, sheets; [in] concave: concaveEdges(cad).
+// cad, sides, sheets; [in] concave: footEdges(cad, sides).
 std::vector<int> bendSheetOfFaces(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets,
                                   const std::vector<FacePairEdge>& concave) {
   const int n = static_cast<int>(sides.faces.size());
@@ -147,7 +147,7 @@ struct Junctions {
   const std::vector<Sheet>& sheets;
   std::vector<int> bendSheet;                           // bendSheetOfFaces
   std::vector<int> sheetOf;                             // sheetOfFaces
-  std::vector<FacePairEdge> concave;                    // concaveEdges
+  std::vector<FacePairEdge> concave;                    // footEdges
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;  // facesOfEdges
 };
 
@@ -664,8 +664,8 @@ bool bothWallsOn(const std::map<std::pair<int, int>, std::vector<Vec3>>& normals
 }
 
 // The sheets reordered so that each standing sheet comes after the standing sheets it stands on (bothWallsOn one
-// way only), else in the order given: the first sheet stays first. [in] cad, sides; [in] concave: concaveEdges(cad);
-// [in] sheets: by decreasing area.
+// way only), else in the order given: the first sheet stays first. [in] cad, sides; [in] concave: footEdges(cad,
+// sides); [in] sheets: by decreasing area.
 std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, const std::vector<FacePairEdge>& concave,
                                  std::vector<Sheet> sheets) {
   const std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets, bendSheetOfFaces(cad, sides, sheets, concave));
@@ -695,11 +695,23 @@ std::vector<Sheet> standingOrder(const CadSolid& cad, const WallSides& sides, co
   return ordered;
 }
 
+// The edges where a standing wall's foot may be: the concave ones, and the folded joins that are no knife edge (a
+// crevice: a boss merged 0.2-0.3 into a wall, or drafted, meets its face in an air wedge of 20-28 degrees, an edge
+// BRepOffset_Analyse takes for convex; sheet_edges.hpp SheetJoin::folded). [in] cad, sides. Returns them, concave
+// set.
+std::vector<FacePairEdge> footEdges(const CadSolid& cad, const WallSides& sides) {
+  std::vector<FacePairEdge> feet = concaveEdges(cad);
+  for (const SheetJoin& j : sides.sheetJoins)
+    if (j.folded && sides.faces[j.a].opposite != j.b && sides.faces[j.b].opposite != j.a)
+      feet.push_back({j.edge, j.a, j.b, true});
+  return feet;
+}
+
 }  // namespace
 
 std::vector<Sheet> mergeCrossingRibs(const CadSolid& cad, const WallSides& sides, const std::vector<Sheet>& sheets) {
   const int n = static_cast<int>(sheets.size());
-  const std::vector<FacePairEdge> concave = concaveEdges(cad);
+  const std::vector<FacePairEdge> concave = footEdges(cad, sides);
   const std::vector<int> faceSheet = sheetOfFaces(cad, sides, sheets, bendSheetOfFaces(cad, sides, sheets, concave));
   std::vector<std::set<int>> meets(n);  // the standing sheets each meets in a concave edge
   for (const FacePairEdge& c : concave)
@@ -795,7 +807,7 @@ JunctionCut cutAtJunctions(const CadSolid& cad, const WallSides& sides, const st
     std::iota(same.begin(), same.end(), 0);
     return {{cad.solid}, {0}, {}, {same}};
   }
-  const std::vector<FacePairEdge> concave = concaveEdges(cad);
+  const std::vector<FacePairEdge> concave = footEdges(cad, sides);
   std::vector<int> bendSheet = bendSheetOfFaces(cad, sides, sheets, concave);
   std::vector<int> sheetOf = sheetOfFaces(cad, sides, sheets, bendSheet);
   const Junctions junctions{cad, sides, sheets, std::move(bendSheet), std::move(sheetOf), concave, facesOfEdges(cad)};
